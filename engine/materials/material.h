@@ -1,0 +1,63 @@
+// The one interface every material implements. All directions are in the local
+// shading frame (z = shading normal) and point away from the surface.
+#pragma once
+#include <memory>
+#include <optional>
+#include "../math/frame.h"
+#include "../math/vec.h"
+#include "../texture/color_param.h"
+
+namespace photon {
+
+// Which way light flows along the path being traced. Refraction scales radiance by
+// 1/eta^2 but not importance (Veach 1997, sec. 5.2), so the two differ for dielectrics.
+enum class TransportMode { Radiance, Importance };
+
+// Lobes a material has; integrators decide from these where a camera path stops.
+enum LobeFlags : unsigned { kDiffuseLobe = 1u, kGlossyLobe = 2u, kDeltaLobe = 4u };
+
+struct BSDFSample {
+    Vec3 wi;            // sampled incident direction (local frame)
+    Color weight;       // f * |cos(theta_i)| / pdf, already divided by lobeProbability
+    float pdf = 0;      // solid-angle density for non-delta lobes; the choice probability for delta ones
+    bool delta = false; // true if wi came from a Dirac lobe (mirror, refraction)
+    // Probability that sampling picked this kind of lobe (delta vs non-delta). A camera
+    // path that stops on the non-delta part of a mixed material divides by it.
+    float lobeProbability = 1;
+};
+
+class Material {
+public:
+    virtual ~Material() = default;
+    virtual unsigned lobes() const = 0;
+    // f(wo, wi) of the non-delta lobes; zero for pure delta materials.
+    virtual Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode mode) const = 0;
+    // Solid-angle density with which sample() returns wi for the non-delta lobes.
+    virtual float pdf(Vec3 wo, Vec3 wi, Color tint) const = 0;
+    // uLobe picks a lobe, u the direction within it.
+    virtual std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode) const = 0;
+
+    // The material's colour parameter (albedo or reflectance), constant or textured.
+    // Evaluated once per hit and passed back as `tint`.
+    const ColorParam& tint() const { return tint_; }
+    bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
+    bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
+
+protected:
+    explicit Material(ColorParam tint) : tint_(std::move(tint)) {}
+    ColorParam tint_;
+};
+
+using MaterialPtr = std::shared_ptr<const Material>;
+
+// Factories, one file each under materials/.
+MaterialPtr makeDiffuse(ColorParam albedo);
+MaterialPtr makeMirror(ColorParam reflectance);
+MaterialPtr makeDielectric(float ior);
+// GGX microfacet conductor with Schlick's Fresnel from `reflectance` (F0);
+// alpha = roughness^2 (Burley 2012). roughness 0 is a perfect mirror.
+MaterialPtr makeConductor(ColorParam reflectance, float roughness);
+// Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
+MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
+
+}  // namespace photon

@@ -1,0 +1,43 @@
+// Counter-based random numbers: every stream is keyed by (seed, pass, index, purpose),
+// never by thread, so a render is bit-identical whatever the thread count.
+#pragma once
+#include <cstdint>
+
+namespace photon {
+
+// SplitMix64 finaliser (Steele et al. 2014): a strong 64-bit mixing function.
+inline uint64_t mix64(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+enum class StreamPurpose : uint64_t { Camera = 1, Photon = 2, Test = 3, Setup = 4 };
+
+// PCG32 (O'Neill 2014): small state, good statistical quality, cheap to seed per path.
+class Rng {
+public:
+    Rng(uint64_t seed, uint64_t pass, uint64_t index, StreamPurpose purpose) {
+        uint64_t key = mix64(seed ^ mix64(pass + 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(purpose)));
+        key = mix64(key ^ mix64(index + 0x632be59bd9b4e019ull));
+        inc_ = (mix64(key + 0x1234567ull) << 1u) | 1u;
+        state_ = 0;
+        next();
+        state_ += key;
+        next();
+    }
+    uint32_t next() {
+        uint64_t old = state_;
+        state_ = old * 6364136223846793005ull + inc_;
+        uint32_t xorshifted = static_cast<uint32_t>(((old >> 18u) ^ old) >> 27u);
+        uint32_t rot = static_cast<uint32_t>(old >> 59u);
+        return (xorshifted >> rot) | (xorshifted << ((-rot) & 31));
+    }
+    // Uniform float in [0, 1): 24 random mantissa bits.
+    float uniform() { return static_cast<float>(next() >> 8) * 0x1p-24f; }
+
+private:
+    uint64_t state_ = 0, inc_ = 1;
+};
+
+}  // namespace photon

@@ -1,0 +1,56 @@
+// Affine transforms for mesh instancing: a 3x4 row-major matrix.
+#pragma once
+#include <array>
+#include "vec.h"
+
+namespace photon {
+
+struct Transform {
+    // Row-major 3x4: rows map (x, y, z, 1) to x', y', z'.
+    std::array<float, 12> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+
+    static Transform scale(Vec3 s) { return {{s.x, 0, 0, 0, 0, s.y, 0, 0, 0, 0, s.z, 0}}; }
+    static Transform translate(Vec3 t) { return {{1, 0, 0, t.x, 0, 1, 0, t.y, 0, 0, 1, t.z}}; }
+    // Rotation by `degrees` about `axis` (Rodrigues' formula).
+    static Transform rotate(Vec3 axis, float degrees) {
+        Vec3 a = normalize(axis);
+        float th = degrees * kPi / 180.0f, c = std::cos(th), s = std::sin(th), t = 1 - c;
+        return {{t * a.x * a.x + c, t * a.x * a.y - s * a.z, t * a.x * a.z + s * a.y, 0,
+                 t * a.x * a.y + s * a.z, t * a.y * a.y + c, t * a.y * a.z - s * a.x, 0,
+                 t * a.x * a.z - s * a.y, t * a.y * a.z + s * a.x, t * a.z * a.z + c, 0}};
+    }
+    // this * other: apply `other` first.
+    Transform operator*(const Transform& o) const {
+        Transform r;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 4; ++j) {
+                float v = m[i * 4 + 0] * o.m[0 * 4 + j] + m[i * 4 + 1] * o.m[1 * 4 + j] + m[i * 4 + 2] * o.m[2 * 4 + j];
+                if (j == 3) v += m[i * 4 + 3];
+                r.m[i * 4 + j] = v;
+            }
+        return r;
+    }
+    Vec3 point(Vec3 p) const {
+        return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+                m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+    }
+    Vec3 vector(Vec3 v) const {
+        return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
+                m[8] * v.x + m[9] * v.y + m[10] * v.z};
+    }
+    // Normals transform by the inverse transpose: the cofactor matrix has the same
+    // direction and needs no inverse (the scale is lost to normalisation anyway).
+    Vec3 normal(Vec3 n) const {
+        Vec3 r0{m[0], m[1], m[2]}, r1{m[4], m[5], m[6]}, r2{m[8], m[9], m[10]};
+        Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+        // Rows of the inverse transpose are c0, c1, c2 over the determinant; keep its sign.
+        Vec3 r{dot(c0, n), dot(c1, n), dot(c2, n)};
+        return normalize(dot(r0, c0) < 0 ? -r : r);
+    }
+    float determinant() const {
+        Vec3 r0{m[0], m[1], m[2]}, r1{m[4], m[5], m[6]}, r2{m[8], m[9], m[10]};
+        return dot(r0, cross(r1, r2));
+    }
+};
+
+}  // namespace photon

@@ -1,0 +1,27 @@
+// How to render: the scene's "render" block. Integrators read the fields they use.
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace photon {
+
+enum class IntegratorKind { Sppm, Path };
+enum class KernelKind { Uniform, Biweight };
+// Where SPPM takes direct light at visible points from.
+enum class DirectLighting { LightSampling, Photons };
+
+struct RenderSettings {
+    IntegratorKind integrator = IntegratorKind::Sppm;
+    int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
+    int64_t photonsPerPass = 200000;
+    double timeLimitSeconds = 0;      // 0: no limit; otherwise stop after the pass that crosses it
+    float initialRadius = 0;          // 0: "auto", from each pixel's footprint
+    float alpha = 2.0f / 3.0f;        // fraction of new photons kept per pass (Hachisuka & Jensen 2009)
+    int maxDepth = 8;                 // path vertices after the camera or light
+    uint64_t seed = 1;
+    KernelKind kernel = KernelKind::Uniform;
+    float exposure = 0;               // stops, applied when tone mapping to PNG
+    DirectLighting direct = DirectLighting::LightSampling;
+};
+
+}  // namespace photon

@@ -1,0 +1,22 @@
+// A colour that is either constant or looked up in a texture at the hit's uv.
+#pragma once
+#include <memory>
+#include "texture.h"
+
+namespace photon {
+
+struct ColorParam {
+    Color value{0.0f};
+    std::shared_ptr<const Texture> texture;
+
+    ColorParam() = default;
+    ColorParam(Color c) : value(c) {}  // NOLINT: a constant converts implicitly
+    explicit ColorParam(std::shared_ptr<const Texture> t) : texture(std::move(t)) {}
+
+    bool textured() const { return texture != nullptr; }
+    Color eval(Vec2 uv) const { return texture ? texture->lookup(uv) : value; }
+    // Mean over the surface: what light power and lobe choices use.
+    Color average() const { return texture ? texture->average() : value; }
+};
+
+}  // namespace photon

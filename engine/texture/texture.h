@@ -1,0 +1,32 @@
+// An RGB image texture held in memory, read through OpenImageIO.
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+#include "../math/vec.h"
+
+namespace photon {
+
+class Texture {
+public:
+    // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
+    // sRGB-encoded and linearised; float images (EXR, HDR) as linear. Throws
+    // std::runtime_error with the reason on failure.
+    static std::shared_ptr<const Texture> load(const std::filesystem::path& file);
+    Texture(int width, int height, std::vector<Color> texels);
+
+    // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
+    Color lookup(Vec2 uv) const;
+    int width() const { return width_; }
+    int height() const { return height_; }
+    Color average() const { return average_; }
+
+private:
+    Color texel(int x, int y) const;
+    int width_, height_;
+    std::vector<Color> texels_;
+    Color average_;
+};
+
+}  // namespace photon
