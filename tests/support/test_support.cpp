@@ -1,1 +1,63 @@
 #include "test_support.h"
+#include "scene_builders.h"
+
+namespace photon::test {
+
+ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emission) {
+    ShapeDescription s;
+    s.kind = ShapeDescription::Kind::Mesh;
+    s.mesh.positions = {origin, origin + u, origin + u + v, origin + v};
+    s.mesh.indices = {0, 1, 2, 0, 2, 3};
+    s.mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    s.material = material;
+    s.emission = emission;
+    return s;
+}
+
+ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emission, bool flipNormals) {
+    ShapeDescription s;
+    s.kind = ShapeDescription::Kind::Sphere;
+    s.center = center;
+    s.radius = radius;
+    s.material = material;
+    s.emission = emission;
+    s.flipNormals = flipNormals;
+    return s;
+}
+
+CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height) {
+    CameraDescription c;
+    c.position = position;
+    c.lookAt = lookAt;
+    c.up = up;
+    c.fovDegrees = fov;
+    c.width = width;
+    c.height = height;
+    return c;
+}
+
+SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution) {
+    SceneDescription d;
+    d.camera = camera({0, 3, 0}, {0, 0, 0}, {0, 0, -1}, 50, resolution, resolution);
+    d.materials = {makeDiffuse(Color(rho))};
+    d.materialNames = {"plane"};
+    // u x v = (40,0,0) x (0,0,-40) points up (+y).
+    d.shapes = {quad({-20, 0, 20}, {40, 0, 0}, {0, 0, -40}, 0)};
+    LightDescription light;
+    light.kind = LightDescription::Kind::Point;
+    light.position = {0, height, 0};
+    light.intensity = Color(intensity);
+    d.lights = {light};
+    return d;
+}
+
+SceneDescription furnace(float rho, float emission, int resolution) {
+    SceneDescription d;
+    d.camera = camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 60, resolution, resolution);
+    d.materials = {makeDiffuse(Color(rho))};
+    d.materialNames = {"wall"};
+    d.shapes = {sphere({0, 0, 0}, 1, 0, Color(emission), true)};
+    return d;
+}
+
+}  // namespace photon::test

@@ -11,3 +11,17 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 }
 
 }  // namespace photon::test
+
+#include "film/image.h"
+
+namespace photon::test {
+
+// Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
+inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
+    Color sum(0.0f);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) sum += image.at(x, y);
+    return sum / static_cast<float>((x1 - x0) * (y1 - y0));
+}
+
+}  // namespace photon::test

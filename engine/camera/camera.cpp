@@ -1,0 +1,30 @@
+#include "camera.h"
+#include "../scene/scene_description.h"
+
+namespace photon {
+
+Camera::Camera(const CameraDescription& d)
+    : position_(d.position), apertureRadius_(d.apertureRadius), focusDistance_(d.focusDistance),
+      width_(d.width), height_(d.height) {
+    forward_ = normalize(d.lookAt - d.position);
+    right_ = normalize(cross(forward_, d.up));
+    up_ = cross(right_, forward_);
+    tanHalfFov_ = std::tan(d.fovDegrees * kPi / 360.0f);
+    aspect_ = static_cast<float>(width_) / static_cast<float>(height_);
+    pixelAngle_ = 2.0f * tanHalfFov_ / static_cast<float>(height_);
+}
+
+Ray Camera::generateRay(float x, float y, Vec2 uLens) const {
+    // Film point on the plane at distance 1: [-aspect, aspect] x [-1, 1] scaled by tan(fov/2).
+    float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * tanHalfFov_ * aspect_;
+    float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * tanHalfFov_;
+    Vec3 dir = forward_ + right_ * sx + up_ * sy;
+    if (apertureRadius_ <= 0) return {position_, normalize(dir)};
+    // Thin lens (pbrt-v4 5.2.3): rays through the lens converge on the plane of focus.
+    Vec3 focus = position_ + dir * focusDistance_;
+    Vec2 lens = sampleUniformDiskConcentric(uLens);
+    Vec3 origin = position_ + right_ * (lens.x * apertureRadius_) + up_ * (lens.y * apertureRadius_);
+    return {origin, normalize(focus - origin)};
+}
+
+}  // namespace photon

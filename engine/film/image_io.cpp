@@ -1,0 +1,82 @@
+#include "image_io.h"
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace photon {
+
+namespace {
+
+uint8_t encodeSrgb(float linear) {
+    float v = std::clamp(linear, 0.0f, 1.0f);
+    v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    return static_cast<uint8_t>(std::lround(v * 255.0f));
+}
+
+// One writer for files and memory: `proxy` is null for files.
+void writeImage(const std::string& name, const OIIO::ImageSpec& spec, const void* pixels,
+                OIIO::Filesystem::IOProxy* proxy) {
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) throw std::runtime_error("cannot write " + name + ": " + OIIO::geterror());
+    if (proxy) out->set_ioproxy(proxy);
+    if (!out->open(name, spec) || !out->write_image(spec.format, pixels) || !out->close())
+        throw std::runtime_error("cannot write " + name + ": " + out->geterror());
+}
+
+OIIO::ImageSpec exrSpec(const Image& image) {
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+    spec.attribute("compression", "zip");
+    return spec;
+}
+
+}  // namespace
+
+std::vector<uint8_t> toneMapToSrgb8(const Image& image, float exposure) {
+    float scale = std::exp2(exposure);
+    std::vector<uint8_t> out(image.rgb.size());
+    for (size_t i = 0; i < image.rgb.size(); ++i) out[i] = encodeSrgb(image.rgb[i] * scale);
+    return out;
+}
+
+void writeExr(const Image& image, const std::filesystem::path& file) {
+    writeImage(file.string(), exrSpec(image), image.rgb.data(), nullptr);
+}
+
+void writePng(const Image& image, const std::filesystem::path& file, float exposure) {
+    std::vector<uint8_t> pixels = toneMapToSrgb8(image, exposure);
+    writeImage(file.string(), OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8), pixels.data(),
+               nullptr);
+}
+
+std::vector<uint8_t> encodePng(const Image& image, float exposure) {
+    std::vector<uint8_t> pixels = toneMapToSrgb8(image, exposure);
+    std::vector<unsigned char> buffer;
+    OIIO::Filesystem::IOVecOutput proxy(buffer);
+    writeImage("image.png", OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8), pixels.data(),
+               &proxy);
+    return {buffer.begin(), buffer.end()};
+}
+
+std::vector<uint8_t> encodeExr(const Image& image) {
+    std::vector<unsigned char> buffer;
+    OIIO::Filesystem::IOVecOutput proxy(buffer);
+    writeImage("image.exr", exrSpec(image), image.rgb.data(), &proxy);
+    return {buffer.begin(), buffer.end()};
+}
+
+Image readImage(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw std::runtime_error("cannot read " + file.string() + ": " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> all(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
+        throw std::runtime_error("cannot read " + file.string() + ": " + in->geterror());
+    Image image(spec.width, spec.height);
+    for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p)
+        for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
+    return image;
+}
+
+}  // namespace photon

@@ -1,0 +1,15 @@
+#include "integrator.h"
+#include "path.h"
+#include "sppm.h"
+
+namespace photon {
+
+std::unique_ptr<Integrator> makeIntegrator(std::shared_ptr<const Scene> scene) {
+    switch (scene->settings().integrator) {
+        case IntegratorKind::Path: return makePathIntegrator(std::move(scene));
+        case IntegratorKind::Sppm: break;
+    }
+    return std::make_unique<SppmIntegrator>(std::move(scene));
+}
+
+}  // namespace photon

@@ -1,0 +1,97 @@
+// SPPM camera pass: one jittered path per pixel, followed through delta bounces to the
+// first vertex with a diffuse lobe, where the visible point is stored. Direct light is
+// gathered on the way by shadow rays (or left to photons, per render.direct).
+#include <tbb/parallel_for.h>
+#include "direct_lighting.h"
+#include "sppm.h"
+
+namespace photon {
+
+void SppmIntegrator::cameraPass(const CancelToken& cancel) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            if (cancel.cancelled()) return;
+            for (int x = 0; x < width_; ++x) {
+                size_t index = static_cast<size_t>(y) * width_ + x;
+                Rng rng(settings_.seed, static_cast<uint64_t>(passes_), index, StreamPurpose::Camera);
+                tracePixel(index, rng);
+            }
+        }
+    });
+    stats_.cameraRays = static_cast<int64_t>(pixels_.size());
+}
+
+// Starting radius from the pixel's footprint at its first visible point: the footprint
+// grows with the distance travelled, and is widened so that a pass's photons, spread over
+// the image, put a handful (~8) in each disc.
+float SppmIntegrator::autoRadius(float pathLength) const {
+    float pixels = static_cast<float>(width_) * static_cast<float>(height_);
+    float discPixels = std::sqrt(8.0f * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
+    return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
+}
+
+void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
+    const Scene& scene = *scene_;
+    const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
+    VisiblePoint& vp = visible_[index];
+    vp = VisiblePoint{};
+    Color direct(0.0f), beta(1.0f);
+    float px = static_cast<float>(index % width_) + rng.uniform();
+    float py = static_cast<float>(index / width_) + rng.uniform();
+    Ray ray = scene.camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
+    bool afterDelta = true;  // emission is counted only where no shadow ray could have found it
+    float pathLength = 0;
+    for (int depth = 0; depth < settings_.maxDepth; ++depth) {
+        SurfaceHit hit;
+        if (!scene.intersect(ray, hit)) {
+            if (afterDelta) direct += beta * scene.environment(ray.d);
+            break;
+        }
+        pathLength += hit.t;
+        Vec3 wo = -ray.d;
+        if (afterDelta) direct += beta * scene.emitted(hit, wo);
+        ShadingPoint sp = makeShadingPoint(scene, hit);
+        const Material& m = *sp.material;
+        bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && depth == settings_.maxDepth - 1);
+        if (!m.isDeltaOnly() && (directBySampling || !storesHere))
+            direct += beta * sampleDirectLight(scene, sp, wo, rng);
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        Vec3 woLocal = sp.frame.toLocal(wo);
+        if (storesHere) {
+            // A material with a delta lobe beside its diffuse one (smooth plastic): follow
+            // the delta lobe with its probability, else stop here weighted by 1/(1 - p).
+            float weight = 1;
+            if (m.lobes() & kDeltaLobe) {
+                std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
+                if (!s) break;
+                if (s->delta) {
+                    beta *= s->weight;
+                    ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+                    afterDelta = true;
+                    continue;
+                }
+                weight = 1.0f / s->lobeProbability;
+            }
+            OctahedralVector n(hit.ns);
+            Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
+            // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
+            float r2 = pixels_[index].r2;
+            if (r2 == 0) {
+                float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
+                r2 = r * r;
+            }
+            vp = VisiblePoint{hit.p, n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint, r2,
+                              scene.materialIndex(hit)};
+            break;
+        }
+        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
+        if (!s) break;
+        beta *= s->weight;
+        afterDelta = s->delta;
+        ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+    }
+    passDirect_[index] = direct;
+}
+
+}  // namespace photon

@@ -1,0 +1,45 @@
+// Uniform environment: radiance L from every direction. Photons come from a disc of the
+// scene's bounding-sphere radius facing a uniformly chosen direction, so each carries
+// L / (pdf_dir pdf_pos) = L 4 pi * pi R^2 (pbrt-v4 12.5.1).
+#include "../math/frame.h"
+#include "../math/sampling.h"
+#include "light_factories.h"
+
+namespace photon {
+namespace {
+
+class EnvironmentLight final : public Light {
+public:
+    EnvironmentLight(const LightDescription& d, SceneSphere bounds) : radiance_(d.radiance), bounds_(bounds) {}
+
+    Color power() const override {
+        return radiance_ * (4.0f * kPi * kPi * bounds_.radius * bounds_.radius);
+    }
+
+    std::optional<LightSample> sampleIncident(Vec3, Vec2 u) const override {
+        return LightSample{sampleUniformSphere(u), std::numeric_limits<float>::infinity(),
+                           radiance_ / kUniformSpherePdf};
+    }
+
+    std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
+        Vec3 towardLight = sampleUniformSphere(uDirection);
+        Frame frame = Frame::fromNormal(towardLight);
+        Vec2 disk = sampleUniformDiskConcentric(uPosition);
+        Vec3 origin = bounds_.center + (towardLight + frame.s * disk.x + frame.t * disk.y) * bounds_.radius;
+        return PhotonEmission{origin, -towardLight, power()};
+    }
+
+    Color radianceFromDirection(Vec3) const override { return radiance_; }
+
+private:
+    Color radiance_;
+    SceneSphere bounds_;
+};
+
+}  // namespace
+
+std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds) {
+    return std::make_unique<EnvironmentLight>(d, bounds);
+}
+
+}  // namespace photon

@@ -1,0 +1,39 @@
+// The one interface every light implements: sampling incident light at a point (for
+// direct lighting) and emitting photons (for the photon pass).
+#pragma once
+#include <limits>
+#include <optional>
+#include "../math/vec.h"
+
+namespace photon {
+
+struct LightSample {
+    Vec3 wi;                 // unit direction from the shading point toward the light
+    float distance = std::numeric_limits<float>::infinity();  // to the sampled point; inf for infinite lights
+    Color weight;            // incident radiance / pdf (solid angle), or irradiance for delta lights
+};
+
+struct PhotonEmission {
+    Vec3 origin, direction;  // direction is unit length
+    Color flux;              // Le * |cos| / (pdf_position * pdf_direction): the photon's power, W
+    Vec3 normal;             // surface normal at the origin for area lights (the ray is offset along it), else 0
+};
+
+// Axis-aligned bounds of the scene, which infinite lights need to emit photons.
+struct SceneSphere {
+    Vec3 center;
+    float radius = 1;
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+    // Total emitted power, W per channel.
+    virtual Color power() const = 0;
+    virtual std::optional<LightSample> sampleIncident(Vec3 p, Vec2 u) const = 0;
+    virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
+    // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
+    virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }
+};
+
+}  // namespace photon

@@ -1,0 +1,17 @@
+// Constructors for each kind of light, one file each under lights/.
+#pragma once
+#include <memory>
+#include "../scene/scene_description.h"
+#include "light.h"
+
+namespace photon {
+
+std::unique_ptr<Light> makePointLight(const LightDescription& d);
+std::unique_ptr<Light> makeSpotLight(const LightDescription& d);
+std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphere bounds);
+std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds);
+// An emissive triangle mesh (quads arrive as meshes) or sphere. The shape must outlive the light.
+std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape);
+std::unique_ptr<Light> makeSphereAreaLight(const ShapeDescription& shape);
+
+}  // namespace photon

@@ -1,0 +1,29 @@
+// Picks a light with probability proportional to its power: the rule for emitting
+// photons (flux stays equal across lights) and for direct-light shadow rays.
+#pragma once
+#include <vector>
+#include "light.h"
+
+namespace photon {
+
+class LightSampler {
+public:
+    LightSampler() = default;
+    explicit LightSampler(std::vector<const Light*> lights);
+
+    struct Pick {
+        const Light* light = nullptr;
+        float probability = 0;
+    };
+    Pick pick(float u) const;
+    size_t size() const { return lights_.size(); }
+    // Mean over channels of the summed power: the unit photon fluxes are expressed in.
+    float totalAveragePower() const { return totalAveragePower_; }
+
+private:
+    std::vector<const Light*> lights_;
+    std::vector<float> cdf_;
+    float totalAveragePower_ = 0;
+};
+
+}  // namespace photon

@@ -1,0 +1,42 @@
+// Unit vectors packed into 32 bits by the octahedral map (Cigolle et al. 2014, "A Survey
+// of Efficient Representations for Independent Unit Vectors", JCGT 3(2)); error below
+// 1e-4 rad, which keeps per-pixel state small.
+#pragma once
+#include <cstdint>
+#include "vec.h"
+
+namespace photon {
+
+struct OctahedralVector {
+    uint16_t x = 0, y = 0;
+
+    OctahedralVector() = default;
+    explicit OctahedralVector(Vec3 v) {
+        v = v / (std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
+        float px = v.x, py = v.y;
+        if (v.z < 0) {  // fold the lower hemisphere over the diagonals
+            px = (1 - std::abs(v.y)) * std::copysign(1.0f, v.x);
+            py = (1 - std::abs(v.x)) * std::copysign(1.0f, v.y);
+        }
+        x = encode(px);
+        y = encode(py);
+    }
+    Vec3 decode() const {
+        Vec3 v{decode(x), decode(y), 0};
+        v.z = 1 - std::abs(v.x) - std::abs(v.y);
+        if (v.z < 0) {
+            float ox = v.x;
+            v.x = (1 - std::abs(v.y)) * std::copysign(1.0f, ox);
+            v.y = (1 - std::abs(ox)) * std::copysign(1.0f, v.y);
+        }
+        return normalize(v);
+    }
+
+private:
+    static uint16_t encode(float f) {
+        return static_cast<uint16_t>(std::lround(std::clamp((f + 1) / 2, 0.0f, 1.0f) * 65535.0f));
+    }
+    static float decode(uint16_t u) { return -1 + 2 * (static_cast<float>(u) / 65535.0f); }
+};
+
+}  // namespace photon

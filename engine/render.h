@@ -1,0 +1,49 @@
+// The engine's face: load a scene, render it pass by pass with progress reports and
+// cancellation, take snapshots. Nothing here knows of HTTP, jobs or files to write.
+#pragma once
+#include <chrono>
+#include <functional>
+#include <memory>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+
+namespace photon {
+
+struct RenderProgress {
+    int pass = 0;               // passes finished
+    int totalPasses = 0;
+    int64_t photonsTraced = 0;  // photons emitted so far
+    double photonsPerSecond = 0;
+    double meanRadius = 0;      // scene units; 0 for integrators without a gather radius
+    double elapsedSeconds = 0;
+    double etaSeconds = 0;      // estimate of the time left
+    PassStats lastPass;
+};
+
+enum class RenderOutcome { Completed, TimeLimit, Cancelled };
+
+class Renderer {
+public:
+    explicit Renderer(std::shared_ptr<const Scene> scene);
+
+    using ProgressFn = std::function<void(const RenderProgress&)>;
+    // Renders until the scene's pass count or time limit is reached, or `cancel` is set.
+    // onPass runs on the rendering thread after every finished pass.
+    RenderOutcome run(const CancelToken& cancel, const ProgressFn& onPass = {});
+    // Renders one pass; false if cancelled (the image stays as after the last pass).
+    bool renderPass(const CancelToken& cancel);
+
+    Image snapshot() const { return integrator_->snapshot(); }
+    const RenderProgress& progress() const { return progress_; }
+    const Integrator& integrator() const { return *integrator_; }
+    const Scene& scene() const { return *scene_; }
+
+private:
+    std::shared_ptr<const Scene> scene_;
+    std::unique_ptr<Integrator> integrator_;
+    RenderProgress progress_;
+    double renderSeconds_ = 0;
+};
+
+}  // namespace photon

@@ -1,0 +1,195 @@
+#include "scene.h"
+#include <limits>
+#include <stdexcept>
+#include "../lights/light_factories.h"
+
+namespace photon {
+
+namespace {
+void embreeError(void*, RTCError code, const char* message) {
+    (void)code;
+    (void)message;  // reported through rtcGetDeviceError where it matters
+}
+}  // namespace
+
+std::shared_ptr<const Scene> Scene::build(SceneDescription description) {
+    return std::shared_ptr<const Scene>(new Scene(std::move(description)));
+}
+
+Scene::Scene(SceneDescription description) : description_(std::move(description)), camera_(description_.camera) {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) throw std::runtime_error("Embree: cannot create device");
+    rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
+    rtcScene_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
+    for (uint32_t i = 0; i < shapes_.size(); ++i) {
+        if (shapes_[i].kind == ShapeDescription::Kind::Sphere)
+            addSphere(i);
+        else
+            addMesh(i);
+    }
+    rtcCommitScene(rtcScene_);
+    if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) throw std::runtime_error("Embree: scene build failed");
+    RTCBounds b;
+    rtcGetSceneBounds(rtcScene_, &b);
+    boundsMin_ = {b.lower_x, b.lower_y, b.lower_z};
+    boundsMax_ = {b.upper_x, b.upper_y, b.upper_z};
+    buildLights();
+}
+
+Scene::~Scene() {
+    if (rtcScene_) rtcReleaseScene(rtcScene_);
+    if (device_) rtcReleaseDevice(device_);
+}
+
+void Scene::addMesh(uint32_t shapeIndex) {
+    const TriangleMesh& m = shapes_[shapeIndex].mesh;
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree-owned buffers (rtcSetNewGeometryBuffer) come with the padding its SIMD loads need.
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), m.positions.size()));
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        v[3 * i] = m.positions[i].x;
+        v[3 * i + 1] = m.positions[i].y;
+        v[3 * i + 2] = m.positions[i].z;
+    }
+    auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(uint32_t), m.triangleCount()));
+    std::copy(m.indices.begin(), m.indices.end(), idx);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(rtcScene_, g, shapeIndex);
+    rtcReleaseGeometry(g);
+}
+
+void Scene::addSphere(uint32_t shapeIndex) {
+    const ShapeDescription& s = shapes_[shapeIndex];
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    auto* v = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+    v[0] = s.center.x;
+    v[1] = s.center.y;
+    v[2] = s.center.z;
+    v[3] = s.radius;
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(rtcScene_, g, shapeIndex);
+    rtcReleaseGeometry(g);
+}
+
+void Scene::buildLights() {
+    Vec3 c = (boundsMin_ + boundsMax_) * 0.5f;
+    float r = std::max(length(boundsMax_ - c), 1e-3f);
+    SceneSphere sphere{c, r};
+    for (const ShapeDescription& s : shapes_) {
+        if (isBlack(s.emission)) continue;
+        ownedLights_.push_back(s.kind == ShapeDescription::Kind::Sphere ? makeSphereAreaLight(s)
+                                                                        : makeMeshAreaLight(s));
+    }
+    for (const LightDescription& d : description_.lights) {
+        switch (d.kind) {
+            case LightDescription::Kind::Point: ownedLights_.push_back(makePointLight(d)); break;
+            case LightDescription::Kind::Spot: ownedLights_.push_back(makeSpotLight(d)); break;
+            case LightDescription::Kind::Directional: ownedLights_.push_back(makeDirectionalLight(d, sphere)); break;
+            case LightDescription::Kind::Environment:
+                ownedLights_.push_back(makeEnvironmentLight(d, sphere));
+                environmentLight_ = ownedLights_.back().get();
+                break;
+        }
+    }
+    std::vector<const Light*> lights;
+    for (const auto& l : ownedLights_) lights.push_back(l.get());
+    lightSampler_ = LightSampler(std::move(lights));
+}
+
+bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = ray.o.x;
+    rh.ray.org_y = ray.o.y;
+    rh.ray.org_z = ray.o.z;
+    rh.ray.dir_x = ray.d.x;
+    rh.ray.dir_y = ray.d.y;
+    rh.ray.dir_z = ray.d.z;
+    rh.ray.tnear = 0;
+    rh.ray.tfar = ray.tMax;
+    rh.ray.mask = ~0u;
+    rh.ray.flags = 0;
+    rh.ray.time = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(rtcScene_, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    hit.t = rh.ray.tfar;
+    hit.shape = rh.hit.geomID;
+    hit.p = ray.o + ray.d * hit.t;
+    const ShapeDescription& shape = shapes_[hit.shape];
+    if (shape.kind == ShapeDescription::Kind::Sphere)
+        fillSphereHit(shape, hit);
+    else
+        fillTriangleHit(shape, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
+    if (shape.flipNormals) {
+        hit.ng = -hit.ng;
+        hit.ns = -hit.ns;
+    }
+    return true;
+}
+
+void Scene::fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const {
+    const TriangleMesh& m = shape.mesh;
+    uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];
+    Vec3 p0 = m.positions[i0], p1 = m.positions[i1], p2 = m.positions[i2];
+    // Embree's barycentrics: p = (1-u-v) p0 + u p1 + v p2. Recomputing p from them is
+    // more accurate than o + t d far from the origin.
+    float w = 1.0f - u - v;
+    hit.p = p0 * w + p1 * u + p2 * v;
+    hit.ng = normalize(cross(p1 - p0, p2 - p0));
+    hit.ns = hit.ng;
+    if (!m.normals.empty()) {
+        Vec3 ns = m.normals[i0] * w + m.normals[i1] * u + m.normals[i2] * v;
+        float len = length(ns);
+        if (len > 0) hit.ns = ns / len;
+        // Keep the shading normal on the geometric side so the two agree on which side is up.
+        if (dot(hit.ns, hit.ng) < 0) hit.ns = -hit.ns;
+    }
+    hit.uv = m.uvs.empty() ? Vec2{u, v}
+                           : Vec2{m.uvs[i0].x * w + m.uvs[i1].x * u + m.uvs[i2].x * v,
+                                  m.uvs[i0].y * w + m.uvs[i1].y * u + m.uvs[i2].y * v};
+}
+
+void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const {
+    Vec3 n = normalize(hit.p - shape.center);
+    hit.p = shape.center + n * shape.radius;  // reproject: removes the error of o + t d
+    hit.ng = hit.ns = n;
+    // Spherical (longitude, latitude) parameterisation, y up.
+    float phi = std::atan2(n.z, n.x);
+    hit.uv = {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+}
+
+bool Scene::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    r.org_x = ray.o.x;
+    r.org_y = ray.o.y;
+    r.org_z = ray.o.z;
+    r.dir_x = ray.d.x;
+    r.dir_y = ray.d.y;
+    r.dir_z = ray.d.z;
+    r.tnear = 0;
+    r.tfar = ray.tMax;
+    r.mask = ~0u;
+    r.flags = 0;
+    r.time = 0;
+    rtcOccluded1(rtcScene_, &context, &r);
+    return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
+    const ShapeDescription& s = shapes_[hit.shape];
+    return dot(hit.ng, w) > 0 ? s.emission : Color(0.0f);
+}
+
+Color Scene::environment(Vec3 d) const {
+    return environmentLight_ ? environmentLight_->radianceFromDirection(d) : Color(0.0f);
+}
+
+}  // namespace photon

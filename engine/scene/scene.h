@@ -1,0 +1,73 @@
+// The immutable scene an integrator renders: Embree geometry, materials, lights, camera.
+#pragma once
+#include <embree3/rtcore.h>
+#include <memory>
+#include <vector>
+#include "../camera/camera.h"
+#include "../lights/light.h"
+#include "../lights/light_sampler.h"
+#include "ray.h"
+#include "scene_description.h"
+
+namespace photon {
+
+// What a ray hit. Normals face the side the surface emits from (flip_normals applied).
+struct SurfaceHit {
+    Vec3 p;          // hit point
+    Vec3 ng;         // geometric normal, unit length
+    Vec3 ns;         // shading normal, unit length, same side as ng
+    Vec2 uv;         // surface parameterisation for textures
+    float t = 0;     // ray distance
+    uint32_t shape = 0;
+};
+
+class Scene {
+public:
+    // Builds the Embree BVH and the light set. Throws std::runtime_error if Embree fails.
+    static std::shared_ptr<const Scene> build(SceneDescription description);
+    ~Scene();
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    // Closest hit along the ray within (0, ray.tMax).
+    bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // True if anything blocks the ray within (0, tMax).
+    bool occluded(const Ray& ray) const;
+
+    const Material& material(const SurfaceHit& hit) const { return *materials_[shapes_[hit.shape].material]; }
+    uint32_t materialIndex(const SurfaceHit& hit) const { return shapes_[hit.shape].material; }
+    const Material& materialAt(uint32_t index) const { return *materials_[index]; }
+    // Radiance emitted from the hit toward direction w (zero on the back side).
+    Color emitted(const SurfaceHit& hit, Vec3 w) const;
+    // Radiance arriving along a ray that leaves the scene in direction d.
+    Color environment(Vec3 d) const;
+
+    const Camera& camera() const { return camera_; }
+    const RenderSettings& settings() const { return description_.render; }
+    const SceneDescription& description() const { return description_; }
+    const LightSampler& lights() const { return lightSampler_; }
+    Vec3 boundsMin() const { return boundsMin_; }
+    Vec3 boundsMax() const { return boundsMax_; }
+    RTCScene embreeScene() const { return rtcScene_; }
+
+private:
+    explicit Scene(SceneDescription description);
+    void addMesh(uint32_t shapeIndex);
+    void addSphere(uint32_t shapeIndex);
+    void buildLights();
+    void fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const;
+    void fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const;
+
+    SceneDescription description_;
+    std::vector<ShapeDescription>& shapes_ = description_.shapes;
+    std::vector<MaterialPtr>& materials_ = description_.materials;
+    std::vector<std::unique_ptr<Light>> ownedLights_;
+    LightSampler lightSampler_;
+    const Light* environmentLight_ = nullptr;
+    Camera camera_;
+    Vec3 boundsMin_, boundsMax_;
+    RTCDevice device_ = nullptr;
+    RTCScene rtcScene_ = nullptr;
+};
+
+}  // namespace photon

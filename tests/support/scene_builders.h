@@ -1,0 +1,21 @@
+// Scenes built in code for the analytic tests, independent of the JSON loader.
+#pragma once
+#include "scene/scene_description.h"
+
+namespace photon::test {
+
+// A quad as two triangles facing normalize(u x v).
+ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emission = Color(0.0f));
+ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emission = Color(0.0f),
+                        bool flipNormals = false);
+CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height);
+
+// A 40 x 40 diffuse plane at y = 0 of albedo rho under a point light of intensity I at
+// height h above the origin, seen from straight above at height 3 (fov 50).
+SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution);
+
+// Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
+SceneDescription furnace(float rho, float emission, int resolution);
+
+
+}  // namespace photon::test

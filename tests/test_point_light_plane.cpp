@@ -1,0 +1,73 @@
+// A diffuse plane under a point light has radiance rho/pi * I cos(theta) / r^2: the
+// photon density estimate and the shadow-ray estimate must both reach it.
+#include <gtest/gtest.h>
+#include "render.h"
+#include "scene_builders.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+constexpr float kRho = 0.5f, kIntensity = 10.0f, kHeight = 1.0f;
+constexpr int kResolution = 64;
+
+// The pixel's analytic value: the radiance averaged over the pixel's area on the plane.
+float analyticPixel(const Camera& camera, int x, int y) {
+    const int n = 8;
+    double sum = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            Ray ray = camera.generateRay(x + (i + 0.5f) / n, y + (j + 0.5f) / n, {0.5f, 0.5f});
+            float t = -ray.o.y / ray.d.y;
+            Vec3 p = ray.o + ray.d * t;
+            float r2 = p.x * p.x + p.z * p.z + kHeight * kHeight;
+            float cosTheta = kHeight / std::sqrt(r2);
+            sum += kRho / kPi * kIntensity * cosTheta / r2;
+        }
+    return static_cast<float>(sum / (n * n));
+}
+
+Image render(DirectLighting direct, int passes, int64_t photons) {
+    SceneDescription d = test::pointLightPlane(kRho, kIntensity, kHeight, kResolution);
+    d.render.direct = direct;
+    d.render.passes = passes;
+    d.render.photonsPerPass = photons;
+    Renderer renderer(Scene::build(std::move(d)));
+    CancelToken cancel;
+    renderer.run(cancel);
+    return renderer.snapshot();
+}
+
+// 8x8-pixel blocks at the centre, off centre and near the corners.
+const int kBlocks[][2] = {{28, 28}, {40, 20}, {12, 48}, {4, 4}, {52, 52}, {20, 8}, {52, 4}, {4, 52}};
+
+void expectBlocksMatch(const Image& image, float tolerance) {
+    Camera camera(test::pointLightPlane(kRho, kIntensity, kHeight, kResolution).camera);
+    for (const auto& b : kBlocks) {
+        double expected = 0;
+        for (int y = b[1]; y < b[1] + 8; ++y)
+            for (int x = b[0]; x < b[0] + 8; ++x) expected += analyticPixel(camera, x, y) / 64.0;
+        Color got = test::meanOver(image, b[0], b[1], b[0] + 8, b[1] + 8);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(got[c], expected, tolerance * expected) << "block at " << b[0] << "," << b[1];
+    }
+}
+
+TEST(PointLightPlane, PhotonDensityEstimateMatchesAnalyticRadiance) {
+    expectBlocksMatch(render(DirectLighting::Photons, 64, 100000), 0.03f);
+}
+
+TEST(PointLightPlane, ShadowRaysMatchAnalyticRadiance) {
+    // With direct light by shadow rays and nothing to bounce from, every pixel is exact
+    // up to the pixel jitter; check single pixels too.
+    Image image = render(DirectLighting::LightSampling, 16, 1000);
+    Camera camera(test::pointLightPlane(kRho, kIntensity, kHeight, kResolution).camera);
+    for (const auto& b : kBlocks) {
+        float expected = analyticPixel(camera, b[0], b[1]);
+        EXPECT_NEAR(image.at(b[0], b[1]).y, expected, 0.03f * expected);
+    }
+    expectBlocksMatch(image, 0.01f);
+}
+
+}  // namespace
+}  // namespace photon
