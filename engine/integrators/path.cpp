@@ -76,7 +76,7 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
         }
         Vec3 wo = -ray.d;
         if (afterDelta) L += beta * scene.emitted(hit, wo);
-        ShadingPoint sp = makeShadingPoint(scene, hit);
+        ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};

@@ -12,9 +12,17 @@ struct ShadingPoint {
     Color tint;
 };
 
-inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit) {
+// `wo` points back along the arriving ray. Two-sided materials see their normals turned
+// toward it, so a quad or mesh shades alike whichever way its winding faces.
+inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);
-    return {hit, &m, Frame::fromNormal(hit.ns), m.tint().eval(hit.uv)};
+    ShadingPoint sp{hit, &m, {}, m.tint().eval(hit.uv)};
+    if (m.twoSided() && dot(wo, hit.ng) < 0) {
+        sp.hit.ng = -hit.ng;
+        sp.hit.ns = -hit.ns;
+    }
+    sp.frame = Frame::fromNormal(sp.hit.ns);
+    return sp;
 }
 
 }  // namespace photon

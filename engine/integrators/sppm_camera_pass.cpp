@@ -50,7 +50,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         pathLength += hit.t;
         Vec3 wo = -ray.d;
         if (afterDelta) direct += beta * scene.emitted(hit, wo);
-        ShadingPoint sp = makeShadingPoint(scene, hit);
+        ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && depth == settings_.maxDepth - 1);
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
@@ -73,7 +73,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 }
                 weight = 1.0f / s->lobeProbability;
             }
-            OctahedralVector n(hit.ns);
+            OctahedralVector n(sp.hit.ns);
             Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
             // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
             float r2 = pixels_[index].r2;
@@ -81,7 +81,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
                 r2 = r * r;
             }
-            vp = VisiblePoint{hit.p, n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint, r2,
+            vp = VisiblePoint{sp.hit.p, n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint, r2,
                               scene.materialIndex(hit)};
             break;
         }

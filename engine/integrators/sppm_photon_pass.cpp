@@ -56,9 +56,9 @@ void SppmIntegrator::tracePhoton(int64_t index, int64_t& segments) {
         SurfaceHit hit;
         if (!scene.intersect(ray, hit)) break;
         ++segments;
-        ShadingPoint sp = makeShadingPoint(scene, hit);
         Vec3 wi = -ray.d;  // toward where the photon came from
-        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) deposit(hit.p, hit.ns, wi, beta);
+        ShadingPoint sp = makeShadingPoint(scene, hit, wi);
+        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) deposit(hit.p, sp.hit.ns, wi, beta);
         if (depth + 1 == settings_.maxDepth) break;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};

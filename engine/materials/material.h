@@ -40,6 +40,9 @@ public:
     // The material's colour parameter (albedo or reflectance), constant or textured.
     // Evaluated once per hit and passed back as `tint`.
     const ColorParam& tint() const { return tint_; }
+    // Opaque materials shade both sides alike (the normal is turned toward the viewer);
+    // a dielectric's orientation tells inside from outside, so it is not two-sided.
+    virtual bool twoSided() const { return true; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 

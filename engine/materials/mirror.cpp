@@ -1,0 +1,33 @@
+// Perfect specular reflector tinted by `reflectance`: a single Dirac lobe.
+#include "material.h"
+
+namespace photon {
+namespace {
+
+class Mirror final : public Material {
+public:
+    explicit Mirror(ColorParam reflectance) : Material(std::move(reflectance)) {}
+
+    unsigned lobes() const override { return kDeltaLobe; }
+
+    // A Dirac lobe has no finite value or density for any given wi.
+    Color eval(Vec3, Vec3, Color, TransportMode) const override { return Color(0.0f); }
+    float pdf(Vec3, Vec3, Color) const override { return 0; }
+
+    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2, Color tint, TransportMode) const override {
+        if (wo.z <= 0) return std::nullopt;
+        // f = R delta(wi - mirror(wo)) / |cos| (pbrt-v4 sec. 9.3), so f |cos| / pdf = R.
+        BSDFSample s;
+        s.wi = Vec3(-wo.x, -wo.y, wo.z);
+        s.weight = tint;
+        s.pdf = 1;
+        s.delta = true;
+        return s;
+    }
+};
+
+}  // namespace
+
+MaterialPtr makeMirror(ColorParam reflectance) { return std::make_shared<Mirror>(std::move(reflectance)); }
+
+}  // namespace photon

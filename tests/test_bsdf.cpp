@@ -1,0 +1,351 @@
+// Material tests: sample() against eval()/pdf() by independent quadrature, analytic
+// reflectances, reciprocity, energy conservation and sample/pdf consistency.
+#include <gtest/gtest.h>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+#include "materials/fresnel.h"
+#include "materials/material.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+
+namespace photon {
+namespace {
+
+constexpr int kSamples = 200000;
+constexpr float kCosines[] = {0.1f, 0.5f, 0.95f};  // near-grazing, oblique, near-normal
+constexpr float kIor = 1.5f;
+const Color kWhite(1.0f);
+
+using Channels = std::array<double, 3>;
+
+// Unit direction with the given cos(theta); a non-zero azimuth avoids axis-aligned luck.
+Vec3 direction(float cosTheta, float phi = 0.7f) {
+    float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    return {s * std::cos(phi), s * std::sin(phi), cosTheta};
+}
+
+// Allowed difference between two albedo estimates: 1% relative or 0.005 absolute.
+double tolerance(double reference) { return std::max(0.005, 0.01 * std::abs(reference)); }
+
+// Monte Carlo estimate of the directional albedo from sample(): the mean weight.
+struct SampleEstimate {
+    Channels mean{}, stdError{};
+    double nonDeltaFraction = 0;  // share of all draws that returned a non-delta wi
+};
+
+SampleEstimate estimateBySampling(const Material& m, Vec3 wo, Color tint, TransportMode mode, uint64_t seed) {
+    Rng rng(seed, 0, 0, StreamPurpose::Test);
+    Channels sum{}, sumSq{};
+    int nonDelta = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        auto s = m.sample(wo, uLobe, u, tint, mode);
+        if (!s) continue;
+        if (!s->delta) ++nonDelta;
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += s->weight[c];
+            sumSq[c] += double(s->weight[c]) * s->weight[c];
+        }
+    }
+    SampleEstimate e;
+    for (int c = 0; c < 3; ++c) {
+        e.mean[c] = sum[c] / kSamples;
+        double var = std::max(0.0, sumSq[c] / kSamples - e.mean[c] * e.mean[c]);
+        e.stdError[c] = std::sqrt(var / kSamples);
+    }
+    e.nonDeltaFraction = double(nonDelta) / kSamples;
+    return e;
+}
+
+// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
+// wi = reflect(wo, h) over half vectors h, with d(omega_i) = 4 (wo.h) d(omega_h)
+// (Walter et al. 2007, eq. 14). theta_h uses the warp tan(theta_h) = a tan(u pi/2) up
+// to tan(theta_h) = 30 a, so a lobe of GGX width a is resolved, then a uniform grid up
+// to pi/2 for the broad (diffuse) remainder. Midpoint rule in both, periodic in phi.
+template <class G>
+Channels integrateHemisphere(Vec3 wo, float a, G g) {
+    constexpr int kTheta = 400, kPhi = 512;
+    constexpr float kHalfPi = 0.5f * kPi;
+    double uMax = std::atan(30.0) / kHalfPi;  // tan(uMax pi/2) = 30
+    double thetaSplit = std::atan(30.0 * a);
+    Channels total{};
+    auto ring = [&](double theta, double dTheta) {
+        double dPhi = 2.0 * kPi / kPhi, sinTheta = std::sin(theta);
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 h(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(std::cos(theta)));
+            float woDotH = dot(wo, h);
+            if (woDotH <= 0) continue;
+            Vec3 wi = normalize(reflect(wo, h));
+            if (wi.z <= 0) continue;
+            Color v = g(wi);
+            double jacobian = 4.0 * woDotH * sinTheta * dTheta * dPhi;
+            for (int c = 0; c < 3; ++c) total[c] += v[c] * jacobian;
+        }
+    };
+    double du = uMax / kTheta;
+    for (int i = 0; i < kTheta; ++i) {
+        double t = std::tan((i + 0.5) * du * kHalfPi);
+        double dThetaDu = a * kHalfPi * (1 + t * t) / (1 + a * a * t * t);
+        ring(std::atan(a * t), dThetaDu * du);
+    }
+    double dTheta = (kHalfPi - thetaSplit) / kTheta;
+    for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
+    return total;
+}
+
+// A material under test: `width` is the GGX alpha the quadrature resolves (1 if broad);
+// `deltaAlbedo` the known reflectance of its delta lobe at a given cos(theta_o), if any;
+// `lambertian` says the albedo is exactly the tint at every angle.
+struct Case {
+    std::string name;
+    MaterialPtr material;
+    Color tint;
+    float width;
+    float (*deltaAlbedo)(float cosO) = nullptr;
+    bool lambertian = false;
+};
+
+float smoothCoatAlbedo(float cosO) { return fresnelDielectric(cosO, kIor); }
+
+std::vector<Case> nonDeltaCases() {
+    const Color colour(0.8f, 0.3f, 0.05f);
+    return {
+        {"DiffuseWhite", makeDiffuse(kWhite), kWhite, 1.0f, nullptr, true},
+        {"DiffuseColour", makeDiffuse(colour), colour, 1.0f, nullptr, true},
+        {"DiffuseDark", makeDiffuse(Color(0.1f, 0.9f, 0.0f)), Color(0.1f, 0.9f, 0.0f), 1.0f, nullptr, true},
+        {"Conductor01", makeConductor(kWhite, 0.1f), kWhite, 0.01f},
+        {"Conductor03", makeConductor(kWhite, 0.3f), kWhite, 0.09f},
+        {"Conductor07", makeConductor(kWhite, 0.7f), kWhite, 0.49f},
+        {"Conductor03Gold", makeConductor(Color(1.0f, 0.78f, 0.34f), 0.3f), Color(1.0f, 0.78f, 0.34f), 0.09f},
+        {"Plastic0", makePlastic(kWhite, kIor, 0.0f), kWhite, 1.0f, smoothCoatAlbedo},
+        {"Plastic005", makePlastic(kWhite, kIor, 0.05f), kWhite, 0.0025f},
+        {"Plastic03", makePlastic(kWhite, kIor, 0.3f), kWhite, 0.09f},
+        {"Plastic0Colour", makePlastic(colour, kIor, 0.0f), colour, 1.0f, smoothCoatAlbedo},
+        {"Plastic03Colour", makePlastic(colour, kIor, 0.3f), colour, 0.09f},
+    };
+}
+
+// gtest prints parameters in failure messages and test lists; the name says it all.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class BsdfAgreement : public testing::TestWithParam<Case> {};
+
+// Tests 1, 2 and 4: the mean sample weight equals the quadrature of eval |cos| (plus the
+// delta lobe's known albedo), and both equal rho for Lambertian materials; pdf()
+// integrates to the share of draws that yield a non-delta direction (so <= 1, and 1 for
+// Lambertian); white materials never gain energy.
+TEST_P(BsdfAgreement, SamplingMatchesQuadratureOfEval) {
+    const Case& tc = GetParam();
+    for (float cosO : kCosines) {
+        SCOPED_TRACE("cos(theta_o) = " + std::to_string(cosO));
+        Vec3 wo = direction(cosO);
+        auto mc = estimateBySampling(*tc.material, wo, tc.tint, TransportMode::Radiance, uint64_t(cosO * 1000));
+        Channels quad = integrateHemisphere(wo, tc.width, [&](Vec3 wi) {
+            return tc.material->eval(wo, wi, tc.tint, TransportMode::Radiance) * wi.z;
+        });
+        float pdfIntegral = float(integrateHemisphere(wo, tc.width, [&](Vec3 wi) {
+            return Color(tc.material->pdf(wo, wi, tc.tint));
+        })[0]);
+        float delta = tc.deltaAlbedo ? tc.deltaAlbedo(cosO) : 0.0f;
+        for (int c = 0; c < 3; ++c) {
+            double expected = quad[c] + delta;
+            EXPECT_NEAR(mc.mean[c], expected, tolerance(expected))
+                << "channel " << c << ", MC standard error " << mc.stdError[c];
+            if (tc.tint == kWhite) {
+                EXPECT_LE(mc.mean[c], 1.0 + tolerance(1.0)) << "energy gain, channel " << c;
+            }
+            if (tc.lambertian) {
+                EXPECT_NEAR(mc.mean[c], tc.tint[c], 1e-6);  // every weight is exactly rho
+                EXPECT_NEAR(quad[c], tc.tint[c], 1e-3);
+            }
+        }
+        EXPECT_LE(pdfIntegral, 1.0f + 0.005f);
+        EXPECT_NEAR(pdfIntegral, mc.nonDeltaFraction, 0.005);
+        if (tc.lambertian) {
+            EXPECT_NEAR(pdfIntegral, 1.0f, 1e-3f);
+        }
+        std::printf("  %-16s cos %.2f  MC %.4f %.4f %.4f (se %.4f)  quad+delta %.4f %.4f %.4f"
+                    "  int pdf %.4f  non-delta share %.4f\n",
+                    tc.name.c_str(), cosO, mc.mean[0], mc.mean[1], mc.mean[2], mc.stdError[0], quad[0] + delta,
+                    quad[1] + delta, quad[2] + delta, pdfIntegral, mc.nonDeltaFraction);
+    }
+}
+
+// Test 3: reciprocity f(wo, wi) == f(wi, wo), and no reflection into the lower hemisphere.
+TEST_P(BsdfAgreement, EvalIsReciprocal) {
+    const Case& tc = GetParam();
+    Rng rng(7, 0, 0, StreamPurpose::Test);
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Color fab = tc.material->eval(a, b, tc.tint, TransportMode::Radiance);
+        Color fba = tc.material->eval(b, a, tc.tint, TransportMode::Radiance);
+        if (a.z <= 0 || b.z <= 0) {
+            ASSERT_TRUE(isBlack(fab) && isBlack(fba)) << "a.z " << a.z << " b.z " << b.z;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
+    }
+}
+
+// Test 5: a non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf.
+TEST_P(BsdfAgreement, SampleAgreesWithPdfAndEval) {
+    const Case& tc = GetParam();
+    Rng rng(11, 0, 0, StreamPurpose::Test);
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO, 2.1f);
+        for (int i = 0; i < 20000; ++i) {
+            float uLobe = rng.uniform();
+            auto s = tc.material->sample(wo, uLobe, {rng.uniform(), rng.uniform()}, tc.tint, TransportMode::Radiance);
+            if (!s) continue;
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+            ASSERT_GT(s->lobeProbability, 0.0f);
+            ASSERT_LE(s->lobeProbability, 1.0f);
+            if (s->delta) {
+                ASSERT_FLOAT_EQ(s->pdf, s->lobeProbability);  // only the smooth coat is delta here
+                continue;
+            }
+            float p = tc.material->pdf(wo, s->wi, tc.tint);
+            ASSERT_GT(s->pdf, 0.0f);
+            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
+            Color expected = tc.material->eval(wo, s->wi, tc.tint, TransportMode::Radiance) * (s->wi.z / p);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Materials, BsdfAgreement, testing::ValuesIn(nonDeltaCases()),
+                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// Test 2: analytic albedos of the mirror and the smooth limit of the conductor.
+TEST(Bsdf, MirrorReflectsWithItsReflectance) {
+    Color r(0.9f, 0.5f, 0.2f);
+    auto m = makeMirror(r);
+    EXPECT_TRUE(m->isDeltaOnly());
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO);
+        auto s = m->sample(wo, 0.5f, {0.5f, 0.5f}, r, TransportMode::Radiance);
+        ASSERT_TRUE(s);
+        EXPECT_TRUE(s->delta);
+        EXPECT_EQ(s->weight, r);
+        EXPECT_EQ(s->wi, Vec3(-wo.x, -wo.y, wo.z));
+        EXPECT_TRUE(isBlack(m->eval(wo, s->wi, r, TransportMode::Radiance)));
+        EXPECT_EQ(m->pdf(wo, s->wi, r), 0.0f);
+    }
+}
+
+TEST(Bsdf, ConductorSmoothLimitIsSchlick) {
+    Color f0(1.0f, 0.78f, 0.34f);
+    auto smooth = makeConductor(f0, 0.0f);
+    auto nearlySmooth = makeConductor(f0, 0.02f);  // alpha 4e-4: still the microfacet path
+    EXPECT_EQ(smooth->lobes(), unsigned(kDeltaLobe));
+    EXPECT_EQ(nearlySmooth->lobes(), unsigned(kGlossyLobe));
+    for (float cosO : kCosines) {
+        SCOPED_TRACE("cos(theta_o) = " + std::to_string(cosO));
+        Vec3 wo = direction(cosO);
+        Color schlick = fresnelSchlick(f0, cosO);
+        auto s = smooth->sample(wo, 0.5f, {0.3f, 0.6f}, f0, TransportMode::Radiance);
+        ASSERT_TRUE(s && s->delta);
+        EXPECT_EQ(s->weight, schlick);
+        auto mc = estimateBySampling(*nearlySmooth, wo, f0, TransportMode::Radiance, 3);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mc.mean[c], schlick[c], tolerance(schlick[c]));
+        std::printf("  Conductor r=0.02 cos %.2f  MC %.4f %.4f %.4f  Schlick %.4f %.4f %.4f\n", cosO, mc.mean[0],
+                    mc.mean[1], mc.mean[2], schlick.x, schlick.y, schlick.z);
+    }
+}
+
+// Fresnel against closed forms: normal incidence ((n-1)/(n+1))^2, Brewster's angle (the
+// p-polarised part vanishes), Stokes symmetry across the boundary and the TIR cut-off.
+TEST(Bsdf, DielectricFresnelMatchesClosedForms) {
+    float n = kIor;
+    EXPECT_NEAR(fresnelDielectric(1.0f, n), (n - 1) * (n - 1) / ((n + 1) * (n + 1)), 1e-6f);
+    float cosBrewster = 1.0f / std::sqrt(1.0f + n * n);
+    float rs = (n * n - 1) / (n * n + 1);
+    EXPECT_NEAR(fresnelDielectric(cosBrewster, n), 0.5f * rs * rs, 1e-5f);
+    float cosI = 0.5f, sinT = std::sqrt(1 - cosI * cosI) / n;
+    EXPECT_NEAR(fresnelDielectric(cosI, n), fresnelDielectric(-std::sqrt(1 - sinT * sinT), n), 1e-5f);
+    float cosCritical = std::sqrt(1 - 1 / (n * n));
+    EXPECT_EQ(fresnelDielectric(-(cosCritical - 1e-3f), n), 1.0f);
+    EXPECT_LT(fresnelDielectric(-(cosCritical + 1e-3f), n), 1.0f);
+}
+
+// Tests 1, 2 and 4 for glass from both sides: Importance weights are exactly 1 (R + T = 1),
+// reflection is chosen with probability F, Radiance scales refraction by (n_o / n_i)^2,
+// and refracted directions obey Snell's law.
+TEST(Bsdf, DielectricSplitsByFresnel) {
+    auto m = makeDielectric(kIor);
+    EXPECT_TRUE(m->isDeltaOnly());
+    for (float side : {1.0f, -1.0f}) {
+        for (float cosO : kCosines) {
+            SCOPED_TRACE("cos(theta_o) = " + std::to_string(side * cosO));
+            Vec3 wo = direction(side * cosO);
+            float F = fresnelDielectric(wo.z, kIor);
+            float nO = side > 0 ? 1.0f : kIor, nI = side > 0 ? kIor : 1.0f;
+            Rng rng(5, 0, 0, StreamPurpose::Test);
+            int reflected = 0;
+            double radianceSum = 0;
+            for (int i = 0; i < kSamples; ++i) {
+                float uLobe = rng.uniform();
+                auto imp = m->sample(wo, uLobe, {0.5f, 0.5f}, kWhite, TransportMode::Importance);
+                auto rad = m->sample(wo, uLobe, {0.5f, 0.5f}, kWhite, TransportMode::Radiance);
+                ASSERT_TRUE(imp && rad && imp->delta);
+                ASSERT_EQ(imp->weight, kWhite);
+                bool isReflection = imp->wi.z * wo.z > 0;
+                reflected += isReflection;
+                radianceSum += rad->weight.x;
+                if (isReflection) continue;
+                float sinO = std::sqrt(1 - wo.z * wo.z), sinI = std::sqrt(1 - imp->wi.z * imp->wi.z);
+                ASSERT_NEAR(nO * sinO, nI * sinI, 1e-5f);
+                ASSERT_LT(dot(Vec3(wo.x, wo.y, 0), Vec3(imp->wi.x, imp->wi.y, 0)), 0.0f);
+                ASSERT_NEAR(imp->pdf, 1 - F, 1e-6f);
+            }
+            double share = double(reflected) / kSamples, stdErr = std::sqrt(F * (1 - F) / kSamples);
+            EXPECT_NEAR(share, F, std::max(4 * stdErr, 1e-6));
+            double expectedRadiance = F + (1 - F) * (nO * nO) / (nI * nI);
+            EXPECT_NEAR(radianceSum / kSamples, expectedRadiance, tolerance(expectedRadiance));
+            std::printf("  Dielectric cos %+.2f  F %.4f  reflected share %.4f (se %.4f)  radiance mean %.4f vs %.4f\n",
+                        wo.z, F, share, stdErr, radianceSum / kSamples, expectedRadiance);
+        }
+    }
+}
+
+// Robustness: any direction (grazing, below the surface, along the normal) and any
+// random numbers (including 0) give finite, non-negative values and unit directions;
+// reflection-only materials sample nothing for wo below the surface.
+TEST(Bsdf, FiniteForAllInputs) {
+    MaterialPtr glass = makeDielectric(kIor);  // the only material that transmits
+    std::vector<MaterialPtr> all = {makeDiffuse(kWhite), makeMirror(kWhite), glass, makeConductor(kWhite, 0),
+                                    makeConductor(kWhite, 0.01f), makeConductor(kWhite, 0.7f),
+                                    makePlastic(kWhite, kIor, 0), makePlastic(kWhite, kIor, 0.01f),
+                                    makePlastic(kWhite, kIor, 0.5f)};
+    Rng rng(13, 0, 0, StreamPurpose::Test);
+    auto draw = [&] { return rng.uniform() < 0.05f ? 0.0f : rng.uniform(); };
+    for (const MaterialPtr& m : all) {
+        for (int i = 0; i < 20000; ++i) {
+            float cosO = i % 7 == 0 ? 1e-4f * (rng.uniform() - 0.5f) : 2 * rng.uniform() - 1;
+            Vec3 wo = i % 11 == 0 ? Vec3(0, 0, 1) : direction(cosO, 2 * kPi * rng.uniform());
+            Vec3 wi = sampleUniformSphere({rng.uniform(), rng.uniform()});
+            Color f = m->eval(wo, wi, kWhite, TransportMode::Radiance);
+            float p = m->pdf(wo, wi, kWhite);
+            ASSERT_TRUE(isFinite(f) && minComponent(f) >= 0 && std::isfinite(p) && p >= 0) << "wo.z " << wo.z;
+            auto s = m->sample(wo, draw(), {draw(), draw()}, kWhite, TransportMode::Radiance);
+            if (wo.z <= 0 && m != glass) {
+                ASSERT_FALSE(s) << "sample below a reflector";
+            }
+            if (!s) continue;
+            ASSERT_TRUE(isFinite(s->weight) && minComponent(s->weight) >= 0) << "wo.z " << wo.z;
+            ASSERT_TRUE(std::isfinite(s->pdf) && s->pdf > 0) << "wo.z " << wo.z;
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace photon
