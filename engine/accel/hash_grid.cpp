@@ -36,12 +36,13 @@ HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r) const {
 
 void HashGrid::setup(size_t count, Vec3 lo, Vec3 hi, double radiusSum, size_t withRadius) {
     float meanRadius = withRadius ? static_cast<float>(radiusSum / static_cast<double>(withRadius)) : 1.0f;
-    float cellSize = std::max(2.0f * meanRadius, 1e-6f);
+    float cellSize = std::max(3.0f * meanRadius, 1e-6f);
     invCellSize_ = 1.0f / cellSize;
     origin_ = lo;
     for (int a = 0; a < 3; ++a)
         resolution_[a] = std::clamp(static_cast<int>((hi[a] - lo[a]) * invCellSize_) + 1, 1, 1 << 30);
-    uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(count, 1024)));
+    // Four buckets per sphere keep unrelated cells from sharing a bucket most of the time.
+    uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(4 * count, 1024)));
     mask_ = buckets - 1;
     offsets_.assign(buckets + 1, 0);
 }

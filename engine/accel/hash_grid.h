@@ -1,6 +1,6 @@
 // A spatial hash grid over spheres (visible points and their gather radii), rebuilt each
 // pass. Each sphere is entered in every cell its bounding box overlaps, so a photon looks
-// in one cell only (Hachisuka & Jensen 2009, sec. 4.2; cell size twice the mean radius).
+// in one cell only (Hachisuka & Jensen 2009, sec. 4.2; cell size three times the mean radius, which measured fastest overall: fewer entries to build than 2x, few more candidates per photon).
 #include <cstdint>
 #include <vector>
 #include "../math/vec.h"
@@ -17,13 +17,20 @@ public:
     void build(size_t count, CenterFn center, RadiusFn radius);
 
     // Calls visit(index) for each sphere entered in the cell that holds p (a superset of
-    // the spheres containing p: callers test the distance).
-    template <class Visit>
-    void forEachCandidate(Vec3 p, Visit&& visit) const {
+    // the spheres containing p: callers test the distance), and prefetch(index) a few
+    // entries ahead so the caller's data for them is on its way to the cache.
+    template <class Visit, class Prefetch>
+    void forEachCandidate(Vec3 p, Visit&& visit, Prefetch&& prefetch_) const {
         int ix, iy, iz;
         if (!cellOf(p, ix, iy, iz)) return;
         uint32_t h = hash(ix, iy, iz);
-        for (uint32_t k = offsets_[h]; k < offsets_[h + 1]; ++k) visit(entries_[k]);
+        uint32_t begin = offsets_[h], end = offsets_[h + 1];
+        // Candidates are scattered through the caller's arrays; ask for them early.
+        for (uint32_t k = begin; k < end && k < begin + 4; ++k) prefetch_(entries_[k]);
+        for (uint32_t k = begin; k < end; ++k) {
+            if (k + 4 < end) prefetch_(entries_[k + 4]);
+            visit(entries_[k]);
+        }
     }
 
     size_t entryCount() const { return entries_.size(); }

@@ -24,6 +24,8 @@ struct PassStats {
     int64_t photons = 0;         // photons emitted in the pass
     int64_t photonSegments = 0;  // photon rays cast that hit something
     int64_t cameraRays = 0;
+    int64_t gridEntries = 0;     // visible-point entries in the hash grid (SPPM)
+    int64_t gatherCandidates = 0, gatherHits = 0;  // visible points tested and accepted by photons
     double cameraMs = 0, gridMs = 0, photonMs = 0, updateMs = 0;
     double meanRadius = 0;       // mean gather radius over pixels that have one, scene units
 };

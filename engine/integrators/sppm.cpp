@@ -16,14 +16,13 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
       height_(scene_->camera().height()) {
     size_t n = static_cast<size_t>(width_) * height_;
     pixels_.resize(n);
+    discs_.resize(n);
     visible_.resize(n);
     passDirect_.resize(n);
-    passFlux_.resize(3 * n);
-    photonCount_.resize(n);
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
-    return sizeof(PixelState) + sizeof(VisiblePoint) + sizeof(Color) + 3 * sizeof(uint64_t) + sizeof(uint32_t);
+    return sizeof(PixelState) + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
@@ -36,6 +35,7 @@ bool SppmIntegrator::renderPass(const CancelToken& cancel) {
     t0 = std::chrono::steady_clock::now();
     buildGrid();
     stats_.gridMs = millisecondsSince(t0);
+    stats_.gridEntries = static_cast<int64_t>(grid_.entryCount());
 
     t0 = std::chrono::steady_clock::now();
     photonPass(cancel);
@@ -50,8 +50,7 @@ bool SppmIntegrator::renderPass(const CancelToken& cancel) {
 
 void SppmIntegrator::buildGrid() {
     grid_.build(
-        visible_.size(), [&](size_t i) { return visible_[i].p; },
-        [&](size_t i) { return std::sqrt(visible_[i].r2); });
+        discs_.size(), [&](size_t i) { return discs_[i].p; }, [&](size_t i) { return std::sqrt(discs_[i].r2); });
 }
 
 // Hachisuka & Jensen 2009, eq. 7-10: N' = N + alpha M, R'^2 = R^2 (N + alpha M)/(N + M),
@@ -62,14 +61,14 @@ void SppmIntegrator::updateStatistics() {
     std::lock_guard<std::mutex> lock(stateMutex_);
     tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
         PixelState& px = pixels_[i];
-        const VisiblePoint& vp = visible_[i];
         px.directSum += passDirect_[i];
-        if (px.r2 == 0) px.r2 = vp.r2;  // first pass with a visible point sets the start radius
-        uint32_t m = photonCount_[i];
+        if (px.r2 == 0) px.r2 = discs_[i].r2;  // first pass with a visible point sets the start radius
+        const VisiblePoint& vp = visible_[i];
+        uint32_t m = vp.photonCount;
         if (m == 0 || px.r2 == 0) return;
-        Color phi{static_cast<float>(static_cast<double>(passFlux_[3 * i]) * fluxUnit),
-                  static_cast<float>(static_cast<double>(passFlux_[3 * i + 1]) * fluxUnit),
-                  static_cast<float>(static_cast<double>(passFlux_[3 * i + 2]) * fluxUnit)};
+        Color phi{static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
+                  static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
+                  static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit)};
         float nNew = px.n + settings_.alpha * static_cast<float>(m);
         float shrink = nNew / (px.n + static_cast<float>(m));
         px.tau = (px.tau + phi) * shrink;

@@ -33,18 +33,26 @@ public:
     };
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     // Photons gathered by each pixel in the last pass (M in the paper), for tests.
-    uint32_t lastPhotonCount(int x, int y) const { return photonCount_[static_cast<size_t>(y) * width_ + x]; }
+    uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
 
 private:
-    // The first non-specular vertex of a pixel's camera path in this pass.
-    struct VisiblePoint {
+    // The first non-specular vertex of a pixel's camera path in this pass. Its position
+    // and radius live apart (GatherDisc) because photons test many of those for every
+    // one they add to: a compact array keeps that test in cache.
+    struct GatherDisc {
         Vec3 p;
+        float r2 = 0;  // squared gather radius for this pass (0: no visible point)
+    };
+    // Everything a photon needs once it is inside the disc, and what it adds to, in one
+    // cache line: one memory access per accepted photon.
+    struct alignas(64) VisiblePoint {
         OctahedralVector n;        // shading normal
         OctahedralVector woLocal;  // outgoing direction in the frame of n
-        Color beta;        // camera path throughput up to here
-        Color tint;        // material colour at the hit
-        float r2 = 0;      // gather radius for this pass (0: no visible point)
+        Color beta;                // camera path throughput up to here
+        Color tint;                // material colour at the hit
         uint32_t material = 0;
+        uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
+        uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };
 
     // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
@@ -57,8 +65,11 @@ private:
     float autoRadius(float pathLength) const;
     void buildGrid();
     void photonPass(const CancelToken& cancel);
-    void tracePhoton(int64_t index, int64_t& segments);
-    void deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux);
+    struct PhotonCounters {
+        int64_t segments = 0, candidates = 0, accepted = 0;
+    };
+    void tracePhoton(int64_t index, PhotonCounters& counters);
+    void deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux, PhotonCounters& counters);
     void updateStatistics();
 
     std::shared_ptr<const Scene> scene_;
@@ -68,10 +79,9 @@ private:
     PassStats stats_;
 
     std::vector<PixelState> pixels_;
+    std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
     std::vector<Color> passDirect_;      // direct light found by this pass's camera paths
-    std::vector<uint64_t> passFlux_;     // fixed-point flux sums, 3 per pixel, atomically added
-    std::vector<uint32_t> photonCount_;  // M per pixel, atomically added
     HashGrid grid_;
     mutable std::mutex stateMutex_;      // guards pixels_ and passes_ between update and snapshot
 };

@@ -33,8 +33,8 @@ float SppmIntegrator::autoRadius(float pathLength) const {
 void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
-    VisiblePoint& vp = visible_[index];
-    vp = VisiblePoint{};
+    discs_[index] = GatherDisc{};
+    visible_[index] = VisiblePoint{};
     Color direct(0.0f), beta(1.0f);
     float px = static_cast<float>(index % width_) + rng.uniform();
     float py = static_cast<float>(index / width_) + rng.uniform();
@@ -81,8 +81,9 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
                 r2 = r * r;
             }
-            vp = VisiblePoint{sp.hit.p, n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint, r2,
-                              scene.materialIndex(hit)};
+            discs_[index] = GatherDisc{sp.hit.p, r2};
+            visible_[index] = VisiblePoint{n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint,
+                                           scene.materialIndex(hit)};
             break;
         }
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);

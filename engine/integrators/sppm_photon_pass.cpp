@@ -22,25 +22,31 @@ inline float kernelWeight(KernelKind kind, float d2OverR2) {
 }  // namespace
 
 void SppmIntegrator::photonPass(const CancelToken& cancel) {
-    std::fill(passFlux_.begin(), passFlux_.end(), 0);
-    std::fill(photonCount_.begin(), photonCount_.end(), 0);
     const int64_t total = settings_.photonsPerPass;
     const int64_t chunks = (total + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
-    stats_.photonSegments = tbb::parallel_reduce(
-        tbb::blocked_range<int64_t>(0, chunks, 1), int64_t(0),
-        [&](const tbb::blocked_range<int64_t>& r, int64_t segments) {
+    PhotonCounters counters = tbb::parallel_reduce(
+        tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
+        [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
             for (int64_t c = r.begin(); c < r.end(); ++c) {
-                if (cancel.cancelled()) return segments;
+                if (cancel.cancelled()) return acc;
                 int64_t end = std::min(total, (c + 1) * kPhotonsPerChunk);
-                for (int64_t i = c * kPhotonsPerChunk; i < end; ++i) tracePhoton(i, segments);
+                for (int64_t i = c * kPhotonsPerChunk; i < end; ++i) tracePhoton(i, acc);
             }
-            return segments;
+            return acc;
         },
-        std::plus<int64_t>());
+        [](PhotonCounters a, const PhotonCounters& b) {
+            a.segments += b.segments;
+            a.candidates += b.candidates;
+            a.accepted += b.accepted;
+            return a;
+        });
     stats_.photons = total;
+    stats_.photonSegments = counters.segments;
+    stats_.gatherCandidates = counters.candidates;
+    stats_.gatherHits = counters.accepted;
 }
 
-void SppmIntegrator::tracePhoton(int64_t index, int64_t& segments) {
+void SppmIntegrator::tracePhoton(int64_t index, PhotonCounters& counters) {
     const Scene& scene = *scene_;
     Rng rng(settings_.seed, static_cast<uint64_t>(passes_), static_cast<uint64_t>(index), StreamPurpose::Photon);
     LightSampler::Pick pick = scene.lights().pick(rng.uniform());
@@ -55,10 +61,10 @@ void SppmIntegrator::tracePhoton(int64_t index, int64_t& segments) {
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
         if (!scene.intersect(ray, hit)) break;
-        ++segments;
+        ++counters.segments;
         Vec3 wi = -ray.d;  // toward where the photon came from
         ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) deposit(hit.p, sp.hit.ns, wi, beta);
+        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) deposit(hit.p, sp.hit.ns, wi, beta, counters);
         if (depth + 1 == settings_.maxDepth) break;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
@@ -79,13 +85,15 @@ void SppmIntegrator::tracePhoton(int64_t index, int64_t& segments) {
     }
 }
 
-void SppmIntegrator::deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux) {
+void SppmIntegrator::deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux, PhotonCounters& counters) {
     const Scene& scene = *scene_;
     const KernelKind kernel = settings_.kernel;
     grid_.forEachCandidate(p, [&](uint32_t i) {
-        const VisiblePoint& vp = visible_[i];
-        float d2 = lengthSquared(vp.p - p);
-        if (d2 > vp.r2) return;
+        const GatherDisc& disc = discs_[i];
+        ++counters.candidates;
+        float d2 = lengthSquared(disc.p - p);
+        if (d2 > disc.r2) return;
+        VisiblePoint& vp = visible_[i];
         Vec3 vn = vp.n.decode();
         // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
         // do not belong to this point's disc.
@@ -94,15 +102,16 @@ void SppmIntegrator::deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux) {
         Color f = scene.materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(wi), vp.tint,
                                                      TransportMode::Radiance);
         if (isBlack(f)) return;
-        Color c = vp.beta * f * flux * kernelWeight(kernel, d2 / vp.r2);
+        ++counters.accepted;
+        Color c = vp.beta * f * flux * kernelWeight(kernel, d2 / disc.r2);
         for (int k = 0; k < 3; ++k) {
             double v = static_cast<double>(c[k]) * kFluxScale;
             if (!(v >= 1.0)) continue;  // also drops NaN
             auto units = static_cast<uint64_t>(std::min(v, 0x1p62)); 
-            std::atomic_ref<uint64_t>(passFlux_[3 * i + k]).fetch_add(units, std::memory_order_relaxed);
+            std::atomic_ref<uint64_t>(vp.flux[k]).fetch_add(units, std::memory_order_relaxed);
         }
-        std::atomic_ref<uint32_t>(photonCount_[i]).fetch_add(1, std::memory_order_relaxed);
-    });
+        std::atomic_ref<uint32_t>(vp.photonCount).fetch_add(1, std::memory_order_relaxed);
+    }, [&](uint32_t i) { __builtin_prefetch(&discs_[i]); });
 }
 
 }  // namespace photon

@@ -1,0 +1,143 @@
+// photon-bench: SPPM throughput on a scene against raw Embree throughput in the same
+// process, per-pass timings, memory per pixel and peak RSS, printed as JSON.
+//   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <tbb/global_control.h>
+#include <unistd.h>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include "embree_throughput.h"
+#include "render.h"
+
+namespace {
+
+using nlohmann::json;
+
+struct Options {
+    std::string scene = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-glass.json";
+    int passes = 8;
+    int64_t photons = 0;  // 0: the scene's own setting
+    int threads = 0;      // 0: all cores
+    bool rssCheck = true;
+};
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        auto next = [&] {
+            if (i + 1 >= argc) throw std::invalid_argument(a + ": missing value");
+            return std::string(argv[++i]);
+        };
+        if (a == "--scene") o.scene = next();
+        else if (a == "--passes") o.passes = std::stoi(next());
+        else if (a == "--photons-per-pass") o.photons = std::stoll(next());
+        else if (a == "--threads") o.threads = std::stoi(next());
+        else if (a == "--no-rss-check") o.rssCheck = false;
+        else throw std::invalid_argument("unknown option " + a);
+    }
+    return o;
+}
+
+long peakRssKiB() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss;
+}
+
+std::shared_ptr<const photon::Scene> loadScene(const Options& o, int64_t photons) {
+    photon::SceneDescription d = photon::loadSceneFile(o.scene);
+    d.render.integrator = photon::IntegratorKind::Sppm;
+    d.render.passes = o.passes;
+    if (photons > 0) d.render.photonsPerPass = photons;
+    return photon::Scene::build(std::move(d));
+}
+
+json renderStats(const Options& o, int64_t photons) {
+    photon::Renderer renderer(loadScene(o, photons));
+    photon::CancelToken cancel;
+    double cameraMs = 0, gridMs = 0, photonMs = 0;
+    int64_t segments = 0, emitted = 0, candidates = 0, accepted = 0;
+    for (int p = 0; p < o.passes; ++p) {
+        renderer.renderPass(cancel);
+        const photon::PassStats& s = renderer.integrator().lastPassStats();
+        if (p == 0) continue;  // the first pass warms caches and sets radii
+        cameraMs += s.cameraMs;
+        gridMs += s.gridMs;
+        photonMs += s.photonMs;
+        segments += s.photonSegments;
+        emitted += s.photons;
+        candidates += s.gatherCandidates;
+        accepted += s.gatherHits;
+    }
+    double timed = std::max(1, o.passes - 1);
+    const photon::Integrator& integrator = renderer.integrator();
+    return {{"photons_per_pass", renderer.scene().settings().photonsPerPass},
+            {"passes_timed", o.passes - 1},
+            {"photons_per_second", emitted / (photonMs / 1000.0)},
+            {"photon_segments_per_second", segments / (photonMs / 1000.0)},
+            {"segments_per_photon", static_cast<double>(segments) / static_cast<double>(std::max<int64_t>(emitted, 1))},
+            {"gather_candidates_per_segment", static_cast<double>(candidates) / static_cast<double>(std::max<int64_t>(segments, 1))},
+            {"gather_accepted_per_segment", static_cast<double>(accepted) / static_cast<double>(std::max<int64_t>(segments, 1))},
+            {"camera_pass_ms", cameraMs / timed},
+            {"hash_build_ms", gridMs / timed},
+            {"photon_pass_ms", photonMs / timed},
+            {"bytes_per_pixel_sppm_state", integrator.bytesPerPixel()},
+            {"grid_entries_per_pixel", static_cast<double>(integrator.lastPassStats().gridEntries) /
+                                           (renderer.scene().camera().width() * renderer.scene().camera().height())},
+            {"mean_radius", renderer.progress().meanRadius}};
+}
+
+// Peak RSS of a child process that renders two passes with `photons` per pass.
+long childPeakRssKiB(const Options& o, int64_t photons) {
+    pid_t pid = fork();
+    if (pid == 0) {
+        Options c = o;
+        c.passes = 2;
+        photon::Renderer renderer(loadScene(c, photons));
+        photon::CancelToken cancel;
+        renderer.run(cancel);
+        _exit(0);
+    }
+    int status = 0;
+    rusage u{};
+    wait4(pid, &status, 0, &u);
+    return u.ru_maxrss;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        Options o = parse(argc, argv);
+        std::optional<tbb::global_control> limit;
+        if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+        json out;
+        out["scene"] = o.scene;
+        out["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+        if (o.rssCheck) {
+            // Children first, so they do not inherit this process's memory.
+            int64_t base = loadScene(o, o.photons)->settings().photonsPerPass;
+            long small = childPeakRssKiB(o, base), large = childPeakRssKiB(o, 10 * base);
+            out["peak_rss_kib"] = {{"photons_x1", small}, {"photons_x10", large},
+                                   {"ratio", static_cast<double>(large) / static_cast<double>(small)}};
+        }
+        json sppm = renderStats(o, o.photons);
+        auto scene = loadScene(o, o.photons);
+        photon::bench::RayThroughput raw = photon::bench::measureEmbreeThroughput(*scene, 4000000);
+        out["sppm"] = sppm;
+        out["embree_random_rays"] = {{"rays_per_second", raw.raysPerSecond()},
+                                     {"hit_fraction", static_cast<double>(raw.hits) / static_cast<double>(raw.rays)}};
+        out["segments_to_embree_ratio"] = sppm["photon_segments_per_second"].get<double>() / raw.raysPerSecond();
+        out["process_peak_rss_kib"] = peakRssKiB();
+        std::cout << out.dump(2) << std::endl;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "photon-bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
