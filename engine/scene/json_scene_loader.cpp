@@ -1,0 +1,98 @@
+// Entry points of the JSON scene format (docs/scene-format.md): the document as a whole,
+// the files it names, and the checks that need more than one section.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include "json_scene_parts.h"
+#include "scene_loader.h"
+#include "scene_paths.h"
+
+namespace photon {
+
+namespace fs = std::filesystem;
+
+namespace scene_json {
+
+fs::path resolveFile(const JsonValue& value, const LoadContext& ctx) {
+    const std::string& relative = value.string();
+    if (auto why = checkRelativePath(relative)) value.fail(*why);
+    fs::path full = ctx.baseDir / relative;
+    std::error_code ec;
+    if (!fs::exists(full, ec)) value.fail("file not found: " + relative);
+    // The lexical checks above cannot see a symlink that leads out of the folder.
+    if (!isInsideFolder(full, ctx.baseDir)) value.fail("must be a relative path inside the scene folder");
+    if (!fs::is_regular_file(full, ec)) value.fail("not a regular file: " + relative);
+    return full;
+}
+
+void failWithLibraryError(const JsonValue& value, const std::exception& e, const LoadContext& ctx) {
+    std::string message = e.what();
+    // Libraries quote the full path; a scene (perhaps from a web upload) should only see
+    // the names it wrote itself, not where the server keeps it.
+    for (const fs::path& dir : {ctx.baseDir, fs::absolute(ctx.baseDir.empty() ? "." : ctx.baseDir)}) {
+        std::string prefix = (dir / "").string();
+        if (prefix.size() <= 1) continue;
+        for (size_t at; (at = message.find(prefix)) != std::string::npos;) message.erase(at, prefix.size());
+    }
+    value.fail(message.empty() ? "cannot read file" : message);
+}
+
+namespace {
+
+bool emits(const LightDescription& l) {
+    switch (l.kind) {
+        case LightDescription::Kind::Point:
+        case LightDescription::Kind::Spot: return !isBlack(l.intensity);
+        case LightDescription::Kind::Directional: return !isBlack(l.irradiance);
+        case LightDescription::Kind::Environment: return !isBlack(l.radiance);
+    }
+    return false;
+}
+
+// Without any light the render is black by construction: almost certainly a mistake,
+// and photon tracing would have no power to distribute.
+void checkHasLight(const SceneDescription& scene) {
+    for (const LightDescription& l : scene.lights)
+        if (emits(l)) return;
+    for (const ShapeDescription& s : scene.shapes)
+        if (!isBlack(s.emission)) return;
+    throw SceneError("lights", "scene has no light (add a light or an emissive shape)");
+}
+
+}  // namespace
+
+}  // namespace scene_json
+
+SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir) {
+    using namespace scene_json;
+    Json doc = parseJsonDocument(text);
+    if (!doc.is_object()) throw SceneError("", "the scene must be a JSON object");
+    JsonObject top(doc, "");
+    LoadContext ctx;
+    ctx.baseDir = baseDir;
+    SceneDescription scene;
+    scene.camera = readCamera(top.required("camera"));
+    // Materials before shapes: shapes refer to them by name.
+    readMaterials(top.required("materials"), ctx, scene);
+    readShapes(top.required("shapes"), ctx, scene);
+    if (auto lights = top.optional("lights")) readLights(*lights, scene);
+    if (auto render = top.optional("render")) scene.render = readRender(*render);
+    top.finish();
+    checkHasLight(scene);
+    return scene;
+}
+
+SceneDescription loadSceneFile(const fs::path& file) {
+    std::string prefix = "cannot read scene file \"" + file.string() + "\": ";
+    std::error_code ec;
+    if (fs::is_directory(file, ec)) throw SceneError("", prefix + "it is a directory");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw SceneError("", prefix + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError("", prefix + std::strerror(errno));
+    return loadSceneJson(text.str(), file.parent_path());
+}
+
+}  // namespace photon

@@ -1,0 +1,47 @@
+// Internal to the JSON scene loader: one reader per top-level section, each in its own
+// file (json_settings.cpp, json_materials.cpp, json_shapes.cpp, json_transform.cpp,
+// json_lights.cpp), sharing the load context defined here.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include "../math/transform.h"
+#include "../texture/texture.h"
+#include "json_reader.h"
+#include "scene_description.h"
+
+namespace photon::scene_json {
+
+struct LoadContext {
+    std::filesystem::path baseDir;  // files resolve against it; empty: the working directory
+    // Textures by resolved path, so materials sharing an image share one copy.
+    std::map<std::filesystem::path, std::shared_ptr<const Texture>> textures;
+    // Material name -> index, for shapes that refer to materials by name.
+    std::unordered_map<std::string, uint32_t> materialIndex;
+};
+
+// A file named by the string `value`: relative, without "..", inside the scene folder
+// (symlinks resolved) and existing. Errors are SceneErrors at value's path.
+std::filesystem::path resolveFile(const JsonValue& value, const LoadContext& ctx);
+// Rethrows a library failure (Assimp, OpenImageIO) as a SceneError at value's path, with
+// the scene folder removed from the message so only the scene's own names show.
+[[noreturn]] void failWithLibraryError(const JsonValue& value, const std::exception& e, const LoadContext& ctx);
+
+CameraDescription readCamera(const JsonValue& value);
+RenderSettings readRender(const JsonValue& value);
+void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+void readShapes(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+void readLights(const JsonValue& value, SceneDescription& scene);
+
+// {"scale", "rotate", "translate"} or {"matrix"}; the result is invertible.
+Transform readTransform(const JsonValue& value);
+// The factor s if `t` is a rotation (possibly with reflection) times a uniform scale s.
+std::optional<float> uniformScale(const Transform& t);
+// Transforms positions and normals; swaps the winding if `t` mirrors, so the geometric
+// normal keeps agreeing with the shading normals (and with the side a quad emits to).
+void applyTransform(const Transform& t, TriangleMesh& mesh);
+
+}  // namespace photon::scene_json

@@ -1,0 +1,79 @@
+// The "camera" and "render" sections.
+#include <cmath>
+#include "json_scene_parts.h"
+
+namespace photon::scene_json {
+
+namespace {
+
+constexpr int kMaxResolution = 16384;
+
+void readResolution(const JsonValue& value, CameraDescription& camera) {
+    if (!value.json().is_array() || value.json().size() != 2) value.fail("must be an array of 2 integers");
+    auto e = value.elements();
+    camera.width = int(e[0].integer(1, kMaxResolution));
+    camera.height = int(e[1].integer(1, kMaxResolution));
+}
+
+// The basis the camera builds from position, look_at and up must exist.
+void checkOrientation(JsonObject& obj, const CameraDescription& c) {
+    Vec3 view = c.lookAt - c.position;
+    if (lengthSquared(view) == 0) throw SceneError(childPath(obj.path(), "look_at"), "must differ from position");
+    float sinAngle = length(cross(normalize(view), normalize(c.up)));
+    if (!(sinAngle > 1e-4f)) throw SceneError(childPath(obj.path(), "up"), "must not be parallel to the view direction");
+}
+
+}  // namespace
+
+CameraDescription readCamera(const JsonValue& value) {
+    JsonObject obj = value.object();
+    CameraDescription c;
+    obj.choice("type", 0, {"perspective"}, "type");
+    c.position = obj.required("position").vec3();
+    c.lookAt = obj.required("look_at").vec3();
+    if (auto up = obj.optional("up")) c.up = up->direction();
+    checkOrientation(obj, c);
+    c.fovDegrees = obj.required("fov").number(Range::open(0, 180));
+    if (auto res = obj.optional("resolution")) readResolution(*res, c);
+    c.apertureRadius = obj.number("aperture_radius", 0, Range::nonNegative());
+    // By default the point looked at is in focus.
+    c.focusDistance = obj.number("focus_distance", length(c.lookAt - c.position), Range::positive());
+    obj.finish();
+    return c;
+}
+
+namespace {
+
+// "auto" (stored as 0: derive from each pixel's footprint) or a radius in scene units.
+float readInitialRadius(const JsonValue& value) {
+    const char* expected = "must be \"auto\" or a number > 0";
+    if (value.json().is_string()) {
+        if (value.string() != "auto") value.fail(expected);
+        return 0;
+    }
+    if (!value.json().is_number()) value.fail(expected);
+    return value.number(Range::positive());
+}
+
+}  // namespace
+
+RenderSettings readRender(const JsonValue& value) {
+    JsonObject obj = value.object();
+    RenderSettings r;
+    // The choice lists are in the order of the enums they convert to.
+    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path"}));
+    r.passes = int(obj.integer("passes", r.passes, 1, 1'000'000));
+    r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
+    r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
+    if (auto radius = obj.optional("initial_radius")) r.initialRadius = readInitialRadius(*radius);
+    r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));
+    r.maxDepth = int(obj.integer("max_depth", r.maxDepth, 1, 1000));
+    if (auto seed = obj.optional("seed")) r.seed = seed->unsignedInteger();
+    r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight"}));
+    r.exposure = obj.number("exposure", 0);
+    r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
+    obj.finish();
+    return r;
+}
+
+}  // namespace photon::scene_json

@@ -1,0 +1,20 @@
+// Reads triangle meshes from files (OBJ, PLY, glTF 2.0 and whatever else Assimp knows).
+#pragma once
+#include <cstddef>
+#include <filesystem>
+#include "scene_description.h"
+
+namespace photon {
+
+// Larger meshes are refused: they would not fit the memory budget of a render job.
+constexpr size_t kMaxMeshTriangles = 10'000'000;
+
+// Loads every triangle in `file`, with the file's node transforms baked in; points and
+// lines are dropped. Normals are kept only if every part of the file has them (otherwise
+// the renderer uses geometric normals everywhere); uvs are channel 0, (0, 0) where a part
+// has none. If `confineTo` is not empty, the file and anything it references (an OBJ's
+// .mtl, a glTF's .bin) must lie inside that folder. Throws std::runtime_error with the
+// reason (Assimp's error text for unreadable files).
+TriangleMesh loadMeshFile(const std::filesystem::path& file, const std::filesystem::path& confineTo = {});
+
+}  // namespace photon

@@ -1,0 +1,136 @@
+#include "texture.h"
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <OpenImageIO/imageio.h>
+
+namespace photon {
+
+namespace {
+
+// Limits that keep a scene upload from exhausting memory: 64M texels is 768 MB as floats.
+constexpr int kMaxTextureSide = 16384;
+constexpr int64_t kMaxTexels = int64_t(64) << 20;
+
+// The exact sRGB EOTF (IEC 61966-2-1), not the 2.2 power approximation.
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// 8-bit images are by far the most common: one table lookup per channel.
+const std::array<float, 256>& srgb8Table() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) t[i] = srgbToLinear(i / 255.0f);
+        return t;
+    }();
+    return table;
+}
+
+void checkSize(const OIIO::ImageSpec& spec) {
+    if (spec.width <= 0 || spec.height <= 0) throw std::runtime_error("image has no pixels");
+    if (spec.depth > 1) throw std::runtime_error("volume images are not supported as textures");
+    if (spec.deep) throw std::runtime_error("deep images are not supported as textures");
+    if (spec.width > kMaxTextureSide || spec.height > kMaxTextureSide ||
+        int64_t(spec.width) * spec.height > kMaxTexels)
+        throw std::runtime_error("image is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                 ", larger than the limit of " + std::to_string(kMaxTextureSide) + " pixels a side and " +
+                                 std::to_string(kMaxTexels >> 20) + "M pixels in total");
+}
+
+// Reads the first `channels` channels (1: grey, 3: RGB; alpha is never read) as `T`.
+template <typename T>
+std::vector<T> readPixels(OIIO::ImageInput& in, int channels, OIIO::TypeDesc type) {
+    const OIIO::ImageSpec& spec = in.spec();
+    std::vector<T> data(size_t(spec.width) * spec.height * channels);
+    if (!in.read_image(0, 0, 0, channels, type, data.data())) {
+        std::string err = in.geterror();
+        throw std::runtime_error(err.empty() ? "cannot read image" : err);
+    }
+    return data;
+}
+
+// Grey images are replicated into all three channels.
+template <typename T, typename Decode>
+std::vector<Color> toColors(const std::vector<T>& data, int channels, Decode decode) {
+    std::vector<Color> texels(data.size() / channels);
+    for (size_t i = 0; i < texels.size(); ++i) {
+        const T* p = &data[i * channels];
+        texels[i] = channels == 1 ? Color(decode(p[0])) : Color(decode(p[0]), decode(p[1]), decode(p[2]));
+    }
+    return texels;
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture> Texture::load(const std::filesystem::path& file) {
+    // Keep colour as stored: by default OIIO premultiplies unassociated alpha (PNG), which
+    // would darken texels wherever alpha < 1, and the renderer ignores alpha.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(file.string(), &config);
+    if (!in) {
+        std::string err = OIIO::geterror();
+        throw std::runtime_error(err.empty() ? "cannot open image" : err);
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    checkSize(spec);
+    const int channels = spec.nchannels >= 3 ? 3 : 1;
+
+    std::vector<Color> texels;
+    if (spec.format == OIIO::TypeDesc::UINT8) {
+        const auto& table = srgb8Table();
+        texels = toColors(readPixels<uint8_t>(*in, channels, OIIO::TypeDesc::UINT8), channels,
+                          [&](uint8_t v) { return table[v]; });
+    } else if (spec.format.is_floating_point()) {
+        // Float images (EXR, HDR) hold linear values; NaN, inf and negative texels would
+        // break the energy bookkeeping of photon tracing, so they become 0.
+        texels = toColors(readPixels<float>(*in, channels, OIIO::TypeDesc::FLOAT), channels,
+                          [](float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; });
+    } else {
+        // Other integer formats (16-bit PNG, TIFF) arrive normalised to [0, 1], still sRGB.
+        texels = toColors(readPixels<float>(*in, channels, OIIO::TypeDesc::FLOAT), channels,
+                          [](float v) { return srgbToLinear(std::clamp(v, 0.0f, 1.0f)); });
+    }
+    return std::make_shared<const Texture>(spec.width, spec.height, std::move(texels));
+}
+
+Texture::Texture(int width, int height, std::vector<Color> texels)
+    : width_(width), height_(height), texels_(std::move(texels)) {
+    if (width <= 0 || height <= 0 || texels_.size() != size_t(width) * size_t(height))
+        throw std::invalid_argument("Texture: texel count does not match width x height");
+    // Bilinear filtering with wrap-around preserves the mean, so this is exactly the
+    // average of lookup() over the unit square. Summed in double: 64M floats would lose
+    // precision in a float accumulator.
+    double sum[3] = {0, 0, 0};
+    for (const Color& c : texels_)
+        for (int k = 0; k < 3; ++k) sum[k] += c[k];
+    double n = double(texels_.size());
+    average_ = Color(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
+}
+
+Color Texture::texel(int x, int y) const { return texels_[size_t(y) * width_ + x]; }
+
+Color Texture::lookup(Vec2 uv) const {
+    // Reduce to [0, 1) first: this is the wrap, and it keeps the float→int casts below
+    // defined for any uv. Non-finite uvs read as 0.
+    auto wrap01 = [](float t) {
+        if (!std::isfinite(t)) return 0.0f;
+        float f = t - std::floor(t);
+        return f < 1.0f ? f : 0.0f;  // t = -1e-9 gives f = 1 after rounding
+    };
+    // Texel centres sit at (i + 0.5) / size. Image row 0 is the top, v = 0 the bottom.
+    float fx = wrap01(uv.x) * width_ - 0.5f;
+    float fy = (1.0f - wrap01(uv.y)) * height_ - 0.5f;
+    float x0f = std::floor(fx), y0f = std::floor(fy);
+    float tx = fx - x0f, ty = fy - y0f;
+    auto wrapIndex = [](int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); };
+    int x0 = wrapIndex(int(x0f), width_), x1 = wrapIndex(int(x0f) + 1, width_);
+    int y0 = wrapIndex(int(y0f), height_), y1 = wrapIndex(int(y0f) + 1, height_);
+    Color top = texel(x0, y0) * (1 - tx) + texel(x1, y0) * tx;
+    Color bottom = texel(x0, y1) * (1 - tx) + texel(x1, y1) * tx;
+    return top * (1 - ty) + bottom * ty;
+}
+
+}  // namespace photon
