@@ -1,6 +1,8 @@
 // A spatial hash grid over spheres (visible points and their gather radii), rebuilt each
 // pass. Each sphere is entered in every cell its bounding box overlaps, so a photon looks
-// in one cell only (Hachisuka & Jensen 2009, sec. 4.2; cell size three times the mean radius, which measured fastest overall: fewer entries to build than 2x, few more candidates per photon).
+// in one cell only (Hachisuka & Jensen 2009, sec. 4.2). The cell size is three times the
+// mean radius, which measured fastest overall: fewer entries to build than with twice the
+// radius, for a few more candidates per photon.
 #include <cstdint>
 #include <vector>
 #include "../math/vec.h"
@@ -16,22 +18,21 @@ public:
     template <class CenterFn, class RadiusFn>
     void build(size_t count, CenterFn center, RadiusFn radius);
 
-    // Calls visit(index) for each sphere entered in the cell that holds p (a superset of
-    // the spheres containing p: callers test the distance), and prefetch(index) a few
-    // entries ahead so the caller's data for them is on its way to the cache.
-    template <class Visit, class Prefetch>
-    void forEachCandidate(Vec3 p, Visit&& visit, Prefetch&& prefetch_) const {
+    // Photons look up their bucket in three steps so that callers can work on many at once
+    // and prefetch each step's memory before the next needs it.
+    static constexpr uint32_t kNoBucket = ~0u;
+    // The bucket of the cell holding p, or kNoBucket outside the grid.
+    uint32_t bucketOf(Vec3 p) const {
         int ix, iy, iz;
-        if (!cellOf(p, ix, iy, iz)) return;
-        uint32_t h = hash(ix, iy, iz);
-        uint32_t begin = offsets_[h], end = offsets_[h + 1];
-        // Candidates are scattered through the caller's arrays; ask for them early.
-        for (uint32_t k = begin; k < end && k < begin + 4; ++k) prefetch_(entries_[k]);
-        for (uint32_t k = begin; k < end; ++k) {
-            if (k + 4 < end) prefetch_(entries_[k + 4]);
-            visit(entries_[k]);
-        }
+        return cellOf(p, ix, iy, iz) ? hash(ix, iy, iz) : kNoBucket;
     }
+    void prefetchBucket(uint32_t h) const { __builtin_prefetch(&offsets_[h]); }
+    // Indices of the spheres entered in bucket h: a superset of those containing any point
+    // of its cells (callers test the distance).
+    struct Span {
+        const uint32_t *begin = nullptr, *end = nullptr;
+    };
+    Span bucket(uint32_t h) const { return {entries_.data() + offsets_[h], entries_.data() + offsets_[h + 1]}; }
 
     size_t entryCount() const { return entries_.size(); }
     size_t bytes() const { return (offsets_.capacity() + entries_.capacity()) * sizeof(uint32_t); }

@@ -68,8 +68,17 @@ private:
     struct PhotonCounters {
         int64_t segments = 0, candidates = 0, accepted = 0;
     };
-    void tracePhoton(int64_t index, PhotonCounters& counters);
-    void deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux, PhotonCounters& counters);
+    // A photon's arrival on a non-delta surface, waiting to be added to visible points.
+    struct PhotonHit {
+        Vec3 p, n, wi;  // position, shading normal, direction back toward the photon's origin
+        Color flux;
+    };
+    // Photon hits are gathered in batches so that the memory each needs (grid bucket,
+    // entries, discs, visible points) can be fetched for the whole batch at once.
+    class GatherBatch;
+    void tracePhoton(int64_t index, GatherBatch& batch, PhotonCounters& counters);
+    void gather(GatherBatch& batch, PhotonCounters& counters);
+    void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
     void updateStatistics();
 
     std::shared_ptr<const Scene> scene_;

@@ -5,20 +5,13 @@
 #include <tbb/parallel_reduce.h>
 #include <atomic>
 #include "shading.h"
-#include "sppm.h"
+#include "sppm_gather_batch.h"
 
 namespace photon {
 
 namespace {
 constexpr int64_t kPhotonsPerChunk = 4096;
 
-// Normalised kernels k(d^2/r^2) whose integral over the unit disc, divided by pi, is 1,
-// so the estimate keeps the form tau / (pi r^2 N). Biweight: (3/pi)(1 - x^2)^2 scaled by pi.
-inline float kernelWeight(KernelKind kind, float d2OverR2) {
-    if (kind == KernelKind::Uniform) return 1.0f;
-    float t = 1.0f - d2OverR2;
-    return 3.0f * t * t;
-}
 }  // namespace
 
 void SppmIntegrator::photonPass(const CancelToken& cancel) {
@@ -27,11 +20,13 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
     PhotonCounters counters = tbb::parallel_reduce(
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
+            GatherBatch batch;
             for (int64_t c = r.begin(); c < r.end(); ++c) {
                 if (cancel.cancelled()) return acc;
                 int64_t end = std::min(total, (c + 1) * kPhotonsPerChunk);
-                for (int64_t i = c * kPhotonsPerChunk; i < end; ++i) tracePhoton(i, acc);
+                for (int64_t i = c * kPhotonsPerChunk; i < end; ++i) tracePhoton(i, batch, acc);
             }
+            gather(batch, acc);
             return acc;
         },
         [](PhotonCounters a, const PhotonCounters& b) {
@@ -46,7 +41,7 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
     stats_.gatherHits = counters.accepted;
 }
 
-void SppmIntegrator::tracePhoton(int64_t index, PhotonCounters& counters) {
+void SppmIntegrator::tracePhoton(int64_t index, GatherBatch& batch, PhotonCounters& counters) {
     const Scene& scene = *scene_;
     Rng rng(settings_.seed, static_cast<uint64_t>(passes_), static_cast<uint64_t>(index), StreamPurpose::Photon);
     LightSampler::Pick pick = scene.lights().pick(rng.uniform());
@@ -64,7 +59,10 @@ void SppmIntegrator::tracePhoton(int64_t index, PhotonCounters& counters) {
         ++counters.segments;
         Vec3 wi = -ray.d;  // toward where the photon came from
         ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) deposit(hit.p, sp.hit.ns, wi, beta, counters);
+        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) {
+            batch.push({sp.hit.p, sp.hit.ns, wi, beta});
+            if (batch.full()) gather(batch, counters);
+        }
         if (depth + 1 == settings_.maxDepth) break;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
@@ -83,35 +81,6 @@ void SppmIntegrator::tracePhoton(int64_t index, PhotonCounters& counters) {
         beta = next;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-}
-
-void SppmIntegrator::deposit(Vec3 p, Vec3 n, Vec3 wi, Color flux, PhotonCounters& counters) {
-    const Scene& scene = *scene_;
-    const KernelKind kernel = settings_.kernel;
-    grid_.forEachCandidate(p, [&](uint32_t i) {
-        const GatherDisc& disc = discs_[i];
-        ++counters.candidates;
-        float d2 = lengthSquared(disc.p - p);
-        if (d2 > disc.r2) return;
-        VisiblePoint& vp = visible_[i];
-        Vec3 vn = vp.n.decode();
-        // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
-        // do not belong to this point's disc.
-        if (dot(vn, n) < 0.5f) return;
-        Frame frame = Frame::fromNormal(vn);
-        Color f = scene.materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(wi), vp.tint,
-                                                     TransportMode::Radiance);
-        if (isBlack(f)) return;
-        ++counters.accepted;
-        Color c = vp.beta * f * flux * kernelWeight(kernel, d2 / disc.r2);
-        for (int k = 0; k < 3; ++k) {
-            double v = static_cast<double>(c[k]) * kFluxScale;
-            if (!(v >= 1.0)) continue;  // also drops NaN
-            auto units = static_cast<uint64_t>(std::min(v, 0x1p62)); 
-            std::atomic_ref<uint64_t>(vp.flux[k]).fetch_add(units, std::memory_order_relaxed);
-        }
-        std::atomic_ref<uint32_t>(vp.photonCount).fetch_add(1, std::memory_order_relaxed);
-    }, [&](uint32_t i) { __builtin_prefetch(&discs_[i]); });
 }
 
 }  // namespace photon

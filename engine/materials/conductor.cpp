@@ -35,16 +35,9 @@ public:
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
         Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
-        if (wi.z <= 0) return std::nullopt;
-        // Evaluate through eval()/pdf() so that weight == eval |cos| / pdf exactly; the
-        // weight reduces analytically to F G2 / G1(wo) (Heitz 2018).
-        float p = pdf(wo, wi, tint);
-        if (!(p > 0)) return std::nullopt;
-        BSDFSample s;
-        s.wi = wi;
-        s.pdf = p;
-        s.weight = eval(wo, wi, tint, mode) * (wi.z / p);
-        return s;
+        // Weighted through eval()/pdf(); the weight reduces analytically to F G2 / G1(wo)
+        // (Heitz 2018).
+        return weightedSample(wo, wi, tint, mode);
     }
 
 private:

@@ -48,6 +48,18 @@ public:
 
 protected:
     explicit Material(ColorParam tint) : tint_(std::move(tint)) {}
+    // A reflected non-delta sample weighted through this material's own eval() and pdf(),
+    // so that weight == eval |cos| / pdf holds exactly whatever lobe proposed wi.
+    std::optional<BSDFSample> weightedSample(Vec3 wo, Vec3 wi, Color tint, TransportMode mode) const {
+        if (wi.z <= 0) return std::nullopt;
+        float p = pdf(wo, wi, tint);
+        if (!(p > 0)) return std::nullopt;
+        BSDFSample s;
+        s.wi = wi;
+        s.pdf = p;
+        s.weight = eval(wo, wi, tint, mode) * (wi.z / p);
+        return s;
+    }
     ColorParam tint_;
 };
 

@@ -47,17 +47,12 @@ public:
         bool pickSpecular = uLobe < pSpec;
         if (smooth() && pickSpecular) return sampleCoatMirror(wo, pSpec);
         Vec3 wi = pickSpecular ? reflect(wo, ggx_.sampleVisibleNormal(wo, u)) : sampleCosineHemisphere(u);
-        if (wi.z <= 0) return std::nullopt;
         // Both rough lobes could have produced wi, so the density is the full mixture
         // (one-sample MIS with the balance heuristic, Veach 1997 sec. 9.2.4).
-        float p = pdf(wo, wi, tint);
-        if (!(p > 0)) return std::nullopt;
-        BSDFSample s;
-        s.wi = wi;
-        s.pdf = p;
-        s.weight = eval(wo, wi, tint, mode) * (wi.z / p);
+        std::optional<BSDFSample> s = weightedSample(wo, wi, tint, mode);
+        if (!s) return std::nullopt;
         // Smooth coat: only the diffuse kind was picked here, with probability 1 - pSpec.
-        s.lobeProbability = smooth() ? 1.0f - pSpec : 1.0f;
+        s->lobeProbability = smooth() ? 1.0f - pSpec : 1.0f;
         return s;
     }
 

@@ -1,0 +1,86 @@
+// Adding a batch of photon hits to the visible points around them. The lookups form a
+// chain of dependent loads (grid bucket -> entries -> discs -> visible point), each likely
+// a cache miss; walking the whole batch one step at a time, with a prefetch for the next
+// step, keeps many misses in flight instead of one.
+#include <atomic>
+#include "sppm_gather_batch.h"
+
+namespace photon {
+
+namespace {
+
+// Normalised kernels k(d^2/r^2) whose integral over the unit disc, divided by pi, is 1,
+// so the estimate keeps the form tau / (pi r^2 N). Biweight: (3/pi)(1 - x^2)^2 scaled by pi.
+inline float kernelWeight(KernelKind kind, float d2OverR2) {
+    if (kind == KernelKind::Uniform) return 1.0f;
+    float t = 1.0f - d2OverR2;
+    return 3.0f * t * t;
+}
+
+struct Candidate {
+    uint32_t hit, point;
+    float d2OverR2;
+};
+
+// Per-thread scratch for the candidates inside their discs: no allocation per batch.
+std::vector<Candidate>& gatherScratch() {
+    thread_local std::vector<Candidate> scratch;
+    return scratch;
+}
+
+}  // namespace
+
+void SppmIntegrator::gather(GatherBatch& batch, PhotonCounters& counters) {
+    const size_t n = batch.size();
+    std::array<HashGrid::Span, GatherBatch::kCapacity> spans{};
+    std::array<uint32_t, GatherBatch::kCapacity> buckets;
+    for (size_t i = 0; i < n; ++i) {
+        buckets[i] = grid_.bucketOf(batch[i].p);
+        if (buckets[i] != HashGrid::kNoBucket) grid_.prefetchBucket(buckets[i]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (buckets[i] == HashGrid::kNoBucket) continue;
+        spans[i] = grid_.bucket(buckets[i]);
+        __builtin_prefetch(spans[i].begin);
+    }
+    for (size_t i = 0; i < n; ++i)
+        for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) __builtin_prefetch(&discs_[*e]);
+
+    // Distance tests; the survivors' visible points are fetched while the rest are tested.
+    std::vector<Candidate>& inside = gatherScratch();
+    inside.clear();
+    for (size_t i = 0; i < n; ++i)
+        for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) {
+            const GatherDisc& disc = discs_[*e];
+            ++counters.candidates;
+            float d2 = lengthSquared(disc.p - batch[i].p);
+            if (d2 > disc.r2) continue;
+            __builtin_prefetch(&visible_[*e]);
+            inside.push_back({static_cast<uint32_t>(i), *e, d2 / disc.r2});
+        }
+    for (const Candidate& c : inside) addPhoton(batch[c.hit], c.point, c.d2OverR2, counters);
+    batch.clear();
+}
+
+void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters) {
+    VisiblePoint& vp = visible_[point];
+    Vec3 vn = vp.n.decode();
+    // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
+    // do not belong to this point's disc.
+    if (dot(vn, hit.n) < 0.5f) return;
+    Frame frame = Frame::fromNormal(vn);
+    Color f = scene_->materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(hit.wi), vp.tint,
+                                                   TransportMode::Radiance);
+    if (isBlack(f)) return;
+    ++counters.accepted;
+    Color c = vp.beta * f * hit.flux * kernelWeight(settings_.kernel, d2OverR2);
+    for (int k = 0; k < 3; ++k) {
+        double v = static_cast<double>(c[k]) * kFluxScale;
+        if (!(v >= 1.0)) continue;  // also drops NaN
+        auto units = static_cast<uint64_t>(std::min(v, 0x1p62));
+        std::atomic_ref<uint64_t>(vp.flux[k]).fetch_add(units, std::memory_order_relaxed);
+    }
+    std::atomic_ref<uint32_t>(vp.photonCount).fetch_add(1, std::memory_order_relaxed);
+}
+
+}  // namespace photon
