@@ -49,8 +49,14 @@ protected:
 class MeshAreaLight final : public AreaLight {
 public:
     MeshAreaLight(const ShapeDescription& shape, std::vector<float> cdf, float area)
-        : AreaLight(shape.emission, area), mesh_(shape.mesh), cdf_(std::move(cdf)),
-          sign_(shape.flipNormals ? -1.0f : 1.0f) {}
+        : AreaLight(shape.emission, area), mesh_(shape.mesh), cdf_(std::move(cdf)) {
+        float sign = shape.flipNormals ? -1.0f : 1.0f;
+        for (size_t t = 0; t < mesh_.triangleCount(); ++t) {
+            Vec3 a = mesh_.positions[mesh_.indices[3 * t]], b = mesh_.positions[mesh_.indices[3 * t + 1]],
+                 c = mesh_.positions[mesh_.indices[3 * t + 2]];
+            normals_.push_back(normalize(cross(b - a, c - a)) * sign);
+        }
+    }
 
     static std::unique_ptr<Light> make(const ShapeDescription& shape) {
         std::vector<float> cdf;
@@ -81,12 +87,12 @@ private:
         Vec3 a = mesh_.positions[mesh_.indices[3 * t]], p1 = mesh_.positions[mesh_.indices[3 * t + 1]],
              p2 = mesh_.positions[mesh_.indices[3 * t + 2]];
         Vec3 p = a * b.x + p1 * b.y + p2 * (1.0f - b.x - b.y);
-        return {p, normalize(cross(p1 - a, p2 - a)) * sign_};
+        return {p, normals_[t]};
     }
 
     const TriangleMesh& mesh_;
     std::vector<float> cdf_;
-    float sign_;
+    std::vector<Vec3> normals_;  // per triangle, facing the emitting side
 };
 
 class SphereAreaLight final : public AreaLight {

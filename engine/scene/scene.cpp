@@ -159,7 +159,9 @@ void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const 
     Vec3 n = normalize(hit.p - shape.center);
     hit.p = shape.center + n * shape.radius;  // reproject: removes the error of o + t d
     hit.ng = hit.ns = n;
-    // Spherical (longitude, latitude) parameterisation, y up.
+    // Spherical (longitude, latitude) parameterisation, y up; the trigonometry is only
+    // worth doing for textured spheres.
+    if (!materials_[shape.material]->tint().textured()) return;
     float phi = std::atan2(n.z, n.x);
     hit.uv = {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }
