@@ -6,7 +6,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     LightSampler::Pick pick = scene.lights().pick(rng.uniform());
     Vec2 u{rng.uniform(), rng.uniform()};
     if (!pick.light) return Color(0.0f);
-    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, u);
+    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, sp.hit.ns, u);
     if (!ls) return Color(0.0f);
     Vec3 wiLocal = sp.frame.toLocal(ls->wi);
     Color f = sp.material->eval(sp.frame.toLocal(wo), wiLocal, sp.tint, TransportMode::Radiance);

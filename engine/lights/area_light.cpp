@@ -20,7 +20,7 @@ public:
     AreaLight(Color emission, float area) : emission_(emission), area_(area) {}
     Color power() const override { return emission_ * (kPi * area_); }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec2 u) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2 u) const override {
         SurfacePoint s = samplePoint(u);
         Vec3 toLight = s.p - p;
         float dist2 = lengthSquared(toLight);

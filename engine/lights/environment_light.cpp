@@ -16,9 +16,13 @@ public:
         return radiance_ * (4.0f * kPi * kPi * bounds_.radius * bounds_.radius);
     }
 
-    std::optional<LightSample> sampleIncident(Vec3, Vec2 u) const override {
-        return LightSample{sampleUniformSphere(u), std::numeric_limits<float>::infinity(),
-                           radiance_ / kUniformSpherePdf};
+    // Cosine-weighted directions about the surface normal: for a diffuse surface under a
+    // uniform sky the estimate is then exact (f cos / pdf = rho / pi * pi).
+    std::optional<LightSample> sampleIncident(Vec3, Vec3 n, Vec2 u) const override {
+        Vec3 local = sampleCosineHemisphere(u);
+        if (local.z <= 0) return std::nullopt;
+        return LightSample{Frame::fromNormal(n).toWorld(local), std::numeric_limits<float>::infinity(),
+                           radiance_ / cosineHemispherePdf(local.z)};
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {

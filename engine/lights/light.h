@@ -30,7 +30,9 @@ public:
     virtual ~Light() = default;
     // Total emitted power, W per channel.
     virtual Color power() const = 0;
-    virtual std::optional<LightSample> sampleIncident(Vec3 p, Vec2 u) const = 0;
+    // Light arriving at p on a surface with normal n (lights may use n to sample only
+    // directions above the surface).
+    virtual std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const = 0;
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
     // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
     virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }

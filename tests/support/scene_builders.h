@@ -10,9 +10,10 @@ ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emis
                         bool flipNormals = false);
 CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height);
 
-// A 40 x 40 diffuse plane at y = 0 of albedo rho under a point light of intensity I at
-// height h above the origin, seen from straight above at height 3 (fov 50).
-SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution);
+// A square diffuse plane at y = 0 (half-size `halfSize`) of albedo rho under a point
+// light of intensity I at height h above the origin, seen from straight above at height 3
+// (fov 50, so the view spans +-1.4 units).
+SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution, float halfSize = 20);
 
 // Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
 SceneDescription furnace(float rho, float emission, int resolution);

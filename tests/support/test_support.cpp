@@ -36,13 +36,13 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
     return c;
 }
 
-SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution) {
+SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution, float halfSize) {
     SceneDescription d;
     d.camera = camera({0, 3, 0}, {0, 0, 0}, {0, 0, -1}, 50, resolution, resolution);
     d.materials = {makeDiffuse(Color(rho))};
     d.materialNames = {"plane"};
-    // u x v = (40,0,0) x (0,0,-40) points up (+y).
-    d.shapes = {quad({-20, 0, 20}, {40, 0, 0}, {0, 0, -40}, 0)};
+    // u x v = (+x) x (-z) points up (+y).
+    d.shapes = {quad({-halfSize, 0, halfSize}, {2 * halfSize, 0, 0}, {0, 0, -2 * halfSize}, 0)};
     LightDescription light;
     light.kind = LightDescription::Kind::Point;
     light.position = {0, height, 0};
