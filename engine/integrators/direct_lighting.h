@@ -6,7 +6,8 @@
 
 namespace photon {
 
-// Reflected radiance toward wo (world space) from one light picked in proportion to power.
-Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng);
+// Reflected radiance toward wo (world space) from one light picked in proportion to power,
+// through the material's `lobes` only.
+Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes = kAllLobes);
 
 }  // namespace photon

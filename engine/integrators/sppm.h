@@ -10,6 +10,7 @@
 #include "../math/octahedral.h"
 #include "../math/rng.h"
 #include "../scene/scene.h"
+#include "shading.h"
 #include "integrator.h"
 
 namespace photon {
@@ -50,7 +51,8 @@ private:
         OctahedralVector woLocal;  // outgoing direction in the frame of n
         Color beta;                // camera path throughput up to here
         Color tint;                // material colour at the hit
-        uint32_t material = 0;
+        uint32_t material : 24 = 0;
+        uint32_t lobes : 8 = kAllLobes;  // the material's lobes photons are gathered through
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };
@@ -63,6 +65,7 @@ private:
     void cameraPass(const CancelToken& cancel);
     void tracePixel(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
+    void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     void buildGrid();
     void photonPass(const CancelToken& cancel);
     struct PhotonCounters {

@@ -52,38 +52,33 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         if (afterDelta) direct += beta * scene.emitted(hit, wo);
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
-        bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && depth == settings_.maxDepth - 1);
+        // The visible point goes on the first surface with a diffuse lobe (or any non-delta
+        // one at the last vertex). A material with other lobes beside the diffuse one
+        // (plastic's coat) stops on the diffuse lobe with probability pd and otherwise
+        // follows the others by sampling, so photons are never gathered through a sharp
+        // highlight, where they would show as fireflies.
+        const bool lastVertex = depth == settings_.maxDepth - 1;
+        const bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && lastVertex);
+        const unsigned others = m.lobes() & ~kDiffuseLobe;
+        const bool splits = m.hasDiffuse() && others && !lastVertex;
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
             direct += beta * sampleDirectLight(scene, sp, wo, rng);
+        else if (splits)  // photons bring direct light through the diffuse lobe only
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, others);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
         Vec3 woLocal = sp.frame.toLocal(wo);
         if (storesHere) {
-            // A material with a delta lobe beside its diffuse one (smooth plastic): follow
-            // the delta lobe with its probability, else stop here weighted by 1/(1 - p).
-            float weight = 1;
-            if (m.lobes() & kDeltaLobe) {
-                std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
+            float pd = splits ? m.diffuseShare(woLocal, sp.tint) : 1.0f;
+            if (uLobe >= pd) {
+                std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.tint, TransportMode::Radiance, others);
                 if (!s) break;
-                if (s->delta) {
-                    beta *= s->weight;
-                    ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
-                    afterDelta = true;
-                    continue;
-                }
-                weight = 1.0f / s->lobeProbability;
+                beta *= s->weight / (1.0f - pd);
+                afterDelta = s->delta;
+                ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+                continue;
             }
-            OctahedralVector n(sp.hit.ns);
-            Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
-            // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
-            float r2 = pixels_[index].r2;
-            if (r2 == 0) {
-                float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
-                r2 = r * r;
-            }
-            discs_[index] = GatherDisc{sp.hit.p, r2};
-            visible_[index] = VisiblePoint{n, OctahedralVector(frame.toLocal(wo)), beta * weight, sp.tint,
-                                           scene.materialIndex(hit)};
+            storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
             break;
         }
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
@@ -93,6 +88,21 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = direct;
+}
+
+void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
+                                       float pathLength) {
+    OctahedralVector n(sp.hit.ns);
+    Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
+    // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
+    float r2 = pixels_[index].r2;
+    if (r2 == 0) {
+        float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
+        r2 = r * r;
+    }
+    discs_[index] = GatherDisc{sp.hit.p, r2};
+    visible_[index] = VisiblePoint{n, OctahedralVector(frame.toLocal(wo)), beta, sp.tint,
+                                   scene_->materialIndex(sp.hit), lobes};
 }
 
 }  // namespace photon

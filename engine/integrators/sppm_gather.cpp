@@ -70,7 +70,7 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
     if (dot(vn, hit.n) < 0.5f) return;
     Frame frame = Frame::fromNormal(vn);
     Color f = scene_->materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(hit.wi), vp.tint,
-                                                   TransportMode::Radiance);
+                                                   TransportMode::Radiance, vp.lobes);
     if (isBlack(f)) return;
     ++counters.accepted;
     Color c = vp.beta * f * hit.flux * kernelWeight(settings_.kernel, d2OverR2);

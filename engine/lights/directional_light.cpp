@@ -22,7 +22,7 @@ public:
         Vec2 disk = sampleUniformDiskConcentric(uPosition);
         Vec3 origin = bounds_.center - frame_.n * bounds_.radius +
                       (frame_.s * disk.x + frame_.t * disk.y) * bounds_.radius;
-        return PhotonEmission{origin, frame_.n, power()};
+        return PhotonEmission{origin, frame_.n, power(), Vec3{}};
     }
 
 private:

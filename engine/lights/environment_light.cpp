@@ -30,7 +30,7 @@ public:
         Frame frame = Frame::fromNormal(towardLight);
         Vec2 disk = sampleUniformDiskConcentric(uPosition);
         Vec3 origin = bounds_.center + (towardLight + frame.s * disk.x + frame.t * disk.y) * bounds_.radius;
-        return PhotonEmission{origin, -towardLight, power()};
+        return PhotonEmission{origin, -towardLight, power(), Vec3{}};
     }
 
     Color radianceFromDirection(Vec3) const override { return radiance_; }

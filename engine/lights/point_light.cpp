@@ -20,7 +20,7 @@ public:
 
     std::optional<PhotonEmission> emitPhoton(Vec2, Vec2 uDirection) const override {
         // Uniform directions: flux = I / (1 / 4 pi).
-        return PhotonEmission{position_, sampleUniformSphere(uDirection), intensity_ * (4.0f * kPi)};
+        return PhotonEmission{position_, sampleUniformSphere(uDirection), intensity_ * (4.0f * kPi), Vec3{}};
     }
 
 private:

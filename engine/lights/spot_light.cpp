@@ -41,7 +41,7 @@ public:
         Vec3 local = sampleUniformCone(uDirection, cosTotal_);
         Color flux = intensity_ * (falloff(local.z) / uniformConePdf(cosTotal_));
         if (isBlack(flux)) return std::nullopt;
-        return PhotonEmission{position_, frame_.toWorld(local), flux};
+        return PhotonEmission{position_, frame_.toWorld(local), flux, Vec3{}};
     }
 
 private:

@@ -13,11 +13,12 @@ public:
     unsigned lobes() const override { return kDeltaLobe; }
     bool twoSided() const override { return false; }  // inside and outside differ
 
-    Color eval(Vec3, Vec3, Color, TransportMode) const override { return Color(0.0f); }
-    float pdf(Vec3, Vec3, Color) const override { return 0; }
+    Color eval(Vec3, Vec3, Color, TransportMode, unsigned) const override { return Color(0.0f); }
+    float pdf(Vec3, Vec3, Color, unsigned) const override { return 0; }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2, Color tint, TransportMode mode) const override {
-        if (wo.z == 0) return std::nullopt;
+    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2, Color tint, TransportMode mode,
+                                     unsigned lobes) const override {
+        if (!(lobes & kDeltaLobe) || wo.z == 0) return std::nullopt;
         // wo.z < 0 means wo is inside; fresnelDielectric inverts the ratio for us, and
         // returns 1 under total internal reflection, so refraction is never chosen then.
         float F = fresnelDielectric(wo.z, ior_);

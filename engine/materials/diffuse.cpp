@@ -11,19 +11,20 @@ public:
 
     unsigned lobes() const override { return kDiffuseLobe; }
 
-    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode) const override {
+    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
         // Reflection only, front side only: light from below the surface never reaches wo.
-        if (wo.z <= 0 || wi.z <= 0) return Color(0.0f);
+        if (!(lobes & kDiffuseLobe) || wo.z <= 0 || wi.z <= 0) return Color(0.0f);
         return tint * kInvPi;
     }
 
-    float pdf(Vec3 wo, Vec3 wi, Color) const override {
-        if (wo.z <= 0 || wi.z <= 0) return 0;
+    float pdf(Vec3 wo, Vec3 wi, Color, unsigned lobes) const override {
+        if (!(lobes & kDiffuseLobe) || wo.z <= 0 || wi.z <= 0) return 0;
         return cosineHemispherePdf(wi.z);
     }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, Color tint, TransportMode) const override {
-        if (wo.z <= 0) return std::nullopt;
+    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, Color tint, TransportMode,
+                                     unsigned lobes) const override {
+        if (!(lobes & kDiffuseLobe) || wo.z <= 0) return std::nullopt;
         // Cosine-weighted sampling matches f |cos| exactly, so the weight is the albedo:
         // (albedo / pi) cos / (cos / pi).
         Vec3 wi = sampleCosineHemisphere(u);

@@ -14,7 +14,7 @@ namespace photon {
 enum class TransportMode { Radiance, Importance };
 
 // Lobes a material has; integrators decide from these where a camera path stops.
-enum LobeFlags : unsigned { kDiffuseLobe = 1u, kGlossyLobe = 2u, kDeltaLobe = 4u };
+enum LobeFlags : unsigned { kDiffuseLobe = 1u, kGlossyLobe = 2u, kDeltaLobe = 4u, kAllLobes = 7u };
 
 struct BSDFSample {
     Vec3 wi;            // sampled incident direction (local frame)
@@ -30,12 +30,19 @@ class Material {
 public:
     virtual ~Material() = default;
     virtual unsigned lobes() const = 0;
+    // Every call can be restricted to some of the lobes (`lobes`, a LobeFlags mask): the
+    // material then behaves as if it had only those.
     // f(wo, wi) of the non-delta lobes; zero for pure delta materials.
-    virtual Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode mode) const = 0;
+    virtual Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode mode, unsigned lobes = kAllLobes) const = 0;
     // Solid-angle density with which sample() returns wi for the non-delta lobes.
-    virtual float pdf(Vec3 wo, Vec3 wi, Color tint) const = 0;
+    virtual float pdf(Vec3 wo, Vec3 wi, Color tint, unsigned lobes = kAllLobes) const = 0;
     // uLobe picks a lobe, u the direction within it.
-    virtual std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode) const = 0;
+    virtual std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode,
+                                             unsigned lobes = kAllLobes) const = 0;
+    // For a material with a diffuse lobe beside others: the probability with which a
+    // camera path should stop on the diffuse lobe alone rather than follow the others
+    // (roughly the diffuse lobe's share of the albedo at wo).
+    virtual float diffuseShare(Vec3 wo, Color tint) const { return 1.0f; }
 
     // The material's colour parameter (albedo or reflectance), constant or textured.
     // Evaluated once per hit and passed back as `tint`.
@@ -50,14 +57,14 @@ protected:
     explicit Material(ColorParam tint) : tint_(std::move(tint)) {}
     // A reflected non-delta sample weighted through this material's own eval() and pdf(),
     // so that weight == eval |cos| / pdf holds exactly whatever lobe proposed wi.
-    std::optional<BSDFSample> weightedSample(Vec3 wo, Vec3 wi, Color tint, TransportMode mode) const {
+    std::optional<BSDFSample> weightedSample(Vec3 wo, Vec3 wi, Color tint, TransportMode mode, unsigned lobes) const {
         if (wi.z <= 0) return std::nullopt;
-        float p = pdf(wo, wi, tint);
+        float p = pdf(wo, wi, tint, lobes);
         if (!(p > 0)) return std::nullopt;
         BSDFSample s;
         s.wi = wi;
         s.pdf = p;
-        s.weight = eval(wo, wi, tint, mode) * (wi.z / p);
+        s.weight = eval(wo, wi, tint, mode, lobes) * (wi.z / p);
         return s;
     }
     ColorParam tint_;

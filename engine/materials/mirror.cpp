@@ -11,10 +11,12 @@ public:
     unsigned lobes() const override { return kDeltaLobe; }
 
     // A Dirac lobe has no finite value or density for any given wi.
-    Color eval(Vec3, Vec3, Color, TransportMode) const override { return Color(0.0f); }
-    float pdf(Vec3, Vec3, Color) const override { return 0; }
+    Color eval(Vec3, Vec3, Color, TransportMode, unsigned) const override { return Color(0.0f); }
+    float pdf(Vec3, Vec3, Color, unsigned) const override { return 0; }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2, Color tint, TransportMode) const override {
+    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2, Color tint, TransportMode,
+                                     unsigned lobes) const override {
+        if (!(lobes & kDeltaLobe)) return std::nullopt;
         if (wo.z <= 0) return std::nullopt;
         // f = R delta(wi - mirror(wo)) / |cos| (pbrt-v4 sec. 9.3), so f |cos| / pdf = R.
         BSDFSample s;

@@ -23,38 +23,44 @@ public:
     // & Shirley 2000, "An Anisotropic Phong BRDF Model", here with the exact dielectric
     // Fresnel and no renormalisation). Re-reflections inside the coat are ignored, which
     // loses a little energy; tests/test_bsdf.cpp checks the albedo never exceeds one.
-    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode) const override {
+    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
         if (wo.z <= 0 || wi.z <= 0) return Color(0.0f);
-        Color f = diffuse(wo, wi, tint);
-        if (!smooth()) f += Color(specular(wo, wi));
+        Color f(0.0f);
+        if (lobes & kDiffuseLobe) f += diffuse(wo, wi, tint);
+        if (!smooth() && (lobes & kGlossyLobe)) f += Color(specular(wo, wi));
         return f;
     }
 
-    float pdf(Vec3 wo, Vec3 wi, Color tint) const override {
-        if (wo.z <= 0 || wi.z <= 0) return 0;
-        float pSpec = specularProbability(wo, tint);
-        float p = (1.0f - pSpec) * cosineHemispherePdf(wi.z);
-        if (!smooth()) {
+    float pdf(Vec3 wo, Vec3 wi, Color tint, unsigned lobes) const override {
+        lobes &= this->lobes();
+        if (wo.z <= 0 || wi.z <= 0 || !lobes) return 0;
+        float pSpec = specularProbability(wo, tint, lobes);
+        float p = (lobes & kDiffuseLobe) ? (1.0f - pSpec) * cosineHemispherePdf(wi.z) : 0.0f;
+        if (!smooth() && (lobes & kGlossyLobe)) {
             auto h = reflectionHalfVector(wo, wi);
             if (h) p += pSpec * ggx_.reflectionPdf(wo, *h);
         }
         return p;
     }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode) const override {
-        if (wo.z <= 0) return std::nullopt;
-        float pSpec = specularProbability(wo, tint);
+    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode,
+                                     unsigned lobes) const override {
+        lobes &= this->lobes();
+        if (wo.z <= 0 || !lobes) return std::nullopt;
+        float pSpec = specularProbability(wo, tint, lobes);
         bool pickSpecular = uLobe < pSpec;
         if (smooth() && pickSpecular) return sampleCoatMirror(wo, pSpec);
         Vec3 wi = pickSpecular ? reflect(wo, ggx_.sampleVisibleNormal(wo, u)) : sampleCosineHemisphere(u);
         // Both rough lobes could have produced wi, so the density is the full mixture
         // (one-sample MIS with the balance heuristic, Veach 1997 sec. 9.2.4).
-        std::optional<BSDFSample> s = weightedSample(wo, wi, tint, mode);
+        std::optional<BSDFSample> s = weightedSample(wo, wi, tint, mode, lobes);
         if (!s) return std::nullopt;
         // Smooth coat: only the diffuse kind was picked here, with probability 1 - pSpec.
         s->lobeProbability = smooth() ? 1.0f - pSpec : 1.0f;
         return s;
     }
+
+    float diffuseShare(Vec3 wo, Color tint) const override { return 1.0f - specularProbability(wo, tint, kAllLobes); }
 
 private:
     bool smooth() const { return ggx_.alpha < kSmoothAlpha; }
@@ -74,7 +80,10 @@ private:
     // coat, (1 - F(cos_o)) max(albedo) for the base (max, not luminance, so a saturated
     // colour channel is not starved). Clamped so neither lobe is ever left unsampled,
     // which keeps the mixture pdf positive wherever f is (no bias) and bounds the weights.
-    float specularProbability(Vec3 wo, Color albedo) const {
+    // With the coat or the base masked out, the other is always picked.
+    float specularProbability(Vec3 wo, Color albedo, unsigned lobes) const {
+        if (!(lobes & kDiffuseLobe)) return 1.0f;
+        if (!(lobes & (kGlossyLobe | kDeltaLobe))) return 0.0f;
         float F = fresnel(wo.z);
         float base = (1.0f - F) * std::max(0.0f, maxComponent(albedo));
         float sum = F + base;
