@@ -19,10 +19,7 @@ public:
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2) const override {
-        Vec2 disk = sampleUniformDiskConcentric(uPosition);
-        Vec3 origin = bounds_.center - frame_.n * bounds_.radius +
-                      (frame_.s * disk.x + frame_.t * disk.y) * bounds_.radius;
-        return PhotonEmission{origin, frame_.n, power(), Vec3{}};
+        return PhotonEmission{bounds_.pointOnDiscFacing(frame_, uPosition), frame_.n, power(), Vec3{}};
     }
 
 private:

@@ -26,11 +26,8 @@ public:
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
-        Vec3 towardLight = sampleUniformSphere(uDirection);
-        Frame frame = Frame::fromNormal(towardLight);
-        Vec2 disk = sampleUniformDiskConcentric(uPosition);
-        Vec3 origin = bounds_.center + (towardLight + frame.s * disk.x + frame.t * disk.y) * bounds_.radius;
-        return PhotonEmission{origin, -towardLight, power(), Vec3{}};
+        Frame travel = Frame::fromNormal(-sampleUniformSphere(uDirection));
+        return PhotonEmission{bounds_.pointOnDiscFacing(travel, uPosition), travel.n, power(), Vec3{}};
     }
 
     Color radianceFromDirection(Vec3) const override { return radiance_; }

@@ -3,6 +3,8 @@
 #pragma once
 #include <limits>
 #include <optional>
+#include "../math/frame.h"
+#include "../math/sampling.h"
 #include "../math/vec.h"
 
 namespace photon {
@@ -19,10 +21,17 @@ struct PhotonEmission {
     Vec3 normal;             // surface normal at the origin for area lights (the ray is offset along it), else 0
 };
 
-// Axis-aligned bounds of the scene, which infinite lights need to emit photons.
+// The scene's bounding sphere, which infinite lights need to emit photons.
 struct SceneSphere {
     Vec3 center;
     float radius = 1;
+
+    // Infinite lights send photons in direction d from a disc of the sphere's radius,
+    // facing d, on the far side of the scene (pbrt-v4 12.4): a uniform point on it.
+    Vec3 pointOnDiscFacing(const Frame& d, Vec2 u) const {
+        Vec2 disk = sampleUniformDiskConcentric(u);
+        return center + (-d.n + d.s * disk.x + d.t * disk.y) * radius;
+    }
 };
 
 class Light {
