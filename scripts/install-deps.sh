@@ -4,11 +4,14 @@
 set -euo pipefail
 packages=(cmake g++ pkg-config libembree-dev libtbb-dev libopenimageio-dev openimageio-tools
           nlohmann-json3-dev libassimp-dev libcpp-httplib-dev libsqlite3-dev libgtest-dev
-          python3 python3-jsonschema)
+          python3 python3-jsonschema chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Node.js and npm drive the browser test; any install that provides the commands will do.
+command -v node > /dev/null || missing+=(nodejs)
+command -v npm > /dev/null || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive

@@ -1,0 +1,49 @@
+#include "api/errors.h"
+#include <httplib.h>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace photon::api {
+
+int statusFor(server::ErrorKind kind) {
+    switch (kind) {
+        case server::ErrorKind::BadRequest: return 400;
+        case server::ErrorKind::NotFound: return 404;
+        case server::ErrorKind::Conflict: return 409;
+        case server::ErrorKind::PayloadTooLarge: return 413;
+        case server::ErrorKind::LimitExceeded: return 422;
+        case server::ErrorKind::Unavailable: return 503;
+    }
+    return 500;
+}
+
+void sendError(httplib::Response& res, int status, const std::string& message,
+               const std::optional<std::string>& path) {
+    nlohmann::json body{{"error", message}};
+    if (path) body["path"] = *path;
+    res.status = status;
+    // Replace: the message may not be valid UTF-8 (it can quote client input).
+    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+void sendException(httplib::Response& res, std::exception_ptr error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const server::ServiceError& e) {
+        sendError(res, statusFor(e.kind()), e.what(), e.scenePath());
+    } catch (const nlohmann::json::exception& e) {
+        sendError(res, 400, std::string("malformed JSON: ") + e.what());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "photon-server: internal error: %s\n", e.what());
+        sendError(res, 500, "internal server error");
+    } catch (...) {
+        std::fprintf(stderr, "photon-server: internal error of unknown type\n");
+        sendError(res, 500, "internal server error");
+    }
+}
+
+void throwBadRequest(const std::string& message) {
+    throw server::ServiceError(server::ErrorKind::BadRequest, message);
+}
+
+}  // namespace photon::api

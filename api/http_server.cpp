@@ -1,0 +1,89 @@
+#include "api/http_server.h"
+#include <cctype>
+#include <filesystem>
+#include "api/errors.h"
+
+namespace photon::api {
+
+namespace {
+
+// Long-lived event and image streams each hold a thread; the rest serve ordinary requests.
+constexpr size_t kHttpThreads = 64;
+constexpr int kMaxStreams = 48;
+
+const char* reasonFor(int status) {
+    switch (status) {
+        case 400: return "bad request";
+        case 401: return "missing or wrong bearer token";
+        case 404: return "no such route";
+        case 405: return "method not allowed";
+        case 413: return "request body too large";
+        case 414: return "request URI too long";
+        case 503: return "server busy";
+        default: return status >= 500 ? "internal server error" : "request failed";
+    }
+}
+
+}  // namespace
+
+bool constantTimeEquals(const std::string& given, const std::string& expected) {
+    if (expected.empty()) return false;
+    unsigned char diff = given.size() == expected.size() ? 0 : 1;
+    for (size_t i = 0; i < given.size(); ++i)
+        diff |= static_cast<unsigned char>(given[i] ^ expected[i % expected.size()]);
+    return diff == 0;
+}
+
+HttpServer::HttpServer(server::JobService& service, const HttpConfig& config)
+    : streams_(kMaxStreams), context_{service, streams_}, token_(config.token) {
+    configure(config);
+}
+
+bool HttpServer::authorized(const httplib::Request& req) const {
+    // The page's static files carry no secrets and a browser cannot attach the token to
+    // them; the page then asks for the token before it calls the API.
+    bool isApi = req.path.rfind("/api/", 0) == 0 || req.path == "/metrics";
+    if (token_.empty() || req.path == "/api/v1/health" || !isApi) return true;
+    const std::string header = req.get_header_value("Authorization");
+    const std::string scheme = "bearer ";
+    if (header.size() < scheme.size()) return false;
+    for (size_t i = 0; i < scheme.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(header[i])) != scheme[i]) return false;
+    return constantTimeEquals(header.substr(scheme.size()), token_);
+}
+
+void HttpServer::configure(const HttpConfig& config) {
+    server_.new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
+    server_.set_payload_max_length(config.maxBodyBytes);
+    server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+        if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
+        res.set_header("WWW-Authenticate", "Bearer");
+        sendError(res, 401, reasonFor(401));
+        return httplib::Server::HandlerResponse::Handled;
+    });
+    // Errors httplib produces itself (no route, 413, unparsable requests) get a JSON body
+    // too; responses that already have one are left alone.
+    httplib::Server::HandlerWithResponse onError = [](const httplib::Request&, httplib::Response& res) {
+        if (!res.body.empty() || res.content_provider_) return httplib::Server::HandlerResponse::Unhandled;
+        sendError(res, res.status, reasonFor(res.status));
+        return httplib::Server::HandlerResponse::Handled;
+    };
+    server_.set_error_handler(onError);
+    server_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
+        sendException(res, e);
+    });
+    server_.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+        context_.service.metrics().countRequest(routeLabel(req.method, req.path), res.status);
+    });
+    std::error_code ec;
+    if (!config.webRoot.empty() && std::filesystem::is_directory(config.webRoot, ec))
+        server_.set_mount_point("/", config.webRoot);
+    registerRoutes(server_, context_);
+}
+
+int HttpServer::bind(const std::string& host, int port) {
+    if (port == 0) return server_.bind_to_any_port(host);
+    return server_.bind_to_port(host, port) ? port : -1;
+}
+
+}  // namespace photon::api

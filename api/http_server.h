@@ -1,0 +1,44 @@
+// The HTTP front: an httplib::Server with the route table registered, bearer-token auth,
+// JSON errors for everything (unknown routes, oversized bodies, exceptions), request
+// metrics, and static files from the web root when it exists.
+#pragma once
+#include <httplib.h>
+#include <memory>
+#include <string>
+#include "api/routes.h"
+#include "api/stream_support.h"
+
+namespace photon::api {
+
+struct HttpConfig {
+    std::string token;    // empty: no authentication
+    std::string webRoot;  // served at "/" if the folder exists
+    size_t maxBodyBytes = 0;
+};
+
+class HttpServer {
+public:
+    HttpServer(server::JobService& service, const HttpConfig& config);
+
+    // Binds; port 0 picks a free port. Returns the bound port, or -1 on failure.
+    int bind(const std::string& host, int port);
+    // Serves until stop(); blocks.
+    bool listen() { return server_.listen_after_bind(); }
+    void stop() { server_.stop(); }
+    bool running() const { return server_.is_running(); }
+
+private:
+    void configure(const HttpConfig& config);
+    bool authorized(const httplib::Request& req) const;
+
+    StreamSlots streams_;
+    RouteContext context_;
+    std::string token_;
+    httplib::Server server_;
+};
+
+// Compares without an early exit, so response time says nothing about how much of a
+// guessed token was right.
+bool constantTimeEquals(const std::string& given, const std::string& expected);
+
+}  // namespace photon::api

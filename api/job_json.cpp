@@ -1,0 +1,43 @@
+#include "api/job_json.h"
+#include <httplib.h>
+
+namespace photon::api {
+
+namespace {
+
+nlohmann::json timestamp(const std::string& iso) { return iso.empty() ? nlohmann::json() : nlohmann::json(iso); }
+
+}  // namespace
+
+nlohmann::json toJson(const server::JobRecord& job) {
+    const server::JobSettings& s = job.settings;
+    const server::JobProgress& p = job.progress;
+    return {
+        {"id", job.id},
+        {"status", server::toString(job.status)},
+        {"priority", job.priority},
+        {"created_at", timestamp(job.createdAt)},
+        {"started_at", timestamp(job.startedAt)},
+        {"finished_at", timestamp(job.finishedAt)},
+        {"settings",
+         {{"passes", s.passes},
+          {"photons_per_pass", s.photonsPerPass},
+          {"seed", s.seed},
+          {"integrator", s.integrator},
+          {"resolution", {s.width, s.height}}}},
+        {"pass", p.pass},
+        {"total_passes", s.passes},
+        {"photons_traced", p.photonsTraced},
+        {"mean_radius", p.meanRadius},
+        {"elapsed_seconds", p.elapsedSeconds},
+        {"eta_seconds", p.etaSeconds},
+        {"error", job.error.empty() ? nlohmann::json() : nlohmann::json(job.error)},
+    };
+}
+
+void sendJson(httplib::Response& res, int status, const nlohmann::json& body) {
+    res.status = status;
+    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+}  // namespace photon::api

@@ -1,0 +1,46 @@
+#include "api/params.h"
+#include <httplib.h>
+#include <charconv>
+#include "api/errors.h"
+
+namespace photon::api {
+
+namespace {
+
+template <typename T>
+std::optional<T> parseWhole(const std::string& text) {
+    T value{};
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+std::optional<std::string> stringParam(const httplib::Request& req, const std::string& name) {
+    if (!req.has_param(name)) return std::nullopt;
+    if (req.get_param_value_count(name) > 1) throwBadRequest("query parameter " + name + " given more than once");
+    return req.get_param_value(name);
+}
+
+std::optional<int64_t> integerParam(const httplib::Request& req, const std::string& name, int64_t lo, int64_t hi) {
+    std::optional<std::string> text = stringParam(req, name);
+    if (!text) return std::nullopt;
+    std::optional<int64_t> value = parseWhole<int64_t>(*text);
+    if (!value || *value < lo || *value > hi)
+        throwBadRequest("query parameter " + name + ": expected an integer in [" + std::to_string(lo) + ", " +
+                        std::to_string(hi) + "]");
+    return value;
+}
+
+std::optional<uint64_t> unsignedParam(const httplib::Request& req, const std::string& name) {
+    std::optional<std::string> text = stringParam(req, name);
+    if (!text) return std::nullopt;
+    std::optional<uint64_t> value = parseWhole<uint64_t>(*text);
+    if (!value) throwBadRequest("query parameter " + name + ": expected an integer in [0, 2^64-1]");
+    return value;
+}
+
+std::string pathId(const httplib::Request& req) { return req.matches.size() > 1 ? req.matches[1].str() : ""; }
+
+}  // namespace photon::api

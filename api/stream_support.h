@@ -1,0 +1,58 @@
+// Shared by the long-lived streaming routes (events, image stream): the wait granularity
+// and a guard that keeps exceptions out of httplib's writer loop, which runs a content
+// provider outside any handler's try block (an escaping exception would end the process).
+#pragma once
+#include <httplib.h>
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <cstdio>
+#include <exception>
+
+namespace photon::api {
+
+// How long a stream waits for news before re-checking its connection and the server state.
+constexpr std::chrono::milliseconds kStreamPoll{1000};
+
+// Each open stream holds one HTTP thread for as long as it lasts. Capping them keeps threads
+// free for ordinary requests: beyond the cap a stream request gets 503.
+class StreamSlots {
+public:
+    explicit StreamSlots(int max) : max_(max) {}
+    class Slot {
+    public:
+        explicit Slot(StreamSlots& owner) : owner_(owner) {}
+        ~Slot() { --owner_.used_; }
+        Slot(const Slot&) = delete;
+        Slot& operator=(const Slot&) = delete;
+
+    private:
+        StreamSlots& owner_;
+    };
+    // Held until the returned handle (captured by the stream's provider) is destroyed;
+    // throws ServiceError (Unavailable) when every slot is taken.
+    std::shared_ptr<Slot> acquire();
+
+private:
+    std::atomic<int> used_{0};
+    const int max_;
+};
+
+template <typename Step>
+httplib::ContentProviderWithoutLength guardedProvider(Step step) {
+    return [step = std::move(step)](size_t, httplib::DataSink& sink) mutable -> bool {
+        try {
+            return step(sink);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "photon-server: stream ended by error: %s\n", e.what());
+        } catch (...) {
+        }
+        return false;  // ends the response; the client sees the connection close
+    };
+}
+
+inline bool writeAll(httplib::DataSink& sink, const std::string& bytes) {
+    return bytes.empty() || sink.write(bytes.data(), bytes.size());
+}
+
+}  // namespace photon::api

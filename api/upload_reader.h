@@ -1,0 +1,23 @@
+// Reads the body of POST /api/v1/jobs into a staged upload. Two forms:
+//   - the scene JSON itself (any content type but multipart);
+//   - multipart/form-data with a part named "scene" (the scene JSON) and one file part per
+//     asset, whose filename is the relative path the scene uses (e.g. "meshes/x.obj").
+// Asset bytes stream straight to the staging folder; nothing large is held in memory.
+#pragma once
+#include <cstddef>
+#include "server/staged_upload.h"
+
+namespace httplib {
+class ContentReader;
+struct Request;
+struct Response;
+}  // namespace httplib
+
+namespace photon::api {
+
+// Throws ServiceError: BadRequest (bad multipart, unsafe names, unreadable body),
+// PayloadTooLarge (over maxBodyBytes), LimitExceeded (an asset over its limit).
+void readUpload(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
+                server::StagedUpload& upload, size_t maxBodyBytes);
+
+}  // namespace photon::api

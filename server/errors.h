@@ -1,0 +1,33 @@
+// Failures of service operations that a client caused or can act on. The API layer maps
+// the kind to an HTTP status; the service itself knows nothing of HTTP.
+#pragma once
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace photon::server {
+
+enum class ErrorKind {
+    BadRequest,       // malformed input, bad scene, unsafe asset name
+    NotFound,         // no such job
+    Conflict,         // the job is in the wrong state for the operation
+    PayloadTooLarge,  // the upload exceeds the body limit
+    LimitExceeded,    // a well-formed request asks for more than the server allows
+    Unavailable,      // the server is at capacity (e.g. open streams); retry later
+};
+
+class ServiceError : public std::runtime_error {
+public:
+    ServiceError(ErrorKind kind, const std::string& message, std::optional<std::string> scenePath = std::nullopt)
+        : std::runtime_error(message), kind_(kind), scenePath_(std::move(scenePath)) {}
+    ErrorKind kind() const { return kind_; }
+    // The JSON path of the offending scene value, for scene errors (may be empty for
+    // problems with the document as a whole).
+    const std::optional<std::string>& scenePath() const { return scenePath_; }
+
+private:
+    ErrorKind kind_;
+    std::optional<std::string> scenePath_;
+};
+
+}  // namespace photon::server

@@ -1,0 +1,72 @@
+#include "image_cache.h"
+#include "film/image_io.h"
+
+namespace photon::server {
+
+namespace {
+
+std::shared_ptr<const std::string> encode(const Image& image, ImageFormat format, float exposure) {
+    std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image, exposure) : encodeExr(image);
+    return std::make_shared<const std::string>(bytes.begin(), bytes.end());
+}
+
+}  // namespace
+
+std::shared_ptr<ImageCache::Slot> ImageCache::slot(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    auto it = slots_.find(id);
+    return it == slots_.end() ? nullptr : it->second;
+}
+
+void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const Image> image, float exposure) {
+    std::shared_ptr<Slot> s;
+    {
+        std::lock_guard lock(mutex_);
+        auto& entry = slots_[id];
+        if (!entry) entry = std::make_shared<Slot>();
+        s = entry;
+    }
+    std::lock_guard lock(s->stateMutex);
+    s->pass = pass;
+    s->image = std::move(image);
+    s->exposure = exposure;
+    s->encoded.clear();
+}
+
+std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat format) {
+    std::shared_ptr<Slot> s = slot(id);
+    if (!s) return std::nullopt;
+    std::lock_guard encoding(s->encodeMutex);
+    std::shared_ptr<const Image> image;
+    EncodedImage fresh;
+    float exposure = 0;
+    {
+        std::lock_guard state(s->stateMutex);
+        if (!s->image) return std::nullopt;
+        auto it = s->encoded.find(format);
+        if (it != s->encoded.end() && it->second.pass == s->pass) return it->second;
+        image = s->image;
+        fresh.pass = s->pass;
+        exposure = s->exposure;
+    }
+    fresh.bytes = encode(*image, format, exposure);
+    std::lock_guard state(s->stateMutex);
+    // Keyed by pass: if a newer pass arrived meanwhile, the lookup above will not match it.
+    s->encoded[format] = fresh;
+    return fresh;
+}
+
+std::optional<int> ImageCache::latestPass(const std::string& id) const {
+    std::shared_ptr<Slot> s = slot(id);
+    if (!s) return std::nullopt;
+    std::lock_guard lock(s->stateMutex);
+    if (!s->image) return std::nullopt;
+    return s->pass;
+}
+
+void ImageCache::drop(const std::string& id) {
+    std::lock_guard lock(mutex_);
+    slots_.erase(id);
+}
+
+}  // namespace photon::server

@@ -1,0 +1,48 @@
+// The latest pass image of each running job, and its encodings. A pass stores one snapshot;
+// the first request for a format encodes it, later requests for the same pass reuse the
+// bytes. So encoding costs at most one PNG and one EXR per pass, however many clients poll.
+#pragma once
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include "film/image.h"
+#include "image_format.h"
+
+namespace photon::server {
+
+struct EncodedImage {
+    int pass = 0;
+    std::shared_ptr<const std::string> bytes;
+};
+
+class ImageCache {
+public:
+    // The image after `pass`; replaces the previous pass's image and encodings.
+    void store(const std::string& id, int pass, std::shared_ptr<const Image> image, float exposure);
+    // The latest image in `format`, encoded now if this pass has not been encoded yet.
+    // nullopt if the job has no image in memory.
+    std::optional<EncodedImage> get(const std::string& id, ImageFormat format);
+    std::optional<int> latestPass(const std::string& id) const;
+    void drop(const std::string& id);
+
+private:
+    struct Slot {
+        // Encoding runs under encodeMutex only, so the render thread storing the next pass
+        // (under stateMutex) never waits for an encode.
+        std::mutex encodeMutex;  // concurrent requests for one pass wait for a single encode
+        std::mutex stateMutex;
+        int pass = 0;
+        std::shared_ptr<const Image> image;
+        float exposure = 0;
+        std::map<ImageFormat, EncodedImage> encoded;
+    };
+    std::shared_ptr<Slot> slot(const std::string& id) const;
+
+    mutable std::mutex mutex_;  // guards the map only, never held while encoding
+    std::unordered_map<std::string, std::shared_ptr<Slot>> slots_;
+};
+
+}  // namespace photon::server

@@ -1,0 +1,34 @@
+#include "job.h"
+#include <array>
+
+namespace photon::server {
+
+namespace {
+
+constexpr std::array<std::pair<JobStatus, const char*>, 5> kNames{{
+    {JobStatus::Queued, "queued"},
+    {JobStatus::Running, "running"},
+    {JobStatus::Completed, "completed"},
+    {JobStatus::Failed, "failed"},
+    {JobStatus::Cancelled, "cancelled"},
+}};
+
+}  // namespace
+
+const char* toString(JobStatus status) {
+    for (const auto& [s, name] : kNames)
+        if (s == status) return name;
+    return "unknown";
+}
+
+std::optional<JobStatus> parseJobStatus(const std::string& text) {
+    for (const auto& [s, name] : kNames)
+        if (text == name) return s;
+    return std::nullopt;
+}
+
+bool isFinished(JobStatus status) {
+    return status == JobStatus::Completed || status == JobStatus::Failed || status == JobStatus::Cancelled;
+}
+
+}  // namespace photon::server

@@ -1,0 +1,46 @@
+// A render job as the service sees it: identity, lifecycle state, what it renders and how
+// far it got. Plain data, copied freely between the table, the store and the API.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace photon::server {
+
+enum class JobStatus { Queued, Running, Completed, Failed, Cancelled };
+
+const char* toString(JobStatus status);
+std::optional<JobStatus> parseJobStatus(const std::string& text);
+// Completed, failed and cancelled jobs never change again (except by deletion).
+bool isFinished(JobStatus status);
+
+// The effective render settings: the scene's render block with the submit overrides applied.
+// Stored with the job so a restart renders exactly what was accepted.
+struct JobSettings {
+    int passes = 0;
+    int64_t photonsPerPass = 0;
+    uint64_t seed = 0;
+    std::string integrator;  // "sppm" or "path"
+    int width = 0, height = 0;
+};
+
+struct JobProgress {
+    int pass = 0;  // passes finished
+    int64_t photonsTraced = 0;
+    double meanRadius = 0;
+    double elapsedSeconds = 0;
+    double etaSeconds = 0;
+};
+
+struct JobRecord {
+    std::string id;    // 16 lowercase hex digits
+    int64_t seq = 0;   // submission order (the database row id): FIFO within a priority
+    JobStatus status = JobStatus::Queued;
+    int priority = 0;  // higher runs first
+    std::string createdAt, startedAt, finishedAt;  // ISO 8601 UTC; empty when not yet
+    JobSettings settings;
+    JobProgress progress;
+    std::string error;  // why it failed; empty otherwise
+};
+
+}  // namespace photon::server

@@ -1,0 +1,44 @@
+// The on-disk layout under the data directory:
+//   DIR/lock                  held (flock) by the server using DIR
+//   DIR/jobs.db               job records (JobStore)
+//   DIR/jobs/<id>/scene.json  the scene as submitted, plus its asset files
+//   DIR/jobs/<id>/image.png   final images, written when the job finishes
+//   DIR/tmp/                  uploads being staged; renamed into jobs/ once accepted
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include "image_format.h"
+
+namespace photon::server {
+
+class JobFolders {
+public:
+    // Creates the folders and locks the data directory (DIR/lock) for this process; throws
+    // if another server holds it. Discards staging folders an earlier run left behind.
+    explicit JobFolders(std::filesystem::path dataDir);
+    ~JobFolders();
+    JobFolders(const JobFolders&) = delete;
+    JobFolders& operator=(const JobFolders&) = delete;
+
+    std::filesystem::path databaseFile() const { return root_ / "jobs.db"; }
+    std::filesystem::path jobDir(const std::string& id) const { return root_ / "jobs" / id; }
+    std::filesystem::path sceneFile(const std::string& id) const { return jobDir(id) / "scene.json"; }
+    std::filesystem::path imageFile(const std::string& id, ImageFormat format) const;
+
+    // A new, empty, uniquely named folder on the same file system as jobs/, so that
+    // committing it is an atomic rename.
+    std::filesystem::path newStagingDir() const;
+    void commit(const std::filesystem::path& stagingDir, const std::string& id) const;
+    void remove(const std::string& id) const;
+
+private:
+    std::filesystem::path root_;
+    int lockFd_ = -1;
+};
+
+// Writes through a temporary file and a rename: readers see the old file or the whole new one.
+void writeFileAtomically(const std::filesystem::path& file, const std::string& bytes);
+std::optional<std::string> readWholeFile(const std::filesystem::path& file);
+
+}  // namespace photon::server

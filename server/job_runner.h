@@ -1,0 +1,45 @@
+// Renders one job from start to finish on the calling (worker) thread: loads the stored
+// scene with the stored settings, runs the engine pass by pass, publishes every pass
+// (image cache, job table, event hub, metrics) and records the outcome.
+#pragma once
+#include <string>
+#include "event_hub.h"
+#include "image_cache.h"
+#include "job_folders.h"
+#include "job_store.h"
+#include "job_table.h"
+#include "metrics.h"
+
+namespace photon {
+class Renderer;
+struct RenderProgress;
+}  // namespace photon
+
+namespace photon::server {
+
+class JobRunner {
+public:
+    JobRunner(JobTable& table, JobStore& store, const JobFolders& folders, ImageCache& images, EventHub& hub,
+              Metrics& metrics)
+        : table_(table), store_(store), folders_(folders), images_(images), hub_(hub), metrics_(metrics) {}
+
+    // Does nothing if the job is no longer queued. Never throws.
+    void run(const std::string& id);
+
+private:
+    enum class Ending { Completed, Cancelled, Interrupted };
+    Ending render(const JobTable::Started& started);
+    void onPass(const std::string& id, const Renderer& renderer, const RenderProgress& progress, float exposure,
+                double& elapsedBefore);
+    void finish(const std::string& id, JobStatus status, const std::string& error);
+    void writeImages(const std::string& id);
+
+    JobTable& table_;
+    JobStore& store_;
+    const JobFolders& folders_;
+    ImageCache& images_;
+    EventHub& hub_;
+    Metrics& metrics_;
+};
+
+}  // namespace photon::server

@@ -1,0 +1,129 @@
+#include "job_service.h"
+#include "clock.h"
+#include "errors.h"
+
+namespace photon::server {
+
+namespace {
+
+[[noreturn]] void notFound(const std::string& id) { throw ServiceError(ErrorKind::NotFound, "no job " + id); }
+
+}  // namespace
+
+JobService::JobService(const ServiceConfig& config)
+    : limits_(config.limits),
+      folders_(config.dataDir),
+      store_(folders_.databaseFile()),
+      runner_(table_, store_, folders_, images_, hub_, metrics_) {
+    restore();
+    workers_ = std::make_unique<WorkerPool>(queue_, runner_, config.workers);
+}
+
+JobService::~JobService() { shutdown(); }
+
+void JobService::restore() {
+    for (JobRecord& job : store_.loadAll()) {
+        if (job.status == JobStatus::Running) {
+            // The image of an interrupted render was never saved: start it over.
+            job.status = JobStatus::Queued;
+            job.startedAt.clear();
+            job.progress = JobProgress{};
+            store_.update(job);
+        }
+        table_.insert(job);
+        hub_.publish(job, std::nullopt);
+        if (job.status == JobStatus::Queued) queue_.push(job.id, job.priority, job.seq);
+    }
+}
+
+std::unique_ptr<StagedUpload> JobService::newUpload() const {
+    return std::make_unique<StagedUpload>(folders_.newStagingDir(), limits_.maxAssetBytes);
+}
+
+std::string JobService::unusedId() const {
+    for (;;) {
+        std::string id = randomJobId();
+        if (!table_.contains(id) && !std::filesystem::exists(folders_.jobDir(id))) return id;
+    }
+}
+
+JobRecord JobService::submit(StagedUpload& upload, const SubmitOptions& options) {
+    upload.endAsset();
+    JobRecord job;
+    job.settings = validateScene(upload.sceneText(), upload.dir(), options, limits_);
+    writeFileAtomically(upload.dir() / "scene.json", upload.sceneText());
+    job.id = unusedId();
+    job.priority = options.priority;
+    job.createdAt = utcNowIso8601();
+    folders_.commit(upload.dir(), job.id);
+    upload.markCommitted();
+    try {
+        job.seq = store_.insert(job);
+    } catch (...) {
+        folders_.remove(job.id);
+        throw;
+    }
+    table_.insert(job);
+    hub_.publish(job, std::nullopt);
+    queue_.push(job.id, job.priority, job.seq);
+    return job;
+}
+
+JobRecord JobService::get(const std::string& id) const {
+    std::optional<JobRecord> job = table_.find(id);
+    if (!job) notFound(id);
+    return *job;
+}
+
+JobTable::Page JobService::list(std::optional<JobStatus> status, size_t limit, size_t offset) const {
+    return table_.list(status, limit, offset);
+}
+
+JobService::CancelResult JobService::cancel(const std::string& id) {
+    JobRecord job;
+    switch (table_.cancel(id, utcNowIso8601(), job)) {
+        case JobTable::CancelResult::NotFound: notFound(id);
+        case JobTable::CancelResult::AlreadyFinished:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " is already " + toString(job.status));
+        case JobTable::CancelResult::Requested: return {job, true};
+        case JobTable::CancelResult::CancelledNow: break;
+    }
+    queue_.remove(id);
+    store_.update(job);
+    hub_.publish(job, EventType::Cancelled);
+    return {job, false};
+}
+
+void JobService::remove(const std::string& id) {
+    switch (table_.remove(id)) {
+        case JobTable::RemoveResult::NotFound: notFound(id);
+        case JobTable::RemoveResult::NotFinished:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " has not finished; cancel it first");
+        case JobTable::RemoveResult::Removed: break;
+    }
+    store_.remove(id);
+    folders_.remove(id);
+    images_.drop(id);
+    hub_.forget(id);
+}
+
+std::optional<EncodedImage> JobService::image(const std::string& id, ImageFormat format) {
+    // Running jobs are served from memory; the runner writes the files before it marks a
+    // job finished and drops the memory copy after, so one of the two always answers.
+    if (std::optional<EncodedImage> latest = images_.get(id, format)) return latest;
+    std::optional<JobRecord> job = table_.find(id);
+    if (!job) notFound(id);
+    if (!isFinished(job->status)) return std::nullopt;
+    std::optional<std::string> bytes = readWholeFile(folders_.imageFile(id, format));
+    if (!bytes) return std::nullopt;
+    return EncodedImage{job->progress.pass, std::make_shared<const std::string>(std::move(*bytes))};
+}
+
+void JobService::shutdown() {
+    hub_.shutdown();
+    queue_.close();
+    table_.interruptAll();
+    if (workers_) workers_->join();
+}
+
+}  // namespace photon::server

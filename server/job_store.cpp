@@ -1,0 +1,125 @@
+#include "job_store.h"
+#include <stdexcept>
+
+namespace photon::server {
+
+namespace {
+
+const char* kSchema = R"sql(
+CREATE TABLE IF NOT EXISTS jobs (
+    seq INTEGER PRIMARY KEY AUTOINCREMENT,
+    id TEXT NOT NULL UNIQUE,
+    status TEXT NOT NULL,
+    priority INTEGER NOT NULL,
+    created_at TEXT NOT NULL,
+    started_at TEXT,
+    finished_at TEXT,
+    passes INTEGER NOT NULL,
+    photons_per_pass INTEGER NOT NULL,
+    seed INTEGER NOT NULL,
+    integrator TEXT NOT NULL,
+    width INTEGER NOT NULL,
+    height INTEGER NOT NULL,
+    pass INTEGER NOT NULL DEFAULT 0,
+    photons_traced INTEGER NOT NULL DEFAULT 0,
+    mean_radius REAL NOT NULL DEFAULT 0,
+    elapsed_seconds REAL NOT NULL DEFAULT 0,
+    eta_seconds REAL NOT NULL DEFAULT 0,
+    error TEXT
+);
+PRAGMA user_version = 1;
+)sql";
+
+const char* kInsert =
+    "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)";
+
+const char* kUpdate =
+    "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
+    " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10 WHERE id = ?1";
+
+const char* kRemove = "DELETE FROM jobs WHERE id = ?1";
+
+const char* kSelectAll =
+    "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
+    " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error"
+    " FROM jobs ORDER BY seq";
+
+// Opening creates the schema, so it must run before the statements are prepared.
+sql::Database& withSchema(sql::Database& db) {
+    db.exec(kSchema);
+    return db;
+}
+
+JobRecord readRow(const sql::Statement& s) {
+    JobRecord job;
+    job.seq = s.integer(0);
+    job.id = s.text(1);
+    // An unknown status can only come from a newer server version; treat it as failed.
+    job.status = parseJobStatus(s.text(2)).value_or(JobStatus::Failed);
+    job.priority = int(s.integer(3));
+    job.createdAt = s.text(4);
+    job.startedAt = s.text(5);
+    job.finishedAt = s.text(6);
+    job.settings.passes = int(s.integer(7));
+    job.settings.photonsPerPass = s.integer(8);
+    job.settings.seed = uint64_t(s.integer(9));  // SQLite integers are signed: stored bit for bit
+    job.settings.integrator = s.text(10);
+    job.settings.width = int(s.integer(11));
+    job.settings.height = int(s.integer(12));
+    job.progress.pass = int(s.integer(13));
+    job.progress.photonsTraced = s.integer(14);
+    job.progress.meanRadius = s.real(15);
+    job.progress.elapsedSeconds = s.real(16);
+    job.progress.etaSeconds = s.real(17);
+    job.error = s.text(18);
+    return job;
+}
+
+}  // namespace
+
+JobStore::JobStore(const std::filesystem::path& databaseFile)
+    : db_(databaseFile),
+      insert_(withSchema(db_).prepare(kInsert)),
+      update_(db_.prepare(kUpdate)),
+      remove_(db_.prepare(kRemove)),
+      selectAll_(db_.prepare(kSelectAll)) {}
+
+int64_t JobStore::insert(const JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    insert_.reset();
+    insert_.bind(1, job.id).bind(2, std::string(toString(job.status))).bind(3, int64_t(job.priority));
+    insert_.bind(4, job.createdAt).bind(5, int64_t(job.settings.passes)).bind(6, job.settings.photonsPerPass);
+    insert_.bind(7, int64_t(job.settings.seed)).bind(8, job.settings.integrator);
+    insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
+    insert_.run();
+    return db_.lastInsertRowId();
+}
+
+void JobStore::update(const JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    update_.reset();
+    update_.bind(1, job.id).bind(2, std::string(toString(job.status)));
+    update_.bindTextOrNull(3, job.startedAt).bindTextOrNull(4, job.finishedAt);
+    update_.bind(5, int64_t(job.progress.pass)).bind(6, job.progress.photonsTraced);
+    update_.bind(7, job.progress.meanRadius).bind(8, job.progress.elapsedSeconds);
+    update_.bind(9, job.progress.etaSeconds).bindTextOrNull(10, job.error);
+    update_.run();
+}
+
+void JobStore::remove(const std::string& id) {
+    std::lock_guard lock(mutex_);
+    remove_.reset();
+    remove_.bind(1, id).run();
+}
+
+std::vector<JobRecord> JobStore::loadAll() {
+    std::lock_guard lock(mutex_);
+    std::vector<JobRecord> jobs;
+    selectAll_.reset();
+    while (selectAll_.step()) jobs.push_back(readRow(selectAll_));
+    selectAll_.reset();
+    return jobs;
+}
+
+}  // namespace photon::server

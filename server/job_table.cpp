@@ -1,0 +1,123 @@
+#include "job_table.h"
+#include <algorithm>
+#include <stdexcept>
+
+namespace photon::server {
+
+JobTable::Entry& JobTable::at(const std::string& id) {
+    auto it = entries_.find(id);
+    if (it == entries_.end()) throw std::logic_error("job " + id + " is not in the table");
+    return it->second;
+}
+
+void JobTable::insert(JobRecord job) {
+    std::lock_guard lock(mutex_);
+    std::string id = job.id;
+    entries_[id] = Entry{std::move(job), nullptr, false};
+}
+
+bool JobTable::contains(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    return entries_.count(id) != 0;
+}
+
+std::optional<JobRecord> JobTable::find(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return std::nullopt;
+    return it->second.job;
+}
+
+JobTable::Page JobTable::list(std::optional<JobStatus> status, size_t limit, size_t offset) const {
+    std::vector<const JobRecord*> matching;
+    Page page;
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, entry] : entries_)
+        if (!status || entry.job.status == *status) matching.push_back(&entry.job);
+    std::sort(matching.begin(), matching.end(), [](auto* a, auto* b) { return a->seq > b->seq; });
+    page.total = matching.size();
+    for (size_t i = offset; i < matching.size() && page.jobs.size() < limit; ++i) page.jobs.push_back(*matching[i]);
+    return page;
+}
+
+std::map<JobStatus, int> JobTable::countByStatus() const {
+    std::map<JobStatus, int> counts;
+    for (JobStatus s : {JobStatus::Queued, JobStatus::Running, JobStatus::Completed, JobStatus::Failed,
+                        JobStatus::Cancelled})
+        counts[s] = 0;
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, entry] : entries_) ++counts[entry.job.status];
+    return counts;
+}
+
+std::optional<JobTable::Started> JobTable::start(const std::string& id, const std::string& now) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end() || it->second.job.status != JobStatus::Queued) return std::nullopt;
+    Entry& e = it->second;
+    e.job.status = JobStatus::Running;
+    e.job.startedAt = now;
+    e.job.progress = JobProgress{};  // a restarted job renders from pass 0
+    e.cancel = std::make_shared<CancelToken>();
+    return Started{e.job, e.cancel};
+}
+
+JobRecord JobTable::setProgress(const std::string& id, const JobProgress& progress) {
+    std::lock_guard lock(mutex_);
+    Entry& e = at(id);
+    e.job.progress = progress;
+    return e.job;
+}
+
+JobRecord JobTable::finish(const std::string& id, JobStatus status, const std::string& error, const std::string& now) {
+    std::lock_guard lock(mutex_);
+    Entry& e = at(id);
+    e.job.status = status;
+    e.job.error = error;
+    e.job.finishedAt = now;
+    e.job.progress.etaSeconds = 0;
+    e.cancel.reset();
+    return e.job;
+}
+
+JobTable::CancelResult JobTable::cancel(const std::string& id, const std::string& now, JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return CancelResult::NotFound;
+    Entry& e = it->second;
+    CancelResult result = CancelResult::AlreadyFinished;
+    if (e.job.status == JobStatus::Queued) {
+        e.job.status = JobStatus::Cancelled;
+        e.job.finishedAt = now;
+        result = CancelResult::CancelledNow;
+    } else if (e.job.status == JobStatus::Running) {
+        e.cancelRequested = true;
+        if (e.cancel) e.cancel->cancel();
+        result = CancelResult::Requested;
+    }
+    job = e.job;
+    return result;
+}
+
+bool JobTable::cancelRequested(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    return it != entries_.end() && it->second.cancelRequested;
+}
+
+JobTable::RemoveResult JobTable::remove(const std::string& id) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return RemoveResult::NotFound;
+    if (!isFinished(it->second.job.status)) return RemoveResult::NotFinished;
+    entries_.erase(it);
+    return RemoveResult::Removed;
+}
+
+void JobTable::interruptAll() {
+    std::lock_guard lock(mutex_);
+    for (auto& [id, e] : entries_)
+        if (e.cancel) e.cancel->cancel();
+}
+
+}  // namespace photon::server

@@ -1,0 +1,64 @@
+// The live set of jobs: the record every request reads, plus each running job's cancel
+// token. One mutex; every operation is a short read-modify-write of one entry, and the
+// state transitions (queued -> running -> finished, cancel, delete) are decided here so
+// that they are atomic with respect to each other.
+#pragma once
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+#include "integrators/integrator.h"
+#include "job.h"
+
+namespace photon::server {
+
+class JobTable {
+public:
+    void insert(JobRecord job);
+    bool contains(const std::string& id) const;
+    std::optional<JobRecord> find(const std::string& id) const;
+
+    struct Page {
+        std::vector<JobRecord> jobs;  // newest first
+        size_t total = 0;             // matching jobs before limit/offset
+    };
+    Page list(std::optional<JobStatus> status, size_t limit, size_t offset) const;
+    std::map<JobStatus, int> countByStatus() const;
+
+    struct Started {
+        JobRecord job;
+        std::shared_ptr<CancelToken> cancel;
+    };
+    // Queued -> running. nullopt if the job is gone or no longer queued (cancelled meanwhile).
+    std::optional<Started> start(const std::string& id, const std::string& now);
+    JobRecord setProgress(const std::string& id, const JobProgress& progress);
+    // Running -> completed/failed/cancelled.
+    JobRecord finish(const std::string& id, JobStatus status, const std::string& error, const std::string& now);
+
+    enum class CancelResult { NotFound, AlreadyFinished, CancelledNow, Requested };
+    // Queued jobs are cancelled at once; running ones get their token set and finish later.
+    CancelResult cancel(const std::string& id, const std::string& now, JobRecord& job);
+    bool cancelRequested(const std::string& id) const;
+
+    enum class RemoveResult { NotFound, NotFinished, Removed };
+    RemoveResult remove(const std::string& id);
+
+    // Shutdown: stop every render without marking it cancelled (it is resumed on restart).
+    void interruptAll();
+
+private:
+    struct Entry {
+        JobRecord job;
+        std::shared_ptr<CancelToken> cancel;  // set while running
+        bool cancelRequested = false;         // by a client, as opposed to shutdown
+    };
+    Entry& at(const std::string& id);
+
+    mutable std::mutex mutex_;
+    std::unordered_map<std::string, Entry> entries_;
+};
+
+}  // namespace photon::server

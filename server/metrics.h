@@ -1,0 +1,29 @@
+// Counters for the Prometheus text exposition at /metrics. Counters start at zero with the
+// process, as Prometheus expects; job gauges are read from the job table when scraped.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+#include "job.h"
+
+namespace photon::server {
+
+class Metrics {
+public:
+    void addPass(int64_t photons, double renderSeconds);
+    // `route` is the route template (e.g. "/api/v1/jobs/{id}"), never the raw path, so the
+    // number of series stays bounded whatever clients request.
+    void countRequest(const std::string& route, int status);
+    std::string prometheusText(const std::map<JobStatus, int>& jobsByStatus) const;
+
+private:
+    mutable std::mutex mutex_;
+    int64_t passes_ = 0;
+    int64_t photons_ = 0;
+    double renderSeconds_ = 0;
+    std::map<std::pair<std::string, int>, int64_t> requests_;
+};
+
+}  // namespace photon::server

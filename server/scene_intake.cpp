@@ -1,0 +1,61 @@
+#include "scene_intake.h"
+#include <algorithm>
+#include <cstdint>
+#include "errors.h"
+#include "scene/scene_loader.h"
+
+namespace photon::server {
+
+namespace {
+
+void checkLimit(const char* what, int64_t value, int64_t limit) {
+    if (value > limit)
+        throw ServiceError(ErrorKind::LimitExceeded, std::string(what) + " " + std::to_string(value) +
+                                                         " exceeds the server limit of " + std::to_string(limit));
+}
+
+// The overrides are range-checked like the scene fields they replace.
+void checkOverride(const char* name, const std::optional<int64_t>& value) {
+    if (value && *value < 1)
+        throw ServiceError(ErrorKind::BadRequest, std::string(name) + ": must be an integer >= 1");
+}
+
+}  // namespace
+
+JobSettings validateScene(const std::string& sceneText, const std::filesystem::path& folder,
+                          const SubmitOptions& options, const Limits& limits) {
+    SceneDescription description;
+    try {
+        description = loadSceneJson(sceneText, folder);
+    } catch (const SceneError& e) {
+        throw ServiceError(ErrorKind::BadRequest, e.what(), e.path());
+    }
+    checkOverride("passes", options.passes);
+    checkOverride("photons_per_pass", options.photonsPerPass);
+    RenderSettings& render = description.render;
+    if (options.passes) render.passes = int(std::min<int64_t>(*options.passes, INT32_MAX));
+    if (options.photonsPerPass) render.photonsPerPass = *options.photonsPerPass;
+    if (options.seed) render.seed = *options.seed;
+
+    const CameraDescription& camera = description.camera;
+    checkLimit("width*height", int64_t(camera.width) * camera.height, limits.maxPixels);
+    checkLimit("passes", options.passes.value_or(render.passes), limits.maxPasses);
+    checkLimit("photons_per_pass", render.photonsPerPass, limits.maxPhotonsPerPass);
+
+    JobSettings s;
+    s.passes = render.passes;
+    s.photonsPerPass = render.photonsPerPass;
+    s.seed = render.seed;
+    s.integrator = render.integrator == IntegratorKind::Path ? "path" : "sppm";
+    s.width = camera.width;
+    s.height = camera.height;
+    return s;
+}
+
+void applySettings(const JobSettings& settings, SceneDescription& description) {
+    description.render.passes = settings.passes;
+    description.render.photonsPerPass = settings.photonsPerPass;
+    description.render.seed = settings.seed;
+}
+
+}  // namespace photon::server

@@ -1,0 +1,35 @@
+// Accepting a scene: load it with the engine's own loader against the folder that holds its
+// assets (so a scene the service accepts is one the worker can load), apply the submit
+// overrides, and hold the result to the server's limits.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include "job.h"
+#include "service_limits.h"
+
+namespace photon {
+struct SceneDescription;
+}
+
+namespace photon::server {
+
+// Query-string overrides of the scene's render block, and the job's queue priority.
+struct SubmitOptions {
+    std::optional<int64_t> passes;
+    std::optional<int64_t> photonsPerPass;
+    std::optional<uint64_t> seed;
+    int priority = 0;
+};
+
+// Throws ServiceError: BadRequest (with the scene path) for scene errors, LimitExceeded for
+// requests beyond `limits`. Returns the effective settings.
+JobSettings validateScene(const std::string& sceneText, const std::filesystem::path& folder,
+                          const SubmitOptions& options, const Limits& limits);
+
+// Puts a job's stored settings into a freshly loaded scene's render block, so the render
+// uses exactly what was accepted at submission.
+void applySettings(const JobSettings& settings, SceneDescription& description);
+
+}  // namespace photon::server

@@ -1,0 +1,47 @@
+// An upload being received: asset files streamed into a private staging folder inside the
+// data directory, and the scene text. Nothing is visible under jobs/ until the service
+// accepts the scene and renames the folder into place; a rejected upload leaves nothing.
+#pragma once
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace photon::server {
+
+// Why `name` (a client-chosen asset path such as "meshes/x.obj") may not be stored under a
+// job folder: absolute, "..", backslashes, NUL, reserved names. nullopt if acceptable.
+std::optional<std::string> assetNameProblem(const std::string& name);
+
+class StagedUpload {
+public:
+    StagedUpload(std::filesystem::path dir, size_t maxAssetBytes);
+    ~StagedUpload();  // removes the staging folder unless it was committed
+    StagedUpload(const StagedUpload&) = delete;
+    StagedUpload& operator=(const StagedUpload&) = delete;
+
+    // Starts a new asset file; throws ServiceError (BadRequest) for unsafe or repeated names.
+    void beginAsset(const std::string& name);
+    // Throws ServiceError (LimitExceeded) once the asset exceeds the size limit.
+    void appendAsset(const char* data, size_t size);
+    void endAsset();
+
+    std::string& sceneText() { return sceneText_; }
+    const std::filesystem::path& dir() const { return dir_; }
+    // The folder was renamed into place: do not remove it.
+    void markCommitted() { committed_ = true; }
+
+private:
+    std::filesystem::path dir_;
+    size_t maxAssetBytes_;
+    std::ofstream asset_;
+    std::string assetName_;
+    size_t assetBytes_ = 0;
+    std::set<std::string> names_;
+    std::string sceneText_;
+    bool committed_ = false;
+};
+
+}  // namespace photon::server

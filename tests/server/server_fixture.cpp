@@ -1,0 +1,142 @@
+#include "server_fixture.h"
+#include <unistd.h>
+#include <fstream>
+#include <sstream>
+#include <thread>
+#include "film/image_io.h"
+
+namespace photon::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path makeTempDir(const std::string& prefix) {
+    std::string pattern = (fs::temp_directory_path() / (prefix + "XXXXXX")).string();
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+    return pattern;
+}
+
+json readJsonFile(const fs::path& file) {
+    std::ifstream in(file);
+    return json::parse(in);
+}
+
+}  // namespace
+
+std::vector<SseEvent> parseSse(const std::string& stream) {
+    std::vector<SseEvent> events;
+    std::istringstream in(stream);
+    std::string line;
+    SseEvent current;
+    std::string data;
+    while (std::getline(in, line)) {
+        if (line.empty()) {
+            if (!current.type.empty() || !data.empty()) {
+                current.data = data.empty() ? json() : json::parse(data);
+                events.push_back(current);
+            }
+            current = SseEvent{};
+            data.clear();
+        } else if (line.rfind("event: ", 0) == 0) current.type = line.substr(7);
+        else if (line.rfind("id: ", 0) == 0) current.id = line.substr(4);
+        else if (line.rfind("data: ", 0) == 0) data += line.substr(6);
+    }
+    return events;
+}
+
+json smallScene(int passes, int64_t photonsPerPass, int resolution) {
+    json scene = readJsonFile(fs::path(PHOTON_SOURCE_DIR) / "scenes" / "cornell-box.json");
+    scene["camera"]["resolution"] = {resolution, resolution};
+    scene["render"]["passes"] = passes;
+    scene["render"]["photons_per_pass"] = photonsPerPass;
+    scene["render"]["seed"] = 7;
+    return scene;
+}
+
+json longScene() { return smallScene(50000, 20000, 48); }
+
+Image decodeImage(const std::string& bytes, const std::string& extension) {
+    fs::path dir = makeTempDir("photon-image-");
+    fs::path file = dir / ("image." + extension);
+    {
+        std::ofstream out(file, std::ios::binary);
+        out.write(bytes.data(), std::streamsize(bytes.size()));
+    }
+    Image image = readImage(file);
+    fs::remove_all(dir);
+    return image;
+}
+
+void ServerTest::SetUp() { dataDir_ = makeTempDir("photon-server-test-"); }
+
+void ServerTest::TearDown() {
+    server_.stop();
+    std::error_code ignored;
+    fs::remove_all(dataDir_, ignored);
+}
+
+void ServerTest::startServer(const std::vector<std::string>& args) {
+    std::vector<std::string> all{"--data", dataDir_.string()};
+    all.insert(all.end(), args.begin(), args.end());
+    server_.start(all);
+}
+
+httplib::Client ServerTest::client() const {
+    httplib::Client c("127.0.0.1", server_.port());
+    c.set_read_timeout(std::chrono::seconds(30));
+    c.set_default_headers(auth());
+    return c;
+}
+
+httplib::Headers ServerTest::auth() const {
+    if (token_.empty()) return {};
+    return {{"Authorization", "Bearer " + token_}};
+}
+
+httplib::Result ServerTest::submit(const json& scene, const std::string& query) {
+    return client().Post(("/api/v1/jobs" + query).c_str(), scene.dump(), "application/json");
+}
+
+std::string ServerTest::submitOk(const json& scene, const std::string& query) {
+    httplib::Result r = submit(scene, query);
+    if (!r) throw std::runtime_error("submit: no response");
+    EXPECT_EQ(r->status, 201) << r->body;
+    return json::parse(r->body).at("id");
+}
+
+json ServerTest::getJob(const std::string& id) {
+    httplib::Result r = client().Get(("/api/v1/jobs/" + id).c_str());
+    if (!r || r->status != 200) throw std::runtime_error("GET job " + id + " failed");
+    return json::parse(r->body);
+}
+
+json ServerTest::waitFor(const std::string& id, const std::function<bool(const json&)>& done,
+                         std::chrono::milliseconds timeout) {
+    auto deadline = std::chrono::steady_clock::now() + timeout;
+    json job = getJob(id);
+    while (!done(job) && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        job = getJob(id);
+    }
+    return job;
+}
+
+std::vector<SseEvent> ServerTest::followEvents(const std::string& id, const httplib::Headers& extra) {
+    std::string stream;
+    httplib::Client c = client();
+    // The client adds the Authorization header itself (default headers).
+    httplib::Result r = c.Get(("/api/v1/jobs/" + id + "/events").c_str(), extra,
+                              [&](const char* data, size_t size) {
+                                  stream.append(data, size);
+                                  return true;
+                              });
+    EXPECT_TRUE(r) << "events request failed";
+    if (r) {
+        EXPECT_EQ(r->status, 200);
+        EXPECT_EQ(r->get_header_value("Content-Type"), "text/event-stream");
+    }
+    return parseSse(stream);
+}
+
+}  // namespace photon::test

@@ -1,0 +1,178 @@
+// Every client error maps to its status code with a JSON body, and none harms the server.
+#include "server_fixture.h"
+
+namespace photon::test {
+namespace {
+
+class ErrorsTest : public ServerTest {};
+
+json errorBody(const httplib::Result& r) {
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    json body = json::parse(r->body);
+    EXPECT_TRUE(body["error"].is_string()) << r->body;
+    return body;
+}
+
+TEST_F(ErrorsTest, MalformedJsonIs400) {
+    startServer({"--workers", "0"});
+    httplib::Result r = client().Post("/api/v1/jobs", "{\"camera\": [1, 2", "application/json");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400);
+    json body = errorBody(r);
+    EXPECT_NE(body["error"].get<std::string>().find("malformed JSON"), std::string::npos) << body;
+    EXPECT_EQ(body["path"], "");
+    EXPECT_EQ(client().Post("/api/v1/jobs", "", "application/json")->status, 400);
+    EXPECT_EQ(client().Post("/api/v1/jobs", "[1, 2]", "application/json")->status, 400);
+}
+
+TEST_F(ErrorsTest, SceneErrorIs400WithItsJsonPath) {
+    startServer({"--workers", "0"});
+    json scene = smallScene();
+    scene["shapes"].push_back({{"type", "sphere"}, {"center", {0, 1, 0}}, {"radius", -0.5}, {"material", "white"}});
+    httplib::Result r = submit(scene);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400);
+    json body = errorBody(r);
+    EXPECT_EQ(body["path"], "shapes[8].radius");
+    // A rejected upload leaves nothing behind.
+    EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "jobs"));
+    EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "tmp"));
+}
+
+TEST_F(ErrorsTest, BadQueryParametersAre400) {
+    startServer({"--workers", "0"});
+    EXPECT_EQ(submit(smallScene(), "?passes=abc")->status, 400);
+    EXPECT_EQ(submit(smallScene(), "?passes=0")->status, 400);
+    EXPECT_EQ(submit(smallScene(), "?seed=-1")->status, 400);
+    EXPECT_EQ(submit(smallScene(), "?priority=1.5")->status, 400);
+}
+
+TEST_F(ErrorsTest, UnknownJobsAndRoutesAre404) {
+    startServer({"--workers", "0"});
+    httplib::Client c = client();
+    for (std::string path : {"/api/v1/jobs/0123456789abcdef", "/api/v1/jobs/0123456789abcdef/image",
+                             "/api/v1/jobs/0123456789abcdef/events", "/api/v1/jobs/0123456789abcdef/stream",
+                             "/api/v1/nothing-here"}) {
+        httplib::Result r = c.Get(path.c_str());
+        ASSERT_TRUE(r) << path;
+        EXPECT_EQ(r->status, 404) << path;
+        errorBody(r);
+    }
+    EXPECT_EQ(c.Post("/api/v1/jobs/0123456789abcdef/cancel")->status, 404);
+    EXPECT_EQ(c.Delete("/api/v1/jobs/0123456789abcdef")->status, 404);
+}
+
+TEST_F(ErrorsTest, WrongStateIs409) {
+    startServer({"--workers", "0"});
+    std::string id = submitOk(smallScene());
+    httplib::Result del = client().Delete(("/api/v1/jobs/" + id).c_str());
+    EXPECT_EQ(del->status, 409);
+    errorBody(del);
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/cancel").c_str())->status, 200);
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/cancel").c_str())->status, 409);
+}
+
+TEST_F(ErrorsTest, OversizedBodyIs413) {
+    startServer({"--workers", "0", "--max-body-bytes", "1000"});
+    json scene = smallScene();
+    ASSERT_GT(scene.dump().size(), 1000u);
+    httplib::Result r = submit(scene);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 413);
+    errorBody(r);
+    // The server is still fine.
+    EXPECT_EQ(client().Get("/api/v1/health")->status, 200);
+}
+
+TEST_F(ErrorsTest, LimitsAre422) {
+    startServer({"--workers", "0", "--max-pixels", "1000", "--max-passes", "10", "--max-photons", "5000"});
+    httplib::Result pixels = submit(smallScene());  // 32x32 = 1024 pixels
+    ASSERT_TRUE(pixels);
+    EXPECT_EQ(pixels->status, 422);
+    errorBody(pixels);
+    EXPECT_EQ(submit(smallScene(3, 2000, 30))->status, 201);
+    EXPECT_EQ(submit(smallScene(3, 2000, 30), "?passes=11")->status, 422);
+    EXPECT_EQ(submit(smallScene(3, 2000, 30), "?photons_per_pass=5001")->status, 422);
+}
+
+TEST_F(ErrorsTest, TokenIsRequiredExceptForHealthAndThePage) {
+    startServer({"--workers", "0", "--token", "s3cret-token"});
+    httplib::Client c = client();  // no token yet
+    httplib::Result none = c.Get("/api/v1/jobs");
+    ASSERT_TRUE(none);
+    EXPECT_EQ(none->status, 401);
+    errorBody(none);
+    EXPECT_EQ(c.Get("/api/v1/jobs", {{"Authorization", "Bearer wrong"}})->status, 401);
+    EXPECT_EQ(c.Get("/api/v1/jobs", {{"Authorization", "Bearer s3cret-token-and-more"}})->status, 401);
+    EXPECT_EQ(c.Get("/metrics")->status, 401);
+    EXPECT_EQ(submit(smallScene())->status, 401);
+    EXPECT_EQ(c.Get("/api/v1/health")->status, 200);
+    // The page itself loads without the token (it asks for it before calling the API).
+    httplib::Result page = c.Get("/");
+    ASSERT_TRUE(page);
+    EXPECT_EQ(page->status, 200);
+    EXPECT_NE(page->body.find("<html"), std::string::npos);
+    EXPECT_EQ(c.Get("/app.js")->status, 404);  // unknown static files are plain 404s
+    setToken("s3cret-token");
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
+    EXPECT_EQ(submit(smallScene())->status, 201);
+}
+
+TEST_F(ErrorsTest, MultipartAssetsMustStayInsideTheJobFolder) {
+    startServer({"--workers", "0"});
+    json scene = smallScene();
+    std::filesystem::path outside = dataDir().parent_path() / "evil.obj";
+    std::filesystem::remove(outside);
+    const std::vector<std::string> names{"../evil.obj",      "meshes/../../evil.obj", "/tmp/evil.obj",
+                                         "meshes\\evil.obj", std::string("a\0b.obj", 7),  "scene.json"};
+    for (const std::string& name : names) {
+        httplib::MultipartFormDataItems items{
+            {"scene", scene.dump(), "scene.json", "application/json"},
+            {"asset", "v 0 0 0\n", name, "text/plain"},
+        };
+        httplib::Result r = client().Post("/api/v1/jobs", items);
+        ASSERT_TRUE(r) << name;
+        EXPECT_EQ(r->status, 400) << name << ": " << r->body;
+        errorBody(r);
+    }
+    EXPECT_FALSE(std::filesystem::exists(outside));
+    EXPECT_FALSE(std::filesystem::exists(dataDir() / "evil.obj"));
+    EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "jobs"));
+    EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "tmp"));
+}
+
+TEST_F(ErrorsTest, MultipartWithAssetsIsAccepted) {
+    startServer({"--workers", "0", "--max-asset-bytes", "100000"});
+    json scene = smallScene();
+    scene["shapes"].push_back({{"type", "mesh"}, {"file", "meshes/tri.obj"}, {"material", "white"}});
+    std::string obj = "v 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nf 1 2 3\n";
+    httplib::MultipartFormDataItems items{
+        {"scene", scene.dump(), "", "application/json"},
+        {"asset", obj, "meshes/tri.obj", "text/plain"},
+    };
+    httplib::Result r = client().Post("/api/v1/jobs", items);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    std::string id = json::parse(r->body)["id"];
+    EXPECT_TRUE(std::filesystem::exists(dataDir() / "jobs" / id / "meshes" / "tri.obj"));
+    EXPECT_TRUE(std::filesystem::exists(dataDir() / "jobs" / id / "scene.json"));
+
+    // The scene names an asset the upload lacks: a scene error with the path.
+    httplib::MultipartFormDataItems missing{{"scene", scene.dump(), "", "application/json"}};
+    httplib::Result m = client().Post("/api/v1/jobs", missing);
+    EXPECT_EQ(m->status, 400);
+    EXPECT_EQ(errorBody(m)["path"], "shapes[8].file");
+
+    // An asset over --max-asset-bytes.
+    httplib::MultipartFormDataItems big{
+        {"scene", scene.dump(), "", "application/json"},
+        {"asset", std::string(200000, 'x'), "meshes/tri.obj", "text/plain"},
+    };
+    EXPECT_EQ(client().Post("/api/v1/jobs", big)->status, 422);
+
+    httplib::MultipartFormDataItems noScene{{"asset", obj, "meshes/tri.obj", "text/plain"}};
+    EXPECT_EQ(client().Post("/api/v1/jobs", noScene)->status, 400);
+}
+
+}  // namespace
+}  // namespace photon::test

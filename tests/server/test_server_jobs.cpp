@@ -1,0 +1,277 @@
+// The job lifecycle over HTTP: submit, follow events, fetch images, cancel, delete.
+#include <atomic>
+#include <thread>
+#include "render.h"
+#include "scene/scene_loader.h"
+#include "server_fixture.h"
+
+namespace photon::test {
+namespace {
+
+class JobsTest : public ServerTest {};
+
+// The image the engine renders in-process for the same scene: the server must serve exactly
+// this (renders are deterministic for a seed).
+Image renderDirectly(const json& scene) {
+    SceneDescription description = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
+    Renderer renderer(Scene::build(std::move(description)));
+    CancelToken cancel;
+    EXPECT_EQ(renderer.run(cancel), RenderOutcome::Completed);
+    return renderer.snapshot();
+}
+
+TEST_F(JobsTest, SubmitFollowEventsAndFetchImages) {
+    startServer();
+    json scene = smallScene();
+    httplib::Result r = submit(scene);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    json job = json::parse(r->body);
+    std::string id = job["id"];
+    EXPECT_EQ(id.size(), 16u);
+    EXPECT_EQ(r->get_header_value("Location"), "/api/v1/jobs/" + id);
+    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+    EXPECT_TRUE(job["status"] == "queued" || job["status"] == "running") << job["status"];
+    EXPECT_EQ(job["settings"]["passes"], 3);
+    EXPECT_EQ(job["settings"]["photons_per_pass"], 2000);
+    EXPECT_EQ(job["settings"]["seed"], 7);
+    EXPECT_EQ(job["settings"]["integrator"], "sppm");
+    EXPECT_EQ(job["settings"]["resolution"], json::array({32, 32}));
+
+    // Last-Event-ID 0 replays every event of the job, however late we connect.
+    std::vector<SseEvent> events = followEvents(id, {{"Last-Event-ID", "0"}});
+    ASSERT_FALSE(events.empty());
+    std::vector<int> passes;
+    for (size_t i = 0; i + 1 < events.size(); ++i) {
+        EXPECT_EQ(events[i].type, "progress");
+        if (events[i].data["pass"] > 0) passes.push_back(events[i].data["pass"]);
+    }
+    EXPECT_EQ(passes, (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(events.back().type, "done");
+    EXPECT_EQ(events.back().data["status"], "completed");
+
+    job = getJob(id);
+    EXPECT_EQ(job["status"], "completed");
+    EXPECT_EQ(job["pass"], 3);
+    EXPECT_EQ(job["photons_traced"], 6000);
+    EXPECT_TRUE(job["finished_at"].is_string());
+    EXPECT_TRUE(job["error"].is_null());
+
+    httplib::Client c = client();
+    httplib::Result png = c.Get(("/api/v1/jobs/" + id + "/image").c_str());
+    ASSERT_TRUE(png);
+    ASSERT_EQ(png->status, 200);
+    EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+    EXPECT_EQ(png->get_header_value("X-Photon-Pass"), "3");
+    EXPECT_EQ(png->get_header_value("ETag"), "\"" + id + "-3-png\"");
+    Image pngImage = decodeImage(png->body, "png");
+    EXPECT_EQ(pngImage.width, 32);
+    EXPECT_EQ(pngImage.height, 32);
+
+    httplib::Result exr = c.Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
+    ASSERT_TRUE(exr);
+    ASSERT_EQ(exr->status, 200);
+    EXPECT_EQ(exr->get_header_value("ETag"), "\"" + id + "-3-exr\"");
+    Image served = decodeImage(exr->body, "exr");
+    ASSERT_EQ(served.width, 32);
+    ASSERT_EQ(served.height, 32);
+    Image direct = renderDirectly(scene);
+    ASSERT_EQ(served.rgb.size(), direct.rgb.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < direct.rgb.size(); ++i) differing += served.rgb[i] != direct.rgb[i];
+    EXPECT_EQ(differing, 0u) << "of " << direct.rgb.size() << " channel values";
+}
+
+TEST_F(JobsTest, LiveEventsStartWithTheCurrentStateThenOnePerPass) {
+    startServer();
+    // The long job occupies the only worker, so the small one waits in the queue while we
+    // connect; cancelling the long job then lets it run under our eyes.
+    std::string blocker = submitOk(longScene());
+    waitForStatus(blocker, "running");
+    std::string id = submitOk(smallScene());
+    std::atomic<bool> connected{false};
+    std::string stream;
+    std::thread follower([&] {
+        client().Get(("/api/v1/jobs/" + id + "/events").c_str(), [&](const char* d, size_t n) {
+            stream.append(d, n);
+            connected = true;
+            return true;
+        });
+    });
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!connected && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(connected);
+    client().Post(("/api/v1/jobs/" + blocker + "/cancel").c_str());
+    follower.join();
+
+    std::vector<SseEvent> events = parseSse(stream);
+    ASSERT_EQ(events.size(), 5u) << stream;
+    EXPECT_EQ(events[0].type, "progress");
+    EXPECT_EQ(events[0].data["status"], "queued");
+    EXPECT_EQ(events[0].data["pass"], 0);
+    for (int pass = 1; pass <= 3; ++pass) {
+        EXPECT_EQ(events[pass].type, "progress");
+        EXPECT_EQ(events[pass].data["pass"], pass);
+        EXPECT_EQ(events[pass].data["status"], "running");
+        EXPECT_EQ(events[pass].id, std::to_string(pass));
+    }
+    EXPECT_EQ(events[4].type, "done");
+    EXPECT_EQ(events[4].data["pass"], 3);
+    // Reconnecting after the end: nothing more to send.
+    EXPECT_EQ(client().Get(("/api/v1/jobs/" + id + "/events").c_str(), {{"Last-Event-ID", "4"}})->status, 204);
+}
+
+TEST_F(JobsTest, QueryParametersOverrideTheRenderBlock) {
+    startServer({"--workers", "0"});
+    httplib::Result r = submit(smallScene(), "?passes=5&photons_per_pass=1000&seed=42&priority=3");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    json job = json::parse(r->body);
+    EXPECT_EQ(job["settings"]["passes"], 5);
+    EXPECT_EQ(job["settings"]["photons_per_pass"], 1000);
+    EXPECT_EQ(job["settings"]["seed"], 42);
+    EXPECT_EQ(job["priority"], 3);
+    EXPECT_EQ(job["status"], "queued");
+}
+
+TEST_F(JobsTest, ListsNewestFirstWithFilterAndPaging) {
+    startServer({"--workers", "0"});
+    std::string a = submitOk(smallScene()), b = submitOk(smallScene()), c = submitOk(smallScene());
+    ASSERT_EQ(client().Post(("/api/v1/jobs/" + b + "/cancel").c_str())->status, 200);
+    json all = json::parse(client().Get("/api/v1/jobs")->body);
+    EXPECT_EQ(all["total"], 3);
+    ASSERT_EQ(all["jobs"].size(), 3u);
+    EXPECT_EQ(all["jobs"][0]["id"], c);
+    EXPECT_EQ(all["jobs"][1]["id"], b);
+    EXPECT_EQ(all["jobs"][2]["id"], a);
+    json queued = json::parse(client().Get("/api/v1/jobs?status=queued&limit=1&offset=1")->body);
+    EXPECT_EQ(queued["total"], 2);
+    ASSERT_EQ(queued["jobs"].size(), 1u);
+    EXPECT_EQ(queued["jobs"][0]["id"], a);
+    EXPECT_EQ(client().Get("/api/v1/jobs?status=bogus")->status, 400);
+    EXPECT_EQ(client().Get("/api/v1/jobs?limit=0")->status, 400);
+}
+
+TEST_F(JobsTest, ImageRevalidationAndNoImageBeforeFirstPass) {
+    startServer({"--workers", "0"});  // nothing renders: the job stays queued
+    std::string queued = submitOk(smallScene());
+    httplib::Result none = client().Get(("/api/v1/jobs/" + queued + "/image").c_str());
+    ASSERT_TRUE(none);
+    EXPECT_EQ(none->status, 404);
+    EXPECT_TRUE(json::parse(none->body).contains("error"));
+    stopServer();
+
+    startServer();  // the same data directory: the queued job now runs
+    waitForStatus(queued, "completed");
+    httplib::Client c = client();
+    std::string path = "/api/v1/jobs/" + queued + "/image";
+    httplib::Result first = c.Get(path.c_str());
+    ASSERT_TRUE(first);
+    ASSERT_EQ(first->status, 200);
+    std::string etag = first->get_header_value("ETag");
+    EXPECT_EQ(etag, "\"" + queued + "-3-png\"");
+    httplib::Result again = c.Get(path.c_str(), {{"If-None-Match", etag}});
+    ASSERT_TRUE(again);
+    EXPECT_EQ(again->status, 304);
+    EXPECT_TRUE(again->body.empty());
+    httplib::Result other = c.Get(path.c_str(), {{"If-None-Match", "\"" + queued + "-2-png\""}});
+    EXPECT_EQ(other->status, 200);
+    EXPECT_EQ(c.Get((path + "?format=tiff").c_str())->status, 400);
+}
+
+TEST_F(JobsTest, CancelRunningJobKeepsItsImage) {
+    startServer();
+    std::string id = submitOk(longScene());
+    json running = waitFor(id, [](const json& j) { return j["pass"] >= 1; });
+    ASSERT_EQ(running["status"], "running");
+
+    EXPECT_EQ(client().Delete(("/api/v1/jobs/" + id).c_str())->status, 409);  // not finished
+
+    auto start = std::chrono::steady_clock::now();
+    httplib::Result r = client().Post(("/api/v1/jobs/" + id + "/cancel").c_str());
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->status == 202 || r->status == 200) << r->status;
+    json job = waitForStatus(id, "cancelled");
+    EXPECT_EQ(job["status"], "cancelled");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    int pass = job["pass"];
+    EXPECT_GE(pass, 1);
+    EXPECT_LT(pass, 50000);
+
+    httplib::Result image = client().Get(("/api/v1/jobs/" + id + "/image").c_str());
+    ASSERT_TRUE(image);
+    EXPECT_EQ(image->status, 200);
+    EXPECT_EQ(image->get_header_value("X-Photon-Pass"), std::to_string(pass));
+    EXPECT_EQ(decodeImage(image->body, "png").width, 48);
+
+    // The event stream of a finished job is its final event.
+    std::vector<SseEvent> events = followEvents(id);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].type, "cancelled");
+
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/cancel").c_str())->status, 409);
+    EXPECT_EQ(client().Delete(("/api/v1/jobs/" + id).c_str())->status, 204);
+    EXPECT_EQ(client().Get(("/api/v1/jobs/" + id).c_str())->status, 404);
+    EXPECT_EQ(client().Get(("/api/v1/jobs/" + id + "/image").c_str())->status, 404);
+    EXPECT_FALSE(std::filesystem::exists(dataDir() / "jobs" / id));
+}
+
+TEST_F(JobsTest, CancelQueuedJobAtOnceAndEventsReportIt) {
+    startServer({"--workers", "0"});
+    std::string id = submitOk(smallScene());
+    std::vector<SseEvent> events;
+    std::thread follower([&] { events = followEvents(id); });
+    // The first event (current state) arrives before the cancel in most runs; either way
+    // the stream must end with the cancelled event.
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    httplib::Result r = client().Post(("/api/v1/jobs/" + id + "/cancel").c_str());
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_EQ(json::parse(r->body)["status"], "cancelled");
+    follower.join();
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back().type, "cancelled");
+    EXPECT_EQ(client().Get(("/api/v1/jobs/" + id + "/image").c_str())->status, 404);
+}
+
+TEST_F(JobsTest, StreamSendsPngFramesUntilTheJobEnds) {
+    startServer();
+    std::string id = submitOk(smallScene(4));
+    waitForStatus(id, "completed");
+    std::string body;
+    httplib::Result r = client().Get(("/api/v1/jobs/" + id + "/stream").c_str(), [&](const char* d, size_t n) {
+        body.append(d, n);
+        return true;
+    });
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->get_header_value("Content-Type"), "multipart/x-mixed-replace; boundary=frame");
+    EXPECT_NE(body.find("--frame\r\nContent-Type: image/png\r\n"), std::string::npos);
+    EXPECT_NE(body.find("X-Photon-Pass: 4\r\n"), std::string::npos);
+    EXPECT_EQ(body.substr(body.size() - 11), "--frame--\r\n");
+}
+
+TEST_F(JobsTest, HealthMetricsAndHomePage) {
+    startServer();
+    httplib::Result health = client().Get("/api/v1/health");
+    ASSERT_TRUE(health);
+    EXPECT_EQ(health->status, 200);
+    EXPECT_EQ(json::parse(health->body), json({{"status", "ok"}}));
+    std::string id = submitOk(smallScene());
+    waitForStatus(id, "completed");
+    std::string metrics = client().Get("/metrics")->body;
+    EXPECT_NE(metrics.find("photon_jobs{status=\"completed\"} 1\n"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("photon_passes_total 3\n"), std::string::npos);
+    EXPECT_NE(metrics.find("photon_photons_traced_total 6000\n"), std::string::npos);
+    EXPECT_NE(metrics.find("photon_render_seconds_total "), std::string::npos);
+    EXPECT_NE(metrics.find("photon_http_requests_total{route=\"/api/v1/jobs\",code=\"201\"} 1\n"), std::string::npos);
+    EXPECT_NE(metrics.find("photon_http_requests_total{route=\"/api/v1/health\",code=\"200\"} 1\n"), std::string::npos);
+    httplib::Result home = client().Get("/");
+    ASSERT_TRUE(home);
+    EXPECT_EQ(home->status, 200);
+    EXPECT_NE(home->get_header_value("Content-Type").find("text/html"), std::string::npos);
+    EXPECT_NE(home->body.find("photon render service"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace photon::test

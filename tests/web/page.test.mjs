@@ -1,0 +1,323 @@
+// Browser test of the web page (web/) against a real photon-server, with Debian's Chromium
+// driven by playwright-core (no browser download).
+//
+//   npm ci --prefix tests/web
+//   PHOTON_SERVER_BIN=build-server/server/photon-server PHOTON_WEB_SCREENSHOT=out/web.png \
+//     node --test tests/web/page.test.mjs
+//
+// Starts the server on a free port with a fresh data folder, opens the page, checks the
+// client-side JSON error, a scene error with its JSON path from the server, renders the
+// Cornell box example (4 passes of 20000 photons) and watches the image follow the passes
+// until the job completes, saves a screenshot, then cancels and deletes jobs from the page.
+// The server and the browser are stopped at the end, also when a check fails.
+
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { createInterface } from 'node:readline';
+import { after, before, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+
+let chromium;
+try {
+  ({ chromium } = await import('playwright-core'));
+} catch (error) {
+  throw new Error(`playwright-core is not installed: run \`npm ci --prefix tests/web\` first (${error.message})`);
+}
+
+const REPO = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+const WEB_ROOT = join(REPO, 'web');
+const CHROMIUM = '/usr/bin/chromium';
+const SERVER_BIN = process.env.PHOTON_SERVER_BIN ? resolve(process.env.PHOTON_SERVER_BIN) : '';
+const SCREENSHOT = resolve(process.env.PHOTON_WEB_SCREENSHOT || join(tmpdir(), 'photon-web.png'));
+const RENDER_TIMEOUT_MS = 120_000;
+
+let server = null; // { proc, baseUrl, stderr }
+let context = null; // Playwright persistent browser context
+let page = null;
+let scratch = null; // temp folder: server data + browser profile
+let screenshotTaken = false;
+const pageErrors = [];
+
+// ---- Server ------------------------------------------------------------------------
+
+function serverArgs(dataDir) {
+  // The server serves its --web-root at "/": this checkout's web/.
+  return ['--host', '127.0.0.1', '--port', '0', '--data', dataDir, '--web-root', WEB_ROOT];
+}
+
+function startServer(dataDir) {
+  return new Promise((resolvePromise, reject) => {
+    const proc = spawn(SERVER_BIN, serverArgs(dataDir), { cwd: REPO, stdio: ['ignore', 'pipe', 'pipe'] });
+    const state = { proc, baseUrl: null, stderr: '' };
+    server = state;
+    proc.stderr.on('data', (chunk) => {
+      state.stderr += chunk;
+    });
+    const timer = setTimeout(() => reject(new Error(`photon-server did not print its address within 30 s\n${state.stderr}`)), 30_000);
+    const lines = createInterface({ input: proc.stdout });
+    lines.once('line', (line) => {
+      clearTimeout(timer);
+      const match = /^photon-server listening on (http:\/\/127\.0\.0\.1:\d+\/)$/.exec(line.trim());
+      if (!match) return reject(new Error(`unexpected first line from photon-server: ${JSON.stringify(line)}`));
+      state.baseUrl = match[1];
+      lines.on('line', () => {}); // keep draining stdout
+      resolvePromise(state);
+    });
+    proc.once('error', (error) => {
+      clearTimeout(timer);
+      reject(error);
+    });
+    proc.once('exit', (code, signal) => {
+      clearTimeout(timer);
+      if (!state.baseUrl) reject(new Error(`photon-server exited (${code ?? signal}) before listening\n${state.stderr}`));
+    });
+  });
+}
+
+async function stopServer() {
+  if (!server || server.proc.exitCode !== null || server.proc.signalCode !== null) return;
+  const { proc } = server;
+  const exited = new Promise((r) => proc.once('exit', r));
+  proc.kill('SIGTERM');
+  let timer;
+  const timeout = new Promise((r) => {
+    timer = setTimeout(() => r('timeout'), 10_000);
+  });
+  const outcome = await Promise.race([exited, timeout]);
+  clearTimeout(timer);
+  if (outcome === 'timeout') {
+    proc.kill('SIGKILL');
+    await exited;
+  }
+}
+
+// If the test process itself is killed, do not leave the server behind.
+process.on('exit', () => {
+  if (server && server.proc.exitCode === null && server.proc.signalCode === null) server.proc.kill('SIGKILL');
+});
+
+// ---- Setup -------------------------------------------------------------------------
+
+before(async () => {
+  assert.ok(SERVER_BIN, 'set PHOTON_SERVER_BIN to the photon-server binary');
+  assert.ok(existsSync(SERVER_BIN), `PHOTON_SERVER_BIN does not exist: ${SERVER_BIN}`);
+  assert.ok(existsSync(CHROMIUM), `${CHROMIUM} is missing: apt-get install -y chromium`);
+  scratch = mkdtempSync(join(tmpdir(), 'photon-web-test-'));
+  await startServer(join(scratch, 'data'));
+
+  context = await chromium.launchPersistentContext(join(scratch, 'profile'), {
+    executablePath: CHROMIUM,
+    headless: true,
+    args: [
+      '--headless',
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-quic',
+      '--no-first-run',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+    ],
+    viewport: { width: 1440, height: 1000 },
+  });
+  page = context.pages()[0] || (await context.newPage());
+  page.on('pageerror', (error) => pageErrors.push(String(error)));
+  const response = await page.goto(server.baseUrl);
+  assert.equal(response.status(), 200, 'GET / should serve web/index.html');
+});
+
+after(async () => {
+  try {
+    if (page && !screenshotTaken) {
+      // A check failed before the screenshot: keep what the page showed, for diagnosis.
+      mkdirSync(dirname(SCREENSHOT), { recursive: true });
+      await page.screenshot({ path: SCREENSHOT, fullPage: true }).catch(() => {});
+    }
+    if (context) await context.close().catch(() => {});
+  } finally {
+    await stopServer();
+    if (scratch) rmSync(scratch, { recursive: true, force: true });
+  }
+});
+
+// ---- Helpers -----------------------------------------------------------------------
+
+async function textOf(selector) {
+  return (await page.locator(selector).textContent()).trim();
+}
+
+async function chooseExample(name) {
+  await page.selectOption('#example-select', name);
+  await page.waitForFunction(() => document.querySelector('#scene-text').value.trim().startsWith('{'));
+}
+
+async function clearOverrides() {
+  for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
+}
+
+async function submittedJobId() {
+  await page.waitForFunction(() => /^Submitted job \S+\.$/.test(document.querySelector('#form-status').textContent));
+  return /^Submitted job (\S+)\.$/.exec(await textOf('#form-status'))[1];
+}
+
+// ---- Tests -------------------------------------------------------------------------
+
+test('the page loads with the bundled examples', async () => {
+  assert.equal(await page.title(), 'photon render service');
+  const options = await page.locator('#example-select option').evaluateAll((els) => els.map((e) => e.value));
+  assert.deepEqual(options.filter(Boolean), ['cornell-box', 'cornell-glass', 'point-light-plane']);
+  for (const id of ['#submit-button', '#job-list', '#scene-text', '#passes', '#photons-per-pass', '#seed']) {
+    assert.equal(await page.locator(id).count(), 1, `${id} is on the page`);
+  }
+});
+
+test('invalid JSON is explained next to the textarea and nothing is sent', async () => {
+  let posted = 0;
+  const onRequest = (request) => {
+    if (request.method() === 'POST' && request.url().includes('/api/v1/jobs')) posted++;
+  };
+  page.on('request', onRequest);
+  await page.fill('#scene-text', '{\n  "camera": {\n    "fov": 40,\n  }\n}');
+  await page.click('#submit-button');
+  const error = page.locator('#scene-error');
+  await error.filter({ hasText: 'The scene is not valid JSON' }).waitFor();
+  const message = (await error.textContent()).trim();
+  assert.match(message, /^The scene is not valid JSON: .+ at line 4, column 3\.$/);
+  assert.equal(await page.getAttribute('#scene-text', 'aria-invalid'), 'true');
+  assert.equal(await page.getAttribute('#scene-text', 'aria-describedby'), 'scene-error');
+  // Next to the textarea: its following sibling in the same field.
+  assert.ok(await page.evaluate(() => document.querySelector('#scene-text').nextElementSibling.id === 'scene-error'));
+  page.off('request', onRequest);
+  assert.equal(posted, 0, 'an unparsable scene must not be sent to the server');
+});
+
+test("a scene error shows the server's message with the JSON path", async () => {
+  await chooseExample('cornell-glass');
+  const scene = JSON.parse(await page.inputValue('#scene-text'));
+  const sphere = scene.shapes.findIndex((s) => s.type === 'sphere');
+  assert.ok(sphere >= 0, 'the example has a sphere');
+  scene.shapes[sphere].radius = -1;
+  const text = JSON.stringify(scene, null, 2);
+
+  // What the server says about this scene, asked directly.
+  const direct = await fetch(new URL('api/v1/jobs', server.baseUrl), {
+    method: 'POST',
+    headers: { 'Content-Type': 'application/json' },
+    body: text,
+  });
+  assert.equal(direct.status, 400);
+  const body = await direct.json();
+  assert.equal(body.path, `shapes[${sphere}].radius`);
+  assert.match(body.error, new RegExp(`^shapes\\[${sphere}\\]\\.radius: must be > 0`));
+
+  await page.fill('#scene-text', text);
+  await clearOverrides();
+  await page.click('#submit-button');
+  const error = page.locator('#scene-error');
+  await error.filter({ hasText: 'radius' }).waitFor();
+  assert.equal((await error.textContent()).trim(), body.error);
+  assert.equal(await textOf('#form-error'), '', 'the scene error is shown by the scene, not at the bottom');
+});
+
+test('a Cornell box render follows its passes to completion', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
+  // Every pass value the job view puts into the image's URL.
+  await page.evaluate(() => {
+    window.__imagePasses = [];
+    const img = document.querySelector('#job-image');
+    const record = () => {
+      const pass = new URL(img.src, location.href).searchParams.get('pass');
+      if (pass && !window.__imagePasses.includes(pass)) window.__imagePasses.push(pass);
+    };
+    new MutationObserver(record).observe(img, { attributes: true, attributeFilter: ['src'] });
+  });
+  const loadedPasses = new Set(); // image responses that arrived (200)
+  page.on('response', (response) => {
+    const match = /\/api\/v1\/jobs\/[^/]+\/image\?format=png&pass=(\d+)$/.exec(response.url());
+    if (match && response.status() === 200) loadedPasses.add(match[1]);
+  });
+
+  await chooseExample('cornell-box');
+  await page.fill('#passes', '4');
+  await page.fill('#photons-per-pass', '20000');
+  await page.fill('#seed', '');
+  await page.click('#submit-button');
+  const id = await submittedJobId();
+  assert.equal(await textOf('#job-id'), id, 'the job view opens the submitted job');
+
+  await page.waitForFunction(
+    () => document.querySelector('#job-status').textContent === 'completed' && window.__imagePasses.length >= 2,
+    null,
+    { timeout: RENDER_TIMEOUT_MS },
+  );
+  const passes = await page.evaluate(() => window.__imagePasses.map(Number));
+  t.diagnostic(`image passes shown: ${passes.join(', ')}`);
+  assert.ok(passes.length >= 2, `the image should update at least twice, saw passes ${passes}`);
+  assert.deepEqual([...passes].sort((a, b) => a - b), passes, 'pass numbers only go up');
+  assert.equal(passes[passes.length - 1], 4, 'the last image is of pass 4');
+  assert.equal(await textOf('#job-pass'), '4 / 4');
+
+  // The final image is really shown, at the scene's resolution.
+  await page.waitForFunction(() => {
+    const img = document.querySelector('#job-image');
+    return !img.hidden && img.complete && img.naturalWidth === 256 && img.naturalHeight === 256 && img.dataset.pass === '4';
+  });
+  assert.ok(loadedPasses.has('4'), 'the image of pass 4 was fetched');
+
+  // Numbers and controls of a completed job.
+  assert.match(await textOf('#job-elapsed'), /^\d+:\d\d:\d\d$/);
+  assert.match(await textOf('#job-rate'), /\/s$/);
+  assert.match(await textOf('#job-radius'), /^\d/);
+  assert.equal(await page.isDisabled('#cancel-button'), true);
+  assert.equal(await page.isDisabled('#delete-button'), false);
+  for (const format of ['png', 'exr']) {
+    const link = page.locator(`#download-${format}`);
+    assert.equal(await link.getAttribute('href'), `/api/v1/jobs/${id}/image?format=${format}`);
+    assert.equal(await link.getAttribute('download'), `photon-${id}.${format}`);
+  }
+  assert.doesNotMatch(await page.getAttribute('#radius-plot', 'aria-label'), /No passes/);
+
+  // The list shows the job as completed with a full progress bar (it polls every 2 s).
+  const row = page.locator(`#job-list li[data-job-id="${id}"]`);
+  await page.waitForFunction(
+    (jobId) => document.querySelector(`#job-list li[data-job-id="${jobId}"]`)?.dataset.status === 'completed',
+    id,
+    { timeout: 10_000 },
+  );
+  assert.equal(await row.locator('progress').evaluate((bar) => bar.value), 1);
+
+  mkdirSync(dirname(SCREENSHOT), { recursive: true });
+  await page.screenshot({ path: SCREENSHOT, fullPage: true });
+  screenshotTaken = true;
+});
+
+test('a running job can be cancelled and a finished one deleted', async () => {
+  await chooseExample('cornell-glass');
+  await page.fill('#passes', '100000');
+  await page.fill('#photons-per-pass', '20000');
+  await page.click('#submit-button');
+  const id = await submittedJobId();
+  await page.waitForFunction(() => document.querySelector('#job-status').textContent === 'running', null, {
+    timeout: 30_000,
+  });
+  await page.click('#cancel-button');
+  await page.waitForFunction(() => document.querySelector('#job-status').textContent === 'cancelled', null, {
+    timeout: 30_000,
+  });
+  await page.waitForFunction(() => !document.querySelector('#delete-button').disabled);
+  await page.click('#delete-button');
+  await page.waitForFunction(
+    (jobId) => !document.querySelector(`#job-list li[data-job-id="${jobId}"]`),
+    id,
+    { timeout: 10_000 },
+  );
+  assert.equal(await textOf('#job-empty'), `Job ${id} was deleted.`);
+  const gone = await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl));
+  assert.equal(gone.status, 404);
+});
+
+test('the page raised no script errors', () => {
+  assert.deepEqual(pageErrors, []);
+});

@@ -1,0 +1,224 @@
+// The photon REST API (/api/v1) as plain functions. Every call goes through request(),
+// which adds the bearer token when one is set, asks for a token on a 401 and retries once,
+// and turns failures into ApiError with a message in plain words. normalizeJob() is the one
+// place that knows the server's field names for a job record.
+
+const BASE = '/api/v1';
+const TOKEN_KEY = 'photon.token';
+
+export class ApiError extends Error {
+  // status: the HTTP status (0 when the server could not be reached); path: the JSON path
+  // into the scene for scene errors ('' for the document as a whole), else undefined.
+  constructor(message, { status = 0, path } = {}) {
+    super(message);
+    this.name = 'ApiError';
+    this.status = status;
+    this.path = path;
+  }
+}
+
+// ---- Token ---------------------------------------------------------------------------
+
+let askForToken = null; // (refused: boolean) => Promise<string|null>, set by main.js
+let pendingAsk = null;  // one question at a time, however many requests got a 401
+let declined = false;   // the user closed the question: do not ask again by ourselves
+
+export function getToken() {
+  try {
+    return sessionStorage.getItem(TOKEN_KEY) || '';
+  } catch {
+    return '';
+  }
+}
+
+export function setToken(token) {
+  try {
+    if (token) sessionStorage.setItem(TOKEN_KEY, token);
+    else sessionStorage.removeItem(TOKEN_KEY);
+  } catch {
+    // Storage refused (private mode): the token lasts until the page is reloaded.
+  }
+}
+
+export function hasToken() {
+  return getToken() !== '';
+}
+
+export function onTokenNeeded(ask) {
+  askForToken = ask;
+}
+
+// After the user declined: ask again on the next 401 (the "Enter access token" button).
+export function allowTokenQuestion() {
+  declined = false;
+}
+
+function authHeaders() {
+  const token = getToken();
+  return token ? { Authorization: `Bearer ${token}` } : {};
+}
+
+async function tokenAfter401() {
+  if (!askForToken || declined) return null;
+  if (!pendingAsk) {
+    pendingAsk = Promise.resolve(askForToken(hasToken())).then((token) => {
+      if (token) setToken(token);
+      else declined = true;
+      return token;
+    }).finally(() => {
+      pendingAsk = null;
+    });
+  }
+  return pendingAsk;
+}
+
+// ---- Requests ------------------------------------------------------------------------
+
+async function errorFrom(res) {
+  let body = null;
+  try {
+    body = await res.json();
+  } catch {
+    // Not JSON (a proxy's page, say): fall back to the status line.
+  }
+  const serverMessage = body && typeof body.error === 'string' ? body.error : '';
+  const path = body && typeof body.path === 'string' ? body.path : undefined;
+  let message = serverMessage || `The server answered ${res.status} ${res.statusText}`.trim();
+  if (res.status === 413) {
+    message = 'The upload is too large for the server' + (serverMessage ? ` (${serverMessage}).` : '.');
+  } else if (res.status === 401) {
+    message = 'The server needs an access token' + (hasToken() ? ', and the one given was refused.' : '.');
+  } else if (path && !message.startsWith(path)) {
+    message = `${path}: ${message}`;
+  }
+  return new ApiError(message, { status: res.status, path });
+}
+
+async function request(method, url, { body, headers = {} } = {}) {
+  for (let attempt = 0; ; attempt++) {
+    let res;
+    try {
+      res = await fetch(BASE + url, { method, body, headers: { ...headers, ...authHeaders() } });
+    } catch {
+      throw new ApiError("The server can't be reached. Check that photon-server is running and try again.");
+    }
+    if (res.status === 401 && attempt === 0 && (await tokenAfter401())) continue;
+    if (!res.ok) throw await errorFrom(res);
+    return res;
+  }
+}
+
+async function requestJson(method, url, options) {
+  const res = await request(method, url, options);
+  return res.status === 204 ? null : res.json();
+}
+
+function query(params) {
+  const q = new URLSearchParams();
+  for (const [key, value] of Object.entries(params)) {
+    if (value !== undefined && value !== null && value !== '') q.set(key, String(value));
+  }
+  const text = q.toString();
+  return text ? `?${text}` : '';
+}
+
+// ---- Job records ---------------------------------------------------------------------
+
+function first(...values) {
+  return values.find((v) => v !== undefined && v !== null);
+}
+
+function num(...values) {
+  const v = first(...values);
+  return typeof v === 'number' && Number.isFinite(v) ? v : null;
+}
+
+// The server's job record -> the names the page uses. Missing fields become null.
+export function normalizeJob(raw) {
+  const r = raw || {};
+  const s = r.settings || {};
+  const resolution = Array.isArray(s.resolution) ? s.resolution : [];
+  const photonsTraced = num(r.photons_traced);
+  const elapsedSeconds = num(r.elapsed_seconds, r.elapsed);
+  let photonsPerSecond = num(r.photons_per_second);
+  if (photonsPerSecond === null && photonsTraced !== null && elapsedSeconds > 0) {
+    photonsPerSecond = photonsTraced / elapsedSeconds;
+  }
+  return {
+    id: String(first(r.id, '')),
+    status: String(first(r.status, 'unknown')),
+    priority: num(r.priority),
+    createdAt: first(r.created_at, null),
+    startedAt: first(r.started_at, null),
+    finishedAt: first(r.finished_at, null),
+    passesDone: num(r.pass, r.passes_done) ?? 0,
+    passes: num(r.total_passes, s.passes, r.passes),
+    photonsPerPass: num(s.photons_per_pass, r.photons_per_pass),
+    seed: num(s.seed, r.seed),
+    integrator: first(s.integrator, r.integrator, null),
+    width: num(resolution[0], r.width),
+    height: num(resolution[1], r.height),
+    photonsTraced,
+    photonsPerSecond,
+    meanRadius: num(r.mean_radius),
+    elapsedSeconds,
+    etaSeconds: num(r.eta_seconds, r.eta),
+    error: first(r.error, null),
+  };
+}
+
+export const FINAL_STATUSES = ['completed', 'failed', 'cancelled'];
+
+export function isFinished(job) {
+  return FINAL_STATUSES.includes(job.status);
+}
+
+// ---- Endpoints -----------------------------------------------------------------------
+
+export async function listJobs({ status, limit = 50, offset = 0 } = {}) {
+  const body = await requestJson('GET', `/jobs${query({ status, limit, offset })}`);
+  const jobs = Array.isArray(body && body.jobs) ? body.jobs.map(normalizeJob) : [];
+  return { jobs, total: num(body && body.total) ?? jobs.length };
+}
+
+export async function getJob(id) {
+  return normalizeJob(await requestJson('GET', `/jobs/${encodeURIComponent(id)}`));
+}
+
+// sceneText: the scene JSON as text. assets: [{ file: File, path: 'meshes/x.obj' }].
+// params: { passes, photons_per_pass, seed, priority }; empty values are left out.
+export async function submitJob({ sceneText, assets = [], params = {} }) {
+  const url = `/jobs${query(params)}`;
+  if (assets.length === 0) {
+    const headers = { 'Content-Type': 'application/json' };
+    return normalizeJob(await requestJson('POST', url, { body: sceneText, headers }));
+  }
+  const form = new FormData();
+  form.append('scene', new Blob([sceneText], { type: 'application/json' }), 'scene.json');
+  // The part name is fixed ('scene' is reserved); the filename carries the asset's path.
+  for (const { file, path } of assets) form.append('asset', file, path);
+  return normalizeJob(await requestJson('POST', url, { body: form }));
+}
+
+export async function cancelJob(id) {
+  return normalizeJob(await requestJson('POST', `/jobs/${encodeURIComponent(id)}/cancel`));
+}
+
+export async function deleteJob(id) {
+  await request('DELETE', `/jobs/${encodeURIComponent(id)}`);
+}
+
+// The latest image; `pass` only makes the URL differ per pass so the browser refetches.
+export function imageUrl(id, format = 'png', pass) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass })}`;
+}
+
+// The image as a Blob, for when a token is needed (an <img> or <a> cannot send headers).
+export async function fetchImage(id, format = 'png') {
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format })}`);
+  return res.blob();
+}
+
+export function eventsUrl(id) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
+}

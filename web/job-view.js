@@ -1,0 +1,275 @@
+// The job view: latest image, progress numbers, the radius/photons plot, Cancel, Delete and
+// downloads. Follows the job with Server-Sent Events; when a token is in use (EventSource
+// cannot send headers) or the stream fails for good, it polls GET /jobs/{id} every second.
+
+import {
+  cancelJob,
+  deleteJob,
+  eventsUrl,
+  fetchImage,
+  getJob,
+  hasToken,
+  imageUrl,
+  isFinished,
+  normalizeJob,
+} from './api.js';
+import { formatCount, formatDuration, formatPasses, formatRadius, formatRate, formatTime, progressFraction } from './format.js';
+import { RadiusPlot } from './radius-plot.js';
+
+const POLL_MS = 1000;
+const EVENT_TYPES = ['progress', 'done', 'failed', 'cancelled'];
+
+const $ = (id) => document.getElementById(id);
+
+export function createJobView({ onChanged, onDeleted }) {
+  const el = {
+    empty: $('job-empty'),
+    details: $('job-details'),
+    id: $('job-id'),
+    image: $('job-image'),
+    placeholder: $('job-image-placeholder'),
+    status: $('job-status'),
+    pass: $('job-pass'),
+    rate: $('job-rate'),
+    radius: $('job-radius'),
+    photons: $('job-photons'),
+    elapsed: $('job-elapsed'),
+    eta: $('job-eta'),
+    resolution: $('job-resolution'),
+    photonsPerPass: $('job-photons-per-pass'),
+    seed: $('job-seed'),
+    created: $('job-created'),
+    progress: $('job-progress'),
+    error: $('job-error'),
+    actionError: $('job-action-error'),
+    cancel: $('cancel-button'),
+    remove: $('delete-button'),
+    png: $('download-png'),
+    exr: $('download-exr'),
+  };
+  const plot = new RadiusPlot($('radius-plot'));
+  let session = null; // the job on show: { id, job, source, timer, imagePass, plotPass, objectUrl }
+
+  function showMessage(text) {
+    el.details.hidden = true;
+    el.empty.hidden = false;
+    el.empty.textContent = text;
+    el.id.textContent = '';
+  }
+
+  function setDownload(link, id, format, ready) {
+    if (ready) {
+      link.href = imageUrl(id, format);
+      link.download = `photon-${id}.${format}`;
+      link.removeAttribute('aria-disabled');
+    } else {
+      link.removeAttribute('href');
+      link.setAttribute('aria-disabled', 'true');
+    }
+  }
+
+  async function showImage(s, pass) {
+    s.imagePass = pass;
+    el.image.dataset.pass = String(pass);
+    el.image.alt = `Image of job ${s.id} after pass ${pass}`;
+    if (!hasToken()) {
+      el.image.src = imageUrl(s.id, 'png', pass);
+    } else {
+      // An <img> cannot send the token: fetch the image and show it from memory.
+      try {
+        const url = URL.createObjectURL(await fetchImage(s.id, 'png'));
+        if (session !== s) return URL.revokeObjectURL(url);
+        if (s.objectUrl) URL.revokeObjectURL(s.objectUrl);
+        s.objectUrl = url;
+        el.image.src = url;
+      } catch (error) {
+        el.actionError.textContent = `The image could not be loaded: ${error.message}`;
+        return;
+      }
+    }
+    el.image.hidden = false;
+    el.placeholder.hidden = true;
+  }
+
+  function render(job) {
+    el.status.textContent = job.status;
+    el.status.dataset.status = job.status;
+    el.pass.textContent = formatPasses(job.passesDone, job.passes);
+    el.rate.textContent = formatRate(job.photonsPerSecond);
+    el.radius.textContent = formatRadius(job.meanRadius);
+    el.photons.textContent = formatCount(job.photonsTraced);
+    el.elapsed.textContent = formatDuration(job.elapsedSeconds);
+    el.eta.textContent = job.status === 'running' && job.passesDone > 0 ? formatDuration(job.etaSeconds) : '—';
+    el.resolution.textContent = job.width && job.height ? `${job.width} × ${job.height}` : '—';
+    el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
+    el.seed.textContent = job.seed ?? '—';
+    el.created.textContent = formatTime(job.createdAt);
+    el.progress.value = progressFraction(job.passesDone, job.passes);
+    el.error.hidden = !job.error;
+    el.error.textContent = job.error ? `The render failed: ${job.error}` : '';
+    el.cancel.disabled = job.status !== 'queued' && job.status !== 'running';
+    el.remove.disabled = !isFinished(job);
+    setDownload(el.png, job.id, 'png', job.passesDone > 0);
+    setDownload(el.exr, job.id, 'exr', job.passesDone > 0);
+  }
+
+  // A new state of the job on show, from an event, a poll or a button's answer.
+  function apply(s, job) {
+    if (session !== s) return;
+    const previous = s.job;
+    // Answers can cross (a slow GET after a newer event): never step back.
+    if (previous && isFinished(previous) && !isFinished(job)) return;
+    if (previous && job.passesDone < previous.passesDone) return;
+    s.job = job;
+    render(job);
+    if (job.passesDone > 0 && job.passesDone !== s.imagePass) showImage(s, job.passesDone);
+    if (job.passesDone > s.plotPass) {
+      s.plotPass = job.passesDone;
+      plot.add({ t: job.elapsedSeconds, radius: job.meanRadius, photons: job.photonsTraced });
+    }
+    if (isFinished(job)) {
+      stopFollowing(s);
+      if (!previous || !isFinished(previous)) onChanged();
+    }
+  }
+
+  function stopFollowing(s) {
+    if (s.source) s.source.close();
+    s.source = null;
+    clearTimeout(s.timer);
+    s.timer = null;
+  }
+
+  function poll(s) {
+    s.timer = setTimeout(async () => {
+      if (session !== s) return;
+      try {
+        apply(s, await getJob(s.id));
+      } catch (error) {
+        if (session !== s) return;
+        if (error.status === 404) {
+          close();
+          showMessage(`Job ${s.id} no longer exists.`);
+          return;
+        }
+        el.actionError.textContent = error.message; // keep trying: the server may come back
+      }
+      if (session === s && !(s.job && isFinished(s.job))) poll(s);
+    }, POLL_MS);
+  }
+
+  function follow(s) {
+    if (hasToken() || typeof EventSource !== 'function') return poll(s);
+    const source = new EventSource(eventsUrl(s.id));
+    s.source = source;
+    for (const type of EVENT_TYPES) {
+      source.addEventListener(type, (event) => {
+        el.actionError.textContent = '';
+        try {
+          apply(s, normalizeJob(JSON.parse(event.data)));
+        } catch {
+          // A malformed event: the next one or the final state will correct the view.
+        }
+      });
+    }
+    source.addEventListener('error', () => {
+      // CONNECTING: the browser retries by itself. CLOSED: it gave up (an HTTP error such
+      // as 401 or 404), so fall back to polling, which reports the reason.
+      if (session === s && source.readyState === EventSource.CLOSED && !(s.job && isFinished(s.job))) {
+        s.source = null;
+        poll(s);
+      }
+    });
+  }
+
+  function close() {
+    if (!session) return;
+    stopFollowing(session);
+    if (session.objectUrl) URL.revokeObjectURL(session.objectUrl);
+    session = null;
+  }
+
+  function open(id) {
+    close();
+    const s = { id, job: null, source: null, timer: null, imagePass: 0, plotPass: 0, objectUrl: null };
+    session = s;
+    el.empty.hidden = true;
+    el.details.hidden = false;
+    el.id.textContent = id;
+    el.image.hidden = true;
+    el.image.removeAttribute('src');
+    delete el.image.dataset.pass;
+    el.placeholder.hidden = false;
+    el.actionError.textContent = '';
+    for (const key of ['status', 'pass', 'rate', 'radius', 'photons', 'elapsed', 'eta']) el[key].textContent = '…';
+    el.cancel.disabled = true;
+    el.remove.disabled = true;
+    setDownload(el.png, id, 'png', false);
+    setDownload(el.exr, id, 'exr', false);
+    plot.clear();
+    follow(s); // first, so no pass is missed while the GET is on its way
+    getJob(id)
+      .then((job) => apply(s, job))
+      .catch((error) => {
+        if (session !== s) return;
+        close();
+        showMessage(error.status === 404 ? `There is no job ${id}.` : error.message);
+      });
+  }
+
+  el.cancel.addEventListener('click', async () => {
+    const s = session;
+    if (!s) return;
+    el.cancel.disabled = true;
+    el.actionError.textContent = '';
+    try {
+      apply(s, await cancelJob(s.id));
+      // 202: still running until the pass ends; events or polls bring the final state.
+    } catch (error) {
+      if (session === s) el.actionError.textContent = error.message;
+    }
+    onChanged();
+  });
+
+  el.remove.addEventListener('click', async () => {
+    const s = session;
+    if (!s) return;
+    el.remove.disabled = true;
+    el.actionError.textContent = '';
+    try {
+      await deleteJob(s.id);
+      close();
+      showMessage(`Job ${s.id} was deleted.`);
+      onDeleted(s.id);
+    } catch (error) {
+      if (session === s) {
+        el.actionError.textContent = error.message;
+        el.remove.disabled = false;
+      }
+    }
+    onChanged();
+  });
+
+  // With a token, plain links would be refused: fetch the file and save it from memory.
+  for (const [link, format] of [
+    [el.png, 'png'],
+    [el.exr, 'exr'],
+  ]) {
+    link.addEventListener('click', async (event) => {
+      if (!session || !hasToken() || !link.href) return;
+      event.preventDefault();
+      try {
+        const url = URL.createObjectURL(await fetchImage(session.id, format));
+        const save = document.createElement('a');
+        save.href = url;
+        save.download = link.download;
+        save.click();
+        setTimeout(() => URL.revokeObjectURL(url), 10000);
+      } catch (error) {
+        el.actionError.textContent = error.message;
+      }
+    });
+  }
+
+  return { open, close, currentId: () => (session ? session.id : null) };
+}

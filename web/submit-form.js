@@ -1,0 +1,211 @@
+// The "New render" form: a scene from the bundled examples, a .json file or pasted text;
+// asset files with editable relative paths; optional passes, photons per pass and seed.
+// Checks what it can before sending (JSON syntax, whole numbers) and shows every error,
+// its own or the server's, next to the field at fault.
+
+import { ApiError, submitJob } from './api.js';
+import { EXAMPLES, exampleScene } from './examples.js';
+import { formatJson } from './format.js';
+import { describeJsonError } from './json-error.js';
+
+const $ = (id) => document.getElementById(id);
+
+// Query parameter -> its input, the input's error element and the words that point at it
+// in a server message (first match wins, so "photons_per_pass" is not taken for passes).
+const NUMBER_FIELDS = [
+  { param: 'photons_per_pass', input: 'photons-per-pass', label: 'Photons per pass', min: 1, words: /photon/i },
+  { param: 'passes', input: 'passes', label: 'Passes', min: 1, words: /\bpass(es)?\b/i },
+  { param: 'seed', input: 'seed', label: 'Seed', min: 0, words: /\bseed\b/i },
+];
+
+// Every string in a parsed scene: candidates for an asset's path.
+function sceneStrings(node, out = []) {
+  if (typeof node === 'string') out.push(node);
+  else if (node && typeof node === 'object') for (const v of Object.values(node)) sceneStrings(v, out);
+  return out;
+}
+
+export function createSubmitForm({ onSubmitted }) {
+  const form = $('submit-form');
+  const select = $('example-select');
+  const sceneFile = $('scene-file');
+  const sceneText = $('scene-text');
+  const assetInput = $('asset-files');
+  const assetList = $('asset-list');
+  const button = $('submit-button');
+  const status = $('form-status');
+  let assets = []; // { file, pathInput }
+
+  for (const example of EXAMPLES) select.add(new Option(example.title, example.name));
+
+  function showError(elementId, message, input) {
+    $(elementId).textContent = message;
+    if (input) input.setAttribute('aria-invalid', 'true');
+  }
+
+  function clearErrors() {
+    for (const el of form.querySelectorAll('.field-error, #form-error')) el.textContent = '';
+    for (const el of form.querySelectorAll('[aria-invalid]')) el.removeAttribute('aria-invalid');
+    status.textContent = '';
+  }
+
+  // The path the scene most likely names for this file: a string ending in "/<name>".
+  function guessPath(fileName) {
+    try {
+      const named = sceneStrings(JSON.parse(sceneText.value));
+      return named.find((s) => s === fileName || s.endsWith(`/${fileName}`)) || fileName;
+    } catch {
+      return fileName;
+    }
+  }
+
+  function renderAssets() {
+    assetList.replaceChildren();
+    assets.forEach((asset, index) => {
+      const item = document.createElement('li');
+      const label = document.createElement('label');
+      label.htmlFor = `asset-path-${index}`;
+      label.textContent = `Path in the scene for ${asset.file.name}`;
+      asset.pathInput.id = `asset-path-${index}`;
+      const remove = document.createElement('button');
+      remove.type = 'button';
+      remove.textContent = 'Remove';
+      remove.setAttribute('aria-label', `Remove ${asset.file.name}`);
+      remove.addEventListener('click', () => {
+        assets = assets.filter((a) => a !== asset);
+        renderAssets();
+      });
+      item.append(label, asset.pathInput, remove);
+      assetList.append(item);
+    });
+  }
+
+  select.addEventListener('change', () => {
+    const scene = exampleScene(select.value);
+    if (!scene) return;
+    sceneText.value = formatJson(scene);
+    sceneFile.value = '';
+    clearErrors();
+  });
+
+  sceneFile.addEventListener('change', async () => {
+    const file = sceneFile.files && sceneFile.files[0];
+    if (!file) return;
+    clearErrors();
+    try {
+      sceneText.value = await file.text();
+      select.value = '';
+    } catch {
+      showError('scene-error', `Could not read ${file.name}.`, sceneText);
+    }
+  });
+
+  assetInput.addEventListener('change', () => {
+    for (const file of assetInput.files || []) {
+      const pathInput = document.createElement('input');
+      pathInput.type = 'text';
+      pathInput.value = guessPath(file.name);
+      pathInput.spellcheck = false;
+      assets.push({ file, pathInput });
+    }
+    assetInput.value = ''; // so the same file can be added again after removing it
+    renderAssets();
+  });
+
+  // The overrides from the number inputs, or null after showing what is wrong.
+  function readNumbers() {
+    const params = {};
+    let ok = true;
+    for (const field of NUMBER_FIELDS) {
+      const input = $(field.input);
+      const text = input.value.trim();
+      if (input.validity && input.validity.badInput) {
+        showError(`${field.input}-error`, `${field.label} must be a whole number.`, input);
+        ok = false;
+      } else if (text !== '') {
+        if (!/^\d+$/.test(text) || Number(text) < field.min) {
+          showError(`${field.input}-error`, `${field.label} must be a whole number of at least ${field.min}.`, input);
+          ok = false;
+        } else {
+          params[field.param] = text;
+        }
+      }
+    }
+    return ok ? params : null;
+  }
+
+  function readAssets() {
+    const seen = new Set();
+    for (const { file, pathInput } of assets) {
+      const path = pathInput.value.trim();
+      if (!path) {
+        showError('assets-error', `Give the path the scene uses for ${file.name}.`, pathInput);
+        return null;
+      }
+      if (seen.has(path)) {
+        showError('assets-error', `Two files have the path ${path}.`, pathInput);
+        return null;
+      }
+      seen.add(path);
+    }
+    return assets.map(({ file, pathInput }) => ({ file, path: pathInput.value.trim() }));
+  }
+
+  // Puts a server error next to the field it is about.
+  function showServerError(error) {
+    const message = error.message;
+    if (!(error instanceof ApiError) || error.status === 0 || error.status === 413 || error.status >= 500) {
+      showError('form-error', message);
+      return;
+    }
+    if (error.path !== undefined) {
+      showError('scene-error', message, sceneText);
+      return;
+    }
+    for (const field of NUMBER_FIELDS) {
+      if (field.words.test(message) && $(field.input).value.trim() !== '') {
+        showError(`${field.input}-error`, message, $(field.input));
+        return;
+      }
+    }
+    if (/\basset\b|\bform field\b|\bupload/i.test(message) && assets.length > 0) {
+      showError('assets-error', message, assetInput);
+    } else if (/photon|pass|pixel|resolution|width|height|scene|JSON/i.test(message)) {
+      // A limit the scene itself exceeds (its own passes, resolution...).
+      showError('scene-error', message, sceneText);
+    } else {
+      showError('form-error', message);
+    }
+  }
+
+  form.addEventListener('submit', async (event) => {
+    event.preventDefault();
+    clearErrors();
+    const text = sceneText.value;
+    try {
+      JSON.parse(text);
+    } catch (parseError) {
+      showError('scene-error', describeJsonError(text, parseError), sceneText);
+      sceneText.focus();
+      return;
+    }
+    const params = readNumbers();
+    const files = readAssets();
+    if (!params || !files) return;
+
+    button.disabled = true;
+    button.textContent = 'Submitting…';
+    try {
+      const job = await submitJob({ sceneText: text, assets: files, params });
+      status.textContent = `Submitted job ${job.id}.`;
+      onSubmitted(job);
+    } catch (error) {
+      showServerError(error);
+    } finally {
+      button.disabled = false;
+      button.textContent = 'Submit render';
+    }
+  });
+
+  return { clearErrors };
+}
