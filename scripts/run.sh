@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
-# The run command: installs what is missing, builds, and renders the glass Cornell box
-# to out/cornell-glass.exr and .png with a progress bar.
+# The run command: installs what is missing, builds, and starts the render service on
+# http://127.0.0.1:8080/ (the page) with its jobs and images under data/.
+# Extra arguments go to photon-server (e.g. --port 9000 --workers 2 --token SECRET).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
-mkdir -p "$root/out"
-"$root/build/cli/photon-render" "$root/scenes/cornell-glass.json" -o "$root/out/cornell-glass.exr" --png "$root/out/cornell-glass.png"
-echo "wrote $root/out/cornell-glass.exr and $root/out/cornell-glass.png"
+exec "$root/build/server/photon-server" --data "$root/data" --web-root "$root/web" "$@"

@@ -54,8 +54,11 @@ std::vector<uint8_t> encodePng(const Image& image, float exposure) {
     std::vector<uint8_t> pixels = toneMapToSrgb8(image, exposure);
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
-    writeImage("image.png", OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::UINT8), pixels.data(),
-               &proxy);
+    // Served images are encoded once per pass while the render runs: zlib's fastest level
+    // costs a third of the default's time for files about 10% larger.
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("png:compressionLevel", 1);
+    writeImage("image.png", spec, pixels.data(), &proxy);
     return {buffer.begin(), buffer.end()};
 }
 
