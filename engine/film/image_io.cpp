@@ -2,6 +2,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,10 +10,32 @@ namespace photon {
 
 namespace {
 
-uint8_t encodeSrgb(float linear) {
-    float v = std::clamp(linear, 0.0f, 1.0f);
-    v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-    return static_cast<uint8_t>(std::lround(v * 255.0f));
+// The sRGB transfer curve (IEC 61966-2-1) sampled at 2^16 linear steps: images are tone
+// mapped every pass for live previews, and a table lookup is far cheaper than powf. The
+// steps are fine enough that every one of the 256 output codes is reached.
+class SrgbTable {
+public:
+    static constexpr int kSteps = 65535;
+    SrgbTable() {
+        for (int i = 0; i <= kSteps; ++i) {
+            double v = static_cast<double>(i) / kSteps;
+            v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+            table_[i] = static_cast<uint8_t>(std::lround(v * 255.0));
+        }
+    }
+    uint8_t encode(float linear) const {
+        float v = std::clamp(linear, 0.0f, 1.0f);  // NaN becomes 0 through the comparison below
+        int index = v >= 0.0f ? static_cast<int>(v * kSteps + 0.5f) : 0;
+        return table_[index];
+    }
+
+private:
+    std::array<uint8_t, kSteps + 1> table_;
+};
+
+const SrgbTable& srgbTable() {
+    static const SrgbTable table;
+    return table;
 }
 
 // One writer for files and memory: `proxy` is null for files.
@@ -35,8 +58,9 @@ OIIO::ImageSpec exrSpec(const Image& image) {
 
 std::vector<uint8_t> toneMapToSrgb8(const Image& image, float exposure) {
     float scale = std::exp2(exposure);
+    const SrgbTable& table = srgbTable();
     std::vector<uint8_t> out(image.rgb.size());
-    for (size_t i = 0; i < image.rgb.size(); ++i) out[i] = encodeSrgb(image.rgb[i] * scale);
+    for (size_t i = 0; i < image.rgb.size(); ++i) out[i] = table.encode(image.rgb[i] * scale);
     return out;
 }
 
