@@ -1,4 +1,5 @@
 #include "render.h"
+#include "integrators/checkpoint.h"
 
 namespace photon {
 
@@ -22,6 +23,26 @@ bool Renderer::renderPass(const CancelToken& cancel) {
     double limit = scene_->settings().timeLimitSeconds;
     if (limit > 0) progress_.etaSeconds = std::min(progress_.etaSeconds, std::max(0.0, limit - renderSeconds_));
     return true;
+}
+
+void Renderer::saveCheckpoint(std::ostream& out) const {
+    writeRaw(out, &progress_.photonsTraced, 1);
+    writeRaw(out, &renderSeconds_, 1);
+    integrator_->saveState(out);
+}
+
+void Renderer::restoreCheckpoint(std::istream& in) {
+    // The integrator restores all or nothing; the progress is only taken once it has.
+    int64_t photons = 0;
+    double seconds = 0;
+    readRaw(in, &photons, 1);
+    readRaw(in, &seconds, 1);
+    integrator_->restoreState(in);
+    renderSeconds_ = seconds;
+    progress_.photonsTraced = photons;
+    progress_.pass = integrator_->passesDone();
+    progress_.elapsedSeconds = seconds;
+    progress_.photonsPerSecond = seconds > 0 ? static_cast<double>(photons) / seconds : 0;
 }
 
 RenderOutcome Renderer::run(const CancelToken& cancel, const ProgressFn& onPass) {

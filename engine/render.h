@@ -35,6 +35,11 @@ public:
     bool renderPass(const CancelToken& cancel);
 
     Image snapshot() const { return integrator_->snapshot(); }
+    // The render's whole state after the last finished pass, and its restoration into a
+    // new Renderer of the same scene: the passes that follow give the image an
+    // uninterrupted render would have. Where the bytes go is the caller's business.
+    void saveCheckpoint(std::ostream& out) const;
+    void restoreCheckpoint(std::istream& in);
     const RenderProgress& progress() const { return progress_; }
     const Integrator& integrator() const { return *integrator_; }
     const Scene& scene() const { return *scene_; }

@@ -3,6 +3,8 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <istream>
+#include <ostream>
 #include <memory>
 #include "../film/image.h"
 
@@ -42,6 +44,10 @@ public:
     virtual int passesDone() const = 0;
     // Bytes of state kept per pixel (persistent plus per-pass), for memory accounting.
     virtual size_t bytesPerPixel() const = 0;
+    // The whole state after the last finished pass (see checkpoint.h). restoreState takes
+    // what saveState wrote for the same scene and settings, else throws CheckpointError.
+    virtual void saveState(std::ostream& out) const = 0;
+    virtual void restoreState(std::istream& in) = 0;
 };
 
 // Makes the integrator that scene->settings().integrator names.

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <mutex>
 #include <vector>
+#include "checkpoint.h"
 #include "direct_lighting.h"
 #include "integrator.h"
 #include "path.h"
@@ -53,6 +54,24 @@ public:
     const PassStats& lastPassStats() const override { return stats_; }
     int passesDone() const override { return passes_; }
     size_t bytesPerPixel() const override { return 2 * sizeof(Color); }
+
+    void saveState(std::ostream& out) const override {
+        std::lock_guard<std::mutex> lock(mutex_);
+        writeCheckpointHeader(out, checkpointKey(scene_->settings(), width_, height_));
+        writeRaw(out, &passes_, 1);
+        writeRaw(out, sum_.data(), sum_.size());
+    }
+
+    void restoreState(std::istream& in) override {
+        readCheckpointHeader(in, checkpointKey(scene_->settings(), width_, height_));
+        int passes = 0;
+        readRaw(in, &passes, 1);
+        std::vector<Color> sum(sum_.size());
+        readRaw(in, sum.data(), sum.size());
+        std::lock_guard<std::mutex> lock(mutex_);
+        passes_ = passes;
+        sum_ = std::move(sum);
+    }
 
 private:
     std::shared_ptr<const Scene> scene_;

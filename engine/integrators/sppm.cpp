@@ -1,5 +1,6 @@
 // SPPM: construction, the per-pass driver, the statistics update and snapshots.
 #include "sppm.h"
+#include "checkpoint.h"
 #include <tbb/parallel_for.h>
 #include <chrono>
 
@@ -84,6 +85,24 @@ void SppmIntegrator::updateStatistics() {
             ++withRadius;
         }
     stats_.meanRadius = withRadius ? radiusSum / static_cast<double>(withRadius) : 0.0;
+}
+
+void SppmIntegrator::saveState(std::ostream& out) const {
+    std::lock_guard<std::mutex> lock(stateMutex_);
+    writeCheckpointHeader(out, checkpointKey(settings_, width_, height_));
+    writeRaw(out, &passes_, 1);
+    writeRaw(out, pixels_.data(), pixels_.size());
+}
+
+void SppmIntegrator::restoreState(std::istream& in) {
+    readCheckpointHeader(in, checkpointKey(settings_, width_, height_));
+    int passes = 0;
+    readRaw(in, &passes, 1);
+    std::vector<PixelState> pixels(pixels_.size());
+    readRaw(in, pixels.data(), pixels.size());
+    std::lock_guard<std::mutex> lock(stateMutex_);
+    passes_ = passes;
+    pixels_ = std::move(pixels);
 }
 
 // L = direct / passes + tau / (pi R^2 N_emitted) (Hachisuka & Jensen 2009, eq. 12).

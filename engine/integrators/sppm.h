@@ -24,6 +24,8 @@ public:
     const PassStats& lastPassStats() const override { return stats_; }
     int passesDone() const override { return passes_; }
     size_t bytesPerPixel() const override;
+    void saveState(std::ostream& out) const override;
+    void restoreState(std::istream& in) override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
     struct PixelState {

@@ -1,0 +1,54 @@
+#include "checkpoint.h"
+#include <cstring>
+#include "../math/rng.h"
+
+namespace photon {
+
+namespace {
+constexpr char kMagic[8] = {'P', 'H', 'O', 'T', 'O', 'N', 'C', 'K'};
+constexpr uint32_t kVersion = 1;
+
+uint64_t mixIn(uint64_t h, uint64_t v) { return mix64(h ^ (v + 0x9e3779b97f4a7c15ull)); }
+uint64_t bits(float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+}  // namespace
+
+CheckpointKey checkpointKey(const RenderSettings& s, int width, int height) {
+    uint64_t h = 0;
+    h = mixIn(h, static_cast<uint64_t>(s.integrator));
+    h = mixIn(h, static_cast<uint64_t>(s.photonsPerPass));
+    h = mixIn(h, bits(s.initialRadius));
+    h = mixIn(h, bits(s.alpha));
+    h = mixIn(h, static_cast<uint64_t>(s.maxDepth));
+    h = mixIn(h, s.seed);
+    h = mixIn(h, static_cast<uint64_t>(s.kernel));
+    h = mixIn(h, static_cast<uint64_t>(s.direct));
+    return {static_cast<uint32_t>(width), static_cast<uint32_t>(height), h};
+}
+
+void writeCheckpointHeader(std::ostream& out, const CheckpointKey& key) {
+    writeRaw(out, kMagic, sizeof kMagic);
+    writeRaw(out, &kVersion, 1);
+    writeRaw(out, &key, 1);
+}
+
+void readCheckpointHeader(std::istream& in, const CheckpointKey& expected) {
+    char magic[sizeof kMagic];
+    uint32_t version = 0;
+    CheckpointKey key;
+    readRaw(in, magic, sizeof magic);
+    if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) throw CheckpointError("checkpoint: not a photon checkpoint");
+    readRaw(in, &version, 1);
+    if (version != kVersion) throw CheckpointError("checkpoint: unsupported version " + std::to_string(version));
+    readRaw(in, &key, 1);
+    if (key.width != expected.width || key.height != expected.height)
+        throw CheckpointError("checkpoint: made for a " + std::to_string(key.width) + "x" + std::to_string(key.height) +
+                              " image");
+    if (key.settings != expected.settings)
+        throw CheckpointError("checkpoint: made with other render settings");
+}
+
+}  // namespace photon
