@@ -24,6 +24,8 @@ public:
     std::filesystem::path databaseFile() const { return root_ / "jobs.db"; }
     std::filesystem::path jobDir(const std::string& id) const { return root_ / "jobs" / id; }
     std::filesystem::path sceneFile(const std::string& id) const { return jobDir(id) / "scene.json"; }
+    // The running render's saved state (engine checkpoint bytes), while there is one.
+    std::filesystem::path checkpointFile(const std::string& id) const { return jobDir(id) / "checkpoint.bin"; }
     std::filesystem::path imageFile(const std::string& id, ImageFormat format) const;
 
     // A new, empty, uniquely named folder on the same file system as jobs/, so that

@@ -1,5 +1,9 @@
 #include "job_runner.h"
+#include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
+#include "integrators/checkpoint.h"
 #include "clock.h"
 #include "render.h"
 #include "scene_intake.h"
@@ -33,12 +37,42 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     applySettings(started.job.settings, description);
     const float exposure = description.render.exposure;
     Renderer renderer(Scene::build(std::move(description)));
-    double elapsedBefore = 0;
+    resumeFromCheckpoint(id, renderer);
+    double elapsedBefore = renderer.progress().elapsedSeconds;
+    auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
         onPass(id, renderer, p, exposure, elapsedBefore);
+        auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
+            saveCheckpoint(id, renderer);
+            lastCheckpoint = now;
+        }
     });
     if (outcome != RenderOutcome::Cancelled) return Ending::Completed;  // pass count or time limit reached
-    return table_.cancelRequested(id) ? Ending::Cancelled : Ending::Interrupted;
+    if (table_.cancelRequested(id)) return Ending::Cancelled;
+    // The server is stopping: keep the state after the last finished pass for the next start.
+    saveCheckpoint(id, renderer);
+    return Ending::Interrupted;
+}
+
+void JobRunner::saveCheckpoint(const std::string& id, const Renderer& renderer) {
+    std::ostringstream bytes;
+    renderer.saveCheckpoint(bytes);
+    writeFileAtomically(folders_.checkpointFile(id), bytes.str());  // a crash leaves the old one whole
+}
+
+void JobRunner::resumeFromCheckpoint(const std::string& id, Renderer& renderer) {
+    const std::filesystem::path file = folders_.checkpointFile(id);
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return;
+    try {
+        renderer.restoreCheckpoint(in);
+    } catch (const CheckpointError& e) {
+        // Unusable (another version, a damaged file): render from the start instead.
+        std::fprintf(stderr, "photon-server: job %s: %s; starting over\n", id.c_str(), e.what());
+        std::error_code ec;
+        std::filesystem::remove(file, ec);
+    }
 }
 
 void JobRunner::onPass(const std::string& id, const Renderer& renderer, const RenderProgress& p, float exposure,
@@ -54,6 +88,8 @@ void JobRunner::onPass(const std::string& id, const Renderer& renderer, const Re
 void JobRunner::finish(const std::string& id, JobStatus status, const std::string& error) {
     // Files first, then the status: whoever sees the job finished finds its images on disk.
     if (status != JobStatus::Failed) writeImages(id);
+    std::error_code ec;
+    std::filesystem::remove(folders_.checkpointFile(id), ec);
     JobRecord job = table_.finish(id, status, error, utcNowIso8601());
     store_.update(job);
     hub_.publish(job, eventTypeFor(status));

@@ -20,8 +20,9 @@ namespace photon::server {
 class JobRunner {
 public:
     JobRunner(JobTable& table, JobStore& store, const JobFolders& folders, ImageCache& images, EventHub& hub,
-              Metrics& metrics)
-        : table_(table), store_(store), folders_(folders), images_(images), hub_(hub), metrics_(metrics) {}
+              Metrics& metrics, double checkpointSeconds)
+        : table_(table), store_(store), folders_(folders), images_(images), hub_(hub), metrics_(metrics),
+          checkpointSeconds_(checkpointSeconds) {}
 
     // Does nothing if the job is no longer queued. Never throws.
     void run(const std::string& id);
@@ -33,6 +34,8 @@ private:
                 double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
     void writeImages(const std::string& id);
+    void saveCheckpoint(const std::string& id, const Renderer& renderer);
+    void resumeFromCheckpoint(const std::string& id, Renderer& renderer);
 
     JobTable& table_;
     JobStore& store_;
@@ -40,6 +43,7 @@ private:
     ImageCache& images_;
     EventHub& hub_;
     Metrics& metrics_;
+    double checkpointSeconds_;
 };
 
 }  // namespace photon::server

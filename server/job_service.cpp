@@ -14,7 +14,7 @@ JobService::JobService(const ServiceConfig& config)
     : limits_(config.limits),
       folders_(config.dataDir),
       store_(folders_.databaseFile()),
-      runner_(table_, store_, folders_, images_, hub_, metrics_) {
+      runner_(table_, store_, folders_, images_, hub_, metrics_, config.checkpointSeconds) {
     restore();
     workers_ = std::make_unique<WorkerPool>(queue_, runner_, config.workers);
 }

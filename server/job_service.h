@@ -25,6 +25,9 @@ namespace photon::server {
 struct ServiceConfig {
     std::filesystem::path dataDir = "data";
     int workers = 1;  // 0: accept and store jobs but render none (maintenance, tests)
+    // A running job's state is saved this often (and when the server stops), so that a
+    // crash or restart resumes it from there rather than from pass 0.
+    double checkpointSeconds = 10;
     Limits limits;
 };
 

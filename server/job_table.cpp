@@ -57,7 +57,7 @@ std::optional<JobTable::Started> JobTable::start(const std::string& id, const st
     Entry& e = it->second;
     e.job.status = JobStatus::Running;
     e.job.startedAt = now;
-    e.job.progress = JobProgress{};  // a restarted job renders from pass 0
+    e.job.progress = JobProgress{};  // until its first pass reports, resumed from its checkpoint if any
     e.cancel = std::make_shared<CancelToken>();
     return Started{e.job, e.cancel};
 }

@@ -6,7 +6,7 @@ namespace photon::server {
 const char* const kUsage =
     "usage: photon-server [--host 127.0.0.1] [--port 8080] [--data DIR] [--workers N] [--token TOKEN]\n"
     "                     [--max-pixels N] [--max-passes N] [--max-photons N] [--max-body-bytes N]\n"
-    "                     [--max-asset-bytes N] [--web-root DIR] [--print-routes]\n";
+    "                     [--max-asset-bytes N] [--web-root DIR] [--checkpoint-seconds N] [--print-routes]\n";
 
 namespace {
 
@@ -44,6 +44,8 @@ ServerOptions parseOptions(int argc, char** argv) {
         else if (a == "--max-body-bytes") limits.maxBodyBytes = size_t(parseInteger(a, value(), 1, kBig));
         else if (a == "--max-asset-bytes") limits.maxAssetBytes = size_t(parseInteger(a, value(), 1, kBig));
         else if (a == "--web-root") o.webRoot = value();
+        else if (a == "--checkpoint-seconds")
+            o.service.checkpointSeconds = static_cast<double>(parseInteger(a, value(), 1, 86400));
         else if (a == "--print-routes") o.printRoutes = true;
         else throw std::invalid_argument("unknown argument " + a);
     }

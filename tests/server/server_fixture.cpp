@@ -1,4 +1,6 @@
 #include "server_fixture.h"
+#include "render.h"
+#include "scene/scene_loader.h"
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
@@ -55,6 +57,14 @@ json smallScene(int passes, int64_t photonsPerPass, int resolution) {
 }
 
 json longScene() { return smallScene(50000, 20000, 48); }
+
+Image renderInProcess(const json& scene) {
+    SceneDescription description = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
+    Renderer renderer(Scene::build(std::move(description)));
+    CancelToken cancel;
+    EXPECT_EQ(renderer.run(cancel), RenderOutcome::Completed);
+    return renderer.snapshot();
+}
 
 Image decodeImage(const std::string& bytes, const std::string& extension) {
     fs::path dir = makeTempDir("photon-image-");

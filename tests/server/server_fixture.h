@@ -27,6 +27,10 @@ json smallScene(int passes = 3, int64_t photonsPerPass = 2000, int resolution = 
 // The same scene with passes enough to run for minutes: for cancel, delete and restart.
 json longScene();
 
+// The image the engine renders in-process for the same scene: the server must serve exactly
+// this (renders are deterministic for a seed).
+Image renderInProcess(const json& scene);
+
 // Decodes PNG or EXR bytes with OpenImageIO (through a temporary file).
 Image decodeImage(const std::string& bytes, const std::string& extension);
 
@@ -38,6 +42,7 @@ protected:
     // Starts photon-server on dataDir() with `args` (after --data DIR).
     void startServer(const std::vector<std::string>& args = {});
     int stopServer() { return server_.stop(); }
+    void killServer() { server_.kill(); }
 
     httplib::Client client() const;
     httplib::Headers auth() const;

@@ -83,6 +83,14 @@ int ServerProcess::stop() {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
+void ServerProcess::kill() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+}
+
 std::string runServerBinary(const std::vector<std::string>& extra) {
     std::string command = PHOTON_SERVER_BINARY;
     for (const std::string& a : extra) command += " '" + a + "'";

@@ -20,6 +20,8 @@ public:
     void start(const std::vector<std::string>& args);
     // SIGTERM and wait; returns the exit status (or -1 if it had to be killed).
     int stop();
+    // SIGKILL and wait: a crash, with no chance to save anything.
+    void kill();
     int port() const { return port_; }
     bool running() const { return pid_ > 0; }
 

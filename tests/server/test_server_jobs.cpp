@@ -10,16 +10,6 @@ namespace {
 
 class JobsTest : public ServerTest {};
 
-// The image the engine renders in-process for the same scene: the server must serve exactly
-// this (renders are deterministic for a seed).
-Image renderDirectly(const json& scene) {
-    SceneDescription description = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
-    Renderer renderer(Scene::build(std::move(description)));
-    CancelToken cancel;
-    EXPECT_EQ(renderer.run(cancel), RenderOutcome::Completed);
-    return renderer.snapshot();
-}
-
 TEST_F(JobsTest, SubmitFollowEventsAndFetchImages) {
     startServer();
     json scene = smallScene();
@@ -75,7 +65,7 @@ TEST_F(JobsTest, SubmitFollowEventsAndFetchImages) {
     Image served = decodeImage(exr->body, "exr");
     ASSERT_EQ(served.width, 32);
     ASSERT_EQ(served.height, 32);
-    Image direct = renderDirectly(scene);
+    Image direct = renderInProcess(scene);
     ASSERT_EQ(served.rgb.size(), direct.rgb.size());
     size_t differing = 0;
     for (size_t i = 0; i < direct.rgb.size(); ++i) differing += served.rgb[i] != direct.rgb[i];

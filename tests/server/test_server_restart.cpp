@@ -1,5 +1,5 @@
 // Jobs survive a restart: finished ones keep their records and images, queued ones run,
-// interrupted ones start over from pass 0.
+// interrupted ones resume from their checkpoint.
 #include <atomic>
 #include <thread>
 #include "server_fixture.h"
@@ -47,7 +47,7 @@ TEST_F(RestartTest, JobsSurviveARestart) {
     ASSERT_EQ(events.size(), 1u);
     EXPECT_EQ(events[0].type, "done");
     EXPECT_EQ(events[0].data["pass"], 3);
-    // The long job runs again (from pass 0) once the priority job is done.
+    // The long job runs again once the priority job is done.
     EXPECT_EQ(waitForStatus(interrupted, "running")["status"], "running");
 }
 
@@ -91,6 +91,46 @@ TEST_F(RestartTest, SecondServerOnTheSameDataDirectoryRefusesToStart) {
     startServer({"--workers", "0"});
     ServerProcess second;
     EXPECT_THROW(second.start({"--data", dataDir().string()}), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace photon::test
+
+namespace photon::test {
+namespace {
+
+class CrashTest : public ServerTest {};
+
+TEST_F(CrashTest, AKilledServerResumesTheJobFromItsLastCheckpoint) {
+    // 200 passes of 200k photons at 32x32: long enough to be killed in the middle.
+    json scene = smallScene(200, 200000, 32);
+    startServer({"--checkpoint-seconds", "1"});
+    std::string id = submitOk(scene);
+    const auto checkpoint = dataDir() / "jobs" / id / "checkpoint.bin";
+    json before = waitFor(
+        id, [&](const json& j) { return j["pass"].get<int>() >= 3 && std::filesystem::exists(checkpoint); },
+        std::chrono::seconds(60));
+    ASSERT_TRUE(std::filesystem::exists(checkpoint));
+    ASSERT_LT(before["pass"].get<int>(), 200) << "the job finished before it could be killed";
+    killServer();  // kill -9: nothing is saved on the way out
+
+    startServer({"--checkpoint-seconds", "1"});
+    std::vector<SseEvent> events = followEvents(id, {{"Last-Event-ID", "0"}});
+    std::vector<int> passes;
+    for (const SseEvent& e : events)
+        if (e.type == "progress" && e.data["pass"].get<int>() > 0) passes.push_back(e.data["pass"].get<int>());
+    ASSERT_FALSE(passes.empty());
+    EXPECT_GT(passes.front(), 1) << "resumed from pass 0";
+    EXPECT_EQ(passes.back(), 200);
+    ASSERT_EQ(events.back().type, "done");
+    EXPECT_FALSE(std::filesystem::exists(checkpoint));  // removed once the job is done
+
+    httplib::Result exr = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
+    ASSERT_TRUE(exr);
+    ASSERT_EQ(exr->status, 200);
+    Image served = decodeImage(exr->body, "exr");
+    Image direct = renderInProcess(scene);
+    EXPECT_TRUE(served.rgb == direct.rgb) << "the resumed render differs from an uninterrupted one";
 }
 
 }  // namespace
