@@ -10,12 +10,8 @@ namespace photon {
 namespace {
 
 SceneDescription glassBox(IntegratorKind kind) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-glass.json"));
-    d.camera.width = d.camera.height = 24;
+    SceneDescription d = test::exampleScene("cornell-glass", 24, 6, 10000, 11);
     d.render.integrator = kind;
-    d.render.passes = 6;
-    d.render.photonsPerPass = 10000;
-    d.render.seed = 11;
     return d;
 }
 

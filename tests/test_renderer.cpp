@@ -8,11 +8,7 @@ namespace photon {
 namespace {
 
 SceneDescription smallScene(int passes, int64_t photons) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-box.json"));
-    d.camera.width = d.camera.height = 32;
-    d.render.passes = passes;
-    d.render.photonsPerPass = photons;
-    return d;
+    return test::exampleScene("cornell-box", 32, passes, photons, 1);
 }
 
 TEST(Renderer, ReportsEveryPassWithCumulativePhotons) {

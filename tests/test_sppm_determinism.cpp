@@ -9,12 +9,8 @@ namespace photon {
 namespace {
 
 Image renderWithThreads(int threads, IntegratorKind kind) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-glass.json"));
-    d.camera.width = d.camera.height = 48;
+    SceneDescription d = test::exampleScene("cornell-glass", 48, 3, 30000, 42);
     d.render.integrator = kind;
-    d.render.passes = 3;
-    d.render.photonsPerPass = 30000;
-    d.render.seed = 42;
     Image image;
     tbb::task_arena arena(threads);
     arena.execute([&] {
@@ -42,10 +38,7 @@ TEST(Determinism, PathSameSeedOneAndTwoThreadsGiveIdenticalPixels) {
 }
 
 TEST(Determinism, DifferentSeedsGiveDifferentImages) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-box.json"));
-    d.camera.width = d.camera.height = 16;
-    d.render.passes = 1;
-    d.render.photonsPerPass = 5000;
+    SceneDescription d = test::exampleScene("cornell-box", 16, 1, 5000, 1);
     auto render = [&](uint64_t seed) {
         SceneDescription copy = d;
         copy.render.seed = seed;

@@ -11,11 +11,7 @@ namespace photon {
 namespace {
 
 SceneDescription smallCornell(int resolution) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-box.json"));
-    d.camera.width = d.camera.height = resolution;
-    d.render.photonsPerPass = 20000;
-    d.render.seed = 3;
-    return d;
+    return test::exampleScene("cornell-box", resolution, 64, 20000, 3);
 }
 
 TEST(SppmRadius, FollowsTheProgressiveSchedule) {

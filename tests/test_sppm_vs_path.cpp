@@ -11,13 +11,9 @@ namespace {
 constexpr int kResolution = 64, kRegion = 16;
 
 Image render(IntegratorKind kind, int passes, int64_t photons) {
-    SceneDescription d = loadSceneFile(test::sourcePath("scenes/cornell-box.json"));
-    d.camera.width = d.camera.height = kResolution;
+    SceneDescription d = test::exampleScene("cornell-box", kResolution, passes, photons, 7);
     d.render.integrator = kind;
-    d.render.passes = passes;
-    d.render.photonsPerPass = photons;
     d.render.maxDepth = 64;  // both methods see the same, practically untruncated, transport
-    d.render.seed = 7;
     Renderer renderer(Scene::build(std::move(d)));
     CancelToken cancel;
     renderer.run(cancel);

@@ -13,8 +13,21 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 }  // namespace photon::test
 
 #include "film/image.h"
+#include "scene/scene_loader.h"
 
 namespace photon::test {
+
+// An example scene from scenes/ at a small square resolution, with the render settings the
+// tests vary most; other settings stay as the file has them.
+inline SceneDescription exampleScene(const std::string& name, int resolution, int passes, int64_t photonsPerPass,
+                                     uint64_t seed) {
+    SceneDescription d = loadSceneFile(sourcePath("scenes/" + name + ".json"));
+    d.camera.width = d.camera.height = resolution;
+    d.render.passes = passes;
+    d.render.photonsPerPass = photonsPerPass;
+    d.render.seed = seed;
+    return d;
+}
 
 // Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
 inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
