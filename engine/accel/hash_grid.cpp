@@ -1,3 +1,5 @@
+
+
 #include "hash_grid.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -41,8 +43,9 @@ void HashGrid::setup(size_t count, Vec3 lo, Vec3 hi, double radiusSum, size_t wi
     origin_ = lo;
     for (int a = 0; a < 3; ++a)
         resolution_[a] = std::clamp(static_cast<int>((hi[a] - lo[a]) * invCellSize_) + 1, 1, 1 << 30);
-    // Four buckets per sphere keep unrelated cells from sharing a bucket most of the time.
-    uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(4 * count, 1024)));
+    // One bucket per sphere: a table that stays in L2 builds and looks up faster than a sparser
+    // one, for ~15% more candidates from cells sharing a bucket (photon-bench, 1x vs 4x).
+    uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(count, 1024)));
     mask_ = buckets - 1;
     offsets_.assign(buckets + 1, 0);
 }

@@ -51,10 +51,13 @@ private:
     struct alignas(64) VisiblePoint {
         OctahedralVector n;        // shading normal
         OctahedralVector woLocal;  // outgoing direction in the frame of n
-        Color beta;                // camera path throughput up to here
+        // Camera path throughput up to here; for a Lambertian point already multiplied by
+        // its f = tint / pi, which then needs no eval() per photon.
+        Color beta;
         Color tint;                // material colour at the hit
         uint32_t material : 24 = 0;
-        uint32_t lobes : 8 = kAllLobes;  // the material's lobes photons are gathered through
+        uint32_t lobes : 7 = kAllLobes;  // the material's lobes photons are gathered through
+        uint32_t lambertian : 1 = 0;
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };

@@ -101,8 +101,11 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
         r2 = r * r;
     }
     discs_[index] = GatherDisc{sp.hit.p, r2};
-    visible_[index] = VisiblePoint{n, OctahedralVector(frame.toLocal(wo)), beta, sp.tint,
-                                   scene_->materialIndex(sp.hit), lobes};
+    Vec3 woLocal = frame.toLocal(wo);
+    // Seen from below its (quantised) normal a surface reflects nothing: leave that to eval().
+    const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
+    visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.tint * kInvPi : beta,
+                                   sp.tint, scene_->materialIndex(sp.hit), lobes, lambertian};
 }
 
 }  // namespace photon

@@ -68,12 +68,19 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
     // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
     // do not belong to this point's disc.
     if (dot(vn, hit.n) < 0.5f) return;
-    Frame frame = Frame::fromNormal(vn);
-    Color f = scene_->materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(hit.wi), vp.tint,
-                                                   TransportMode::Radiance, vp.lobes);
-    if (isBlack(f)) return;
+    Color c;
+    if (vp.lambertian) {  // f = tint / pi above the surface, already in beta
+        if (!(dot(vn, hit.wi) > 0)) return;
+        c = vp.beta;
+    } else {
+        Frame frame = Frame::fromNormal(vn);
+        Color f = scene_->materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(hit.wi), vp.tint,
+                                                       TransportMode::Radiance, vp.lobes);
+        if (isBlack(f)) return;
+        c = vp.beta * f;
+    }
     ++counters.accepted;
-    Color c = vp.beta * f * hit.flux * kernelWeight(settings_.kernel, d2OverR2);
+    c *= hit.flux * kernelWeight(settings_.kernel, d2OverR2);
     for (int k = 0; k < 3; ++k) {
         double v = static_cast<double>(c[k]) * kFluxScale;
         if (!(v >= 1.0)) continue;  // also drops NaN

@@ -10,6 +10,7 @@ public:
     explicit Diffuse(ColorParam albedo) : Material(std::move(albedo)) {}
 
     unsigned lobes() const override { return kDiffuseLobe; }
+    bool lambertian() const override { return true; }
 
     Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
         // Reflection only, front side only: light from below the surface never reaches wo.

@@ -50,6 +50,9 @@ public:
     // Opaque materials shade both sides alike (the normal is turned toward the viewer);
     // a dielectric's orientation tells inside from outside, so it is not two-sided.
     virtual bool twoSided() const { return true; }
+    // True if f = tint / pi for every pair of directions above the surface (and 0
+    // otherwise): integrators may then premultiply it instead of calling eval().
+    virtual bool lambertian() const { return false; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 

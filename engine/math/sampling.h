@@ -4,19 +4,28 @@
 
 namespace photon {
 
+// sin and cos of |a| <= pi/4 by their Taylor series to a^9 and a^10: the truncation error
+// is below (pi/4)^11/11! < 2e-9, under float rounding, at a fraction of sincosf's cost
+// (every photon bounce and emission samples a disc).
+inline Vec2 cosSinQuarterTurn(float a) {
+    float a2 = a * a;
+    float s = a * (1 + a2 * (-1.0f / 6 + a2 * (1.0f / 120 + a2 * (-1.0f / 5040 + a2 * (1.0f / 362880)))));
+    float c = 1 + a2 * (-0.5f + a2 * (1.0f / 24 + a2 * (-1.0f / 720 + a2 * (1.0f / 40320 - a2 * (1.0f / 3628800)))));
+    return {c, s};
+}
+
 inline Vec2 sampleUniformDiskConcentric(Vec2 u) {
-    // Shirley & Chiu 1997 concentric map: low distortion, keeps stratification.
+    // Shirley & Chiu 1997 concentric map: low distortion, keeps stratification. The angle
+    // is pi/4 * (oy/ox) or pi/2 - pi/4 * (ox/oy); the second's cos and sin are the sin and
+    // cos of pi/4 * (ox/oy), so both need the trigonometry of a quarter turn only.
     float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
     if (ox == 0 && oy == 0) return {0, 0};
-    float r, theta;
     if (std::abs(ox) > std::abs(oy)) {
-        r = ox;
-        theta = (kPi / 4.0f) * (oy / ox);
-    } else {
-        r = oy;
-        theta = kPi / 2.0f - (kPi / 4.0f) * (ox / oy);
+        Vec2 cs = cosSinQuarterTurn((kPi / 4.0f) * (oy / ox));
+        return {ox * cs.x, ox * cs.y};
     }
-    return {r * std::cos(theta), r * std::sin(theta)};
+    Vec2 cs = cosSinQuarterTurn((kPi / 4.0f) * (ox / oy));
+    return {oy * cs.y, oy * cs.x};
 }
 
 // Cosine-weighted hemisphere about +z (Malley's method); pdf = cos(theta)/pi.

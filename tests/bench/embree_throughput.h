@@ -10,6 +10,12 @@ struct RayThroughput {
     int64_t rays = 0, hits = 0;
     double seconds = 0;
     double raysPerSecond() const { return seconds > 0 ? static_cast<double>(rays) / seconds : 0; }
+    RayThroughput& operator+=(const RayThroughput& o) {
+        rays += o.rays;
+        hits += o.hits;
+        seconds += o.seconds;
+        return *this;
+    }
 };
 
 // Rays start at uniform points in the scene's bounding box with uniform directions,
