@@ -47,12 +47,14 @@ std::unique_ptr<RadiositySolution> RadiositySolution::compute(const Scene& scene
     const RadiositySettings& rs = s.radiosity;
     std::unique_ptr<RadiositySolution> sol(new RadiositySolution(PatchMesh(scene, rs)));
     const std::vector<Patch>& patches = sol->mesh_.patches();
-    auto F = computeFormFactors(scene, sol->mesh_, rs.raysPerPatch, s.seed, cancel);
+    RadiosityLights lights(scene, sol->mesh_, rs.raysPerPatch, rs.directSamples);
+    auto F = computeFormFactors(scene, sol->mesh_, lights, s.seed, cancel);
     if (!F) return nullptr;
     sol->formFactors_ = std::move(*F);
-    auto H = directIrradiance(scene, sol->mesh_, rs.directSamples, s.seed, cancel);
+    auto H = directIrradiance(scene, sol->mesh_, lights, s.seed, cancel);
     if (!H) return nullptr;
     sol->direct_ = std::move(*H);
+    for (size_t i = 0; i < patches.size(); ++i) sol->direct_[i] += sol->formFactors_.emitterIrradiance[i];
     auto solved = solveGaussSeidel(patches, sol->formFactors_, sol->direct_, rs.tolerance, rs.maxIterations, cancel);
     if (!solved) return nullptr;
     sol->iterations_ = solved->iterations;

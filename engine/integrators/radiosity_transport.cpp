@@ -50,11 +50,13 @@ bool forEachPatch(size_t count, const CancelToken& cancel, Body body) {
 
 }  // namespace
 
-std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMesh& mesh, int raysPerPatch,
+std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMesh& mesh, const RadiosityLights& lights,
                                               uint64_t seed, const CancelToken& cancel) {
     const std::vector<Patch>& patches = mesh.patches();
+    const int raysPerPatch = lights.raysPerPatch();
     FormFactors result;
     result.rows.resize(patches.size());
+    result.emitterIrradiance.assign(patches.size(), Color(0.0f));
     std::vector<int64_t> escaped(patches.size(), 0);
     bool done = forEachPatch(patches.size(), cancel, [&](size_t i) {
         const Patch& patch = patches[i];
@@ -63,16 +65,24 @@ std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMes
         Stratified2D points(raysPerPatch, rng), directions(raysPerPatch, rng);
         std::vector<uint32_t> landed;
         landed.reserve(raysPerPatch);
+        Color emitted(0.0f);
         for (int r = 0; r < raysPerPatch; ++r) {
             PatchMesh::SurfaceSample s = mesh.sample(patch, points(r, rng));
-            Vec3 d = Frame::fromNormal(s.n).toWorld(sampleCosineHemisphere(directions(r, rng)));
+            Vec3 local = sampleCosineHemisphere(directions(r, rng));
+            Vec3 d = Frame::fromNormal(s.n).toWorld(local);
             SurfaceHit hit;
             if (!scene.intersect(spawnRay(s.p, s.n, d), hit)) {
                 ++escaped[i];
                 continue;
             }
-            if (auto at = mesh.locate(hit)) landed.push_back(mesh.patchSeenFrom(*at, hit, -d));
+            std::optional<CellPoint> at = mesh.locate(hit);
+            if (!at) continue;
+            uint32_t j = mesh.patchSeenFrom(*at, hit, -d);
+            landed.push_back(j);
+            const Color& E = patches[j].exitance;
+            if (!isBlack(E)) emitted += E * (kInvPi * local.z * lights.misScale(j, local.z, hit.t, dot(hit.ng, -d)));
         }
+        result.emitterIrradiance[i] = emitted;
         std::sort(landed.begin(), landed.end());
         std::vector<FormFactorEntry>& row = result.rows[i];
         for (size_t k = 0; k < landed.size();) {
@@ -89,32 +99,67 @@ std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMes
     return result;
 }
 
-std::optional<std::vector<Color>> directIrradiance(const Scene& scene, const PatchMesh& mesh, int samples,
-                                                   uint64_t seed, const CancelToken& cancel) {
-    const std::vector<Patch>& patches = mesh.patches();
-    std::vector<Color> irradiance(patches.size(), Color(0.0f));
-    if (scene.lights().size() == 0) return irradiance;
-    bool done = forEachPatch(patches.size(), cancel, [&](size_t i) {
-        const Patch& patch = patches[i];
-        if (!(patch.area > 0)) return;
-        Rng rng(seed, kDirectStream, i, StreamPurpose::Setup);
+namespace {
+
+// Light-sampled half of the emitters' MIS estimate: Le cos / (K p_light + N p_cosine) per sample.
+Color emitterSamples(const Scene& scene, const PatchMesh& mesh, const RadiosityLights& lights, const Patch& patch,
+                     Rng& rng) {
+    const int samples = lights.directSamples();
+    Stratified2D points(samples, rng), lightPoints(samples, rng);
+    Color sum(0.0f);
+    for (int k = 0; k < samples; ++k) {
+        PatchMesh::SurfaceSample s = mesh.sample(patch, points(k, rng));
+        std::optional<RadiosityLights::EmitterPick> pick = lights.pickEmitter(rng.uniform());
+        Vec2 u = lightPoints(k, rng);
+        if (!pick) continue;
+        const Patch& emitter = mesh.patches()[pick->patch];
+        PatchMesh::SurfaceSample e = mesh.sample(emitter, u);
+        Vec3 toLight = e.p - s.p;
+        float distance = length(toLight);
+        if (!(distance > 0)) continue;
+        Vec3 wi = toLight / distance;
+        float cosReceiver = dot(s.n, wi), cosEmitter = -dot(e.n, wi);
+        if (cosReceiver <= 0 || cosEmitter <= 0) continue;
+        if (scene.occluded(spawnRayTo(s.p, s.n, e.p))) continue;
+        sum += emitter.exitance * (kInvPi * cosReceiver * lights.misScale(pick->patch, cosReceiver, distance, cosEmitter));
+    }
+    return sum;
+}
+
+// Each light that is not a shape: E = int L cos dw, estimated by (L / pdf) cos; delta
+// lights give the irradiance at normal incidence directly.
+Color otherLightSamples(const Scene& scene, const PatchMesh& mesh, const RadiosityLights& lights, const Patch& patch,
+                        Rng& rng) {
+    const int samples = lights.directSamples();
+    Color sum(0.0f);
+    for (const auto& light : lights.others()) {
         Stratified2D points(samples, rng), lightPoints(samples, rng);
-        Color sum(0.0f);
         for (int k = 0; k < samples; ++k) {
             PatchMesh::SurfaceSample s = mesh.sample(patch, points(k, rng));
-            LightSampler::Pick pick = scene.lights().pick(rng.uniform());
-            if (!pick.light) continue;
-            std::optional<LightSample> ls = pick.light->sampleIncident(s.p, s.n, lightPoints(k, rng));
+            std::optional<LightSample> ls = light->sampleIncident(s.p, s.n, lightPoints(k, rng));
             if (!ls) continue;
             float cosine = dot(s.n, ls->wi);
             if (cosine <= 0) continue;
             Ray shadow = std::isinf(ls->distance) ? spawnRay(s.p, s.n, ls->wi)
                                                   : spawnRayTo(s.p, s.n, s.p + ls->wi * ls->distance);
-            if (scene.occluded(shadow)) continue;
-            // E = int L cos dw, estimated by (L / pdf) cos; delta lights give irradiance directly.
-            sum += ls->weight * (cosine / pick.probability);
+            if (!scene.occluded(shadow)) sum += ls->weight * (cosine / static_cast<float>(samples));
         }
-        irradiance[i] = sum / static_cast<float>(samples);
+    }
+    return sum;
+}
+
+}  // namespace
+
+std::optional<std::vector<Color>> directIrradiance(const Scene& scene, const PatchMesh& mesh,
+                                                   const RadiosityLights& lights, uint64_t seed,
+                                                   const CancelToken& cancel) {
+    const std::vector<Patch>& patches = mesh.patches();
+    std::vector<Color> irradiance(patches.size(), Color(0.0f));
+    bool done = forEachPatch(patches.size(), cancel, [&](size_t i) {
+        const Patch& patch = patches[i];
+        if (!(patch.area > 0)) return;
+        Rng rng(seed, kDirectStream, i, StreamPurpose::Setup);
+        irradiance[i] = emitterSamples(scene, mesh, lights, patch, rng) + otherLightSamples(scene, mesh, lights, patch, rng);
     });
     if (!done) return std::nullopt;
     return irradiance;

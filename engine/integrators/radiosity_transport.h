@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 #include "integrator.h"
-#include "radiosity_patches.h"
+#include "radiosity_lights.h"
 
 namespace photon {
 
@@ -17,19 +17,23 @@ struct FormFactors {
     std::vector<std::vector<FormFactorEntry>> rows;
     int64_t rays = 0;     // cast in all
     int64_t escaped = 0;  // left the scene
+    // Irradiance from emitters found by these rays, MIS-weighted (radiosity_lights.h), W/m^2.
+    std::vector<Color> emitterIrradiance;
 };
 
 // F_ij by cosine-distributed rays from uniform points on patch i (Cohen & Wallace 1993,
 // 4.9; the fraction of rays that land on j estimates F_ij, visibility included). Rays
 // that hit a surface without patches (mirror, glass, glossy metal) are absorbed.
-// Returns nullopt if cancelled.
-std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMesh& mesh, int raysPerPatch,
+// lights.raysPerPatch() rays per patch side. Returns nullopt if cancelled.
+std::optional<FormFactors> computeFormFactors(const Scene& scene, const PatchMesh& mesh, const RadiosityLights& lights,
                                               uint64_t seed, const CancelToken& cancel);
 
-// Irradiance H_i (W/m^2) that reaches each patch side straight from the lights (emissive
-// shapes, point, spot, directional and environment lights): `samples` stratified points
-// on the patch, each with a light picked in proportion to power and a shadow ray.
-std::optional<std::vector<Color>> directIrradiance(const Scene& scene, const PatchMesh& mesh, int samples,
-                                                   uint64_t seed, const CancelToken& cancel);
+// Irradiance (W/m^2) that reaches each patch side straight from the lights by shadow rays
+// from lights.directSamples() stratified points on it: to a point on an emitter picked by
+// power (MIS-weighted, the other half of FormFactors::emitterIrradiance), and to each
+// other light.
+std::optional<std::vector<Color>> directIrradiance(const Scene& scene, const PatchMesh& mesh,
+                                                   const RadiosityLights& lights, uint64_t seed,
+                                                   const CancelToken& cancel);
 
 }  // namespace photon
