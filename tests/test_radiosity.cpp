@@ -208,6 +208,8 @@ TEST(Radiosity, CancelledFirstPassLeavesNoImageAndStatsReportTheSolve) {
     CancelToken cancel;
     ASSERT_TRUE(renderer.renderPass(cancel));
     const PassStats& s = renderer.integrator().lastPassStats();
+    std::printf("patches %lld, rays %lld, sweeps %d, residual %.2g, %.0f ms\n", static_cast<long long>(s.patches),
+                static_cast<long long>(s.formFactorRays), s.solverIterations, s.solverResidual, s.solveMs);
     EXPECT_GT(s.patches, 1000);
     EXPECT_EQ(s.formFactorRays, s.patches * 64);
     EXPECT_GT(s.solverIterations, 1);
