@@ -12,7 +12,7 @@ namespace {
 
 const char* kUsage =
     "usage: photon-render SCENE.json [-o OUT.exr] [--png OUT.png] [--passes N] [--photons-per-pass N]\n"
-    "                     [--time-limit SECONDS] [--threads N] [--seed N] [--integrator sppm|path] [--quiet]\n";
+    "                     [--time-limit SECONDS] [--threads N] [--seed N] [--integrator sppm|path|radiosity] [--quiet]\n";
 
 struct Options {
     std::string scene, exr, png;
@@ -69,7 +69,8 @@ void applyOverrides(const Options& o, photon::RenderSettings& s) {
     if (o.timeLimit) s.timeLimitSeconds = *o.timeLimit;
     if (o.integrator == "path") s.integrator = photon::IntegratorKind::Path;
     else if (o.integrator == "sppm") s.integrator = photon::IntegratorKind::Sppm;
-    else if (!o.integrator.empty()) throw std::invalid_argument("--integrator: expected sppm or path");
+    else if (o.integrator == "radiosity") s.integrator = photon::IntegratorKind::Radiosity;
+    else if (!o.integrator.empty()) throw std::invalid_argument("--integrator: expected sppm, path or radiosity");
 }
 
 std::string formatSeconds(double s) {

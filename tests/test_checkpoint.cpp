@@ -63,7 +63,8 @@ TEST_P(Checkpoint, OtherSettingsOrSizeAreRefused) {
     EXPECT_EQ(r.integrator().passesDone(), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, Checkpoint, ::testing::Values(IntegratorKind::Sppm, IntegratorKind::Path));
+INSTANTIATE_TEST_SUITE_P(Integrators, Checkpoint, ::testing::Values(IntegratorKind::Sppm, IntegratorKind::Path,
+                                                                          IntegratorKind::Radiosity));
 
 }  // namespace
 }  // namespace photon

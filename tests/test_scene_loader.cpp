@@ -132,6 +132,30 @@ TEST(SceneLoader, FullSceneRenderSettings) {
     EXPECT_EQ(r.direct, photon::DirectLighting::Photons);
 }
 
+TEST(SceneLoader, RadiositySettings) {
+    Json d = fullScene();
+    d["render"]["integrator"] = "radiosity";
+    d["render"]["radiosity"] = {{"patch_size", 0.2}, {"max_patches", 1000}, {"rays_per_patch", 64},
+                                {"direct_samples", 8}, {"tolerance", 0.01}, {"max_iterations", 50}};
+    photon::RenderSettings r = load(d).render;
+    EXPECT_EQ(r.integrator, photon::IntegratorKind::Radiosity);
+    EXPECT_FLOAT_EQ(r.radiosity.patchSize, 0.2f);
+    EXPECT_EQ(r.radiosity.maxPatches, 1000);
+    EXPECT_EQ(r.radiosity.raysPerPatch, 64);
+    EXPECT_EQ(r.radiosity.directSamples, 8);
+    EXPECT_FLOAT_EQ(r.radiosity.tolerance, 0.01f);
+    EXPECT_EQ(r.radiosity.maxIterations, 50);
+    d["render"]["radiosity"] = {{"patch_size", "auto"}};
+    photon::RadiositySettings defaults;
+    photon::RadiositySettings a = load(d).render.radiosity;
+    EXPECT_EQ(a.patchSize, 0);
+    EXPECT_EQ(a.maxPatches, defaults.maxPatches);
+    EXPECT_EQ(a.raysPerPatch, 1024);
+    EXPECT_EQ(a.directSamples, 64);
+    EXPECT_FLOAT_EQ(a.tolerance, 1e-4f);
+    EXPECT_EQ(a.maxIterations, 1000);
+}
+
 TEST(SceneLoader, Defaults) {
     SceneDescription s = load(Json::parse(R"({
       "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},

@@ -74,6 +74,21 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["render"]["initial_radius"] = "big"; }, "render.initial_radius",
                 "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["initial_radius"] = 0; }, "render.initial_radius", "must be > 0");
+    expectError([](Json& d) { d["render"]["radiosity"]["patch_size"] = 0; }, "render.radiosity.patch_size",
+                "must be > 0");
+    expectError([](Json& d) { d["render"]["radiosity"]["patch_size"] = "fine"; }, "render.radiosity.patch_size",
+                "must be \"auto\" or a number > 0");
+    expectError([](Json& d) { d["render"]["radiosity"]["max_patches"] = 0; }, "render.radiosity.max_patches",
+                "must be an integer in [1, 2000000]");
+    expectError([](Json& d) { d["render"]["radiosity"]["rays_per_patch"] = 100001; },
+                "render.radiosity.rays_per_patch", "must be an integer in [1, 100000]");
+    expectError([](Json& d) { d["render"]["radiosity"]["direct_samples"] = 0; }, "render.radiosity.direct_samples",
+                "must be an integer in [1, 65536]");
+    expectError([](Json& d) { d["render"]["radiosity"]["tolerance"] = 0; }, "render.radiosity.tolerance",
+                "must be in (0, 1)");
+    expectError([](Json& d) { d["render"]["radiosity"]["max_iterations"] = 2.5; }, "render.radiosity.max_iterations",
+                "must be an integer in [1, 1000000]");
+    expectError([](Json& d) { d["render"]["radiosity"] = 1; }, "render.radiosity", "must be an object");
     expectError([](Json& d) { d["camera"]["fov"] = 180; }, "camera.fov", "must be in (0, 180)");
     expectError([](Json& d) { d["camera"]["aperture_radius"] = -0.1; }, "camera.aperture_radius", "must be >= 0");
     expectError([](Json& d) { d["camera"]["focus_distance"] = 0; }, "camera.focus_distance", "must be > 0");
@@ -117,7 +132,7 @@ TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["camera"]["type"] = "orthographic"; }, "camera.type",
                 "unknown type \"orthographic\" (expected one of perspective)");
     expectError([](Json& d) { d["render"]["integrator"] = "bdpt"; }, "render.integrator",
-                "unknown value \"bdpt\" (expected one of sppm, path)");
+                "unknown value \"bdpt\" (expected one of sppm, path, radiosity)");
     expectError([](Json& d) { d["render"]["kernel"] = "gauss"; }, "render.kernel",
                 "unknown value \"gauss\" (expected one of uniform, biweight)");
     expectError([](Json& d) { d["render"]["direct"] = "none"; }, "render.direct",
@@ -127,6 +142,7 @@ TEST(SceneLoaderErrors, UnknownNames) {
 TEST(SceneLoaderErrors, UnknownFieldsAtEveryDepth) {
     expectError([](Json& d) { d["colour"] = 1; }, "colour", "unknown field");
     expectError([](Json& d) { d["render"]["pases"] = 64; }, "render.pases", "unknown field");
+    expectError([](Json& d) { d["render"]["radiosity"]["patches"] = 64; }, "render.radiosity.patches", "unknown field");
     expectError([](Json& d) { d["camera"]["fov_y"] = 20; }, "camera.fov_y", "unknown field");
     expectError([](Json& d) { d["shapes"][2]["colour"] = {1, 0, 0}; }, "shapes[2].colour", "unknown field");
     expectError([](Json& d) { d["shapes"][2]["transform"]["rotate"]["axes"] = {0, 1, 0}; },

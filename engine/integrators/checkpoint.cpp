@@ -26,6 +26,16 @@ CheckpointKey checkpointKey(const RenderSettings& s, int width, int height) {
     h = mixIn(h, s.seed);
     h = mixIn(h, static_cast<uint64_t>(s.kernel));
     h = mixIn(h, static_cast<uint64_t>(s.direct));
+    // Only where they matter, so other integrators' existing checkpoints stay valid.
+    if (s.integrator == IntegratorKind::Radiosity) {
+        const RadiositySettings& r = s.radiosity;
+        h = mixIn(h, bits(r.patchSize));
+        h = mixIn(h, static_cast<uint64_t>(r.maxPatches));
+        h = mixIn(h, static_cast<uint64_t>(r.raysPerPatch));
+        h = mixIn(h, static_cast<uint64_t>(r.directSamples));
+        h = mixIn(h, bits(r.tolerance));
+        h = mixIn(h, static_cast<uint64_t>(r.maxIterations));
+    }
     return {static_cast<uint32_t>(width), static_cast<uint32_t>(height), h};
 }
 

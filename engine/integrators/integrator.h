@@ -30,6 +30,11 @@ struct PassStats {
     int64_t gatherCandidates = 0, gatherHits = 0;  // visible points tested and accepted by photons
     double cameraMs = 0, gridMs = 0, photonMs = 0, updateMs = 0;
     double meanRadius = 0;       // mean gather radius over pixels that have one, scene units
+    // Radiosity: patch sides (unknowns), form-factor rays, Gauss-Seidel sweeps and the last
+    // one's relative residual, time spent meshing and solving (first pass).
+    int64_t patches = 0, formFactorRays = 0;
+    int solverIterations = 0;
+    double solverResidual = 0, solveMs = 0;
 };
 
 class Integrator {

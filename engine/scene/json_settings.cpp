@@ -44,8 +44,8 @@ CameraDescription readCamera(const JsonValue& value) {
 
 namespace {
 
-// "auto" (stored as 0: derive from each pixel's footprint) or a radius in scene units.
-float readInitialRadius(const JsonValue& value) {
+// "auto" (stored as 0: the integrator derives the value) or a length in scene units > 0.
+float readAutoOrPositive(const JsonValue& value) {
     const char* expected = "must be \"auto\" or a number > 0";
     if (value.json().is_string()) {
         if (value.string() != "auto") value.fail(expected);
@@ -55,23 +55,37 @@ float readInitialRadius(const JsonValue& value) {
     return value.number(Range::positive());
 }
 
+RadiositySettings readRadiosity(const JsonValue& value) {
+    JsonObject obj = value.object();
+    RadiositySettings r;
+    if (auto size = obj.optional("patch_size")) r.patchSize = readAutoOrPositive(*size);
+    r.maxPatches = obj.integer("max_patches", r.maxPatches, 1, 2'000'000);
+    r.raysPerPatch = int(obj.integer("rays_per_patch", r.raysPerPatch, 1, 100'000));
+    r.directSamples = int(obj.integer("direct_samples", r.directSamples, 1, 65536));
+    r.tolerance = obj.number("tolerance", r.tolerance, Range::open(0, 1));
+    r.maxIterations = int(obj.integer("max_iterations", r.maxIterations, 1, 1'000'000));
+    obj.finish();
+    return r;
+}
+
 }  // namespace
 
 RenderSettings readRender(const JsonValue& value) {
     JsonObject obj = value.object();
     RenderSettings r;
     // The choice lists are in the order of the enums they convert to.
-    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path"}));
+    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path", "radiosity"}));
     r.passes = int(obj.integer("passes", r.passes, 1, 1'000'000));
     r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
     r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
-    if (auto radius = obj.optional("initial_radius")) r.initialRadius = readInitialRadius(*radius);
+    if (auto radius = obj.optional("initial_radius")) r.initialRadius = readAutoOrPositive(*radius);
     r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));
     r.maxDepth = int(obj.integer("max_depth", r.maxDepth, 1, 1000));
     if (auto seed = obj.optional("seed")) r.seed = seed->unsignedInteger();
     r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight"}));
     r.exposure = obj.number("exposure", 0);
     r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
+    if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     obj.finish();
     return r;
 }

@@ -5,10 +5,21 @@
 
 namespace photon {
 
-enum class IntegratorKind { Sppm, Path };
+enum class IntegratorKind { Sppm, Path, Radiosity };
 enum class KernelKind { Uniform, Biweight };
 // Where SPPM takes direct light at visible points from.
 enum class DirectLighting { LightSampling, Photons };
+
+// Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
+// the form factors and the linear system are computed.
+struct RadiositySettings {
+    float patchSize = 0;          // target patch edge, scene units; 0: "auto", from the scene's size
+    int64_t maxPatches = 50000;   // patch sides (unknowns) at most; the patch size grows to fit
+    int raysPerPatch = 1024;      // form-factor rays cast from each patch side
+    int directSamples = 64;       // shadow rays per patch side for the first-shot direct light
+    float tolerance = 1e-4f;      // solver stops when max |change| / max radiosity is below it
+    int maxIterations = 1000;     // Gauss-Seidel sweeps at most
+};
 
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Sppm;
@@ -22,6 +33,7 @@ struct RenderSettings {
     KernelKind kernel = KernelKind::Uniform;
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
+    RadiositySettings radiosity;
 };
 
 }  // namespace photon

@@ -120,6 +120,8 @@ bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     hit.t = rh.ray.tfar;
     hit.shape = rh.hit.geomID;
+    hit.primitive = rh.hit.primID;
+    hit.barycentric = {rh.hit.u, rh.hit.v};
     hit.p = ray.o + ray.d * hit.t;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere)

@@ -19,6 +19,8 @@ struct SurfaceHit {
     Vec2 uv;         // surface parameterisation for textures
     float t = 0;     // ray distance
     uint32_t shape = 0;
+    uint32_t primitive = 0;  // triangle index within a mesh shape
+    Vec2 barycentric;        // Embree's (u, v) on that triangle: p = (1-u-v) p0 + u p1 + v p2
 };
 
 class Scene {
