@@ -10,6 +10,19 @@ enum class KernelKind { Uniform, Biweight };
 // Where SPPM takes direct light at visible points from.
 enum class DirectLighting { LightSampling, Photons };
 
+// The optional post filter (render.denoise; docs/denoise.md): a bilateral filter of the
+// snapshot, guided by first-hit albedo and normal buffers. It never changes the render's
+// state, so it is not part of a checkpoint's fingerprint.
+struct DenoiseSettings {
+    bool enabled = false;
+    float sigmaSpatial = 1.5f;   // pixels
+    float sigmaRange = 1.0f;     // on the difference of log colours
+    bool guide = true;           // weigh by the albedo and normal buffers too
+    float sigmaAlbedo = 0.1f;    // on the albedo difference
+    float sigmaNormal = 0.2f;    // on the (averaged) normal difference
+    int featureSamples = 4;      // jittered rays per pixel for the guide buffers
+};
+
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Sppm;
     int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
@@ -22,6 +35,7 @@ struct RenderSettings {
     KernelKind kernel = KernelKind::Uniform;
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
+    DenoiseSettings denoise;
 };
 
 }  // namespace photon
