@@ -112,9 +112,11 @@ int main(int argc, char** argv) {
         photon::CancelToken cancel;
         renderer.run(cancel, options.quiet ? photon::Renderer::ProgressFn{} : printProgress);
         if (!options.quiet) std::fprintf(stderr, "\n");
-        photon::Image image = renderer.snapshot();
+        // With render.denoise on, the EXR's R, G, B are denoised and it carries the raw image
+        // and the guides as more channels; the PNG shows the denoised image.
+        photon::LayeredImage image = renderer.layers();
         if (!options.exr.empty()) photon::writeExr(image, options.exr);
-        if (!options.png.empty()) photon::writePng(image, options.png, exposure);
+        if (!options.png.empty()) photon::writePng(image.main, options.png, exposure);
     } catch (const photon::SceneError& e) {
         std::fprintf(stderr, "photon-render: %s: %s\n", options.scene.c_str(), e.what());
         return 1;

@@ -4,7 +4,9 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include "film/image_layers.h"
 #include "integrators/integrator.h"
+#include "post/denoiser.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 
@@ -34,7 +36,14 @@ public:
     // Renders one pass; false if cancelled (the image stays as after the last pass).
     bool renderPass(const CancelToken& cancel);
 
-    Image snapshot() const { return integrator_->snapshot(); }
+    // The image after the passes done so far: denoised when render.denoise is on (the
+    // filter runs on every call, so call it once per pass, not per client).
+    Image snapshot() const;
+    // The integrator's own image, never denoised.
+    Image rawSnapshot() const { return integrator_->snapshot(); }
+    // snapshot() as the main image; with denoising on, also the layers "raw", "albedo" and
+    // "normal" (the guides, when guided), for formats that hold them.
+    LayeredImage layers() const;
     // The render's whole state after the last finished pass, and its restoration into a
     // new Renderer of the same scene: the passes that follow give the image an
     // uninterrupted render would have. Where the bytes go is the caller's business.
@@ -47,6 +56,7 @@ public:
 private:
     std::shared_ptr<const Scene> scene_;
     std::unique_ptr<Integrator> integrator_;
+    std::unique_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
     RenderProgress progress_;
     double renderSeconds_ = 0;
 };

@@ -270,6 +270,30 @@ TEST(SceneLoader, LoadSceneFileResolvesAgainstItsFolder) {
     EXPECT_TRUE(s.materials[1]->tint().textured());
 }
 
+void expectDenoise(const photon::DenoiseSettings& got, const photon::DenoiseSettings& want) {
+    EXPECT_EQ(got.enabled, want.enabled);
+    EXPECT_EQ(got.sigmaSpatial, want.sigmaSpatial);
+    EXPECT_EQ(got.sigmaRange, want.sigmaRange);
+    EXPECT_EQ(got.guide, want.guide);
+    EXPECT_EQ(got.sigmaAlbedo, want.sigmaAlbedo);
+    EXPECT_EQ(got.sigmaNormal, want.sigmaNormal);
+    EXPECT_EQ(got.featureSamples, want.featureSamples);
+}
+
+TEST(SceneLoader, Denoise) {
+    Json doc = fullScene();
+    EXPECT_FALSE(load(doc).render.denoise.enabled);  // absent: off
+    doc["render"]["denoise"] = true;
+    expectDenoise(load(doc).render.denoise, {true, 1.5f, 1.0f, true, 0.1f, 0.2f, 4});
+    doc["render"]["denoise"] = false;
+    EXPECT_FALSE(load(doc).render.denoise.enabled);
+    doc["render"]["denoise"] = {{"sigma_spatial", 3}, {"sigma_range", 0.5}, {"guide", false}, {"sigma_albedo", 0.2},
+                                {"sigma_normal", 0.4}, {"feature_samples", 8}};
+    expectDenoise(load(doc).render.denoise, {true, 3.0f, 0.5f, false, 0.2f, 0.4f, 8});  // an object turns it on
+    doc["render"]["denoise"] = {{"enabled", false}, {"sigma_spatial", 3}};
+    EXPECT_FALSE(load(doc).render.denoise.enabled);
+}
+
 // ---- the example scenes ----
 
 TEST(ExampleScenes, AllLoad) {

@@ -139,6 +139,22 @@ TEST(SceneLoaderErrors, UnknownNames) {
                 "unknown value \"none\" (expected one of light_sampling, photons)");
 }
 
+TEST(SceneLoaderErrors, Denoise) {
+    expectError([](Json& d) { d["render"]["denoise"] = 1; }, "render.denoise", "must be true, false or an object");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"sigma_spatial", 0}}; }, "render.denoise.sigma_spatial",
+                "must be in (0, 64]");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"sigma_range", -1}}; }, "render.denoise.sigma_range",
+                "must be > 0");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"sigma_albedo", 0}}; }, "render.denoise.sigma_albedo",
+                "must be > 0");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"sigma_normal", "wide"}}; }, "render.denoise.sigma_normal",
+                "must be a number");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"feature_samples", 0}}; }, "render.denoise.feature_samples",
+                "must be an integer in [1, 1024]");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"guide", 1}}; }, "render.denoise.guide", "must be true or false");
+    expectError([](Json& d) { d["render"]["denoise"] = {{"sigma", 1}}; }, "render.denoise.sigma", "unknown field");
+}
+
 TEST(SceneLoaderErrors, UnknownFieldsAtEveryDepth) {
     expectError([](Json& d) { d["colour"] = 1; }, "colour", "unknown field");
     expectError([](Json& d) { d["render"]["pases"] = 64; }, "render.pases", "unknown field");

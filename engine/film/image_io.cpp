@@ -48,10 +48,29 @@ void writeImage(const std::string& name, const OIIO::ImageSpec& spec, const void
         throw std::runtime_error("cannot write " + name + ": " + out->geterror());
 }
 
-OIIO::ImageSpec exrSpec(const Image& image) {
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+OIIO::ImageSpec exrSpec(const LayeredImage& image) {
+    const int channels = 3 * static_cast<int>(1 + image.layers.size());
+    OIIO::ImageSpec spec(image.main.width, image.main.height, channels, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B"};
+    for (const ImageLayer& layer : image.layers)
+        for (const std::string& c : layer.channels) spec.channelnames.push_back(layer.name + "." + c);
     spec.attribute("compression", "zip");
     return spec;
+}
+
+// The main image's and every layer's channels interleaved per pixel.
+std::vector<float> exrPixels(const LayeredImage& image) {
+    const size_t pixels = static_cast<size_t>(image.main.width) * image.main.height;
+    const size_t channels = 3 * (1 + image.layers.size());
+    std::vector<float> out(pixels * channels);
+    for (size_t l = 0; l <= image.layers.size(); ++l) {
+        const Image& source = l == 0 ? image.main : image.layers[l - 1].image;
+        if (source.width != image.main.width || source.height != image.main.height)
+            throw std::invalid_argument("EXR layer " + image.layers[l - 1].name + " has another size");
+        for (size_t p = 0; p < pixels; ++p)
+            for (size_t c = 0; c < 3; ++c) out[p * channels + 3 * l + c] = source.rgb[3 * p + c];
+    }
+    return out;
 }
 
 }  // namespace
@@ -65,7 +84,11 @@ std::vector<uint8_t> toneMapToSrgb8(const Image& image, float exposure) {
 }
 
 void writeExr(const Image& image, const std::filesystem::path& file) {
-    writeImage(file.string(), exrSpec(image), image.rgb.data(), nullptr);
+    writeImage(file.string(), exrSpec({image, {}}), image.rgb.data(), nullptr);
+}
+
+void writeExr(const LayeredImage& image, const std::filesystem::path& file) {
+    writeImage(file.string(), exrSpec(image), exrPixels(image).data(), nullptr);
 }
 
 void writePng(const Image& image, const std::filesystem::path& file, float exposure) {
@@ -86,10 +109,12 @@ std::vector<uint8_t> encodePng(const Image& image, float exposure) {
     return {buffer.begin(), buffer.end()};
 }
 
-std::vector<uint8_t> encodeExr(const Image& image) {
+std::vector<uint8_t> encodeExr(const Image& image) { return encodeExr(LayeredImage{image, {}}); }
+
+std::vector<uint8_t> encodeExr(const LayeredImage& image) {
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
-    writeImage("image.exr", exrSpec(image), image.rgb.data(), &proxy);
+    writeImage("image.exr", exrSpec(image), exrPixels(image).data(), &proxy);
     return {buffer.begin(), buffer.end()};
 }
 
@@ -103,6 +128,26 @@ Image readImage(const std::filesystem::path& file) {
     Image image(spec.width, spec.height);
     for (size_t p = 0; p < static_cast<size_t>(spec.width) * spec.height; ++p)
         for (int c = 0; c < 3; ++c) image.rgb[3 * p + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
+    return image;
+}
+
+}  // namespace photon
+
+namespace photon {
+
+Image readImageChannels(const std::filesystem::path& file, const std::array<std::string, 3>& channels) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) throw std::runtime_error("cannot read " + file.string() + ": " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    Image image(spec.width, spec.height);
+    std::vector<float> plane(static_cast<size_t>(spec.width) * spec.height);
+    for (int c = 0; c < 3; ++c) {
+        int index = spec.channelindex(channels[c]);
+        if (index < 0) throw std::runtime_error(file.string() + " has no channel " + channels[c]);
+        if (!in->read_image(0, 0, index, index + 1, OIIO::TypeDesc::FLOAT, plane.data()))
+            throw std::runtime_error("cannot read " + file.string() + ": " + in->geterror());
+        for (size_t p = 0; p < plane.size(); ++p) image.rgb[3 * p + c] = plane[p];
+    }
     return image;
 }
 

@@ -12,7 +12,7 @@ inline uint64_t mix64(uint64_t z) {
     return z ^ (z >> 31);
 }
 
-enum class StreamPurpose : uint64_t { Camera = 1, Photon = 2, Test = 3, Setup = 4 };
+enum class StreamPurpose : uint64_t { Camera = 1, Photon = 2, Test = 3, Setup = 4, Features = 5 };
 
 // PCG32 (O'Neill 2014): small state, good statistical quality, cheap to seed per path.
 class Rng {

@@ -68,6 +68,27 @@ RadiositySettings readRadiosity(const JsonValue& value) {
     return r;
 }
 
+// `true`/`false` as shorthand for {"enabled": ...}; an object turns the filter on unless it
+// says "enabled": false.
+DenoiseSettings readDenoise(const JsonValue& value) {
+    DenoiseSettings d;
+    if (value.json().is_boolean()) {
+        d.enabled = value.boolean();
+        return d;
+    }
+    if (!value.json().is_object()) value.fail("must be true, false or an object");
+    JsonObject obj = value.object();
+    d.enabled = obj.boolean("enabled", true);
+    d.sigmaSpatial = obj.number("sigma_spatial", d.sigmaSpatial, Range::openClosed(0, 64));
+    d.sigmaRange = obj.number("sigma_range", d.sigmaRange, Range::positive());
+    d.guide = obj.boolean("guide", d.guide);
+    d.sigmaAlbedo = obj.number("sigma_albedo", d.sigmaAlbedo, Range::positive());
+    d.sigmaNormal = obj.number("sigma_normal", d.sigmaNormal, Range::positive());
+    d.featureSamples = int(obj.integer("feature_samples", d.featureSamples, 1, 1024));
+    obj.finish();
+    return d;
+}
+
 }  // namespace
 
 RenderSettings readRender(const JsonValue& value) {
@@ -86,6 +107,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.exposure = obj.number("exposure", 0);
     r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
+    if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);
     obj.finish();
     return r;
 }

@@ -21,6 +21,19 @@ struct RadiositySettings {
     int maxIterations = 1000;     // Gauss-Seidel sweeps at most
 };
 
+// The optional post filter (render.denoise; docs/denoise.md): a bilateral filter of the
+// snapshot, guided by first-hit albedo and normal buffers. It never changes the render's
+// state, so it is not part of a checkpoint's fingerprint.
+struct DenoiseSettings {
+    bool enabled = false;
+    float sigmaSpatial = 1.5f;   // pixels
+    float sigmaRange = 1.0f;     // on the difference of log colours
+    bool guide = true;           // weigh by the albedo and normal buffers too
+    float sigmaAlbedo = 0.1f;    // on the albedo difference
+    float sigmaNormal = 0.2f;    // on the (averaged) normal difference
+    int featureSamples = 4;      // jittered rays per pixel for the guide buffers
+};
+
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Sppm;
     int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
@@ -34,6 +47,7 @@ struct RenderSettings {
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
     RadiositySettings radiosity;
+    DenoiseSettings denoise;
 };
 
 }  // namespace photon

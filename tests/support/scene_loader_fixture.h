@@ -22,14 +22,6 @@ namespace photon::test {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-#define EXPECT_VEC3_NEAR(a, b, tol)       \
-    do {                                  \
-        Vec3 a_ = (a), b_ = (b);          \
-        EXPECT_NEAR(a_.x, b_.x, tol);     \
-        EXPECT_NEAR(a_.y, b_.y, tol);     \
-        EXPECT_NEAR(a_.z, b_.z, tol);     \
-    } while (0)
-
 // ---- fixture files: a scene folder in /tmp with textures and meshes ----
 
 inline void writeText(const fs::path& p, const std::string& text) {

@@ -12,6 +12,7 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 
 }  // namespace photon::test
 
+#include <cmath>
 #include "film/image.h"
 #include "scene/scene_loader.h"
 
@@ -35,6 +36,23 @@ inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) sum += image.at(x, y);
     return sum / static_cast<float>((x1 - x0) * (y1 - y0));
+}
+
+// Component-wise closeness of two Vec3 (or Color) values, in a gtest test body; Vec3
+// must name photon::Vec3 where it is used.
+#define EXPECT_VEC3_NEAR(a, b, tol)       \
+    do {                                  \
+        Vec3 a_ = (a), b_ = (b);          \
+        EXPECT_NEAR(a_.x, b_.x, tol);     \
+        EXPECT_NEAR(a_.y, b_.y, tol);     \
+        EXPECT_NEAR(a_.z, b_.z, tol);     \
+    } while (0)
+
+// Root-mean-square difference over all pixels and channels of two images of one size.
+inline double rmse(const Image& a, const Image& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) sum += (a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
+    return std::sqrt(sum / static_cast<double>(a.rgb.size()));
 }
 
 }  // namespace photon::test
