@@ -6,7 +6,7 @@ namespace photon {
 Renderer::Renderer(std::shared_ptr<const Scene> scene) : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)) {
     progress_.totalPasses = scene_->settings().passes;
     const DenoiseSettings& denoise = scene_->settings().denoise;
-    if (denoise.enabled) denoiser_ = std::make_unique<const Denoiser>(*scene_, denoise);
+    if (denoise.enabled) denoiser_ = std::make_shared<const Denoiser>(*scene_, denoise);
 }
 
 Image Renderer::snapshot() const {
@@ -14,10 +14,10 @@ Image Renderer::snapshot() const {
     return denoiser_ ? denoiser_->apply(raw) : raw;
 }
 
-LayeredImage Renderer::layers() const {
-    Image raw = integrator_->snapshot();
-    if (!denoiser_) return {std::move(raw), {}};
-    return denoiser_->layers(std::move(raw));
+LayeredImage Renderer::layers() const { return pendingLayers()->layers(); }
+
+std::shared_ptr<const PendingImage> Renderer::pendingLayers() const {
+    return std::make_shared<const PendingImage>(integrator_->snapshot(), denoiser_);
 }
 
 bool Renderer::renderPass(const CancelToken& cancel) {

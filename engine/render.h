@@ -6,7 +6,7 @@
 #include <memory>
 #include "film/image_layers.h"
 #include "integrators/integrator.h"
-#include "post/denoiser.h"
+#include "post/pending_image.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 
@@ -44,6 +44,8 @@ public:
     // snapshot() as the main image; with denoising on, also the layers "raw", "albedo" and
     // "normal" (the guides, when guided), for formats that hold them.
     LayeredImage layers() const;
+    // The same, filtered only when first asked for (see PendingImage).
+    std::shared_ptr<const PendingImage> pendingLayers() const;
     // The render's whole state after the last finished pass, and its restoration into a
     // new Renderer of the same scene: the passes that follow give the image an
     // uninterrupted render would have. Where the bytes go is the caller's business.
@@ -56,7 +58,7 @@ public:
 private:
     std::shared_ptr<const Scene> scene_;
     std::unique_ptr<Integrator> integrator_;
-    std::unique_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
+    std::shared_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
     RenderProgress progress_;
     double renderSeconds_ = 0;
 };

@@ -5,7 +5,8 @@ namespace photon::server {
 
 namespace {
 
-std::shared_ptr<const std::string> encode(const LayeredImage& image, ImageFormat format, float exposure) {
+std::shared_ptr<const std::string> encode(const PendingImage& pending, ImageFormat format, float exposure) {
+    const LayeredImage& image = pending.layers();
     std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image.main, exposure) : encodeExr(image);
     return std::make_shared<const std::string>(bytes.begin(), bytes.end());
 }
@@ -18,7 +19,7 @@ std::shared_ptr<ImageCache::Slot> ImageCache::slot(const std::string& id) const 
     return it == slots_.end() ? nullptr : it->second;
 }
 
-void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const LayeredImage> image, float exposure) {
+void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image, float exposure) {
     std::shared_ptr<Slot> s;
     {
         std::lock_guard lock(mutex_);
@@ -37,7 +38,7 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
     std::shared_ptr<Slot> s = slot(id);
     if (!s) return std::nullopt;
     std::lock_guard encoding(s->encodeMutex);
-    std::shared_ptr<const LayeredImage> image;
+    std::shared_ptr<const PendingImage> image;
     EncodedImage fresh;
     float exposure = 0;
     {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include "film/image_layers.h"
+#include "post/pending_image.h"
 #include "image_format.h"
 
 namespace photon::server {
@@ -21,8 +21,9 @@ struct EncodedImage {
 class ImageCache {
 public:
     // The image after `pass` as the engine hands it out (its layers go into the EXR, the
-    // PNG shows the main image); replaces the previous pass's image and encodings.
-    void store(const std::string& id, int pass, std::shared_ptr<const LayeredImage> image, float exposure);
+    // PNG shows the main image; a post filter runs at the first encode, so only for passes
+    // someone fetches); replaces the previous pass's image and encodings.
+    void store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image, float exposure);
     // The latest image in `format`, encoded now if this pass has not been encoded yet.
     // nullopt if the job has no image in memory.
     std::optional<EncodedImage> get(const std::string& id, ImageFormat format);
@@ -36,7 +37,7 @@ private:
         std::mutex encodeMutex;  // concurrent requests for one pass wait for a single encode
         std::mutex stateMutex;
         int pass = 0;
-        std::shared_ptr<const LayeredImage> image;
+        std::shared_ptr<const PendingImage> image;
         float exposure = 0;
         std::map<ImageFormat, EncodedImage> encoded;
     };

@@ -78,8 +78,9 @@ void JobRunner::resumeFromCheckpoint(const std::string& id, Renderer& renderer) 
 void JobRunner::onPass(const std::string& id, const Renderer& renderer, const RenderProgress& p, float exposure,
                        double& elapsedBefore) {
     // Between passes the snapshot is exactly the image after pass p.pass (denoised, with
-    // its raw and guide layers, when the scene asks for it: the engine decides).
-    images_.store(id, p.pass, std::make_shared<const LayeredImage>(renderer.layers()), exposure);
+    // its raw and guide layers, when the scene asks for it: the engine decides, and does
+    // it when the image is first encoded).
+    images_.store(id, p.pass, renderer.pendingLayers(), exposure);
     JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);
     metrics_.addPass(p.lastPass.photons, p.elapsedSeconds - elapsedBefore);
