@@ -1,4 +1,6 @@
 #include "api/http_server.h"
+#include <sys/resource.h>
+#include <unistd.h>
 #include <cctype>
 #include <filesystem>
 #include "api/errors.h"
@@ -10,6 +12,30 @@ namespace {
 // Long-lived event and image streams each hold a thread; the rest serve ordinary requests.
 constexpr size_t kHttpThreads = 64;
 constexpr int kMaxStreams = 48;
+// Request threads run at this nice value: when they compete with a render for the cores,
+// the render keeps most of them (a request is short; a pass is what people wait for).
+constexpr int kHttpNice = 10;
+
+// httplib's pool whose threads lower their own priority before their first request (a
+// Linux thread's nice value is its own: setpriority on its thread id).
+class LowPriorityThreadPool final : public httplib::TaskQueue {
+public:
+    explicit LowPriorityThreadPool(size_t threads) : pool_(threads) {}
+    void enqueue(std::function<void()> fn) override {
+        pool_.enqueue([fn = std::move(fn)] {
+            thread_local bool lowered = false;
+            if (!lowered) {
+                setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kHttpNice);
+                lowered = true;
+            }
+            fn();
+        });
+    }
+    void shutdown() override { pool_.shutdown(); }
+
+private:
+    httplib::ThreadPool pool_;
+};
 
 const char* reasonFor(int status) {
     switch (status) {
@@ -53,7 +79,7 @@ bool HttpServer::authorized(const httplib::Request& req) const {
 }
 
 void HttpServer::configure(const HttpConfig& config) {
-    server_.new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
+    server_.new_task_queue = [] { return new LowPriorityThreadPool(kHttpThreads); };
     server_.set_payload_max_length(config.maxBodyBytes);
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
         if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
