@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(cmake g++ pkg-config libembree-dev libtbb-dev libopenimageio-dev openimageio-tools
           nlohmann-json3-dev libassimp-dev libcpp-httplib-dev libsqlite3-dev libgtest-dev
-          python3 python3-jsonschema chromium)
+          python3 python3-jsonschema chromium ccache)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

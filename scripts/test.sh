@@ -7,7 +7,9 @@ bash "$root/scripts/install-deps.sh"
 
 # Sanitizer build: only what the bad-input tests need.
 asan="$root/build-asan"
-cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTON_SANITIZE=ON > /dev/null
+launcher=()
+command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$root" -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHOTON_SANITIZE=ON "${launcher[@]}" > /dev/null
 cmake --build "$asan" -j2 --target test_scene_loader test_scene_loader_errors test_bsdf
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 "$asan/tests/test_scene_loader"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 "$asan/tests/test_scene_loader_errors"
