@@ -24,6 +24,7 @@ private:
 
 struct PassStats {
     int64_t photons = 0;         // photons emitted in the pass
+    int64_t photonRays = 0;      // photon rays cast, including those that leave the scene
     int64_t photonSegments = 0;  // photon rays cast that hit something
     int64_t cameraRays = 0;
     int64_t gridEntries = 0;     // visible-point entries in the hash grid (SPPM)

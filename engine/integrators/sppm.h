@@ -74,7 +74,7 @@ private:
     void buildGrid();
     void photonPass(const CancelToken& cancel);
     struct PhotonCounters {
-        int64_t segments = 0, candidates = 0, accepted = 0;
+        int64_t rays = 0, segments = 0, candidates = 0, accepted = 0;
     };
     // A photon's arrival on a non-delta surface, waiting to be added to visible points.
     struct PhotonHit {

@@ -30,12 +30,14 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
             return acc;
         },
         [](PhotonCounters a, const PhotonCounters& b) {
+            a.rays += b.rays;
             a.segments += b.segments;
             a.candidates += b.candidates;
             a.accepted += b.accepted;
             return a;
         });
     stats_.photons = total;
+    stats_.photonRays = counters.rays;
     stats_.photonSegments = counters.segments;
     stats_.gatherCandidates = counters.candidates;
     stats_.gatherHits = counters.accepted;
@@ -55,6 +57,7 @@ void SppmIntegrator::tracePhoton(int64_t index, GatherBatch& batch, PhotonCounte
     const bool depositDirect = settings_.direct == DirectLighting::Photons;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
+        ++counters.rays;
         if (!scene.intersect(ray, hit)) break;
         ++counters.segments;
         Vec3 wi = -ray.d;  // toward where the photon came from

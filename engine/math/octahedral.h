@@ -34,7 +34,8 @@ struct OctahedralVector {
 
 private:
     static uint16_t encode(float f) {
-        return static_cast<uint16_t>(std::lround(std::clamp((f + 1) / 2, 0.0f, 1.0f) * 65535.0f));
+        // Round half up by truncation: the value is >= 0, and unlike lround this inlines.
+        return static_cast<uint16_t>(std::clamp((f + 1) / 2, 0.0f, 1.0f) * 65535.0f + 0.5f);
     }
     static float decode(uint16_t u) { return -1 + 2 * (static_cast<float>(u) / 65535.0f); }
 };

@@ -65,7 +65,7 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
     photon::Renderer renderer(loadScene(o, photons));
     photon::CancelToken cancel;
     double cameraMs = 0, gridMs = 0, photonMs = 0;
-    int64_t segments = 0, emitted = 0, candidates = 0, accepted = 0;
+    int64_t rays = 0, segments = 0, emitted = 0, candidates = 0, accepted = 0;
     for (int p = 0; p < o.passes; ++p) {
         renderer.renderPass(cancel);
         const photon::PassStats& s = renderer.integrator().lastPassStats();
@@ -74,6 +74,7 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
         cameraMs += s.cameraMs;
         gridMs += s.gridMs;
         photonMs += s.photonMs;
+        rays += s.photonRays;
         segments += s.photonSegments;
         emitted += s.photons;
         candidates += s.gatherCandidates;
@@ -85,6 +86,7 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
             {"passes_timed", o.passes - 1},
             {"photons_per_second", emitted / (photonMs / 1000.0)},
             {"photon_segments_per_second", segments / (photonMs / 1000.0)},
+            {"photon_rays_per_second", rays / (photonMs / 1000.0)},
             {"segments_per_photon", static_cast<double>(segments) / static_cast<double>(std::max<int64_t>(emitted, 1))},
             {"gather_candidates_per_segment", static_cast<double>(candidates) / static_cast<double>(std::max<int64_t>(segments, 1))},
             {"gather_accepted_per_segment", static_cast<double>(accepted) / static_cast<double>(std::max<int64_t>(segments, 1))},
@@ -137,6 +139,8 @@ int main(int argc, char** argv) {
         out["embree_random_rays"] = {{"rays_per_second", raw.raysPerSecond()},
                                      {"hit_fraction", static_cast<double>(raw.hits) / static_cast<double>(raw.rays)}};
         out["segments_to_embree_ratio"] = sppm["photon_segments_per_second"].get<double>() / raw.raysPerSecond();
+        // Like for like: the raw rays are counted whether they hit or not, and so are these.
+        out["photon_rays_to_embree_ratio"] = sppm["photon_rays_per_second"].get<double>() / raw.raysPerSecond();
         out["process_peak_rss_kib"] = peakRssKiB();
         std::cout << out.dump(2) << std::endl;
     } catch (const std::exception& e) {
