@@ -44,7 +44,7 @@ CameraDescription readCamera(const JsonValue& value) {
 
 namespace {
 
-// "auto" (stored as 0: derive from each pixel's footprint) or a radius in scene units.
+// "auto" (stored as 0: derived from the scene) or a radius in scene units.
 float readInitialRadius(const JsonValue& value) {
     const char* expected = "must be \"auto\" or a number > 0";
     if (value.json().is_string()) {
@@ -55,13 +55,28 @@ float readInitialRadius(const JsonValue& value) {
     return value.number(Range::positive());
 }
 
+// The "photonmap" block: settings of the two-pass photon mapper.
+PhotonMapSettings readPhotonMap(const JsonValue& value) {
+    JsonObject obj = value.object();
+    PhotonMapSettings p;
+    p.globalPhotons = obj.integer("global_photons", p.globalPhotons, 0, 100'000'000);
+    p.causticPhotons = obj.integer("caustic_photons", p.causticPhotons, 0, 100'000'000);
+    p.globalNearest = int(obj.integer("global_nearest", p.globalNearest, 1, 10'000));
+    p.causticNearest = int(obj.integer("caustic_nearest", p.causticNearest, 1, 10'000));
+    if (auto r = obj.optional("global_max_radius")) p.globalMaxRadius = readInitialRadius(*r);
+    if (auto r = obj.optional("caustic_max_radius")) p.causticMaxRadius = readInitialRadius(*r);
+    p.gatherRays = int(obj.integer("gather_rays", p.gatherRays, 0, 100'000));
+    obj.finish();
+    return p;
+}
+
 }  // namespace
 
 RenderSettings readRender(const JsonValue& value) {
     JsonObject obj = value.object();
     RenderSettings r;
     // The choice lists are in the order of the enums they convert to.
-    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path"}));
+    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path", "photonmap"}));
     r.passes = int(obj.integer("passes", r.passes, 1, 1'000'000));
     r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
     r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
@@ -69,9 +84,11 @@ RenderSettings readRender(const JsonValue& value) {
     r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));
     r.maxDepth = int(obj.integer("max_depth", r.maxDepth, 1, 1000));
     if (auto seed = obj.optional("seed")) r.seed = seed->unsignedInteger();
-    r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight"}));
+    r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight", "cone"}));
     r.exposure = obj.number("exposure", 0);
     r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
+    r.projectionMaps = obj.boolean("projection_maps", r.projectionMaps);
+    if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     obj.finish();
     return r;
 }

@@ -5,10 +5,22 @@
 
 namespace photon {
 
-enum class IntegratorKind { Sppm, Path };
-enum class KernelKind { Uniform, Biweight };
+enum class IntegratorKind { Sppm, Path, PhotonMap };
+enum class KernelKind { Uniform, Biweight, Cone };
 // Where SPPM takes direct light at visible points from.
 enum class DirectLighting { LightSampling, Photons };
+
+// Two-pass photon mapping (Jensen 1996): how many photons build each map and how each
+// radiance estimate looks them up.
+struct PhotonMapSettings {
+    int64_t globalPhotons = 200000;   // photons emitted to build the global map
+    int64_t causticPhotons = 200000;  // photons emitted to build the caustic map
+    int globalNearest = 100;          // k: photons per global-map estimate
+    int causticNearest = 50;          // k: photons per caustic-map estimate
+    float globalMaxRadius = 0;        // 0: "auto", a tenth of the scene's bounding-sphere radius
+    float causticMaxRadius = 0;       // 0: "auto", a fortieth of the scene's bounding-sphere radius
+    int gatherRays = 64;              // final-gather rays per camera hit; 0: global map read directly
+};
 
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Sppm;
@@ -22,6 +34,8 @@ struct RenderSettings {
     KernelKind kernel = KernelKind::Uniform;
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
+    bool projectionMaps = true;       // emit photons only toward geometry (Jensen 2001, 5.1.3)
+    PhotonMapSettings photonMap;
 };
 
 }  // namespace photon
