@@ -231,3 +231,32 @@ TEST(PhotonKernel, KernelsIntegrateToOneOverTheUnitDisc) {
 
 }  // namespace
 }  // namespace photon
+
+namespace photon {
+namespace {
+
+TEST(PhotonMapSettings, ParsedFromTheRenderBlockWithDefaults) {
+    std::string scene = R"({"camera": {"type": "perspective", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
+      "materials": {"m": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
+      "lights": [{"type": "point", "position": [0, 3, 0], "intensity": [1, 1, 1]}],
+      "render": {"integrator": "photonmap", "kernel": "cone", "projection_maps": false,
+                 "photonmap": {"global_photons": 1000, "caustic_nearest": 20, "caustic_max_radius": 0.05,
+                               "global_max_radius": "auto", "gather_rays": 0}}})";
+    RenderSettings r = loadSceneJson(scene, ".").render;
+    EXPECT_EQ(r.integrator, IntegratorKind::PhotonMap);
+    EXPECT_EQ(r.kernel, KernelKind::Cone);
+    EXPECT_FALSE(r.projectionMaps);
+    EXPECT_EQ(r.photonMap.globalPhotons, 1000);
+    EXPECT_EQ(r.photonMap.causticPhotons, 200000);
+    EXPECT_EQ(r.photonMap.globalNearest, 100);
+    EXPECT_EQ(r.photonMap.causticNearest, 20);
+    EXPECT_EQ(r.photonMap.globalMaxRadius, 0.0f);
+    EXPECT_EQ(r.photonMap.causticMaxRadius, 0.05f);
+    EXPECT_EQ(r.photonMap.gatherRays, 0);
+    EXPECT_TRUE(RenderSettings{}.projectionMaps);
+    EXPECT_EQ(RenderSettings{}.photonMap.gatherRays, 64);
+}
+
+}  // namespace
+}  // namespace photon

@@ -8,12 +8,17 @@ namespace photon {
 namespace {
 
 // Grid sizes: fine enough that the cells straddling an object's outline, which send
-// some photons past it, are a small share of those that reach it. A point light's cells
-// are equal in solid angle (uniform in cos(theta) and phi): 1.5e-4 sr on the full sphere.
-constexpr int kPointRows = 256, kPointCols = 512;
-constexpr int kParallelCells = 512;
+// some photons past it, are a small share of those that reach it. A cube map keeps
+// cells about square everywhere (a theta/phi grid has slivers at its poles): 256^2 cells
+// a face are 3.2e-5 sr on average, 0.45 degrees across at a face's centre.
+constexpr int kCubeSide = 256;
+constexpr int kDiscSide = 512;
 
 float angleBetween(Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(a, b), -1.0f, 1.0f)); }
+
+// Solid angle of [0, u] x [0, v] on the plane at distance 1 (Girard's theorem for the
+// projected rectangle); differences of it give any axis-aligned rectangle's.
+double cornerSolidAngle(double u, double v) { return std::atan2(u * v, std::sqrt(1 + u * u + v * v)); }
 
 }  // namespace
 
@@ -43,28 +48,27 @@ std::optional<ProjectionMap> ProjectionMap::build(const Light& light, const std:
     m.geometry_ = light.emissionGeometry();
     m.light_ = &light;
     if (m.geometry_.kind == EmissionGeometry::Kind::Point) {
-        m.rows_ = kPointRows;
-        m.cols_ = kPointCols;
-        m.cellMeasure_ = (1.0f - m.geometry_.cosMax) / kPointRows * (2.0f * kPi / kPointCols);
+        m.faces_ = 6;
+        m.side_ = kCubeSide;
     } else if (m.geometry_.kind == EmissionGeometry::Kind::Parallel) {
-        m.rows_ = m.cols_ = kParallelCells;
-        float side = 2.0f * m.geometry_.disc.radius / kParallelCells;
-        m.cellMeasure_ = side * side;
+        m.faces_ = 1;
+        m.side_ = kDiscSide;
     } else {
         return std::nullopt;
     }
     std::vector<uint8_t> reach(m.cellCount());
     std::vector<double> power(m.cellCount());
-    tbb::parallel_for(size_t(0), m.cellCount(), [&](size_t c) {
-        power[c] = m.cellPower(c);
-        reach[c] = power[c] > 0 && m.reaches(c, objects);
+    tbb::parallel_for(size_t(0), m.cellCount(), [&](size_t i) {
+        Cell c = m.cell(i);
+        power[i] = m.cellPower(c);
+        reach[i] = power[i] > 0 && m.reaches(c, objects);
     });
     double total = 0, sum = 0;
-    for (size_t c = 0; c < m.cellCount(); ++c) {
-        total += power[c];
-        if (!reach[c]) continue;
-        sum += power[c];
-        m.marked_.push_back(static_cast<uint32_t>(c));
+    for (size_t i = 0; i < m.cellCount(); ++i) {
+        total += power[i];
+        if (!reach[i]) continue;
+        sum += power[i];
+        m.marked_.push_back(static_cast<uint32_t>(i));
         m.cdf_.push_back(sum);
     }
     for (double& v : m.cdf_) v /= sum;
@@ -73,35 +77,44 @@ std::optional<ProjectionMap> ProjectionMap::build(const Light& light, const std:
     return m;
 }
 
-ProjectionMap::CellBounds ProjectionMap::cellBounds(size_t cell) const {
-    int r = static_cast<int>(cell / cols_), c = static_cast<int>(cell % cols_);
-    if (geometry_.kind == EmissionGeometry::Kind::Point) {
-        float dz = (1.0f - geometry_.cosMax) / rows_, dphi = 2.0f * kPi / cols_;
-        return {geometry_.cosMax + r * dz, geometry_.cosMax + (r + 1) * dz, c * dphi, (c + 1) * dphi};
-    }
-    float d = 2.0f / cols_;
-    return {-1 + c * d, -1 + (c + 1) * d, -1 + r * d, -1 + (r + 1) * d};
+ProjectionMap::Cell ProjectionMap::cell(size_t index) const {
+    int face = static_cast<int>(index / (static_cast<size_t>(side_) * side_));
+    size_t inFace = index % (static_cast<size_t>(side_) * side_);
+    int r = static_cast<int>(inFace / side_), c = static_cast<int>(inFace % side_);
+    float d = 2.0f / side_;
+    return {face, -1 + c * d, -1 + (c + 1) * d, -1 + r * d, -1 + (r + 1) * d};
 }
 
-Vec3 ProjectionMap::pointDirection(float z, float phi) const {
-    z = std::clamp(z, -1.0f, 1.0f);
-    float s = std::sqrt(std::max(0.0f, 1 - z * z));
-    return geometry_.frame.toWorld({s * std::cos(phi), s * std::sin(phi), z});
+// Faces in the light's frame: +z, -z, +x, -x, +y, -y, each with two tangent axes.
+Vec3 ProjectionMap::faceDirection(int face, float u, float v) const {
+    static const Vec3 axes[6][3] = {{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {1, 0, 0}, {0, 1, 0}},
+                                    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},  {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                    {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {0, 0, 1}, {1, 0, 0}}};
+    const Vec3* a = axes[face];
+    return geometry_.frame.toWorld(normalize(a[0] + a[1] * u + a[2] * v));
 }
 
-// Conservative: a cell is marked if the cone about its centre direction that holds the
-// whole cell (Point), or the disc about its centre that holds the whole square (Parallel),
-// meets some object's bounding sphere.
-bool ProjectionMap::reaches(size_t cell, const std::vector<BoundingSphere>& objects) const {
-    CellBounds b = cellBounds(cell);
+float ProjectionMap::solidAngle(const Cell& c) const {
+    return static_cast<float>(cornerSolidAngle(c.u1, c.v1) - cornerSolidAngle(c.u0, c.v1) -
+                              cornerSolidAngle(c.u1, c.v0) + cornerSolidAngle(c.u0, c.v0));
+}
+
+// A cube-map cell is a spherical quadrilateral with great-circle edges, so the point
+// farthest from its centre is a corner.
+std::pair<Vec3, float> ProjectionMap::boundingCone(const Cell& c) const {
+    Vec3 axis = faceDirection(c.face, 0.5f * (c.u0 + c.u1), 0.5f * (c.v0 + c.v1));
+    float halfAngle = 0;
+    for (float u : {c.u0, c.u1})
+        for (float v : {c.v0, c.v1}) halfAngle = std::max(halfAngle, angleBetween(axis, faceDirection(c.face, u, v)));
+    return {axis, halfAngle};
+}
+
+// Conservative: a cell is marked if the cone that holds it (Point), or the disc about its
+// centre that holds the whole square (Parallel), meets some object's bounding sphere.
+bool ProjectionMap::reaches(const Cell& c, const std::vector<BoundingSphere>& objects) const {
     constexpr float kMargin = 1e-4f;
     if (geometry_.kind == EmissionGeometry::Kind::Point) {
-        Vec3 axis = pointDirection(0.5f * (b.lo0 + b.hi0), 0.5f * (b.lo1 + b.hi1));
-        // The farthest point of a z-phi cell from its centre is a corner: its edges are
-        // meridian arcs and latitude arcs symmetric about the centre.
-        float halfAngle = 0;
-        for (float z : {b.lo0, b.hi0})
-            for (float phi : {b.lo1, b.hi1}) halfAngle = std::max(halfAngle, angleBetween(axis, pointDirection(z, phi)));
+        auto [axis, halfAngle] = boundingCone(c);
         for (const BoundingSphere& s : objects) {
             Vec3 v = s.center - geometry_.position;
             float d = length(v);
@@ -112,8 +125,8 @@ bool ProjectionMap::reaches(size_t cell, const std::vector<BoundingSphere>& obje
         return false;
     }
     const SceneSphere& disc = geometry_.disc;
-    float cx = 0.5f * (b.lo0 + b.hi0), cy = 0.5f * (b.lo1 + b.hi1);
-    float halfDiagonal = std::sqrt(2.0f) * 0.5f * (b.hi0 - b.lo0);
+    float cx = 0.5f * (c.u0 + c.u1), cy = 0.5f * (c.v0 + c.v1);
+    float halfDiagonal = std::sqrt(2.0f) * 0.5f * (c.u1 - c.u0);
     for (const BoundingSphere& s : objects) {
         Vec3 q = s.center - disc.center;
         float px = dot(q, geometry_.frame.s) / disc.radius, py = dot(q, geometry_.frame.t) / disc.radius;
@@ -122,24 +135,26 @@ bool ProjectionMap::reaches(size_t cell, const std::vector<BoundingSphere>& obje
     return false;
 }
 
-// Power through a cell, by the midpoint rule on 2x2 points (exactness is not needed: it
-// only sets the probability of the cell, and the flux divides by the same number). A
-// floor keeps cells with a little power from being dropped.
-double ProjectionMap::cellPower(size_t cell) const {
+// Power through a cell, by the midpoint rule on 2x2 points for point kinds (exactness is
+// not needed: it only sets the probability of the cell, and the flux divides by the same
+// number). A floor keeps cells with a little power, inside a spot's cone, from being dropped.
+double ProjectionMap::cellPower(const Cell& c) const {
     if (geometry_.kind == EmissionGeometry::Kind::Parallel) {
-        CellBounds b = cellBounds(cell);
-        float halfDiagonal = std::sqrt(2.0f) * 0.5f * (b.hi0 - b.lo0);
-        if (std::hypot(0.5f * (b.lo0 + b.hi0), 0.5f * (b.lo1 + b.hi1)) - halfDiagonal >= 1) return 0;  // off the disc
-        return average(light_->emittedDensity({})) * static_cast<double>(cellMeasure_);
+        float halfDiagonal = std::sqrt(2.0f) * 0.5f * (c.u1 - c.u0);
+        if (std::hypot(0.5f * (c.u0 + c.u1), 0.5f * (c.v0 + c.v1)) - halfDiagonal >= 1) return 0;  // off the disc
+        float side = (c.u1 - c.u0) * geometry_.disc.radius;
+        return average(light_->emittedDensity({})) * static_cast<double>(side * side);
     }
-    CellBounds b = cellBounds(cell);
+    auto [axis, halfAngle] = boundingCone(c);
+    float coneAngle = std::acos(std::clamp(geometry_.cosMax, -1.0f, 1.0f));
+    if (angleBetween(axis, geometry_.frame.n) - halfAngle > coneAngle) return 0;  // outside a spot's cone
     double sum = 0;
-    for (float fz : {0.25f, 0.75f})
-        for (float fphi : {0.25f, 0.75f})
-            sum += average(light_->emittedDensity(
-                pointDirection(b.lo0 + fz * (b.hi0 - b.lo0), b.lo1 + fphi * (b.hi1 - b.lo1))));
+    for (float fu : {0.25f, 0.75f})
+        for (float fv : {0.25f, 0.75f})
+            sum += average(
+                light_->emittedDensity(faceDirection(c.face, c.u0 + fu * (c.u1 - c.u0), c.v0 + fv * (c.v1 - c.v0))));
     double peak = average(light_->emittedDensity(geometry_.frame.n));
-    return std::max(sum / 4, 1e-3 * peak) * static_cast<double>(cellMeasure_);
+    return std::max(sum / 4, 1e-3 * peak) * static_cast<double>(solidAngle(c));
 }
 
 std::optional<PhotonEmission> ProjectionMap::emit(double uCell, Vec2 uWithin) const {
@@ -147,21 +162,24 @@ std::optional<PhotonEmission> ProjectionMap::emit(double uCell, Vec2 uWithin) co
     size_t i = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), uCell) - cdf_.begin());
     i = std::min(i, marked_.size() - 1);
     double probability = cdf_[i] - (i == 0 ? 0.0 : cdf_[i - 1]);
-    CellBounds b = cellBounds(marked_[i]);
-    float a = b.lo0 + uWithin.x * (b.hi0 - b.lo0), c = b.lo1 + uWithin.y * (b.hi1 - b.lo1);
-    // Uniform in the cell (by solid angle: z and phi are both uniform), pdf 1 / (P measure).
-    float inversePdf = static_cast<float>(static_cast<double>(cellMeasure_) / probability);
+    Cell c = cell(marked_[i]);
+    float u = c.u0 + uWithin.x * (c.u1 - c.u0), v = c.v0 + uWithin.y * (c.v1 - c.v0);
+    // Uniform by area on the cell's square: density probability / area there.
+    double areaPdf = probability / (static_cast<double>(c.u1 - c.u0) * (c.v1 - c.v0));
     if (geometry_.kind == EmissionGeometry::Kind::Point) {
-        Vec3 w = pointDirection(a, c);
-        Color flux = light_->emittedDensity(w) * inversePdf;
+        // By solid angle the density is the area density times dA/dw = (1 + u^2 + v^2)^(3/2).
+        Vec3 w = faceDirection(c.face, u, v);
+        double pdf = areaPdf * std::pow(1.0 + u * u + v * v, 1.5);
+        Color flux = light_->emittedDensity(w) * static_cast<float>(1.0 / pdf);
         if (isBlack(flux)) return std::nullopt;
         return PhotonEmission{geometry_.position, w, flux, Vec3{}};
     }
-    if (a * a + c * c > 1) return std::nullopt;  // the corner of an edge cell, off the disc
+    if (u * u + v * v > 1) return std::nullopt;  // the corner of an edge cell, off the disc
     const SceneSphere& disc = geometry_.disc;
     const Frame& f = geometry_.frame;
-    Vec3 origin = disc.center + (-f.n + f.s * a + f.t * c) * disc.radius;
-    return PhotonEmission{origin, f.n, light_->emittedDensity(f.n) * inversePdf, Vec3{}};
+    Vec3 origin = disc.center + (-f.n + f.s * u + f.t * v) * disc.radius;
+    double pdf = areaPdf / (static_cast<double>(disc.radius) * disc.radius);  // per unit of world area
+    return PhotonEmission{origin, f.n, light_->emittedDensity(f.n) * static_cast<float>(1.0 / pdf), Vec3{}};
 }
 
 }  // namespace photon

@@ -1,8 +1,9 @@
 // Projection maps (Jensen 2001, "Realistic Image Synthesis Using Photon Mapping",
-// sec. 5.1.3): a grid over a light's emission directions (point and spot lights) or over
-// its emission disc (directional lights) in which the cells that can send light toward
-// some object are marked. Photons then leave through marked cells only, so few of them
-// are wasted on empty space around a small or distant scene.
+// sec. 5.1.3): a grid over a light's emission directions (point and spot lights: a cube
+// map in the light's frame) or over its emission disc (directional lights: a square grid)
+// in which the cells that can send light toward some object are marked. Photons then
+// leave through marked cells only, so few of them are wasted on empty space around a
+// small or distant scene.
 #pragma once
 #include <optional>
 #include <vector>
@@ -30,24 +31,29 @@ public:
     // the power through the marked cells: unbiased, as no unmarked cell reaches geometry.
     std::optional<PhotonEmission> emit(double uCell, Vec2 uWithin) const;
 
-    size_t cellCount() const { return static_cast<size_t>(rows_) * cols_; }
+    size_t cellCount() const { return static_cast<size_t>(faces_) * side_ * side_; }
     size_t markedCount() const { return marked_.size(); }
     // Share of the light's power that leaves through marked cells.
     double markedPowerFraction() const { return markedPowerFraction_; }
 
 private:
-    struct CellBounds {
-        float lo0, hi0, lo1, hi1;  // Point: z = cos(theta) and phi; Parallel: x and y on the unit disc
+    // A cell: a square [u0, u1] x [v0, v1] on a cube face (Point; the face at distance 1
+    // along its axis) or on the unit disc's bounding square (Parallel, face 0).
+    struct Cell {
+        int face;
+        float u0, u1, v0, v1;
     };
-    CellBounds cellBounds(size_t cell) const;
-    Vec3 pointDirection(float z, float phi) const;  // world direction from the light's frame
-    bool reaches(size_t cell, const std::vector<BoundingSphere>& objects) const;
-    double cellPower(size_t cell) const;  // average over channels, W
+    Cell cell(size_t index) const;
+    Vec3 faceDirection(int face, float u, float v) const;  // unit world direction (Point)
+    float solidAngle(const Cell& c) const;
+    // Centre direction of a Point cell and the half-angle of a cone about it that holds the cell.
+    std::pair<Vec3, float> boundingCone(const Cell& c) const;
+    bool reaches(const Cell& c, const std::vector<BoundingSphere>& objects) const;
+    double cellPower(const Cell& c) const;  // average over channels, W
 
     EmissionGeometry geometry_;
     const Light* light_ = nullptr;
-    int rows_ = 0, cols_ = 0;
-    float cellMeasure_ = 0;        // solid angle (Point) or area (Parallel) of every cell
+    int faces_ = 0, side_ = 0;      // faces (6 or 1) of side_ x side_ cells
     std::vector<uint32_t> marked_;  // marked cells
     std::vector<double> cdf_;       // over marked_, by power (double: cells are many and small)
     double markedPowerFraction_ = 1;
