@@ -56,12 +56,13 @@ std::optional<ProjectionMap> ProjectionMap::build(const Light& light, const std:
     } else {
         return std::nullopt;
     }
+    const std::vector<BoundingSphere> seen = m.asSeenFromLight(objects);
     std::vector<uint8_t> reach(m.cellCount());
     std::vector<double> power(m.cellCount());
     tbb::parallel_for(size_t(0), m.cellCount(), [&](size_t i) {
         Cell c = m.cell(i);
         power[i] = m.cellPower(c);
-        reach[i] = power[i] > 0 && m.reaches(c, objects);
+        reach[i] = power[i] > 0 && m.reaches(c, seen);
     });
     double total = 0, sum = 0;
     for (size_t i = 0; i < m.cellCount(); ++i) {
@@ -109,29 +110,41 @@ std::pair<Vec3, float> ProjectionMap::boundingCone(const Cell& c) const {
     return {axis, halfAngle};
 }
 
+std::vector<BoundingSphere> ProjectionMap::asSeenFromLight(const std::vector<BoundingSphere>& objects) const {
+    std::vector<BoundingSphere> seen;
+    for (const BoundingSphere& s : objects) {
+        if (geometry_.kind == EmissionGeometry::Kind::Point) {
+            Vec3 v = s.center - geometry_.position;
+            float d = length(v);
+            if (d <= s.radius) {
+                seen.push_back({geometry_.frame.n, kPi});  // the light is inside it: every direction
+                continue;
+            }
+            seen.push_back({v / d, std::asin(s.radius / d)});
+        } else {
+            const SceneSphere& disc = geometry_.disc;
+            Vec3 q = s.center - disc.center;
+            seen.push_back({{dot(q, geometry_.frame.s) / disc.radius, dot(q, geometry_.frame.t) / disc.radius, 0},
+                            s.radius / disc.radius});
+        }
+    }
+    return seen;
+}
+
 // Conservative: a cell is marked if the cone that holds it (Point), or the disc about its
 // centre that holds the whole square (Parallel), meets some object's bounding sphere.
-bool ProjectionMap::reaches(const Cell& c, const std::vector<BoundingSphere>& objects) const {
+bool ProjectionMap::reaches(const Cell& c, const std::vector<BoundingSphere>& seen) const {
     constexpr float kMargin = 1e-4f;
     if (geometry_.kind == EmissionGeometry::Kind::Point) {
         auto [axis, halfAngle] = boundingCone(c);
-        for (const BoundingSphere& s : objects) {
-            Vec3 v = s.center - geometry_.position;
-            float d = length(v);
-            if (d <= s.radius * (1 + kMargin) + kMargin) return true;  // the light is inside it
-            float angularRadius = std::asin(std::min(1.0f, s.radius / d));
-            if (angleBetween(axis, v / d) <= halfAngle + angularRadius + kMargin) return true;
-        }
+        for (const BoundingSphere& s : seen)
+            if (angleBetween(axis, s.center) <= halfAngle + s.radius + kMargin) return true;
         return false;
     }
-    const SceneSphere& disc = geometry_.disc;
     float cx = 0.5f * (c.u0 + c.u1), cy = 0.5f * (c.v0 + c.v1);
     float halfDiagonal = std::sqrt(2.0f) * 0.5f * (c.u1 - c.u0);
-    for (const BoundingSphere& s : objects) {
-        Vec3 q = s.center - disc.center;
-        float px = dot(q, geometry_.frame.s) / disc.radius, py = dot(q, geometry_.frame.t) / disc.radius;
-        if (std::hypot(cx - px, cy - py) <= s.radius / disc.radius + halfDiagonal + kMargin) return true;
-    }
+    for (const BoundingSphere& s : seen)
+        if (std::hypot(cx - s.center.x, cy - s.center.y) <= s.radius + halfDiagonal + kMargin) return true;
     return false;
 }
 

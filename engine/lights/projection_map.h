@@ -48,7 +48,11 @@ private:
     float solidAngle(const Cell& c) const;
     // Centre direction of a Point cell and the half-angle of a cone about it that holds the cell.
     std::pair<Vec3, float> boundingCone(const Cell& c) const;
-    bool reaches(const Cell& c, const std::vector<BoundingSphere>& objects) const;
+    // The objects as the light sees them, computed once per map: for Point, a unit
+    // direction and an angular radius (pi if the light is inside); for Parallel, the
+    // centre and radius of the footprint on the disc, in units of the disc's radius.
+    std::vector<BoundingSphere> asSeenFromLight(const std::vector<BoundingSphere>& objects) const;
+    bool reaches(const Cell& c, const std::vector<BoundingSphere>& seen) const;
     double cellPower(const Cell& c) const;  // average over channels, W
 
     EmissionGeometry geometry_;
