@@ -103,6 +103,8 @@ TEST(SceneLoaderErrors, PhotonMapSettings) {
                 "render.photonmap.global_max_radius", "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["photonmap"]["caustic_max_radius"] = 0; },
                 "render.photonmap.caustic_max_radius", "must be > 0");
+    expectError([](Json& d) { d["render"]["photonmap"]["precomputed_irradiance"] = 1; },
+                "render.photonmap.precomputed_irradiance", "must be true or false");
     expectError([](Json& d) { d["render"]["photonmap"]["k"] = 5; }, "render.photonmap.k", "unknown field");
 }
 

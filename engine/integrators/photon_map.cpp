@@ -1,4 +1,5 @@
 #include "photon_map.h"
+#include <tbb/parallel_for.h>
 #include <nanoflann.hpp>
 #include "photon_kernel.h"
 
@@ -9,19 +10,21 @@ namespace {
 constexpr float kDiscThickness = 0.125f;
 }  // namespace
 
-// nanoflann reads points through an adaptor; the tree keeps a reference to it.
+// nanoflann reads points through an adaptor; the tree keeps a reference to it. It points
+// at the photons' storage, which a move of the map's vector leaves in place.
 struct PhotonMap::Tree {
     struct Points {
-        const std::vector<StoredPhoton>* photons;
-        size_t kdtree_get_point_count() const { return photons->size(); }
-        float kdtree_get_pt(size_t i, size_t dim) const { return (*photons)[i].p[dim]; }
+        const StoredPhoton* photons;
+        size_t count;
+        size_t kdtree_get_point_count() const { return count; }
+        float kdtree_get_pt(size_t i, size_t dim) const { return photons[i].p[dim]; }
         template <class Box>
         bool kdtree_get_bbox(Box&) const { return false; }
     };
     using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Points>, Points, 3, uint32_t>;
 
     explicit Tree(const std::vector<StoredPhoton>& photons)
-        : points{&photons}, index(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
+        : points{photons.data(), photons.size()}, index(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
     Points points;
     Index index;
 };
@@ -50,29 +53,69 @@ size_t PhotonMap::nearest(Vec3 x, int k, float maxRadius, uint32_t* indices, flo
     return result.size();
 }
 
-Color PhotonMap::radiance(const ShadingPoint& sp, Vec3 wo, unsigned lobes, const PhotonLookup& lookup,
-                          bool onlyIndirect) const {
+template <class Weight>
+Color PhotonMap::estimate(Vec3 x, Vec3 n, const PhotonLookup& lookup, const Weight& weight) const {
     if (photons_.empty()) return Color(0.0f);
     thread_local std::vector<uint32_t> indices;
     thread_local std::vector<float> distances2;
     indices.resize(static_cast<size_t>(lookup.nearest));
     distances2.resize(static_cast<size_t>(lookup.nearest));
-    size_t found = nearest(sp.hit.p, lookup.nearest, lookup.maxRadius, indices.data(), distances2.data());
+    size_t found = nearest(x, lookup.nearest, lookup.maxRadius, indices.data(), distances2.data());
     if (found == 0) return Color(0.0f);
     float r2 = found == indices.size() ? distances2[found - 1] : lookup.maxRadius * lookup.maxRadius;
     if (!(r2 > 0)) return Color(0.0f);
     const float maxOffset = kDiscThickness * std::sqrt(r2);
-    const Vec3 woLocal = sp.frame.toLocal(wo);
     Color sum(0.0f);
     for (size_t i = 0; i < found; ++i) {
         const StoredPhoton& ph = photons_[indices[i]];
-        if (onlyIndirect && !(ph.flags & StoredPhoton::kIndirect)) continue;
-        if (std::abs(dot(ph.position() - sp.hit.p, sp.hit.ng)) > maxOffset) continue;
-        Color f = sp.material->eval(woLocal, sp.frame.toLocal(ph.incoming()), sp.tint, TransportMode::Radiance, lobes);
-        if (isBlack(f)) continue;
-        sum += f * ph.power() * kernelWeight(lookup.kernel, distances2[i] / r2);
+        if (std::abs(dot(ph.position() - x, n)) > maxOffset) continue;
+        Color w = weight(ph);
+        if (isBlack(w)) continue;
+        sum += w * ph.power() * kernelWeight(lookup.kernel, distances2[i] / r2);
     }
     return sum * (fluxScale_ / (kPi * r2));
+}
+
+Color PhotonMap::radiance(const ShadingPoint& sp, Vec3 wo, unsigned lobes, const PhotonLookup& lookup,
+                          bool onlyIndirect) const {
+    const Vec3 woLocal = sp.frame.toLocal(wo);
+    return estimate(sp.hit.p, sp.hit.ng, lookup, [&](const StoredPhoton& ph) {
+        if (onlyIndirect && !(ph.flags & StoredPhoton::kIndirect)) return Color(0.0f);
+        return sp.material->eval(woLocal, sp.frame.toLocal(ph.incoming()), sp.tint, TransportMode::Radiance, lobes);
+    });
+}
+
+Color PhotonMap::irradiance(Vec3 x, Vec3 n, const PhotonLookup& lookup) const {
+    return estimate(x, n, lookup, [&](const StoredPhoton& ph) { return Color(dot(ph.incoming(), n) > 0 ? 1.0f : 0.0f); });
+}
+
+PhotonMap PhotonMap::precomputeIrradiance(const std::vector<uint16_t>& normals, int stride,
+                                          const PhotonLookup& lookup) const {
+    const size_t count = (photons_.size() + stride - 1) / stride;
+    std::vector<StoredPhoton> records(count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+        const StoredPhoton& ph = photons_[i * stride];
+        StoredPhoton r = ph;
+        r.direction = normals[i * stride];
+        Vec3 n = r.incoming();
+        r.flux = StoredPhoton::encodeFlux(irradiance(ph.position(), n, lookup));
+        records[i] = r;
+    });
+    PhotonMap map;
+    map.build(std::move(records), 1.0f);
+    return map;
+}
+
+std::optional<Color> PhotonMap::lookupIrradiance(Vec3 x, Vec3 n, float maxRadius) const {
+    constexpr int k = 8;
+    uint32_t indices[k];
+    float distances2[k];
+    size_t found = nearest(x, k, maxRadius, indices, distances2);
+    for (size_t i = 0; i < found; ++i) {
+        const StoredPhoton& r = photons_[indices[i]];
+        if (dot(r.incoming(), n) > 0.9f) return r.power();
+    }
+    return std::nullopt;
 }
 
 }  // namespace photon

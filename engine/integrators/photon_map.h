@@ -2,6 +2,7 @@
 // k-nearest-neighbour queries, and the radiance estimate over them.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 #include "photon_record.h"
 #include "shading.h"
@@ -41,7 +42,25 @@ public:
     Color radiance(const ShadingPoint& sp, Vec3 wo, unsigned lobes, const PhotonLookup& lookup,
                    bool onlyIndirect = false) const;
 
+    // Irradiance at x on a surface with normal n (W/m^2): the same estimate with f = 1 for
+    // photons arriving from n's side (Christensen 1999, "Faster Photon Map Global
+    // Illumination", JGT 4(1)).
+    Color irradiance(Vec3 x, Vec3 n, const PhotonLookup& lookup) const;
+
+    // Precomputed irradiance (Christensen 1999): every `stride`-th photon becomes a record
+    // at its position whose flux word holds the irradiance there and whose direction word
+    // holds the surface normal (normals[i], StoredPhoton::encodeDirection). Parallel and
+    // deterministic.
+    PhotonMap precomputeIrradiance(const std::vector<uint16_t>& normals, int stride, const PhotonLookup& lookup) const;
+    // The irradiance of the nearest record within maxRadius whose normal is within ~25
+    // degrees of n, if any (this map must come from precomputeIrradiance).
+    std::optional<Color> lookupIrradiance(Vec3 x, Vec3 n, float maxRadius) const;
+
 private:
+    // sum_p weight(p) Phi_p K / (pi r^2) over the k nearest photons in the disc about x
+    // flattened along n: the one density estimate behind radiance and irradiance.
+    template <class Weight>
+    Color estimate(Vec3 x, Vec3 n, const PhotonLookup& lookup, const Weight& weight) const;
     struct Tree;
     std::vector<StoredPhoton> photons_;
     std::unique_ptr<Tree> tree_;

@@ -19,6 +19,7 @@ namespace photon {
 enum class PhotonMapKind { Global, Caustic };
 struct PhotonTraceResult {
     std::vector<StoredPhoton> photons;  // in photon-index order
+    std::vector<uint16_t> normals;      // shading normal where each photon was stored, octahedral 16-bit
     int64_t emitted = 0, misses = 0, segments = 0;
 };
 // Traces `count` photons with random streams keyed by (seed, map kind, photon index), in
@@ -40,6 +41,7 @@ public:
 
     const PhotonMap& globalMap() const { return global_; }
     const PhotonMap& causticMap() const { return caustic_; }
+    const PhotonMap& irradianceMap() const { return irradiance_; }
 
 private:
     bool buildMaps(const CancelToken& cancel);
@@ -47,6 +49,9 @@ private:
     // Light reflected at a camera hit through its non-specular lobes.
     Color reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
     Color finalGather(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
+    // Light leaving a gather ray's hit y toward wo: from the precomputed irradiance at y
+    // for purely diffuse surfaces where there is one, else the full global-map estimate.
+    Color globalRadiance(const ShadingPoint& y, Vec3 wo, unsigned lobes) const;
 
     std::shared_ptr<const Scene> scene_;
     const RenderSettings& settings_;
@@ -54,6 +59,7 @@ private:
     PhotonLookup globalLookup_, causticLookup_;
     int width_, height_;
     PhotonMap global_, caustic_;
+    PhotonMap irradiance_;  // precomputed irradiance at every 4th global photon (Christensen 1999)
     bool mapsBuilt_ = false;
     std::vector<Color> sum_, pass_;
     int passes_ = 0;

@@ -13,6 +13,7 @@ constexpr int64_t kPhotonsPerChunk = 4096;
 
 struct ChunkResult {
     std::vector<StoredPhoton> photons;
+    std::vector<uint16_t> normals;
     int64_t misses = 0, segments = 0;
 };
 
@@ -37,11 +38,10 @@ void tracePhoton(const Scene& scene, const PhotonEmitter& emitter, PhotonMapKind
         ++out.segments;
         Vec3 wi = -ray.d;  // toward where the photon came from
         ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-        if (!sp.material->isDeltaOnly()) {
-            if (kind == PhotonMapKind::Global)
-                out.photons.emplace_back(hit.p, wi, beta, onlySpecular ? 0 : StoredPhoton::kIndirect);
-            else if (depth > 0 && onlySpecular)
-                out.photons.emplace_back(hit.p, wi, beta, 0);
+        const bool store = kind == PhotonMapKind::Global || (depth > 0 && onlySpecular);
+        if (!sp.material->isDeltaOnly() && store) {
+            out.photons.emplace_back(hit.p, wi, beta, onlySpecular ? 0 : StoredPhoton::kIndirect);
+            out.normals.push_back(StoredPhoton::encodeDirection(sp.hit.ns));
         }
         if (depth + 1 == s.maxDepth) break;
         float uLobe = rng.uniform();
@@ -83,8 +83,10 @@ PhotonTraceResult tracePhotonMap(const Scene& scene, const PhotonEmitter& emitte
     size_t total = 0;
     for (const ChunkResult& c : results) total += c.photons.size();
     r.photons.reserve(total);
+    r.normals.reserve(total);
     for (ChunkResult& c : results) {  // chunk order: the same list for any thread count
         r.photons.insert(r.photons.end(), c.photons.begin(), c.photons.end());
+        r.normals.insert(r.normals.end(), c.normals.begin(), c.normals.end());
         r.misses += c.misses;
         r.segments += c.segments;
     }

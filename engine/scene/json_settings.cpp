@@ -66,6 +66,7 @@ PhotonMapSettings readPhotonMap(const JsonValue& value) {
     if (auto r = obj.optional("global_max_radius")) p.globalMaxRadius = readInitialRadius(*r);
     if (auto r = obj.optional("caustic_max_radius")) p.causticMaxRadius = readInitialRadius(*r);
     p.gatherRays = int(obj.integer("gather_rays", p.gatherRays, 0, 100'000));
+    p.precomputedIrradiance = obj.boolean("precomputed_irradiance", p.precomputedIrradiance);
     obj.finish();
     return p;
 }

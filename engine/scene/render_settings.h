@@ -20,6 +20,7 @@ struct PhotonMapSettings {
     float globalMaxRadius = 0;        // 0: "auto", a tenth of the scene's bounding-sphere radius
     float causticMaxRadius = 0;       // 0: "auto", a fortieth of the scene's bounding-sphere radius
     int gatherRays = 64;              // final-gather rays per camera hit; 0: global map read directly
+    bool precomputedIrradiance = true;  // gather rays read irradiance precomputed at photons (Christensen 1999)
 };
 
 struct RenderSettings {
