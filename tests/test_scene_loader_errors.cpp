@@ -96,7 +96,7 @@ TEST(SceneLoaderErrors, PhotonMapSettings) {
     expectError([](Json& d) { d["render"]["photonmap"]["gather_rays"] = -1; }, "render.photonmap.gather_rays",
                 "must be an integer in [0, 100000]");
     expectError([](Json& d) { d["render"]["photonmap"]["global_photons"] = 1.5; }, "render.photonmap.global_photons",
-                "must be an integer in [0, 100000000]");
+                "must be an integer in [0, 10000000]");
     expectError([](Json& d) { d["render"]["photonmap"]["caustic_nearest"] = 0; }, "render.photonmap.caustic_nearest",
                 "must be an integer in [1, 10000]");
     expectError([](Json& d) { d["render"]["photonmap"]["global_max_radius"] = "big"; },

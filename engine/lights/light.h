@@ -56,9 +56,11 @@ public:
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
     // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
     virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }
+    // For projection maps (projection_map.h): where photons leave from, and how much power
+    // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
+    // world direction w; for parallel kinds: the power per unit area crossing the emission
+    // disc (W/m^2), whatever w.
     virtual EmissionGeometry emissionGeometry() const { return {}; }
-    // Point kinds: radiant intensity (W/sr) toward world direction w. Parallel kinds: the
-    // power per unit area crossing the emission disc (W/m^2), whatever w.
     virtual Color emittedDensity(Vec3 w) const { return Color(0.0f); }
 };
 

@@ -19,7 +19,7 @@ std::optional<EmittedPhoton> PhotonEmitter::emit(Rng& rng) const {
     if (const ProjectionMap* map = projectionMap(pick.index)) {
         // Point lights use only a direction and parallel lights only a position: the pair
         // they leave unused picks the cell, as one 48-bit number (cells are many and small).
-        bool point = pick.light->emissionGeometry().kind == EmissionGeometry::Kind::Point;
+        bool point = map->emitsFromPoint();
         Vec2 uCell = point ? uPos : uDir;
         e = map->emit(static_cast<double>(uCell.x) + static_cast<double>(uCell.y) * 0x1p-24, point ? uDir : uPos);
     } else {

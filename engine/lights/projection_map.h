@@ -31,6 +31,8 @@ public:
     // the power through the marked cells: unbiased, as no unmarked cell reaches geometry.
     std::optional<PhotonEmission> emit(double uCell, Vec2 uWithin) const;
 
+    // Point kinds pick a direction (uWithin is a direction sample), parallel ones a position.
+    bool emitsFromPoint() const { return geometry_.kind == EmissionGeometry::Kind::Point; }
     size_t cellCount() const { return static_cast<size_t>(faces_) * side_ * side_; }
     size_t markedCount() const { return marked_.size(); }
     // Share of the light's power that leaves through marked cells.

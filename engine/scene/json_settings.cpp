@@ -55,12 +55,16 @@ float readInitialRadius(const JsonValue& value) {
     return value.number(Range::positive());
 }
 
+// Photons emitted for one map: a closed scene stores two or three of each, at 20 bytes
+// (plus 2 bytes of normal while the maps are built), so 10 million stay under about 700 MB.
+constexpr int64_t kMaxMapPhotons = 10'000'000;
+
 // The "photonmap" block: settings of the two-pass photon mapper.
 PhotonMapSettings readPhotonMap(const JsonValue& value) {
     JsonObject obj = value.object();
     PhotonMapSettings p;
-    p.globalPhotons = obj.integer("global_photons", p.globalPhotons, 0, 100'000'000);
-    p.causticPhotons = obj.integer("caustic_photons", p.causticPhotons, 0, 100'000'000);
+    p.globalPhotons = obj.integer("global_photons", p.globalPhotons, 0, kMaxMapPhotons);
+    p.causticPhotons = obj.integer("caustic_photons", p.causticPhotons, 0, kMaxMapPhotons);
     p.globalNearest = int(obj.integer("global_nearest", p.globalNearest, 1, 10'000));
     p.causticNearest = int(obj.integer("caustic_nearest", p.causticNearest, 1, 10'000));
     if (auto r = obj.optional("global_max_radius")) p.globalMaxRadius = readInitialRadius(*r);
