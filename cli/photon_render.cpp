@@ -12,7 +12,7 @@ namespace {
 
 const char* kUsage =
     "usage: photon-render SCENE.json [-o OUT.exr] [--png OUT.png] [--passes N] [--photons-per-pass N]\n"
-    "                     [--time-limit SECONDS] [--threads N] [--seed N] [--integrator sppm|path|radiosity] [--quiet]\n";
+    "                     [--time-limit SECONDS] [--threads N] [--seed N] [--integrator sppm|path|radiosity|photonmap] [--quiet]\n";
 
 struct Options {
     std::string scene, exr, png;
@@ -67,10 +67,10 @@ void applyOverrides(const Options& o, photon::RenderSettings& s) {
     if (o.photons) s.photonsPerPass = *o.photons;
     if (o.seed) s.seed = static_cast<uint64_t>(*o.seed);
     if (o.timeLimit) s.timeLimitSeconds = *o.timeLimit;
-    if (o.integrator == "path") s.integrator = photon::IntegratorKind::Path;
-    else if (o.integrator == "sppm") s.integrator = photon::IntegratorKind::Sppm;
-    else if (o.integrator == "radiosity") s.integrator = photon::IntegratorKind::Radiosity;
-    else if (!o.integrator.empty()) throw std::invalid_argument("--integrator: expected sppm, path or radiosity");
+    if (o.integrator.empty()) return;
+    std::optional<photon::IntegratorKind> kind = photon::integratorNamed(o.integrator);
+    if (!kind) throw std::invalid_argument("--integrator: expected sppm, path, radiosity or photonmap");
+    s.integrator = *kind;
 }
 
 std::string formatSeconds(double s) {

@@ -3,7 +3,7 @@
 # Only calls apt when something is missing, so repeated runs are quick.
 set -euo pipefail
 packages=(cmake g++ pkg-config libembree-dev libtbb-dev libopenimageio-dev openimageio-tools
-          nlohmann-json3-dev libassimp-dev libcpp-httplib-dev libsqlite3-dev libgtest-dev
+          nlohmann-json3-dev libassimp-dev libnanoflann-dev libcpp-httplib-dev libsqlite3-dev libgtest-dev
           python3 python3-jsonschema chromium ccache)
 missing=()
 for p in "${packages[@]}"; do

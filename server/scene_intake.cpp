@@ -46,7 +46,7 @@ JobSettings validateScene(const std::string& sceneText, const std::filesystem::p
     s.passes = render.passes;
     s.photonsPerPass = render.photonsPerPass;
     s.seed = render.seed;
-    s.integrator = render.integrator == IntegratorKind::Path ? "path" : "sppm";
+    s.integrator = std::string(integratorName(render.integrator));
     s.width = camera.width;
     s.height = camera.height;
     return s;

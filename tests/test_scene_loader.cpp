@@ -410,3 +410,21 @@ TEST(JsonReader, PathsAndUnknownFields) {
     EXPECT_EQ(b[0].integer(0, 5), 1);
     EXPECT_THROW(b[0].integer(2, 5), SceneError);
 }
+
+namespace photon {
+namespace {
+
+// The loader's choice list, the CLI and the API all go by kIntegratorNames.
+TEST(SceneLoader, IntegratorNamesMatchTheEnum) {
+    for (size_t i = 0; i < kIntegratorNames.size(); ++i) {
+        Json doc = fullScene();
+        doc["render"]["integrator"] = std::string(kIntegratorNames[i]);
+        EXPECT_EQ(static_cast<size_t>(load(doc).render.integrator), i) << kIntegratorNames[i];
+        EXPECT_EQ(integratorNamed(kIntegratorNames[i]), IntegratorKind(i));
+        EXPECT_EQ(integratorName(IntegratorKind(i)), kIntegratorNames[i]);
+    }
+    EXPECT_EQ(integratorNamed("bdpt"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace photon

@@ -104,6 +104,25 @@ TEST(SceneLoaderErrors, RangeChecks) {
                 "must be <= cone_angle");
 }
 
+TEST(SceneLoaderErrors, PhotonMapSettings) {
+    expectError([](Json& d) { d["render"]["projection_maps"] = "yes"; }, "render.projection_maps",
+                "must be true or false");
+    expectError([](Json& d) { d["render"]["photonmap"] = 1; }, "render.photonmap", "must be an object");
+    expectError([](Json& d) { d["render"]["photonmap"]["gather_rays"] = -1; }, "render.photonmap.gather_rays",
+                "must be an integer in [0, 100000]");
+    expectError([](Json& d) { d["render"]["photonmap"]["global_photons"] = 1.5; }, "render.photonmap.global_photons",
+                "must be an integer in [0, 10000000]");
+    expectError([](Json& d) { d["render"]["photonmap"]["caustic_nearest"] = 0; }, "render.photonmap.caustic_nearest",
+                "must be an integer in [1, 10000]");
+    expectError([](Json& d) { d["render"]["photonmap"]["global_max_radius"] = "big"; },
+                "render.photonmap.global_max_radius", "must be \"auto\" or a number > 0");
+    expectError([](Json& d) { d["render"]["photonmap"]["caustic_max_radius"] = 0; },
+                "render.photonmap.caustic_max_radius", "must be > 0");
+    expectError([](Json& d) { d["render"]["photonmap"]["precomputed_irradiance"] = 1; },
+                "render.photonmap.precomputed_irradiance", "must be true or false");
+    expectError([](Json& d) { d["render"]["photonmap"]["k"] = 5; }, "render.photonmap.k", "unknown field");
+}
+
 TEST(SceneLoaderErrors, WrongTypes) {
     expectError([](Json& d) { d["shapes"][3]["radius"] = "big"; }, "shapes[3].radius", "must be a number");
     expectError([](Json& d) { d["shapes"][3]["radius"] = true; }, "shapes[3].radius", "must be a number");
@@ -132,9 +151,9 @@ TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["camera"]["type"] = "orthographic"; }, "camera.type",
                 "unknown type \"orthographic\" (expected one of perspective)");
     expectError([](Json& d) { d["render"]["integrator"] = "bdpt"; }, "render.integrator",
-                "unknown value \"bdpt\" (expected one of sppm, path, radiosity)");
+                "unknown value \"bdpt\" (expected one of sppm, path, radiosity, photonmap)");
     expectError([](Json& d) { d["render"]["kernel"] = "gauss"; }, "render.kernel",
-                "unknown value \"gauss\" (expected one of uniform, biweight)");
+                "unknown value \"gauss\" (expected one of uniform, biweight, cone)");
     expectError([](Json& d) { d["render"]["direct"] = "none"; }, "render.direct",
                 "unknown value \"none\" (expected one of light_sampling, photons)");
 }

@@ -26,6 +26,13 @@ CheckpointKey checkpointKey(const RenderSettings& s, int width, int height) {
     h = mixIn(h, s.seed);
     h = mixIn(h, static_cast<uint64_t>(s.kernel));
     h = mixIn(h, static_cast<uint64_t>(s.direct));
+    h = mixIn(h, static_cast<uint64_t>(s.projectionMaps));
+    const PhotonMapSettings& p = s.photonMap;
+    for (int64_t v : {p.globalPhotons, p.causticPhotons, int64_t(p.globalNearest), int64_t(p.causticNearest),
+                      int64_t(p.gatherRays), int64_t(p.precomputedIrradiance)})
+        h = mixIn(h, static_cast<uint64_t>(v));
+    h = mixIn(h, bits(p.globalMaxRadius));
+    h = mixIn(h, bits(p.causticMaxRadius));
     // Only where they matter, so other integrators' existing checkpoints stay valid.
     if (s.integrator == IntegratorKind::Radiosity) {
         const RadiositySettings& r = s.radiosity;

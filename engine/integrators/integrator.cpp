@@ -1,5 +1,6 @@
 #include "integrator.h"
 #include "path.h"
+#include "photonmap.h"
 #include "radiosity.h"
 #include "sppm.h"
 
@@ -9,6 +10,7 @@ std::unique_ptr<Integrator> makeIntegrator(std::shared_ptr<const Scene> scene) {
     switch (scene->settings().integrator) {
         case IntegratorKind::Path: return makePathIntegrator(std::move(scene));
         case IntegratorKind::Radiosity: return makeRadiosityIntegrator(std::move(scene));
+        case IntegratorKind::PhotonMap: return std::make_unique<PhotonMapIntegrator>(std::move(scene));
         case IntegratorKind::Sppm: break;
     }
     return std::make_unique<SppmIntegrator>(std::move(scene));

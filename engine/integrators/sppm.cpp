@@ -13,8 +13,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
-    : scene_(std::move(scene)), settings_(scene_->settings()), width_(scene_->camera().width()),
-      height_(scene_->camera().height()) {
+    : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
+      width_(scene_->camera().width()), height_(scene_->camera().height()) {
     size_t n = static_cast<size_t>(width_) * height_;
     pixels_.resize(n);
     discs_.resize(n);

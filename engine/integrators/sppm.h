@@ -7,6 +7,7 @@
 #include <mutex>
 #include <vector>
 #include "../accel/hash_grid.h"
+#include "../lights/photon_emitter.h"
 #include "../math/octahedral.h"
 #include "../math/rng.h"
 #include "../scene/scene.h"
@@ -91,6 +92,7 @@ private:
 
     std::shared_ptr<const Scene> scene_;
     const RenderSettings& settings_;
+    PhotonEmitter emitter_;
     int width_, height_;
     int passes_ = 0;
     PassStats stats_;

@@ -3,19 +3,12 @@
 // a cache miss; walking the whole batch one step at a time, with a prefetch for the next
 // step, keeps many misses in flight instead of one.
 #include <atomic>
+#include "photon_kernel.h"
 #include "sppm_gather_batch.h"
 
 namespace photon {
 
 namespace {
-
-// Normalised kernels k(d^2/r^2) whose integral over the unit disc, divided by pi, is 1,
-// so the estimate keeps the form tau / (pi r^2 N). Biweight: (3/pi)(1 - x^2)^2 scaled by pi.
-inline float kernelWeight(KernelKind kind, float d2OverR2) {
-    if (kind == KernelKind::Uniform) return 1.0f;
-    float t = 1.0f - d2OverR2;
-    return 3.0f * t * t;
-}
 
 struct Candidate {
     uint32_t hit, point;

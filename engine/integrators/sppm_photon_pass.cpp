@@ -46,14 +46,10 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
 void SppmIntegrator::tracePhoton(int64_t index, GatherBatch& batch, PhotonCounters& counters) {
     const Scene& scene = *scene_;
     Rng rng(settings_.seed, static_cast<uint64_t>(passes_), static_cast<uint64_t>(index), StreamPurpose::Photon);
-    LightSampler::Pick pick = scene.lights().pick(rng.uniform());
-    Vec2 uPos{rng.uniform(), rng.uniform()}, uDir{rng.uniform(), rng.uniform()};
-    if (!pick.light) return;
-    std::optional<PhotonEmission> e = pick.light->emitPhoton(uPos, uDir);
-    if (!e) return;
-    // Flux in units of the lights' mean power, so a photon's flux averages 1.
-    Color beta = e->flux / (pick.probability * scene.lights().totalAveragePower());
-    Ray ray = isBlack(e->normal) ? Ray{e->origin, e->direction} : spawnRay(e->origin, e->normal, e->direction);
+    std::optional<EmittedPhoton> emitted = emitter_.emit(rng);
+    if (!emitted) return;
+    Color beta = emitted->beta;
+    Ray ray = emitted->ray;
     const bool depositDirect = settings_.direct == DirectLighting::Photons;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;

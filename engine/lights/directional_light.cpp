@@ -22,6 +22,11 @@ public:
         return PhotonEmission{bounds_.pointOnDiscFacing(frame_, uPosition), frame_.n, power(), Vec3{}};
     }
 
+    EmissionGeometry emissionGeometry() const override {
+        return {EmissionGeometry::Kind::Parallel, {}, frame_, -1, bounds_};
+    }
+    Color emittedDensity(Vec3) const override { return irradiance_; }
+
 private:
     Frame frame_;  // n: the direction light travels
     Color irradiance_;

@@ -34,6 +34,17 @@ struct SceneSphere {
     }
 };
 
+// How a light's photons leave it, for projection maps (Jensen 2001, sec. 5.1.3): from one
+// point into a cone of directions (point and spot lights), or along one direction from a
+// disc (directional lights). Other lights emit without a projection map.
+struct EmissionGeometry {
+    enum class Kind { Other, Point, Parallel } kind = Kind::Other;
+    Vec3 position;      // Point: where every photon starts
+    Frame frame;        // Point: n is the cone's axis; Parallel: n is the direction of travel
+    float cosMax = -1;  // Point: no power leaves at more than acos(cosMax) from frame.n
+    SceneSphere disc;   // Parallel: photons start on this sphere's disc facing frame.n
+};
+
 class Light {
 public:
     virtual ~Light() = default;
@@ -45,6 +56,12 @@ public:
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
     // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
     virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }
+    // For projection maps (projection_map.h): where photons leave from, and how much power
+    // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
+    // world direction w; for parallel kinds: the power per unit area crossing the emission
+    // disc (W/m^2), whatever w.
+    virtual EmissionGeometry emissionGeometry() const { return {}; }
+    virtual Color emittedDensity(Vec3 w) const { return Color(0.0f); }
 };
 
 }  // namespace photon

@@ -14,9 +14,11 @@ public:
     struct Pick {
         const Light* light = nullptr;
         float probability = 0;
+        size_t index = 0;  // position of the light in the list the sampler was made from
     };
     Pick pick(float u) const;
     size_t size() const { return lights_.size(); }
+    const Light& light(size_t i) const { return *lights_[i]; }
     // Mean over channels of the summed power: the unit photon fluxes are expressed in.
     float totalAveragePower() const { return totalAveragePower_; }
 

@@ -23,6 +23,11 @@ public:
         return PhotonEmission{position_, sampleUniformSphere(uDirection), intensity_ * (4.0f * kPi), Vec3{}};
     }
 
+    EmissionGeometry emissionGeometry() const override {
+        return {EmissionGeometry::Kind::Point, position_, Frame::fromNormal({0, 0, 1}), -1, {}};
+    }
+    Color emittedDensity(Vec3) const override { return intensity_; }
+
 private:
     Vec3 position_;
     Color intensity_;

@@ -44,6 +44,11 @@ public:
         return PhotonEmission{position_, frame_.toWorld(local), flux, Vec3{}};
     }
 
+    EmissionGeometry emissionGeometry() const override {
+        return {EmissionGeometry::Kind::Point, position_, frame_, cosTotal_, {}};
+    }
+    Color emittedDensity(Vec3 w) const override { return intensity_ * falloff(dot(w, frame_.n)); }
+
 private:
     float falloff(float cosTheta) const { return smoothStep(cosTheta, cosTotal_, cosFalloffStart_); }
     Vec3 position_;

@@ -7,30 +7,33 @@
 
 namespace photon {
 
+// The octahedral map itself: a unit vector to a point of [-1, 1]^2 and back.
+inline Vec2 octahedralEncode(Vec3 v) {
+    v = v / (std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
+    if (v.z >= 0) return {v.x, v.y};
+    // fold the lower hemisphere over the diagonals
+    return {(1 - std::abs(v.y)) * std::copysign(1.0f, v.x), (1 - std::abs(v.x)) * std::copysign(1.0f, v.y)};
+}
+inline Vec3 octahedralDecode(Vec2 e) {
+    Vec3 v{e.x, e.y, 1 - std::abs(e.x) - std::abs(e.y)};
+    if (v.z < 0) {
+        float ox = v.x;
+        v.x = (1 - std::abs(v.y)) * std::copysign(1.0f, ox);
+        v.y = (1 - std::abs(ox)) * std::copysign(1.0f, v.y);
+    }
+    return normalize(v);
+}
+
 struct OctahedralVector {
     uint16_t x = 0, y = 0;
 
     OctahedralVector() = default;
     explicit OctahedralVector(Vec3 v) {
-        v = v / (std::abs(v.x) + std::abs(v.y) + std::abs(v.z));
-        float px = v.x, py = v.y;
-        if (v.z < 0) {  // fold the lower hemisphere over the diagonals
-            px = (1 - std::abs(v.y)) * std::copysign(1.0f, v.x);
-            py = (1 - std::abs(v.x)) * std::copysign(1.0f, v.y);
-        }
-        x = encode(px);
-        y = encode(py);
+        Vec2 e = octahedralEncode(v);
+        x = encode(e.x);
+        y = encode(e.y);
     }
-    Vec3 decode() const {
-        Vec3 v{decode(x), decode(y), 0};
-        v.z = 1 - std::abs(v.x) - std::abs(v.y);
-        if (v.z < 0) {
-            float ox = v.x;
-            v.x = (1 - std::abs(v.y)) * std::copysign(1.0f, ox);
-            v.y = (1 - std::abs(ox)) * std::copysign(1.0f, v.y);
-        }
-        return normalize(v);
-    }
+    Vec3 decode() const { return octahedralDecode({decode(x), decode(y)}); }
 
 private:
     static uint16_t encode(float f) {

@@ -89,13 +89,33 @@ DenoiseSettings readDenoise(const JsonValue& value) {
     return d;
 }
 
+// Photons emitted for one map: a closed scene stores two or three of each, at 20 bytes
+// (plus 2 bytes of normal while the maps are built), so 10 million stay under about 700 MB.
+constexpr int64_t kMaxMapPhotons = 10'000'000;
+
+// The "photonmap" block: settings of the two-pass photon mapper.
+PhotonMapSettings readPhotonMap(const JsonValue& value) {
+    JsonObject obj = value.object();
+    PhotonMapSettings p;
+    p.globalPhotons = obj.integer("global_photons", p.globalPhotons, 0, kMaxMapPhotons);
+    p.causticPhotons = obj.integer("caustic_photons", p.causticPhotons, 0, kMaxMapPhotons);
+    p.globalNearest = int(obj.integer("global_nearest", p.globalNearest, 1, 10'000));
+    p.causticNearest = int(obj.integer("caustic_nearest", p.causticNearest, 1, 10'000));
+    if (auto r = obj.optional("global_max_radius")) p.globalMaxRadius = readAutoOrPositive(*r);
+    if (auto r = obj.optional("caustic_max_radius")) p.causticMaxRadius = readAutoOrPositive(*r);
+    p.gatherRays = int(obj.integer("gather_rays", p.gatherRays, 0, 100'000));
+    p.precomputedIrradiance = obj.boolean("precomputed_irradiance", p.precomputedIrradiance);
+    obj.finish();
+    return p;
+}
+
 }  // namespace
 
 RenderSettings readRender(const JsonValue& value) {
     JsonObject obj = value.object();
     RenderSettings r;
     // The choice lists are in the order of the enums they convert to.
-    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path", "radiosity"}));
+    r.integrator = IntegratorKind(obj.choice("integrator", 0, {"sppm", "path", "radiosity", "photonmap"}));
     r.passes = int(obj.integer("passes", r.passes, 1, 1'000'000));
     r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
     r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
@@ -103,9 +123,11 @@ RenderSettings readRender(const JsonValue& value) {
     r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));
     r.maxDepth = int(obj.integer("max_depth", r.maxDepth, 1, 1000));
     if (auto seed = obj.optional("seed")) r.seed = seed->unsignedInteger();
-    r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight"}));
+    r.kernel = KernelKind(obj.choice("kernel", 0, {"uniform", "biweight", "cone"}));
     r.exposure = obj.number("exposure", 0);
     r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
+    r.projectionMaps = obj.boolean("projection_maps", r.projectionMaps);
+    if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);
     obj.finish();

@@ -1,12 +1,24 @@
 // How to render: the scene's "render" block. Integrators read the fields they use.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <string>
 
 namespace photon {
 
-enum class IntegratorKind { Sppm, Path, Radiosity };
-enum class KernelKind { Uniform, Biweight };
+enum class IntegratorKind { Sppm, Path, Radiosity, PhotonMap };
+// Their names in scenes (render.integrator), on the command line and in the API, in the
+// enum's order.
+inline constexpr std::array<std::string_view, 4> kIntegratorNames{"sppm", "path", "radiosity", "photonmap"};
+inline std::string_view integratorName(IntegratorKind kind) { return kIntegratorNames[static_cast<size_t>(kind)]; }
+inline std::optional<IntegratorKind> integratorNamed(std::string_view name) {
+    for (size_t i = 0; i < kIntegratorNames.size(); ++i)
+        if (kIntegratorNames[i] == name) return IntegratorKind(i);
+    return std::nullopt;
+}
+enum class KernelKind { Uniform, Biweight, Cone };
 // Where SPPM takes direct light at visible points from.
 enum class DirectLighting { LightSampling, Photons };
 
@@ -34,6 +46,19 @@ struct DenoiseSettings {
     int featureSamples = 4;      // jittered rays per pixel for the guide buffers
 };
 
+// Two-pass photon mapping (Jensen 1996): how many photons build each map and how each
+// radiance estimate looks them up.
+struct PhotonMapSettings {
+    int64_t globalPhotons = 200000;   // photons emitted to build the global map
+    int64_t causticPhotons = 200000;  // photons emitted to build the caustic map
+    int globalNearest = 100;          // k: photons per global-map estimate
+    int causticNearest = 50;          // k: photons per caustic-map estimate
+    float globalMaxRadius = 0;        // 0: "auto", a tenth of the scene's bounding-sphere radius
+    float causticMaxRadius = 0;       // 0: "auto", a fortieth of the scene's bounding-sphere radius
+    int gatherRays = 64;              // final-gather rays per camera hit; 0: global map read directly
+    bool precomputedIrradiance = true;  // gather rays read irradiance precomputed at photons (Christensen 1999)
+};
+
 struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Sppm;
     int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
@@ -46,6 +71,8 @@ struct RenderSettings {
     KernelKind kernel = KernelKind::Uniform;
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
+    bool projectionMaps = true;       // emit photons only toward geometry (Jensen 2001, 5.1.3)
+    PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
 };

@@ -1,6 +1,8 @@
 // photon-bench: SPPM throughput on a scene against raw Embree throughput in the same
-// process, per-pass timings, memory per pixel and peak RSS, printed as JSON.
+// process, per-pass timings, memory per pixel and peak RSS, and the share of photons that
+// miss a scene with and without projection maps, printed as JSON.
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
+//                [--projection-scene FILE]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <tbb/global_control.h>
@@ -11,6 +13,7 @@
 #include <optional>
 #include <string>
 #include "embree_throughput.h"
+#include "projection_misses.h"
 #include "render.h"
 
 namespace {
@@ -19,6 +22,7 @@ using nlohmann::json;
 
 struct Options {
     std::string scene = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-glass.json";
+    std::string projectionScene = std::string(PHOTON_SOURCE_DIR) + "/scenes/distant-spheres.json";
     int passes = 8;
     int64_t photons = 0;  // 0: the scene's own setting
     int threads = 0;      // 0: all cores
@@ -38,6 +42,7 @@ Options parse(int argc, char** argv) {
         else if (a == "--photons-per-pass") o.photons = std::stoll(next());
         else if (a == "--threads") o.threads = std::stoi(next());
         else if (a == "--no-rss-check") o.rssCheck = false;
+        else if (a == "--projection-scene") o.projectionScene = next();
         else throw std::invalid_argument("unknown option " + a);
     }
     return o;
@@ -141,6 +146,7 @@ int main(int argc, char** argv) {
         out["segments_to_embree_ratio"] = sppm["photon_segments_per_second"].get<double>() / raw.raysPerSecond();
         // Like for like: the raw rays are counted whether they hit or not, and so are these.
         out["photon_rays_to_embree_ratio"] = sppm["photon_rays_per_second"].get<double>() / raw.raysPerSecond();
+        out["projection_maps"] = photon::bench::projectionMapMisses(o.projectionScene, 1000000);
         out["process_peak_rss_kib"] = peakRssKiB();
         std::cout << out.dump(2) << std::endl;
     } catch (const std::exception& e) {

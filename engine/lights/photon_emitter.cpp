@@ -1,0 +1,34 @@
+#include "photon_emitter.h"
+#include "../scene/scene.h"
+
+namespace photon {
+
+PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps) : scene_(scene) {
+    const LightSampler& lights = scene.lights();
+    maps_.resize(lights.size());
+    if (!projectionMaps) return;
+    std::vector<BoundingSphere> objects = shapeBoundingSpheres(scene.description().shapes);
+    for (size_t i = 0; i < lights.size(); ++i) maps_[i] = ProjectionMap::build(lights.light(i), objects);
+}
+
+std::optional<EmittedPhoton> PhotonEmitter::emit(Rng& rng) const {
+    LightSampler::Pick pick = scene_.lights().pick(rng.uniform());
+    Vec2 uPos{rng.uniform(), rng.uniform()}, uDir{rng.uniform(), rng.uniform()};
+    if (!pick.light) return std::nullopt;
+    std::optional<PhotonEmission> e;
+    if (const ProjectionMap* map = projectionMap(pick.index)) {
+        // Point lights use only a direction and parallel lights only a position: the pair
+        // they leave unused picks the cell, as one 48-bit number (cells are many and small).
+        bool point = map->emitsFromPoint();
+        Vec2 uCell = point ? uPos : uDir;
+        e = map->emit(static_cast<double>(uCell.x) + static_cast<double>(uCell.y) * 0x1p-24, point ? uDir : uPos);
+    } else {
+        e = pick.light->emitPhoton(uPos, uDir);
+    }
+    if (!e) return std::nullopt;
+    Color beta = e->flux / (pick.probability * scene_.lights().totalAveragePower());
+    Ray ray = isBlack(e->normal) ? Ray{e->origin, e->direction} : spawnRay(e->origin, e->normal, e->direction);
+    return EmittedPhoton{ray, beta};
+}
+
+}  // namespace photon
