@@ -1,9 +1,7 @@
 // Two-pass photon mapping: construction, the per-pass driver, the camera pass and its
 // partition of light paths (docs/photonmap.md), snapshots and checkpoints.
 #include "photonmap.h"
-#include <tbb/parallel_for.h>
 #include <chrono>
-#include "checkpoint.h"
 #include "direct_lighting.h"
 
 namespace photon {
@@ -25,9 +23,7 @@ constexpr int kIrradianceStride = 4;
 }  // namespace
 
 PhotonMapIntegrator::PhotonMapIntegrator(std::shared_ptr<const Scene> scene)
-    : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
-      width_(scene_->camera().width()), height_(scene_->camera().height()),
-      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()) {
+    : PixelMeanIntegrator(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps) {
     const PhotonMapSettings& p = settings_.photonMap;
     const float radius = sceneRadius(*scene_);
     globalLookup_ = {p.globalNearest, p.globalMaxRadius > 0 ? p.globalMaxRadius : radius / 10, settings_.kernel};
@@ -48,7 +44,7 @@ bool PhotonMapIntegrator::buildMaps(const CancelToken& cancel) {
     if (p.gatherRays > 0 && p.precomputedIrradiance)
         irradiance_ = global_.precomputeIrradiance(g.normals, kIrradianceStride, globalLookup_);
     // Maps rebuilt after a restored checkpoint are not new work.
-    if (passes_ == 0) {
+    if (passesDone() == 0) {
         stats_.photons = g.emitted + c.emitted;
         stats_.photonMisses = g.misses + c.misses;
         stats_.photonSegments = g.segments + c.segments;
@@ -57,39 +53,19 @@ bool PhotonMapIntegrator::buildMaps(const CancelToken& cancel) {
     return true;
 }
 
-bool PhotonMapIntegrator::renderPass(const CancelToken& cancel) {
-    stats_ = PassStats{};
+bool PhotonMapIntegrator::preparePass(const CancelToken& cancel) {
+    if (mapsBuilt_) return true;
     auto t0 = std::chrono::steady_clock::now();
-    if (!mapsBuilt_ && !buildMaps(cancel)) return false;
+    if (!buildMaps(cancel)) return false;
     stats_.photonMs = millisecondsSince(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y) {
-            if (cancel.cancelled()) return;
-            for (int x = 0; x < width_; ++x) {
-                size_t index = static_cast<size_t>(y) * width_ + x;
-                Rng rng(settings_.seed, static_cast<uint64_t>(passes_), index, StreamPurpose::Camera);
-                Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(),
-                                                       static_cast<float>(y) + rng.uniform(),
-                                                       {rng.uniform(), rng.uniform()});
-                pass_[index] = radiance(ray, rng);
-            }
-        }
-    });
-    if (cancel.cancelled()) return false;
-    stats_.cameraMs = millisecondsSince(t0);
-    stats_.cameraRays = static_cast<int64_t>(sum_.size());
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (size_t i = 0; i < sum_.size(); ++i) sum_[i] += pass_[i];
-    ++passes_;
     return true;
 }
 
 // The camera path follows delta lobes only (E S*), adding emission it reaches that way;
 // at every vertex with non-delta lobes the rest of the light comes from reflectedAt.
-Color PhotonMapIntegrator::radiance(Ray ray, Rng& rng) const {
+Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
     const Scene& scene = *scene_;
+    Ray ray = cameraRay;
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
@@ -174,36 +150,6 @@ Color PhotonMapIntegrator::globalRadiance(const ShadingPoint& y, Vec3 wo, unsign
         }
     }
     return global_.radiance(y, wo, lobes, globalLookup_);
-}
-
-Image PhotonMapIntegrator::snapshot() const {
-    Image image(width_, height_);
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (passes_ == 0) return image;
-    for (int y = 0; y < height_; ++y)
-        for (int x = 0; x < width_; ++x)
-            image.set(x, y, sum_[static_cast<size_t>(y) * width_ + x] / static_cast<float>(passes_));
-    return image;
-}
-
-// The maps are not saved: they depend only on the scene and settings, so the next pass
-// after a restore rebuilds exactly the same ones.
-void PhotonMapIntegrator::saveState(std::ostream& out) const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    writeCheckpointHeader(out, checkpointKey(settings_, width_, height_));
-    writeRaw(out, &passes_, 1);
-    writeRaw(out, sum_.data(), sum_.size());
-}
-
-void PhotonMapIntegrator::restoreState(std::istream& in) {
-    readCheckpointHeader(in, checkpointKey(settings_, width_, height_));
-    int passes = 0;
-    readRaw(in, &passes, 1);
-    std::vector<Color> sum(sum_.size());
-    readRaw(in, sum.data(), sum.size());
-    std::lock_guard<std::mutex> lock(mutex_);
-    passes_ = passes;
-    sum_ = std::move(sum);
 }
 
 }  // namespace photon

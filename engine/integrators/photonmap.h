@@ -5,13 +5,12 @@
 // recursion, caustics from the caustic map, indirect light by final gathering into the
 // global map (docs/photonmap.md derives why every light path is counted once).
 #pragma once
-#include <mutex>
 #include <vector>
 #include "../lights/photon_emitter.h"
 #include "../math/rng.h"
 #include "../scene/scene.h"
-#include "integrator.h"
 #include "photon_map.h"
+#include "pixel_mean.h"
 
 namespace photon {
 
@@ -27,25 +26,21 @@ struct PhotonTraceResult {
 PhotonTraceResult tracePhotonMap(const Scene& scene, const PhotonEmitter& emitter, PhotonMapKind kind, int64_t count,
                                  const CancelToken& cancel);
 
-class PhotonMapIntegrator final : public Integrator {
+// The image is the mean of one camera sample per pixel per pass (PixelMeanIntegrator);
+// the maps are built by the first pass and not saved in checkpoints: they depend only on
+// the scene and settings, so the first pass after a restore rebuilds the same ones.
+class PhotonMapIntegrator final : public PixelMeanIntegrator {
 public:
     explicit PhotonMapIntegrator(std::shared_ptr<const Scene> scene);
-
-    bool renderPass(const CancelToken& cancel) override;
-    Image snapshot() const override;
-    const PassStats& lastPassStats() const override { return stats_; }
-    int passesDone() const override { return passes_; }
-    size_t bytesPerPixel() const override { return 2 * sizeof(Color); }
-    void saveState(std::ostream& out) const override;
-    void restoreState(std::istream& in) override;
 
     const PhotonMap& globalMap() const { return global_; }
     const PhotonMap& causticMap() const { return caustic_; }
     const PhotonMap& irradianceMap() const { return irradiance_; }
 
 private:
+    bool preparePass(const CancelToken& cancel) override;
     bool buildMaps(const CancelToken& cancel);
-    Color radiance(Ray ray, Rng& rng) const;
+    Color radiance(const Ray& cameraRay, Rng& rng) const override;
     // Light reflected at a camera hit through its non-specular lobes.
     Color reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
     Color finalGather(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
@@ -53,18 +48,12 @@ private:
     // for purely diffuse surfaces where there is one, else the full global-map estimate.
     Color globalRadiance(const ShadingPoint& y, Vec3 wo, unsigned lobes) const;
 
-    std::shared_ptr<const Scene> scene_;
     const RenderSettings& settings_;
     PhotonEmitter emitter_;
     PhotonLookup globalLookup_, causticLookup_;
-    int width_, height_;
     PhotonMap global_, caustic_;
     PhotonMap irradiance_;  // precomputed irradiance at every 4th global photon (Christensen 1999)
     bool mapsBuilt_ = false;
-    std::vector<Color> sum_, pass_;
-    int passes_ = 0;
-    PassStats stats_;
-    mutable std::mutex mutex_;  // guards sum_ and passes_ between a pass and a snapshot
 };
 
 }  // namespace photon

@@ -1,5 +1,6 @@
 #include "pixel_mean.h"
 #include <tbb/parallel_for.h>
+#include <chrono>
 #include "checkpoint.h"
 
 namespace photon {
@@ -9,8 +10,10 @@ PixelMeanIntegrator::PixelMeanIntegrator(std::shared_ptr<const Scene> scene)
       sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()) {}
 
 bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
+    stats_ = PassStats{};
     if (!preparePass(cancel)) return false;
     const RenderSettings& s = scene_->settings();
+    auto start = std::chrono::steady_clock::now();
     tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y < rows.end(); ++y) {
             if (cancel.cancelled()) return;
@@ -29,6 +32,7 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     for (size_t i = 0; i < sum_.size(); ++i) sum_[i] += pass_[i];
     ++passes_;
     stats_.cameraRays = static_cast<int64_t>(sum_.size());
+    stats_.cameraMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return true;
 }
 
