@@ -68,12 +68,12 @@ void writeFileAtomically(const fs::path& file, const std::string& bytes) {
     fs::path temp = file;
     temp += ".tmp";
     // A crash may have left a temporary file behind; it is ours to replace.
-    if (::unlink(temp.c_str()) != 0 && errno != ENOENT) throwStorageError("replacing " + temp.string(), errno);
+    if (::unlink(temp.c_str()) != 0 && errno != ENOENT) throwStorageError("replacing " + temp.filename().string(), errno);
     try {
         NewFile out(temp);
         out.write(bytes.data(), bytes.size());
         out.close();
-        if (::rename(temp.c_str(), file.c_str()) != 0) throwStorageError("renaming " + temp.string(), errno);
+        if (::rename(temp.c_str(), file.c_str()) != 0) throwStorageError("renaming " + temp.filename().string(), errno);
     } catch (...) {
         ::unlink(temp.c_str());  // a full disk must not leave half-written files behind
         throw;

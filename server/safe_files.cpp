@@ -65,7 +65,7 @@ void throwStorageError(const std::string& what, int err) {
 
 NewFile::NewFile(const fs::path& folder, const std::string& relative) : name_(relative) {
     Fd dir(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC));
-    if (dir.fd < 0) throwStorageError("opening " + folder.string(), errno);
+    if (dir.fd < 0) throwStorageError("opening the upload folder", errno);
     fs::path rel(relative);
     std::vector<std::string> parts;
     for (const fs::path& part : rel) parts.push_back(part.string());
@@ -80,7 +80,8 @@ NewFile::NewFile(const fs::path& folder, const std::string& relative) : name_(re
     throwStorageError("creating " + relative, errno);
 }
 
-NewFile::NewFile(const fs::path& file) : name_(file.string()) {
+// Messages reach clients: they name the file, not the server's folders.
+NewFile::NewFile(const fs::path& file) : name_(file.filename().string()) {
     fd_ = ::open(file.c_str(), kCreateFlags, 0644);
     if (fd_ < 0) throwStorageError("creating " + name_, errno);
 }
