@@ -5,6 +5,13 @@
 
 namespace photon::api {
 
+namespace {
+
+// A capacity limit frees up when a job finishes or a stream ends: seconds, not minutes.
+constexpr int kRetryAfterSeconds = 5;
+
+}  // namespace
+
 int statusFor(server::ErrorKind kind) {
     switch (kind) {
         case server::ErrorKind::BadRequest: return 400;
@@ -13,6 +20,8 @@ int statusFor(server::ErrorKind kind) {
         case server::ErrorKind::PayloadTooLarge: return 413;
         case server::ErrorKind::LimitExceeded: return 422;
         case server::ErrorKind::Unavailable: return 503;
+        case server::ErrorKind::TooManyRequests: return 429;
+        case server::ErrorKind::StorageFull: return 507;
     }
     return 500;
 }
@@ -30,7 +39,10 @@ void sendException(httplib::Response& res, std::exception_ptr error) {
     try {
         std::rethrow_exception(error);
     } catch (const server::ServiceError& e) {
-        sendError(res, statusFor(e.kind()), e.what(), e.scenePath());
+        int status = statusFor(e.kind());
+        // Capacity answers say when to try again (RFC 9110 section 10.2.3).
+        if (status == 429 || status == 503) res.set_header("Retry-After", std::to_string(kRetryAfterSeconds));
+        sendError(res, status, e.what(), e.scenePath());
     } catch (const nlohmann::json::exception& e) {
         sendError(res, 400, std::string("malformed JSON: ") + e.what());
     } catch (const std::exception& e) {

@@ -11,7 +11,7 @@ namespace {
 
 // Long-lived event and image streams each hold a thread; the rest serve ordinary requests.
 constexpr size_t kHttpThreads = 64;
-constexpr int kMaxStreams = 48;
+static_assert(server::kMaxStreamsCap + 8 <= int(kHttpThreads), "streams must leave threads for requests");
 // Request threads run at this nice value: when they compete with a render for the cores,
 // the render keeps most of them (a request is short; a pass is what people wait for).
 constexpr int kHttpNice = 10;
@@ -61,7 +61,7 @@ bool constantTimeEquals(const std::string& given, const std::string& expected) {
 }
 
 HttpServer::HttpServer(server::JobService& service, const HttpConfig& config)
-    : streams_(kMaxStreams), context_{service, streams_}, token_(config.token) {
+    : streams_(config.maxStreams), context_{service, streams_}, token_(config.token) {
     configure(config);
 }
 

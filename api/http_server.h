@@ -14,6 +14,7 @@ struct HttpConfig {
     std::string token;    // empty: no authentication
     std::string webRoot;  // served at "/" if the folder exists
     size_t maxBodyBytes = 0;
+    int maxStreams = 48;  // open event and image streams; each holds an HTTP thread
 };
 
 class HttpServer {

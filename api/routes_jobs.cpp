@@ -24,6 +24,24 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
     return o;
 }
 
+// The query takes part in the request digest: the same body with other overrides is a
+// different request. httplib keeps parameters sorted by name.
+void addQuery(const httplib::Request& req, server::RequestDigest& digest) {
+    for (const auto& [name, value] : req.params) {
+        digest.add(name.data(), name.size());
+        digest.endField();
+        digest.add(value.data(), value.size());
+        digest.endField();
+    }
+}
+
+std::optional<std::string> idempotencyKey(const httplib::Request& req) {
+    if (!req.has_header("Idempotency-Key")) return std::nullopt;
+    std::string key = req.get_header_value("Idempotency-Key");
+    if (auto problem = server::idempotencyKeyProblem(key)) throwBadRequest(*problem);
+    return key;
+}
+
 std::optional<server::JobStatus> statusFilter(const httplib::Request& req) {
     std::optional<std::string> text = stringParam(req, "status");
     if (!text) return std::nullopt;
@@ -37,12 +55,17 @@ std::optional<server::JobStatus> statusFilter(const httplib::Request& req) {
 void createJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res,
                const httplib::ContentReader& reader) {
     std::unique_ptr<server::StagedUpload> upload = ctx.service.newUpload();
-    // The body is read before the query is checked: an early answer would leave the rest of
-    // the upload in the connection.
-    readUpload(req, res, reader, *upload, ctx.service.limits().maxBodyBytes);
-    server::JobRecord job = ctx.service.submit(*upload, submitOptions(req));
-    res.set_header("Location", "/api/v1/jobs/" + job.id);
-    sendJson(res, 201, toJson(job));
+    // The body is read before the query and headers are checked: an early answer would
+    // leave the rest of the upload in the connection.
+    const server::Limits& limits = ctx.service.limits();
+    server::RequestDigest digest;
+    readUpload(req, res, reader, *upload, {limits.maxBodyBytes, limits.maxSceneBytes}, digest);
+    addQuery(req, digest);
+    server::SubmitRequest request{submitOptions(req), req.remote_addr, idempotencyKey(req), digest.hex()};
+    server::SubmitResult result = ctx.service.submit(*upload, request);
+    res.set_header("Location", "/api/v1/jobs/" + result.job.id);
+    // 200 for a retry: the job exists already and is what the first attempt created.
+    sendJson(res, result.created ? 201 : 200, toJson(result.job));
 }
 
 void listJobs(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {

@@ -1,4 +1,5 @@
 #include "api/stream_support.h"
+#include <string>
 #include "server/errors.h"
 
 namespace photon::api {
@@ -6,7 +7,9 @@ namespace photon::api {
 std::shared_ptr<StreamSlots::Slot> StreamSlots::acquire() {
     if (++used_ > max_) {
         --used_;
-        throw server::ServiceError(server::ErrorKind::Unavailable, "too many open streams; retry later");
+        throw server::ServiceError(server::ErrorKind::Unavailable,
+                                   "too many open streams: all " + std::to_string(max_) +
+                                       " allowed by the server limit (--max-streams) are in use; retry later");
     }
     return std::make_shared<Slot>(*this);
 }

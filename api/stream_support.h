@@ -15,7 +15,8 @@ namespace photon::api {
 constexpr std::chrono::milliseconds kStreamPoll{1000};
 
 // Each open stream holds one HTTP thread for as long as it lasts. Capping them keeps threads
-// free for ordinary requests: beyond the cap a stream request gets 503.
+// free for ordinary requests: beyond the cap (--max-streams) a stream request gets 503 with
+// Retry-After.
 class StreamSlots {
 public:
     explicit StreamSlots(int max) : max_(max) {}

@@ -2,6 +2,7 @@
 #include <httplib.h>
 #include <exception>
 #include "api/errors.h"
+#include "server/service_limits.h"
 
 namespace photon::api {
 
@@ -16,9 +17,16 @@ using server::ServiceError;
 // receives our answer instead of a reset connection.
 class BodySink {
 public:
-    BodySink(server::StagedUpload& upload, size_t maxBodyBytes) : upload_(upload), maxBodyBytes_(maxBodyBytes) {}
+    BodySink(server::StagedUpload& upload, const UploadLimits& limits, server::RequestDigest& digest)
+        : upload_(upload), limits_(limits), digest_(digest) {}
 
     bool onPart(const httplib::MultipartFormData& part) {
+        // The part's identity, not the boundary (which a retry may choose afresh), is hashed.
+        digest_.endField();
+        for (const std::string* field : {&part.name, &part.filename}) {
+            digest_.add(field->data(), field->size());
+            digest_.endField();
+        }
         return guard([&] {
             upload_.endAsset();
             if (part.name == "scene") {
@@ -26,7 +34,7 @@ public:
                 sawScene_ = true;
                 target_ = Target::Scene;
             } else if (!part.filename.empty()) {
-                upload_.beginAsset(part.filename);
+                upload_.beginAsset(part.name, part.filename);
                 target_ = Target::Asset;
             } else {
                 throw ServiceError(ErrorKind::BadRequest,
@@ -37,22 +45,25 @@ public:
 
     bool onData(const char* data, size_t size) {
         received_ += size;
-        if (received_ > maxBodyBytes_) {
-            fail(std::make_exception_ptr(ServiceError(
-                ErrorKind::PayloadTooLarge, "request body exceeds " + std::to_string(maxBodyBytes_) + " bytes")));
+        if (received_ > limits_.maxBodyBytes) {
+            fail(std::make_exception_ptr(ServiceError(ErrorKind::PayloadTooLarge, bodyTooLarge())));
             return false;  // stop reading: the sender is over the limit
         }
+        digest_.add(data, size);
+        if (target_ == Target::Scene) sceneBytes_ += size;  // counted on, to report the size
         return guard([&] {
-            if (target_ == Target::Scene) upload_.sceneText().append(data, size);
+            if (target_ == Target::Scene) appendScene(data, size);
             else if (target_ == Target::Asset) upload_.appendAsset(data, size);
         });
     }
 
     void finish(bool readOk, int httplibStatus, bool multipart) {
+        digest_.endField();
+        if (sceneBytes_ > limits_.maxSceneBytes)
+            server::checkLimit(ErrorKind::PayloadTooLarge, "scene JSON bytes", int64_t(sceneBytes_),
+                               int64_t(limits_.maxSceneBytes), "--max-scene-bytes");
         if (failure_) std::rethrow_exception(failure_);
-        if (!readOk && httplibStatus == 413)
-            throw ServiceError(ErrorKind::PayloadTooLarge,
-                               "request body exceeds " + std::to_string(maxBodyBytes_) + " bytes");
+        if (!readOk && httplibStatus == 413) throw ServiceError(ErrorKind::PayloadTooLarge, bodyTooLarge());
         if (!readOk) throw ServiceError(ErrorKind::BadRequest, "could not read the request body");
         upload_.endAsset();
         if (multipart && !sawScene_)
@@ -63,6 +74,16 @@ public:
 
 private:
     enum class Target { None, Scene, Asset };
+
+    // Past the limit the scene is no longer kept, only counted: finish() reports its size.
+    void appendScene(const char* data, size_t size) {
+        if (sceneBytes_ <= limits_.maxSceneBytes) upload_.sceneText().append(data, size);
+        else upload_.sceneText().clear();
+    }
+    std::string bodyTooLarge() const {
+        return "request body exceeds the server limit of " + std::to_string(limits_.maxBodyBytes) +
+               " bytes (--max-body-bytes)";
+    }
 
     template <typename Fn>
     bool guard(Fn&& fn) {
@@ -80,8 +101,10 @@ private:
     }
 
     server::StagedUpload& upload_;
-    size_t maxBodyBytes_;
+    const UploadLimits& limits_;
+    server::RequestDigest& digest_;
     size_t received_ = 0;
+    size_t sceneBytes_ = 0;
     Target target_ = Target::None;
     bool sawScene_ = false;
     std::exception_ptr failure_;
@@ -90,8 +113,8 @@ private:
 }  // namespace
 
 void readUpload(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-                server::StagedUpload& upload, size_t maxBodyBytes) {
-    BodySink sink(upload, maxBodyBytes);
+                server::StagedUpload& upload, const UploadLimits& limits, server::RequestDigest& digest) {
+    BodySink sink(upload, limits, digest);
     bool multipart = req.is_multipart_form_data();
     bool ok = false;
     if (multipart) {

@@ -2,9 +2,12 @@
 //   - the scene JSON itself (any content type but multipart);
 //   - multipart/form-data with a part named "scene" (the scene JSON) and one file part per
 //     asset, whose filename is the relative path the scene uses (e.g. "meshes/x.obj").
-// Asset bytes stream straight to the staging folder; nothing large is held in memory.
+// Asset bytes stream straight to the staging folder; nothing large is held in memory. The
+// scene text is held to its own limit, and every part (name, file name, bytes) feeds a
+// digest that recognises a retried request.
 #pragma once
 #include <cstddef>
+#include "server/idempotency.h"
 #include "server/staged_upload.h"
 
 namespace httplib {
@@ -15,9 +18,15 @@ struct Response;
 
 namespace photon::api {
 
+struct UploadLimits {
+    size_t maxBodyBytes = 0;
+    size_t maxSceneBytes = 0;
+};
+
 // Throws ServiceError: BadRequest (bad multipart, unsafe names, unreadable body),
-// PayloadTooLarge (over maxBodyBytes), LimitExceeded (an asset over its limit).
+// PayloadTooLarge (body over maxBodyBytes, scene over maxSceneBytes), LimitExceeded (an
+// asset over its limit).
 void readUpload(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-                server::StagedUpload& upload, size_t maxBodyBytes);
+                server::StagedUpload& upload, const UploadLimits& limits, server::RequestDigest& digest);
 
 }  // namespace photon::api

@@ -13,7 +13,10 @@ enum class ErrorKind {
     Conflict,         // the job is in the wrong state for the operation
     PayloadTooLarge,  // the upload exceeds the body limit
     LimitExceeded,    // a well-formed request asks for more than the server allows
-    Unavailable,      // the server is at capacity (e.g. open streams); retry later
+    Unavailable,      // the server is at capacity (open streams, a full queue) or its data
+                      // directory is read-only; retry later
+    TooManyRequests,  // this client has as many jobs waiting or running as it may
+    StorageFull,      // the data directory's disk has no room for the upload or its records
 };
 
 class ServiceError : public std::runtime_error {

@@ -41,6 +41,7 @@ struct JobRecord {
     JobSettings settings;
     JobProgress progress;
     std::string error;  // why it failed; empty otherwise
+    std::string client; // the submitter's remote address (per-client limits); not served
 };
 
 }  // namespace photon::server

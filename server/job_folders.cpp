@@ -1,11 +1,14 @@
 #include "job_folders.h"
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include "clock.h"
+#include "safe_files.h"
 
 namespace photon::server {
 
@@ -47,12 +50,13 @@ fs::path JobFolders::imageFile(const std::string& id, ImageFormat format) const 
 fs::path JobFolders::newStagingDir() const {
     for (;;) {
         fs::path dir = root_ / "tmp" / ("upload-" + randomJobId());
-        if (fs::create_directory(dir)) return dir;  // false: the name exists, try another
+        if (::mkdir(dir.c_str(), 0755) == 0) return dir;
+        if (errno != EEXIST) throwStorageError("creating an upload folder", errno);  // EEXIST: try another name
     }
 }
 
 void JobFolders::commit(const fs::path& stagingDir, const std::string& id) const {
-    fs::rename(stagingDir, jobDir(id));
+    if (::rename(stagingDir.c_str(), jobDir(id).c_str()) != 0) throwStorageError("storing job " + id, errno);
 }
 
 void JobFolders::remove(const std::string& id) const {
@@ -63,12 +67,17 @@ void JobFolders::remove(const std::string& id) const {
 void writeFileAtomically(const fs::path& file, const std::string& bytes) {
     fs::path temp = file;
     temp += ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        if (!out.flush()) throw std::runtime_error("cannot write " + temp.string());
+    // A crash may have left a temporary file behind; it is ours to replace.
+    if (::unlink(temp.c_str()) != 0 && errno != ENOENT) throwStorageError("replacing " + temp.filename().string(), errno);
+    try {
+        NewFile out(temp);
+        out.write(bytes.data(), bytes.size());
+        out.close();
+        if (::rename(temp.c_str(), file.c_str()) != 0) throwStorageError("renaming " + temp.filename().string(), errno);
+    } catch (...) {
+        ::unlink(temp.c_str());  // a full disk must not leave half-written files behind
+        throw;
     }
-    fs::rename(temp, file);
 }
 
 std::optional<std::string> readWholeFile(const fs::path& file) {

@@ -1,6 +1,8 @@
 #include "job_service.h"
 #include "clock.h"
 #include "errors.h"
+#include "safe_files.h"
+#include "texture_limits.h"
 
 namespace photon::server {
 
@@ -40,6 +42,30 @@ std::unique_ptr<StagedUpload> JobService::newUpload() const {
     return std::make_unique<StagedUpload>(folders_.newStagingDir(), limits_.maxAssetBytes);
 }
 
+std::optional<JobRecord> JobService::replay(const std::string& key, const std::string& digest) {
+    std::optional<IdempotencyEntry> earlier = store_.findKey(key, unixNowSeconds());
+    if (!earlier) return std::nullopt;
+    if (earlier->requestHash != digest)
+        throw ServiceError(ErrorKind::LimitExceeded, "Idempotency-Key reused with a different request");
+    return table_.find(earlier->jobId);  // deleting a job forgets its key: normally found
+}
+
+void JobService::checkAdmission(const std::string& client) const {
+    int64_t active = table_.activeJobsOf(client);
+    if (active >= limits_.maxJobsPerClient)
+        throw ServiceError(ErrorKind::TooManyRequests,
+                           "client " + client + " has " + std::to_string(active) +
+                               " jobs queued or running, the server limit per client is " +
+                               std::to_string(limits_.maxJobsPerClient) +
+                               " (--max-jobs-per-client); retry when one has finished");
+    int64_t queued = table_.countByStatus().at(JobStatus::Queued);
+    if (queued >= limits_.maxQueuedJobs)
+        throw ServiceError(ErrorKind::Unavailable, "the queue is full: " + std::to_string(queued) +
+                                                       " jobs queued, the server limit is " +
+                                                       std::to_string(limits_.maxQueuedJobs) +
+                                                       " (--max-queued-jobs); retry later");
+}
+
 std::string JobService::unusedId() const {
     for (;;) {
         std::string id = randomJobId();
@@ -47,18 +73,33 @@ std::string JobService::unusedId() const {
     }
 }
 
-JobRecord JobService::submit(StagedUpload& upload, const SubmitOptions& options) {
+SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& request) {
+    // Held until the job is stored: a concurrent retry with the same key waits, then replays.
+    std::optional<KeyLocks::Guard> keyGuard;
+    std::optional<IdempotencyEntry> key;
+    if (request.idempotencyKey) {
+        keyGuard.emplace(keyLocks_, *request.idempotencyKey);
+        if (std::optional<JobRecord> earlier = replay(*request.idempotencyKey, request.digest))
+            return {*earlier, false};
+        key = IdempotencyEntry{*request.idempotencyKey, request.digest, "", unixNowSeconds()};
+    }
+    checkAdmission(request.client);  // early, before the costly validation
     upload.endAsset();
+    checkTextureSizes(upload.dir(), limits_.maxTexturePixels);
     JobRecord job;
-    job.settings = validateScene(upload.sceneText(), upload.dir(), options, limits_);
-    writeFileAtomically(upload.dir() / "scene.json", upload.sceneText());
+    job.settings = validateScene(upload.sceneText(), upload.dir(), request.options, limits_);
+    guardStorage("storing the scene", [&] { writeFileAtomically(upload.dir() / "scene.json", upload.sceneText()); });
+    job.priority = request.options.priority;
+    job.client = request.client;
+
+    std::lock_guard admit(admission_);
+    checkAdmission(request.client);
     job.id = unusedId();
-    job.priority = options.priority;
     job.createdAt = utcNowIso8601();
-    folders_.commit(upload.dir(), job.id);
+    guardStorage("storing the job", [&] { folders_.commit(upload.dir(), job.id); });
     upload.markCommitted();
     try {
-        job.seq = store_.insert(job);
+        job.seq = guardStorage("recording the job", [&] { return store_.insert(job, key); });
     } catch (...) {
         folders_.remove(job.id);
         throw;
@@ -66,7 +107,7 @@ JobRecord JobService::submit(StagedUpload& upload, const SubmitOptions& options)
     table_.insert(job);
     hub_.publish(job, std::nullopt);
     queue_.push(job.id, job.priority, job.seq);
-    return job;
+    return {job, true};
 }
 
 JobRecord JobService::get(const std::string& id) const {
@@ -101,7 +142,7 @@ void JobService::remove(const std::string& id) {
             throw ServiceError(ErrorKind::Conflict, "job " + id + " has not finished; cancel it first");
         case JobTable::RemoveResult::Removed: break;
     }
-    store_.remove(id);
+    guardStorage("removing job " + id, [&] { store_.remove(id); });
     folders_.remove(id);
     images_.drop(id);
     hub_.forget(id);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include "event_hub.h"
+#include "idempotency.h"
 #include "image_cache.h"
 #include "job_folders.h"
 #include "job_queue.h"
@@ -31,15 +32,33 @@ struct ServiceConfig {
     Limits limits;
 };
 
+// A submission as the API layer hands it over: the overrides, who sends it, and how to
+// recognise a retry of it.
+struct SubmitRequest {
+    SubmitOptions options;
+    std::string client;                         // the remote address
+    std::optional<std::string> idempotencyKey;  // already checked with idempotencyKeyProblem
+    std::string digest;                         // RequestDigest::hex() of the body and query
+};
+
+struct SubmitResult {
+    JobRecord job;
+    bool created = true;  // false: a retry, answered with the job its key first created
+};
+
 class JobService {
 public:
     // Loads every stored job; jobs that were queued or running are queued again.
     explicit JobService(const ServiceConfig& config);
     ~JobService();
 
-    // A fresh staging area for an upload; hand it back to submit().
+    // A fresh staging area for an upload; hand it back to submit(). Throws ServiceError
+    // (StorageFull, Unavailable) when the data directory cannot be written.
     std::unique_ptr<StagedUpload> newUpload() const;
-    JobRecord submit(StagedUpload& upload, const SubmitOptions& options);
+    // Validates and stores the job and queues it; or, for a key seen in the last 24 hours,
+    // returns the job it created (a different request under that key: LimitExceeded).
+    // Over the per-client or queue limits: TooManyRequests / Unavailable.
+    SubmitResult submit(StagedUpload& upload, const SubmitRequest& request);
 
     JobRecord get(const std::string& id) const;
     JobTable::Page list(std::optional<JobStatus> status, size_t limit, size_t offset) const;
@@ -64,6 +83,8 @@ public:
 private:
     void restore();
     std::string unusedId() const;
+    std::optional<JobRecord> replay(const std::string& key, const std::string& digest);
+    void checkAdmission(const std::string& client) const;
 
     Limits limits_;
     JobFolders folders_;
@@ -75,6 +96,8 @@ private:
     Metrics metrics_;
     JobRunner runner_;
     std::unique_ptr<WorkerPool> workers_;
+    KeyLocks keyLocks_;
+    std::mutex admission_;  // the limit checks and the insert they admit happen as one step
 };
 
 }  // namespace photon::server

@@ -27,28 +27,86 @@ CREATE TABLE IF NOT EXISTS jobs (
     eta_seconds REAL NOT NULL DEFAULT 0,
     error TEXT
 );
-PRAGMA user_version = 1;
 )sql";
 
+// Version 2: the submitting client's address (for per-client limits) and idempotency keys.
+// Databases of version 1 are migrated in place when opened; their jobs keep a NULL client.
+const char* kMigrateTo2 = R"sql(
+BEGIN IMMEDIATE;
+ALTER TABLE jobs ADD COLUMN client TEXT;
+CREATE TABLE IF NOT EXISTS idempotency_keys (
+    key TEXT PRIMARY KEY,
+    request_hash TEXT NOT NULL,
+    job_id TEXT NOT NULL,
+    created_unix INTEGER NOT NULL
+);
+CREATE INDEX IF NOT EXISTS idempotency_keys_by_age ON idempotency_keys (created_unix);
+PRAGMA user_version = 2;
+COMMIT;
+)sql";
+constexpr int64_t kSchemaVersion = 2;
+
 const char* kInsert =
-    "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height)"
-    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)";
+    "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
+    " client) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
     " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10 WHERE id = ?1";
 
 const char* kRemove = "DELETE FROM jobs WHERE id = ?1";
+const char* kRemoveKeysOf = "DELETE FROM idempotency_keys WHERE job_id = ?1";
+const char* kForgetKeys = "DELETE FROM idempotency_keys WHERE created_unix < ?1";
+const char* kInsertKey =
+    "INSERT OR REPLACE INTO idempotency_keys (key, request_hash, job_id, created_unix) VALUES (?1, ?2, ?3, ?4)";
+const char* kFindKey =
+    "SELECT request_hash, job_id, created_unix FROM idempotency_keys WHERE key = ?1 AND created_unix >= ?2";
 
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
-    " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error"
+    " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client"
     " FROM jobs ORDER BY seq";
 
-// Opening creates the schema, so it must run before the statements are prepared.
+int64_t schemaVersion(sql::Database& db) {
+    sql::Statement version = db.prepare("PRAGMA user_version");
+    return version.step() ? version.integer(0) : 0;
+}
+
+// Opening creates or migrates the schema, so it must run before the statements are prepared.
 sql::Database& withSchema(sql::Database& db) {
     db.exec(kSchema);
+    int64_t version = schemaVersion(db);
+    if (version > kSchemaVersion)
+        throw std::runtime_error("the job database is of a newer version (" + std::to_string(version) +
+                                 ") than this server knows (" + std::to_string(kSchemaVersion) + ")");
+    if (version < 2) {
+        try {
+            db.exec(kMigrateTo2);
+        } catch (...) {
+            try {
+                db.exec("ROLLBACK");
+            } catch (...) {  // the transaction never began
+            }
+            throw;
+        }
+    }
     return db;
+}
+
+// Runs fn inside one transaction: all of its writes land, or none.
+template <typename Fn>
+void inTransaction(sql::Database& db, Fn&& fn) {
+    db.exec("BEGIN IMMEDIATE");
+    try {
+        fn();
+        db.exec("COMMIT");
+    } catch (...) {
+        try {
+            db.exec("ROLLBACK");
+        } catch (...) {
+        }
+        throw;
+    }
 }
 
 JobRecord readRow(const sql::Statement& s) {
@@ -73,6 +131,7 @@ JobRecord readRow(const sql::Statement& s) {
     job.progress.elapsedSeconds = s.real(16);
     job.progress.etaSeconds = s.real(17);
     job.error = s.text(18);
+    job.client = s.text(19);
     return job;
 }
 
@@ -83,17 +142,42 @@ JobStore::JobStore(const std::filesystem::path& databaseFile)
       insert_(withSchema(db_).prepare(kInsert)),
       update_(db_.prepare(kUpdate)),
       remove_(db_.prepare(kRemove)),
-      selectAll_(db_.prepare(kSelectAll)) {}
+      selectAll_(db_.prepare(kSelectAll)),
+      removeKeysOf_(db_.prepare(kRemoveKeysOf)),
+      forgetKeys_(db_.prepare(kForgetKeys)),
+      insertKey_(db_.prepare(kInsertKey)),
+      findKey_(db_.prepare(kFindKey)) {}
 
-int64_t JobStore::insert(const JobRecord& job) {
+int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEntry>& key) {
     std::lock_guard lock(mutex_);
-    insert_.reset();
-    insert_.bind(1, job.id).bind(2, std::string(toString(job.status))).bind(3, int64_t(job.priority));
-    insert_.bind(4, job.createdAt).bind(5, int64_t(job.settings.passes)).bind(6, job.settings.photonsPerPass);
-    insert_.bind(7, int64_t(job.settings.seed)).bind(8, job.settings.integrator);
-    insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
-    insert_.run();
-    return db_.lastInsertRowId();
+    int64_t seq = 0;
+    inTransaction(db_, [&] {
+        insert_.reset();
+        insert_.bind(1, job.id).bind(2, std::string(toString(job.status))).bind(3, int64_t(job.priority));
+        insert_.bind(4, job.createdAt).bind(5, int64_t(job.settings.passes)).bind(6, job.settings.photonsPerPass);
+        insert_.bind(7, int64_t(job.settings.seed)).bind(8, job.settings.integrator);
+        insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
+        insert_.bindTextOrNull(11, job.client);
+        insert_.run();
+        seq = db_.lastInsertRowId();
+        if (!key) return;
+        forgetKeys_.reset();
+        forgetKeys_.bind(1, key->createdUnix - kIdempotencyKeySeconds).run();
+        insertKey_.reset();
+        insertKey_.bind(1, key->key).bind(2, key->requestHash).bind(3, job.id).bind(4, key->createdUnix);
+        insertKey_.run();
+    });
+    return seq;
+}
+
+std::optional<IdempotencyEntry> JobStore::findKey(const std::string& key, int64_t nowUnix) {
+    std::lock_guard lock(mutex_);
+    findKey_.reset();
+    findKey_.bind(1, key).bind(2, nowUnix - kIdempotencyKeySeconds);
+    std::optional<IdempotencyEntry> entry;
+    if (findKey_.step()) entry = IdempotencyEntry{key, findKey_.text(0), findKey_.text(1), findKey_.integer(2)};
+    findKey_.reset();
+    return entry;
 }
 
 void JobStore::update(const JobRecord& job) {
@@ -109,8 +193,12 @@ void JobStore::update(const JobRecord& job) {
 
 void JobStore::remove(const std::string& id) {
     std::lock_guard lock(mutex_);
-    remove_.reset();
-    remove_.bind(1, id).run();
+    inTransaction(db_, [&] {
+        remove_.reset();
+        remove_.bind(1, id).run();
+        removeKeysOf_.reset();
+        removeKeysOf_.bind(1, id).run();
+    });
 }
 
 std::vector<JobRecord> JobStore::loadAll() {

@@ -50,6 +50,14 @@ std::map<JobStatus, int> JobTable::countByStatus() const {
     return counts;
 }
 
+int64_t JobTable::activeJobsOf(const std::string& client) const {
+    std::lock_guard lock(mutex_);
+    int64_t active = 0;
+    for (const auto& [id, entry] : entries_)
+        if (entry.job.client == client && !isFinished(entry.job.status)) ++active;
+    return active;
+}
+
 std::optional<JobTable::Started> JobTable::start(const std::string& id, const std::string& now) {
     std::lock_guard lock(mutex_);
     auto it = entries_.find(id);

@@ -27,6 +27,8 @@ public:
     };
     Page list(std::optional<JobStatus> status, size_t limit, size_t offset) const;
     std::map<JobStatus, int> countByStatus() const;
+    // Queued and running jobs submitted from `client`.
+    int64_t activeJobsOf(const std::string& client) const;
 
     struct Started {
         JobRecord job;

@@ -32,7 +32,8 @@ sigset_t stopSignals() {
 
 int serve(const server::ServerOptions& options) {
     server::JobService service(options.service);
-    api::HttpServer http(service, {options.token, options.webRoot, options.service.limits.maxBodyBytes});
+    const server::Limits& limits = options.service.limits;
+    api::HttpServer http(service, {options.token, options.webRoot, limits.maxBodyBytes, limits.maxStreams});
     int port = http.bind(options.host, options.port);
     if (port < 0) {
         std::fprintf(stderr, "photon-server: cannot listen on %s:%d\n", options.host.c_str(), options.port);

@@ -8,10 +8,11 @@ namespace photon::server {
 
 namespace {
 
-void checkLimit(const char* what, int64_t value, int64_t limit) {
-    if (value > limit)
-        throw ServiceError(ErrorKind::LimitExceeded, std::string(what) + " " + std::to_string(value) +
-                                                         " exceeds the server limit of " + std::to_string(limit));
+int64_t triangleCount(const SceneDescription& description) {
+    int64_t total = 0;
+    for (const ShapeDescription& shape : description.shapes)
+        if (shape.kind == ShapeDescription::Kind::Mesh) total += int64_t(shape.mesh.triangleCount());
+    return total;
 }
 
 // The overrides are range-checked like the scene fields they replace.
@@ -38,9 +39,12 @@ JobSettings validateScene(const std::string& sceneText, const std::filesystem::p
     if (options.seed) render.seed = *options.seed;
 
     const CameraDescription& camera = description.camera;
-    checkLimit("width*height", int64_t(camera.width) * camera.height, limits.maxPixels);
-    checkLimit("passes", options.passes.value_or(render.passes), limits.maxPasses);
-    checkLimit("photons_per_pass", render.photonsPerPass, limits.maxPhotonsPerPass);
+    constexpr ErrorKind kOver = ErrorKind::LimitExceeded;
+    checkLimit(kOver, "width*height", int64_t(camera.width) * camera.height, limits.maxPixels, "--max-pixels");
+    checkLimit(kOver, "passes", options.passes.value_or(render.passes), limits.maxPasses, "--max-passes");
+    checkLimit(kOver, "photons_per_pass", render.photonsPerPass, limits.maxPhotonsPerPass, "--max-photons");
+    // Each mesh file is already held to the loader's per-mesh limit; this bounds the sum.
+    checkLimit(kOver, "triangle count", triangleCount(description), limits.maxTriangles, "--max-triangles");
 
     JobSettings s;
     s.passes = render.passes;

@@ -7,10 +7,14 @@ namespace photon::server::sql {
 namespace {
 
 [[noreturn]] void fail(sqlite3* db, const std::string& what) {
-    throw std::runtime_error("sqlite: " + what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"));
+    throw Error("sqlite: " + what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"),
+                db ? sqlite3_extended_errcode(db) : SQLITE_NOMEM);
 }
 
 }  // namespace
+
+bool Error::diskFull() const { return (code_ & 0xff) == SQLITE_FULL; }
+bool Error::readOnly() const { return (code_ & 0xff) == SQLITE_READONLY; }
 
 Statement::Statement(sqlite3* db, const char* sql) : db_(db) {
     if (sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr) != SQLITE_OK) fail(db, "prepare");
@@ -72,7 +76,7 @@ Database::Database(const std::filesystem::path& file) {
     if (sqlite3_open(file.c_str(), &db_) != SQLITE_OK) {
         std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
         sqlite3_close(db_);
-        throw std::runtime_error("sqlite: cannot open " + file.string() + ": " + message);
+        throw Error("sqlite: cannot open " + file.string() + ": " + message, SQLITE_CANTOPEN);
     }
     // Another process (a second server by mistake, a backup) may hold a lock briefly.
     sqlite3_busy_timeout(db_, 5000);
@@ -88,7 +92,7 @@ void Database::exec(const char* sql) {
     if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
         std::string text = message ? message : "unknown error";
         sqlite3_free(message);
-        throw std::runtime_error(std::string("sqlite: ") + text);
+        throw Error(std::string("sqlite: ") + text, sqlite3_extended_errcode(db_));
     }
 }
 

@@ -3,12 +3,25 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 struct sqlite3;
 struct sqlite3_stmt;
 
 namespace photon::server::sql {
+
+// Every failure, with SQLite's extended result code so callers can tell a full disk from a bug.
+class Error : public std::runtime_error {
+public:
+    Error(const std::string& message, int code) : std::runtime_error(message), code_(code) {}
+    int code() const { return code_; }
+    bool diskFull() const;  // SQLITE_FULL
+    bool readOnly() const;  // SQLITE_READONLY: the file or its file system cannot be written
+
+private:
+    int code_;
+};
 
 class Statement {
 public:

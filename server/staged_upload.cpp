@@ -1,5 +1,6 @@
 #include "staged_upload.h"
 #include <array>
+#include <cctype>
 #include "errors.h"
 
 namespace photon::server {
@@ -10,31 +11,41 @@ namespace {
 
 // Files the service itself keeps in a job folder.
 constexpr std::array<const char*, 3> kReserved{"scene.json", "image.png", "image.exr"};
-constexpr size_t kMaxNameLength = 1024;
+constexpr size_t kMaxNameLength = 512;
+constexpr size_t kMaxComponentLength = 255;  // NAME_MAX on Linux file systems
+constexpr int kMaxComponents = 16;
 
-// Symlinks cannot exist in a fresh staging folder, but resolve anyway: a mistake elsewhere
-// must not turn into a write outside the data directory.
-bool staysInside(const fs::path& folder, const fs::path& file) {
-    std::error_code ec;
-    fs::path root = fs::weakly_canonical(folder, ec);
-    if (ec) return false;
-    fs::path target = fs::weakly_canonical(file, ec);
-    if (ec) return false;
-    fs::path rel = target.lexically_relative(root);
-    return !rel.empty() && *rel.begin() != ".." && *rel.begin() != ".";
+bool isControl(char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }
+
+// "C:..." names a drive on Windows: a client on one must not think it wrote there.
+bool hasDriveLetter(const std::string& name) {
+    return name.size() >= 2 && name[1] == ':' && std::isalpha(static_cast<unsigned char>(name[0]));
 }
 
 }  // namespace
 
 std::optional<std::string> assetNameProblem(const std::string& name) {
     if (name.empty()) return "asset name is empty";
-    if (name.size() > kMaxNameLength) return "asset name is too long";
+    if (name.size() > kMaxNameLength)
+        return "asset name is " + std::to_string(name.size()) + " bytes, longer than " +
+               std::to_string(kMaxNameLength);
     if (name.find('\0') != std::string::npos) return "asset name contains NUL";
     if (name.find('\\') != std::string::npos) return "asset name contains a backslash";
+    for (char c : name)
+        if (isControl(c)) return "asset name contains a control character";
+    if (hasDriveLetter(name)) return "asset name must not start with a drive letter";
     fs::path p(name);
     if (p.is_absolute() || p.has_root_path()) return "asset name must be a relative path";
-    for (const fs::path& part : p)
+    int components = 0;
+    for (const fs::path& part : p) {
         if (part == "..") return "asset name must not contain \"..\"";
+        if (part.native().size() > kMaxComponentLength)
+            return "asset name has a component longer than " + std::to_string(kMaxComponentLength) + " bytes";
+        ++components;
+    }
+    if (components > kMaxComponents)
+        return "asset name has " + std::to_string(components) + " path components, more than " +
+               std::to_string(kMaxComponents);
     fs::path normal = p.lexically_normal();
     if (normal.empty() || !normal.has_filename() || normal == ".") return "asset name must name a file";
     for (const char* reserved : kReserved)
@@ -45,40 +56,38 @@ std::optional<std::string> assetNameProblem(const std::string& name) {
 StagedUpload::StagedUpload(fs::path dir, size_t maxAssetBytes) : dir_(std::move(dir)), maxAssetBytes_(maxAssetBytes) {}
 
 StagedUpload::~StagedUpload() {
-    if (asset_.is_open()) asset_.close();
+    asset_.reset();
     if (committed_) return;
     std::error_code ignored;
     fs::remove_all(dir_, ignored);
 }
 
-void StagedUpload::beginAsset(const std::string& name) {
+void StagedUpload::beginAsset(const std::string& part, const std::string& name) {
     endAsset();
-    if (auto problem = assetNameProblem(name)) throw ServiceError(ErrorKind::BadRequest, *problem + ": " + name);
+    const std::string where = "part \"" + part + "\" (file name \"" + name + "\")";
+    if (auto problem = assetNameProblem(name)) throw ServiceError(ErrorKind::BadRequest, *problem + ": " + where);
     std::string normal = fs::path(name).lexically_normal().generic_string();
-    if (!names_.insert(normal).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + name);
-    fs::path file = dir_ / normal;
-    if (!staysInside(dir_, file))
-        throw ServiceError(ErrorKind::BadRequest, "asset name leaves the job folder: " + name);
-    fs::create_directories(file.parent_path());
-    asset_.open(file, std::ios::binary | std::ios::trunc);
-    if (!asset_) throw std::runtime_error("cannot create " + file.string());
+    if (!names_.insert(normal).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + where);
+    // Created relative to the staging folder, one component at a time, never through a
+    // symlink and never over an existing file.
+    asset_ = std::make_unique<NewFile>(dir_, normal);
     assetName_ = name;
     assetBytes_ = 0;
 }
 
 void StagedUpload::appendAsset(const char* data, size_t size) {
-    if (!asset_.is_open()) return;
+    if (!asset_) return;
     assetBytes_ += size;
     if (assetBytes_ > maxAssetBytes_)
-        throw ServiceError(ErrorKind::LimitExceeded, "asset " + assetName_ + " is larger than " +
-                                                         std::to_string(maxAssetBytes_) + " bytes");
-    if (!asset_.write(data, std::streamsize(size))) throw std::runtime_error("cannot write asset " + assetName_);
+        throw ServiceError(ErrorKind::LimitExceeded, "asset " + assetName_ + " is larger than the server limit of " +
+                                                         std::to_string(maxAssetBytes_) + " bytes (--max-asset-bytes)");
+    asset_->write(data, size);
 }
 
 void StagedUpload::endAsset() {
-    if (!asset_.is_open()) return;
-    asset_.close();
-    if (asset_.fail()) throw std::runtime_error("cannot write asset " + assetName_);
+    if (!asset_) return;
+    std::unique_ptr<NewFile> done = std::move(asset_);
+    done->close();
 }
 
 }  // namespace photon::server

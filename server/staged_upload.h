@@ -4,15 +4,18 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
-#include <fstream>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
+#include "safe_files.h"
 
 namespace photon::server {
 
 // Why `name` (a client-chosen asset path such as "meshes/x.obj") may not be stored under a
-// job folder: absolute, "..", backslashes, NUL, reserved names. nullopt if acceptable.
+// job folder: absolute (a leading "/" or a drive letter), "..", backslashes, NUL or other
+// control characters, too long (512 bytes, 255 a component), too deep (16 components),
+// reserved names. nullopt if acceptable.
 std::optional<std::string> assetNameProblem(const std::string& name);
 
 class StagedUpload {
@@ -22,8 +25,10 @@ public:
     StagedUpload(const StagedUpload&) = delete;
     StagedUpload& operator=(const StagedUpload&) = delete;
 
-    // Starts a new asset file; throws ServiceError (BadRequest) for unsafe or repeated names.
-    void beginAsset(const std::string& name);
+    // Starts a new asset file from the multipart part `part` with file name `name`; throws
+    // ServiceError (BadRequest, naming the part) for unsafe or repeated names and for paths
+    // through a symlink.
+    void beginAsset(const std::string& part, const std::string& name);
     // Throws ServiceError (LimitExceeded) once the asset exceeds the size limit.
     void appendAsset(const char* data, size_t size);
     void endAsset();
@@ -36,7 +41,7 @@ public:
 private:
     std::filesystem::path dir_;
     size_t maxAssetBytes_;
-    std::ofstream asset_;
+    std::unique_ptr<NewFile> asset_;
     std::string assetName_;
     size_t assetBytes_ = 0;
     std::set<std::string> names_;

@@ -11,15 +11,10 @@ build="${1:-$root/build}"
 clients="${2:-50}"
 seconds="${3:-30}"
 delay="${4:-100}"
-command -v wrk > /dev/null || { echo "load_check: needs wrk (apt-get install wrk)" >&2; exit 2; }
-
-data="$(mktemp -d)"
-log="$data/server.log"
-"$build/server/photon-server" --host 127.0.0.1 --port 0 --data "$data/store" > "$log" 2>&1 &
-server=$!
-trap 'kill $server 2>/dev/null; wait $server 2>/dev/null; rm -rf "$data"' EXIT
-for _ in $(seq 50); do grep -q "listening on" "$log" && break; sleep 0.1; done
-base="$(grep -o 'http://[0-9.:]*' "$log" | head -1)"
+source "$root/tests/load/server_support.sh"
+require_wrk
+start_server "$build"
+data="$work"
 
 # A long render of the diffuse Cornell box as shipped (512x512, 200k photons per pass),
 # with many passes so that it outlasts the check.

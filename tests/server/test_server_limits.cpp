@@ -1,0 +1,179 @@
+// Every limit on what costs memory or time answers with its status, a message naming the
+// value, the limit and its option, and (for capacity) Retry-After.
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+#include <atomic>
+#include <fstream>
+#include <thread>
+#include "scene/scene_loader.h"
+#include "server_fixture.h"
+
+namespace photon::test {
+namespace {
+
+class LimitsTest : public ServerTest {
+protected:
+    // Expects `status` and exactly `message` as the error.
+    void expectError(const httplib::Result& r, int status, const std::string& message) {
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, status) << r->body;
+        EXPECT_EQ(json::parse(r->body).value("error", ""), message);
+    }
+    httplib::Result postMultipart(const json& scene, const std::string& file, const std::string& bytes) {
+        httplib::MultipartFormDataItems items{{"scene", scene.dump(), "", "application/json"},
+                                              {"asset", bytes, file, "application/octet-stream"}};
+        return client().Post("/api/v1/jobs", items);
+    }
+};
+
+int64_t trianglesOf(const json& scene) {
+    SceneDescription d = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
+    int64_t n = 0;
+    for (const ShapeDescription& s : d.shapes) n += int64_t(s.mesh.triangleCount());
+    return n;
+}
+
+// An OBJ strip of `n` triangles.
+std::string objStrip(int n) {
+    std::string obj;
+    for (int i = 0; i <= n + 1; ++i)
+        obj += "v " + std::to_string(0.01 * i) + " " + std::to_string(i % 2 ? 0.01 : 0.0) + " 0\n";
+    for (int i = 1; i <= n; ++i) obj += "f " + std::to_string(i) + " " + std::to_string(i + 1) + " " + std::to_string(i + 2) + "\n";
+    return obj;
+}
+
+// A grey PNG of the given size, encoded with OpenImageIO.
+std::string pngBytes(int width, int height) {
+    std::string file = (std::filesystem::temp_directory_path() / ("photon-limits-" + std::to_string(::getpid()) + ".png")).string();
+    auto out = OIIO::ImageOutput::create(file);
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+    std::vector<unsigned char> pixels(size_t(width) * height * 3, 128);
+    out->open(file, spec);
+    out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+    out->close();
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(file);
+    return bytes;
+}
+
+TEST_F(LimitsTest, RenderSizeLimitsNameTheirOption) {
+    startServer({"--workers", "0", "--max-pixels", "1000", "--max-passes", "10", "--max-photons", "5000"});
+    expectError(submit(smallScene()), 422, "width*height 1024 exceeds the server limit of 1000 (--max-pixels)");
+    expectError(submit(smallScene(3, 2000, 30), "?passes=11"), 422,
+                "passes 11 exceeds the server limit of 10 (--max-passes)");
+    expectError(submit(smallScene(3, 6000, 30)), 422,
+                "photons_per_pass 6000 exceeds the server limit of 5000 (--max-photons)");
+    EXPECT_EQ(submit(smallScene(10, 5000, 30))->status, 201);
+}
+
+TEST_F(LimitsTest, SceneJsonSizeIs413) {
+    json scene = smallScene();
+    scene["padding"] = std::string(5000, ' ');  // unknown top-level keys are not read by the loader
+    const size_t size = scene.dump().size();
+    startServer({"--workers", "0", "--max-scene-bytes", "4000"});
+    const std::string message =
+        "scene JSON bytes " + std::to_string(size) + " exceeds the server limit of 4000 (--max-scene-bytes)";
+    expectError(submit(scene), 413, message);
+    httplib::MultipartFormDataItems items{{"scene", scene.dump(), "", "application/json"}};
+    expectError(client().Post("/api/v1/jobs", items), 413, message);
+    EXPECT_EQ(submit(smallScene())->status, 201);
+}
+
+TEST_F(LimitsTest, BodySizeIs413) {
+    startServer({"--workers", "0", "--max-body-bytes", "1000"});
+    httplib::MultipartFormDataItems items{{"scene", smallScene().dump(), "", "application/json"}};
+    expectError(client().Post("/api/v1/jobs", items), 413,
+                "request body exceeds the server limit of 1000 bytes (--max-body-bytes)");
+}
+
+TEST_F(LimitsTest, TrianglesPerSceneAreCountedOverAllMeshes) {
+    json scene = smallScene();
+    for (const char* file : {"a.obj", "b.obj"})
+        scene["shapes"].push_back({{"type", "mesh"}, {"file", file}, {"material", "white"}});
+    const int64_t base = trianglesOf(smallScene());
+    const int64_t total = base + 2 * 60;
+    startServer({"--workers", "0", "--max-triangles", std::to_string(total - 1)});
+    httplib::MultipartFormDataItems items{{"scene", scene.dump(), "", "application/json"},
+                                          {"a", objStrip(60), "a.obj", "text/plain"},
+                                          {"b", objStrip(60), "b.obj", "text/plain"}};
+    expectError(client().Post("/api/v1/jobs", items), 422,
+                "triangle count " + std::to_string(total) + " exceeds the server limit of " +
+                    std::to_string(total - 1) + " (--max-triangles)");
+    items[2].content = objStrip(59);
+    EXPECT_EQ(client().Post("/api/v1/jobs", items)->status, 201);
+}
+
+TEST_F(LimitsTest, TextureSizeIsCheckedFromTheHeader) {
+    json scene = smallScene();
+    scene["materials"]["white"]["albedo"] = {{"texture", "textures/t.png"}};
+    startServer({"--workers", "0", "--max-texture-pixels", "4096"});
+    expectError(postMultipart(scene, "textures/t.png", pngBytes(80, 60)), 422,
+                "texture textures/t.png (80x60) width*height 4800 exceeds the server limit of 4096 "
+                "(--max-texture-pixels)");
+    // An image the scene does not use is held to the limit too: it was uploaded to the job.
+    expectError(postMultipart(smallScene(), "unused.png", pngBytes(65, 64)), 422,
+                "texture unused.png (65x64) width*height 4160 exceeds the server limit of 4096 "
+                "(--max-texture-pixels)");
+    EXPECT_EQ(postMultipart(scene, "textures/t.png", pngBytes(64, 64))->status, 201);
+}
+
+TEST_F(LimitsTest, StreamsOverTheLimitAre503WithRetryAfter) {
+    startServer({"--workers", "0", "--max-streams", "1"});
+    std::string id = submitOk(smallScene());
+    std::atomic<bool> open{false};
+    std::thread follower([&] {
+        client().Get(("/api/v1/jobs/" + id + "/events").c_str(), [&](const char*, size_t) {
+            open = true;
+            return true;
+        });
+    });
+    for (int i = 0; i < 500 && !open; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(open);
+    const std::string message = "too many open streams: all 1 allowed by the server limit (--max-streams) are in use; "
+                                "retry later";
+    for (const std::string path : {"/events", "/stream"}) {
+        httplib::Result r = client().Get(("/api/v1/jobs/" + id + path).c_str());
+        expectError(r, 503, message);
+        EXPECT_EQ(r->get_header_value("Retry-After"), "5");
+    }
+    EXPECT_EQ(client().Get("/api/v1/health")->status, 200);
+    // The job ends, its stream ends, and the slot is free again.
+    ASSERT_EQ(client().Post(("/api/v1/jobs/" + id + "/cancel").c_str())->status, 200);
+    follower.join();
+    EXPECT_EQ(followEvents(id).back().type, "cancelled");
+}
+
+TEST_F(LimitsTest, JobsPerClientAre429) {
+    startServer({"--workers", "0", "--max-jobs-per-client", "2"});
+    std::string first = submitOk(smallScene());
+    submitOk(smallScene());
+    httplib::Result r = submit(smallScene());
+    expectError(r, 429,
+                "client 127.0.0.1 has 2 jobs queued or running, the server limit per client is 2 "
+                "(--max-jobs-per-client); retry when one has finished");
+    EXPECT_EQ(r->get_header_value("Retry-After"), "5");
+    // A finished job no longer counts.
+    ASSERT_EQ(client().Post(("/api/v1/jobs/" + first + "/cancel").c_str())->status, 200);
+    EXPECT_EQ(submit(smallScene())->status, 201);
+}
+
+TEST_F(LimitsTest, AFullQueueIs503) {
+    startServer({"--workers", "0", "--max-queued-jobs", "2"});
+    submitOk(smallScene());
+    submitOk(smallScene());
+    httplib::Result r = submit(smallScene());
+    expectError(r, 503, "the queue is full: 2 jobs queued, the server limit is 2 (--max-queued-jobs); retry later");
+    EXPECT_EQ(r->get_header_value("Retry-After"), "5");
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
+}
+
+TEST_F(LimitsTest, OptionsAreChecked) {
+    EXPECT_NE(runServerBinary({"--help"}).find("--max-jobs-per-client N"), std::string::npos);
+    // --max-streams beyond what the HTTP threads allow is refused at start.
+    std::string out = runServerBinary({"--max-streams", "57", "--print-routes"});
+    EXPECT_EQ(out.find("GET /api/v1/health"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace photon::test
