@@ -9,9 +9,11 @@ namespace photon::api {
 
 namespace {
 
-// Long-lived event and image streams each hold a thread; the rest serve ordinary requests.
-constexpr size_t kHttpThreads = 64;
-static_assert(server::kMaxStreamsCap + 8 <= int(kHttpThreads), "streams must leave threads for requests");
+// httplib serves a connection on one thread for as long as it is kept alive, and long-lived
+// event and image streams each hold one too: a hundred polling clients need more than a
+// hundred threads. Idle threads cost address space, not memory.
+constexpr size_t kHttpThreads = 256;
+static_assert(server::kMaxStreamsCap + 64 <= int(kHttpThreads), "streams must leave threads for requests");
 // Request threads run at this nice value: when they compete with a render for the cores,
 // the render keeps most of them (a request is short; a pass is what people wait for).
 constexpr int kHttpNice = 10;

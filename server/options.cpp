@@ -18,7 +18,7 @@ const char* const kUsage =
     "  --max-scene-bytes N      the scene JSON (default 8388608)\n"
     "  --max-triangles N        triangles of all meshes of a scene (default 20000000)\n"
     "  --max-texture-pixels N   width*height of each uploaded texture image (default 67108864)\n"
-    "  --max-streams N          open event and image streams, all clients (default 48, at most 56)\n"
+    "  --max-streams N          open event and image streams, all clients (default 128, at most 192)\n"
     "  --max-jobs-per-client N  queued and running jobs of one remote address (default 100)\n"
     "  --max-queued-jobs N      queued jobs, all clients (default 1000)\n";
 

@@ -18,13 +18,13 @@ struct Limits {
     size_t maxSceneBytes = 8u << 20;         // the scene JSON itself (HTTP 413 beyond)
     int64_t maxTriangles = 20'000'000;       // all meshes of one scene together
     int64_t maxTexturePixels = 64LL << 20;   // width * height of each texture image
-    int maxStreams = 48;                     // open event and image streams, all clients together
+    int maxStreams = 128;                    // open event and image streams, all clients together
     int64_t maxJobsPerClient = 100;          // queued + running jobs of one remote address
     int64_t maxQueuedJobs = 1000;            // queued jobs, all clients together
 };
 
-// Each open stream holds one of the 64 HTTP threads: at least 8 stay for ordinary requests.
-constexpr int kMaxStreamsCap = 56;
+// Each open stream holds one of the 256 HTTP threads: at least 64 stay for ordinary requests.
+constexpr int kMaxStreamsCap = 192;
 
 // Throws ServiceError(kind) "<what> <value> exceeds the server limit of <limit> (<option>)"
 // when value > limit.

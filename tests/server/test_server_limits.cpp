@@ -171,7 +171,7 @@ TEST_F(LimitsTest, AFullQueueIs503) {
 TEST_F(LimitsTest, OptionsAreChecked) {
     EXPECT_NE(runServerBinary({"--help"}).find("--max-jobs-per-client N"), std::string::npos);
     // --max-streams beyond what the HTTP threads allow is refused at start.
-    std::string out = runServerBinary({"--max-streams", "57", "--print-routes"});
+    std::string out = runServerBinary({"--max-streams", "193", "--print-routes"});
     EXPECT_EQ(out.find("GET /api/v1/health"), std::string::npos) << out;
 }
 
