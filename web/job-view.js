@@ -38,6 +38,7 @@ export function createJobView({ onChanged, onDeleted }) {
     resolution: $('job-resolution'),
     photonsPerPass: $('job-photons-per-pass'),
     seed: $('job-seed'),
+    integrator: $('job-integrator'),
     created: $('job-created'),
     progress: $('job-progress'),
     error: $('job-error'),
@@ -103,6 +104,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.resolution.textContent = job.width && job.height ? `${job.width} × ${job.height}` : '—';
     el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
     el.seed.textContent = job.seed ?? '—';
+    el.integrator.textContent = job.integrator ?? '—';
     el.created.textContent = formatTime(job.createdAt);
     el.progress.value = progressFraction(job.passesDone, job.passes);
     el.error.hidden = !job.error;

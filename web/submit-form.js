@@ -1,5 +1,6 @@
 // The "New render" form: a scene from the bundled examples, a .json file or pasted text;
-// asset files with editable relative paths; optional passes, photons per pass and seed.
+// asset files with editable relative paths; optional passes, photons per pass and seed;
+// the method (render.integrator) and denoising (render.denoise), written into the scene.
 // Checks what it can before sending (JSON syntax, whole numbers) and shows every error,
 // its own or the server's, next to the field at fault.
 
@@ -178,12 +179,28 @@ export function createSubmitForm({ onSubmitted }) {
     }
   }
 
+  // The scene as typed, or with the chosen method and denoising written into its "render"
+  // block (only when one is chosen, so the server still sees the text itself otherwise).
+  // Throws the parser's error for text that is not JSON.
+  function sceneWithChoices(text) {
+    const scene = JSON.parse(text);
+    const integrator = $('integrator').value;
+    const denoise = $('denoise').checked;
+    if (!integrator && !denoise) return text;
+    if (!scene || typeof scene !== 'object' || Array.isArray(scene)) return text; // the server says what is wrong
+    const render = scene.render && typeof scene.render === 'object' ? scene.render : {};
+    if (integrator) render.integrator = integrator;
+    if (denoise) render.denoise = true;
+    scene.render = render;
+    return JSON.stringify(scene, null, 2);
+  }
+
   form.addEventListener('submit', async (event) => {
     event.preventDefault();
     clearErrors();
-    const text = sceneText.value;
+    let text = sceneText.value;
     try {
-      JSON.parse(text);
+      text = sceneWithChoices(text);
     } catch (parseError) {
       showError('scene-error', describeJsonError(text, parseError), sceneText);
       sceneText.focus();

@@ -293,6 +293,27 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   screenshotTaken = true;
 });
 
+test('the method and denoising chosen on the form reach the job', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
+  await chooseExample('cornell-box');
+  await page.fill('#passes', '2');
+  await page.fill('#photons-per-pass', '');
+  await page.selectOption('#integrator', 'radiosity');
+  await page.check('#denoise');
+  await page.click('#submit-button');
+  const id = await submittedJobId();
+  await page.waitForFunction(() => document.querySelector('#job-status').textContent === 'completed', null, {
+    timeout: RENDER_TIMEOUT_MS,
+  });
+  assert.equal(await textOf('#job-integrator'), 'radiosity');
+  const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+  assert.equal(record.settings?.integrator ?? record.integrator, 'radiosity');
+  // Denoised: the EXR carries the raw image as extra channels beside R, G, B.
+  const exr = Buffer.from(await (await fetch(new URL(`api/v1/jobs/${id}/image?format=exr`, server.baseUrl))).arrayBuffer());
+  assert.ok(exr.includes(Buffer.from('raw.R')), 'the EXR has the raw layer');
+  await page.selectOption('#integrator', '');
+  await page.uncheck('#denoise');
+});
+
 test('a running job can be cancelled and a finished one deleted', async () => {
   await chooseExample('cornell-glass');
   await page.fill('#passes', '100000');
