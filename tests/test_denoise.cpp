@@ -159,7 +159,7 @@ Image* DenoiseCornell::denoised_ = nullptr;
 
 TEST_F(DenoiseCornell, IsCloserToTheReferenceThanTheRawImage) {
     const double raw = rmseBelowOne(*raw_), denoised = rmseBelowOne(*denoised_);
-    const double rawAll = test::rmse(*raw_, *reference_), denoisedAll = test::rmse(*denoised_, *reference_);
+    const double rawAll = rmse(*raw_, *reference_), denoisedAll = rmse(*denoised_, *reference_);
     std::printf("RMSE below 1: raw %.4f denoised %.4f (%.2fx); whole image: raw %.4f denoised %.4f (%.2fx)\n", raw,
                 denoised, denoised / raw, rawAll, denoisedAll, denoisedAll / rawAll);
     EXPECT_LT(denoised, 0.65 * raw);        // measured 0.57x

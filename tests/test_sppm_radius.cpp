@@ -60,7 +60,7 @@ TEST(SppmRadius, ErrorFallsAsPassesGrow) {
     std::vector<double> errors;
     for (int pass = 1; pass <= 256; ++pass) {
         ASSERT_TRUE(sppm.renderPass(cancel));
-        if (pass == 4 || pass == 16 || pass == 64 || pass == 256) errors.push_back(test::rmse(sppm.snapshot(), truth));
+        if (pass == 4 || pass == 16 || pass == 64 || pass == 256) errors.push_back(rmse(sppm.snapshot(), truth));
     }
     for (size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]) << "after step " << i;
     // Consistency: at least a threefold drop from 4 to 256 passes.

@@ -1,5 +1,6 @@
 // A linear RGB image: what integrators hand out as snapshots.
 #pragma once
+#include <cmath>
 #include <vector>
 #include "../math/vec.h"
 
@@ -22,5 +23,15 @@ struct Image {
         rgb[i + 2] = c.z;
     }
 };
+
+// Root-mean-square difference over all pixels and channels of two images of one size.
+inline double rmse(const Image& a, const Image& b) {
+    double sum = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        double d = static_cast<double>(a.rgb[i]) - static_cast<double>(b.rgb[i]);
+        sum += d * d;
+    }
+    return a.rgb.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(a.rgb.size()));
+}
 
 }  // namespace photon

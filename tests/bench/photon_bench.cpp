@@ -1,8 +1,10 @@
 // photon-bench: SPPM throughput on a scene against raw Embree throughput in the same
 // process, per-pass timings, memory per pixel and peak RSS, and the share of photons that
-// miss a scene with and without projection maps, printed as JSON.
+// miss a scene with and without projection maps, printed as JSON. With --compare SECONDS it
+// instead renders the scene with every integrator for that long and reports the RMSE of
+// each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
-//                [--projection-scene FILE]
+//                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <tbb/global_control.h>
@@ -13,6 +15,7 @@
 #include <optional>
 #include <string>
 #include "embree_throughput.h"
+#include "integrator_comparison.h"
 #include "projection_misses.h"
 #include "render.h"
 
@@ -27,6 +30,8 @@ struct Options {
     int64_t photons = 0;  // 0: the scene's own setting
     int threads = 0;      // 0: all cores
     bool rssCheck = true;
+    double compareSeconds = 0;    // > 0: compare the integrators instead
+    double referenceSeconds = 0;  // 0: 10x compareSeconds
 };
 
 Options parse(int argc, char** argv) {
@@ -43,6 +48,8 @@ Options parse(int argc, char** argv) {
         else if (a == "--threads") o.threads = std::stoi(next());
         else if (a == "--no-rss-check") o.rssCheck = false;
         else if (a == "--projection-scene") o.projectionScene = next();
+        else if (a == "--compare") o.compareSeconds = std::stod(next());
+        else if (a == "--reference-seconds") o.referenceSeconds = std::stod(next());
         else throw std::invalid_argument("unknown option " + a);
     }
     return o;
@@ -128,6 +135,11 @@ int main(int argc, char** argv) {
         Options o = parse(argc, argv);
         std::optional<tbb::global_control> limit;
         if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+        if (o.compareSeconds > 0) {
+            double reference = o.referenceSeconds > 0 ? o.referenceSeconds : 10 * o.compareSeconds;
+            std::cout << photon::bench::compareIntegrators(o.scene, o.compareSeconds, reference).dump(2) << std::endl;
+            return 0;
+        }
         json out;
         out["scene"] = o.scene;
         out["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);

@@ -48,11 +48,5 @@ inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
         EXPECT_NEAR(a_.z, b_.z, tol);     \
     } while (0)
 
-// Root-mean-square difference over all pixels and channels of two images of one size.
-inline double rmse(const Image& a, const Image& b) {
-    double sum = 0;
-    for (size_t i = 0; i < a.rgb.size(); ++i) sum += (a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
-    return std::sqrt(sum / static_cast<double>(a.rgb.size()));
-}
 
 }  // namespace photon::test
