@@ -16,7 +16,7 @@ constexpr size_t kHttpThreads = 256;
 static_assert(server::kMaxStreamsCap + 64 <= int(kHttpThreads), "streams must leave threads for requests");
 // Request threads run at this nice value: when they compete with a render for the cores,
 // the render keeps most of them (a request is short; a pass is what people wait for).
-constexpr int kHttpNice = 10;
+constexpr int kHttpNice = 5;
 
 // httplib's pool whose threads lower their own priority before their first request (a
 // Linux thread's nice value is its own: setpriority on its thread id).
