@@ -59,7 +59,7 @@ build_tree() {
 }
 launcher=()
 fresh_logs() { rm -rf "$1/sanitizer-logs" && mkdir -p "$1/sanitizer-logs"; }
-server_tests=(test_server_jobs test_server_errors test_server_restart test_server_openapi)
+server_tests=(test_server_jobs test_server_errors test_server_restart test_server_openapi test_fuzz_regressions)
 
 # ---- (a) libFuzzer ----
 fuzz="$root/build-fuzz"

@@ -24,6 +24,14 @@ bool staysInside(const fs::path& folder, const fs::path& file) {
     return !rel.empty() && *rel.begin() != ".." && *rel.begin() != ".";
 }
 
+// "a" and "a/b" cannot both be files: the second would fail to be created.
+bool clashesWithFolder(const std::set<std::string>& names, const std::string& normal) {
+    for (fs::path folder = fs::path(normal).parent_path(); !folder.empty(); folder = folder.parent_path())
+        if (names.count(folder.generic_string())) return true;
+    auto inside = names.lower_bound(normal + "/");
+    return inside != names.end() && inside->rfind(normal + "/", 0) == 0;
+}
+
 }  // namespace
 
 std::optional<std::string> assetNameProblem(const std::string& name) {
@@ -55,6 +63,8 @@ void StagedUpload::beginAsset(const std::string& name) {
     endAsset();
     if (auto problem = assetNameProblem(name)) throw ServiceError(ErrorKind::BadRequest, *problem + ": " + name);
     std::string normal = fs::path(name).lexically_normal().generic_string();
+    if (clashesWithFolder(names_, normal))
+        throw ServiceError(ErrorKind::BadRequest, "asset name is both a file and a folder: " + name);
     if (!names_.insert(normal).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + name);
     fs::path file = dir_ / normal;
     if (!staysInside(dir_, file))
