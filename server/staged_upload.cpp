@@ -11,6 +11,7 @@ namespace {
 // Files the service itself keeps in a job folder.
 constexpr std::array<const char*, 3> kReserved{"scene.json", "image.png", "image.exr"};
 constexpr size_t kMaxNameLength = 1024;
+constexpr size_t kMaxPartLength = 255;  // NAME_MAX of Linux file systems
 
 // Symlinks cannot exist in a fresh staging folder, but resolve anyway: a mistake elsewhere
 // must not turn into a write outside the data directory.
@@ -41,8 +42,10 @@ std::optional<std::string> assetNameProblem(const std::string& name) {
     if (name.find('\\') != std::string::npos) return "asset name contains a backslash";
     fs::path p(name);
     if (p.is_absolute() || p.has_root_path()) return "asset name must be a relative path";
-    for (const fs::path& part : p)
+    for (const fs::path& part : p) {
         if (part == "..") return "asset name must not contain \"..\"";
+        if (part.native().size() > kMaxPartLength) return "asset name has a part longer than 255 bytes";
+    }
     fs::path normal = p.lexically_normal();
     if (normal.empty() || !normal.has_filename() || normal == ".") return "asset name must name a file";
     for (const char* reserved : kReserved)

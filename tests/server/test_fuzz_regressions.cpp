@@ -29,5 +29,30 @@ TEST_F(FuzzRegressionsTest, AssetThatIsAlsoAnotherAssetsFolderIs400) {
     EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "tmp"));
 }
 
+// fuzz_http: a folder or file name over the file system's 255-byte limit made creating the
+// asset fail with ENAMETOOLONG and the server answered 500. Now a 400 naming the reason.
+TEST_F(FuzzRegressionsTest, AssetNamePartOver255BytesIs400) {
+    startServer({"--workers", "0"});
+    const std::string longPart(256, 'I');
+    for (const std::string& name : {"meshes/" + longPart + "/tri.obj", "meshes/" + longPart}) {
+        httplib::MultipartFormDataItems items{
+            {"scene", smallScene().dump(), "", "application/json"},
+            {"asset", "v 0 0 0\n", name, "text/plain"},
+        };
+        httplib::Result r = client().Post("/api/v1/jobs", items);
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, 400) << r->body;
+        EXPECT_EQ(json::parse(r->body)["error"], "asset name has a part longer than 255 bytes: " + name) << r->body;
+    }
+    // 255 bytes is still a valid name.
+    httplib::MultipartFormDataItems ok{
+        {"scene", smallScene().dump(), "", "application/json"},
+        {"asset", "v 0 0 0\n", "meshes/" + std::string(255, 'I'), "text/plain"},
+    };
+    httplib::Result r = client().Post("/api/v1/jobs", ok);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 201) << r->body;
+}
+
 }  // namespace
 }  // namespace photon::test
