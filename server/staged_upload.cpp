@@ -22,6 +22,14 @@ bool hasDriveLetter(const std::string& name) {
     return name.size() >= 2 && name[1] == ':' && std::isalpha(static_cast<unsigned char>(name[0]));
 }
 
+// "a" and "a/b" cannot both be files: the second would fail to be created.
+bool clashesWithFolder(const std::set<std::string>& names, const std::string& normal) {
+    for (fs::path folder = fs::path(normal).parent_path(); !folder.empty(); folder = folder.parent_path())
+        if (names.count(folder.generic_string())) return true;
+    auto inside = names.lower_bound(normal + "/");
+    return inside != names.end() && inside->rfind(normal + "/", 0) == 0;
+}
+
 }  // namespace
 
 std::optional<std::string> assetNameProblem(const std::string& name) {
@@ -67,6 +75,8 @@ void StagedUpload::beginAsset(const std::string& part, const std::string& name) 
     const std::string where = "part \"" + part + "\" (file name \"" + name + "\")";
     if (auto problem = assetNameProblem(name)) throw ServiceError(ErrorKind::BadRequest, *problem + ": " + where);
     std::string normal = fs::path(name).lexically_normal().generic_string();
+    if (clashesWithFolder(names_, normal))
+        throw ServiceError(ErrorKind::BadRequest, "asset name is both a file and a folder: " + where);
     if (!names_.insert(normal).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + where);
     // Created relative to the staging folder, one component at a time, never through a
     // symlink and never over an existing file.
