@@ -59,7 +59,8 @@ build_tree() {
 }
 launcher=()
 fresh_logs() { rm -rf "$1/sanitizer-logs" && mkdir -p "$1/sanitizer-logs"; }
-server_tests=(test_server_jobs test_server_errors test_server_restart test_server_openapi test_fuzz_regressions)
+server_tests=(test_server_jobs test_server_errors test_server_restart test_server_openapi test_fuzz_regressions
+              test_server_idempotency test_server_limits test_server_assets test_server_faults)
 
 # ---- (a) libFuzzer ----
 fuzz="$root/build-fuzz"
