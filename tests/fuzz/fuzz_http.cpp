@@ -108,7 +108,7 @@ struct Harness {
         }
         std::unique_ptr<photon::server::StagedUpload> upload = service.newUpload();
         upload->sceneText() = kJobScene;
-        fixtureId = service.submit(*upload, {}).id;
+        fixtureId = service.submit(*upload, {}).job.id;
         service.cancel(fixtureId);
     }
 
