@@ -34,7 +34,7 @@ void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const Pe
     s->encoded.clear();
 }
 
-std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat format) {
+std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat format, Freshness freshness) {
     std::shared_ptr<Slot> s = slot(id);
     if (!s) return std::nullopt;
     std::lock_guard encoding(s->encodeMutex);
@@ -45,12 +45,17 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
         std::lock_guard state(s->stateMutex);
         if (!s->image) return std::nullopt;
         auto it = s->encoded.find(format);
-        if (it != s->encoded.end() && it->second.pass == s->pass) return it->second;
+        if (it != s->encoded.end()) {
+            const EncodedImage& last = it->second;
+            bool recent = std::chrono::steady_clock::now() - last.encodedAt < kMinEncodeInterval;
+            if (last.pass == s->pass || (freshness == Freshness::Throttled && recent)) return last;
+        }
         image = s->image;
         fresh.pass = s->pass;
         exposure = s->exposure;
     }
     fresh.bytes = encode(*image, format, exposure);
+    fresh.encodedAt = std::chrono::steady_clock::now();
     std::lock_guard state(s->stateMutex);
     // Keyed by pass: if a newer pass arrived meanwhile, the lookup above will not match it.
     s->encoded[format] = fresh;

@@ -100,7 +100,7 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
 
 void JobRunner::writeImages(const std::string& id) {
     for (ImageFormat format : {ImageFormat::Png, ImageFormat::Exr})
-        if (std::optional<EncodedImage> image = images_.get(id, format))
+        if (std::optional<EncodedImage> image = images_.get(id, format, Freshness::LatestPass))
             writeFileAtomically(folders_.imageFile(id, format), *image->bytes);
 }
 

@@ -157,7 +157,7 @@ std::optional<EncodedImage> JobService::image(const std::string& id, ImageFormat
     if (!isFinished(job->status)) return std::nullopt;
     std::optional<std::string> bytes = readWholeFile(folders_.imageFile(id, format));
     if (!bytes) return std::nullopt;
-    return EncodedImage{job->progress.pass, std::make_shared<const std::string>(std::move(*bytes))};
+    return EncodedImage{job->progress.pass, std::make_shared<const std::string>(std::move(*bytes)), {}};
 }
 
 void JobService::shutdown() {

@@ -101,10 +101,13 @@ std::vector<uint8_t> encodePng(const Image& image, float exposure) {
     std::vector<uint8_t> pixels = toneMapToSrgb8(image, exposure);
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
-    // Served images are encoded once per pass while the render runs: zlib's fastest level
-    // costs a third of the default's time for files about 10% larger.
+    // Served images are encoded while the render runs: zlib's fastest level costs a third of
+    // the default's time for files about 10% larger, and the Sub row filter alone a quarter
+    // less than libpng's trying every filter on every row, for 2% more bytes (512x512
+    // Cornell box: 12.8 vs 17.0 ms).
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("png:compressionLevel", 1);
+    spec.attribute("png:filter", 0x10);  // PNG_FILTER_SUB
     writeImage("image.png", spec, pixels.data(), &proxy);
     return {buffer.begin(), buffer.end()};
 }
