@@ -31,7 +31,7 @@ void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const Pe
     s->pass = pass;
     s->image = std::move(image);
     s->exposure = exposure;
-    s->encoded.clear();
+    // The last encodings stay: a request soon after may still be answered with them.
 }
 
 std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat format, Freshness freshness) {

@@ -1,0 +1,47 @@
+// The image cache on its own: each pass encoded once, a running job's encodings at most
+// every kMinEncodeInterval, the latest pass on demand.
+#include <gtest/gtest.h>
+#include <thread>
+#include "server/image_cache.h"
+
+namespace photon::server {
+namespace {
+
+std::shared_ptr<const PendingImage> imageOf(float value) {
+    Image image(8, 8);
+    for (float& v : image.rgb) v = value;
+    return std::make_shared<const PendingImage>(std::move(image), nullptr);
+}
+
+TEST(ImageCache, NewPassesAreEncodedAtMostEveryIntervalUnlessTheLatestIsAsked) {
+    ImageCache cache;
+    EXPECT_FALSE(cache.get("job", ImageFormat::Png));
+    cache.store("job", 1, imageOf(0.1f), 0);
+    EncodedImage first = *cache.get("job", ImageFormat::Png);
+    EXPECT_EQ(first.pass, 1);
+    // The same pass again: the very same bytes, not a new encoding.
+    EXPECT_EQ(cache.get("job", ImageFormat::Png)->bytes, first.bytes);
+
+    cache.store("job", 2, imageOf(0.5f), 0);
+    auto throttled = std::chrono::steady_clock::now();
+    EncodedImage soon = *cache.get("job", ImageFormat::Png);
+    if (std::chrono::steady_clock::now() - first.encodedAt < kMinEncodeInterval - std::chrono::milliseconds(50)) {
+        EXPECT_EQ(soon.pass, 1);  // too soon after pass 1's encoding
+        EXPECT_EQ(soon.bytes, first.bytes);
+    }
+    EncodedImage latest = *cache.get("job", ImageFormat::Png, Freshness::LatestPass);
+    EXPECT_EQ(latest.pass, 2);
+    EXPECT_NE(*latest.bytes, *first.bytes);
+    EXPECT_EQ(cache.latestPass("job"), 2);
+
+    cache.store("job", 3, imageOf(0.9f), 0);
+    std::this_thread::sleep_until(throttled + kMinEncodeInterval + std::chrono::milliseconds(20));
+    EXPECT_EQ(cache.get("job", ImageFormat::Png)->pass, 3);  // the interval has passed
+    // Formats are encoded apart: the EXR of pass 3 was never throttled by the PNG's.
+    EXPECT_EQ(cache.get("job", ImageFormat::Exr)->pass, 3);
+    cache.drop("job");
+    EXPECT_FALSE(cache.get("job", ImageFormat::Png));
+}
+
+}  // namespace
+}  // namespace photon::server
