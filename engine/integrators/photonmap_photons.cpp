@@ -2,6 +2,7 @@
 // projection maps where lights have them), scatter by BSDF sampling with Russian
 // roulette, and are stored at non-specular surfaces.
 #include <tbb/parallel_for.h>
+#include "photon_roulette.h"
 #include "photonmap.h"
 #include "shading.h"
 
@@ -52,17 +53,10 @@ void tracePhoton(const Scene& scene, const PhotonEmitter& emitter, PhotonMapKind
         onlySpecular = onlySpecular && b->delta;
         if (kind == PhotonMapKind::Caustic && !onlySpecular) break;
         // The material picks the lobe (diffuse, specular reflection or transmission); then
-        // Russian roulette with the surviving probability max(f cos / pdf), the largest
-        // colour channel of the lobe's reflectance, decides absorption, and survivors keep
-        // their flux (Jensen 2001, sec. 5.2).
-        Color next = beta * b->weight;
-        float q = maxComponent(next) / maxComponent(beta);
-        if (q < 1) {
-            if (rng.uniform() >= q) break;
-            next /= q;
-        }
-        if (!(maxComponent(next) > 0) || !isFinite(next)) break;
-        beta = next;
+        // Russian roulette on the lobe's reflectance decides absorption.
+        std::optional<Color> next = photonAfterRoulette(beta, b->weight, rng);
+        if (!next) break;
+        beta = *next;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(b->wi));
     }
 }

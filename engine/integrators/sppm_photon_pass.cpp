@@ -4,6 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 #include <atomic>
+#include "photon_roulette.h"
 #include "shading.h"
 #include "sppm_gather_batch.h"
 
@@ -68,16 +69,9 @@ void SppmIntegrator::tracePhoton(int64_t index, GatherBatch& batch, PhotonCounte
         std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.tint,
                                                           TransportMode::Importance);
         if (!s) break;
-        // Russian roulette on the throughput's largest channel keeps surviving photons'
-        // flux about constant (pbrt-v4 SPPM; Jensen 2001, 5.2.1).
-        Color next = beta * s->weight;
-        float q = maxComponent(next) / maxComponent(beta);
-        if (q < 1) {
-            if (rng.uniform() >= q) break;
-            next /= q;
-        }
-        if (!(maxComponent(next) > 0) || !isFinite(next)) break;
-        beta = next;
+        std::optional<Color> next = photonAfterRoulette(beta, s->weight, rng);
+        if (!next) break;
+        beta = *next;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
 }
