@@ -3,7 +3,6 @@
 // the furnace's analytic answer; determinism, checkpoints, and its parts (photon record,
 // kd-tree, kernels) against brute force and quadrature.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 #include <algorithm>
 #include <sstream>
 #include "integrators/photon_kernel.h"
@@ -147,10 +146,7 @@ Image renderWithThreads(int threads) {
     SceneDescription d = test::exampleScene("cornell-glass", 24, 2, 0, 42);
     d.render.integrator = IntegratorKind::PhotonMap;
     d.render.photonMap = {20000, 20000, 30, 20, 0, 0, 4};
-    Image image;
-    tbb::task_arena arena(threads);
-    arena.execute([&] { image = render(d); });
-    return image;
+    return test::renderWithThreads(std::move(d), threads);
 }
 
 TEST(PhotonMap, SameSeedOneAndTwoThreadsGiveIdenticalPixels) {

@@ -1,7 +1,6 @@
 // Radiosity against analytic answers (a closed emitting box, a published form factor,
 // reciprocity) and against SPPM on the diffuse Cornell box.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 #include <cmath>
 #include "integrators/radiosity_solver.h"
 #include "render.h"
@@ -179,15 +178,7 @@ Image renderWithThreads(int threads) {
     SceneDescription d = test::exampleScene("cornell-box", 24, 2, 0, 3);
     d.render.integrator = IntegratorKind::Radiosity;
     d.render.radiosity.raysPerPatch = 128;
-    Image image;
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        Renderer renderer(Scene::build(std::move(d)));
-        CancelToken cancel;
-        renderer.run(cancel);
-        image = renderer.snapshot();
-    });
-    return image;
+    return test::renderWithThreads(std::move(d), threads);
 }
 
 TEST(Radiosity, SameSeedOneAndTwoThreadsGiveIdenticalPixels) {

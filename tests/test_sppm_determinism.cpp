@@ -1,7 +1,6 @@
 // With a fixed seed the image is bit-identical whatever the number of threads: random
 // streams are keyed by pixel, photon and pass, and photon sums are integers.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 #include "render.h"
 #include "test_support.h"
 
@@ -11,15 +10,7 @@ namespace {
 Image renderWithThreads(int threads, IntegratorKind kind) {
     SceneDescription d = test::exampleScene("cornell-glass", 48, 3, 30000, 42);
     d.render.integrator = kind;
-    Image image;
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        Renderer renderer(Scene::build(std::move(d)));
-        CancelToken cancel;
-        renderer.run(cancel);
-        image = renderer.snapshot();
-    });
-    return image;
+    return test::renderWithThreads(std::move(d), threads);
 }
 
 TEST(Determinism, SppmSameSeedOneAndTwoThreadsGiveIdenticalPixels) {

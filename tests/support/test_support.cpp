@@ -1,5 +1,7 @@
 #include "test_support.h"
 #include "scene_builders.h"
+#include <tbb/task_arena.h>
+#include "render.h"
 
 namespace photon::test {
 
@@ -34,6 +36,18 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
     c.width = width;
     c.height = height;
     return c;
+}
+
+Image renderWithThreads(SceneDescription d, int threads) {
+    Image image;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        Renderer renderer(Scene::build(std::move(d)));
+        CancelToken cancel;
+        renderer.run(cancel);
+        image = renderer.snapshot();
+    });
+    return image;
 }
 
 SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution, float halfSize) {

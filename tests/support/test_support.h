@@ -31,6 +31,9 @@ inline SceneDescription exampleScene(const std::string& name, int resolution, in
 }
 
 // Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
+// Renders the scene's passes with at most `threads` oneTBB threads (determinism tests).
+Image renderWithThreads(SceneDescription d, int threads);
+
 inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
     Color sum(0.0f);
     for (int y = y0; y < y1; ++y)
