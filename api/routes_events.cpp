@@ -46,12 +46,12 @@ struct EventStream {
             server::EventType type = server::eventTypeFor(initial->job.status);
             bool ok = writeAll(sink, formatEvent(type, initial->seq, initial->job));
             initial.reset();
-            if (ok && type != server::EventType::Progress) sink.done();
+            if (ok && type != server::EventType::Progress) endStream(sink, slot);
             return ok;
         }
         server::EventHub::Wait wait = hub.waitAfter(id, afterSeq, kStreamPoll);
         if (wait.closed) {
-            sink.done();
+            endStream(sink, slot);
             return true;
         }
         if (wait.events.empty()) {
@@ -63,7 +63,7 @@ struct EventStream {
             if (!writeAll(sink, formatEvent(e.type, e.seq, e.job))) return false;
             afterSeq = e.seq;
             if (e.type != server::EventType::Progress) {
-                sink.done();
+                endStream(sink, slot);
                 break;
             }
         }

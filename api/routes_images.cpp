@@ -55,7 +55,7 @@ struct FrameStream {
     }
     bool end(httplib::DataSink& sink) {
         if (!sendLatest(sink) || !writeAll(sink, "--frame--\r\n")) return false;
-        sink.done();
+        endStream(sink, slot);
         return true;
     }
 
@@ -66,7 +66,7 @@ struct FrameStream {
         }
         server::EventHub::Wait wait = service.events().waitAfter(id, afterSeq, kStreamPoll);
         if (wait.closed) {
-            sink.done();
+            endStream(sink, slot);
             return true;
         }
         if (wait.events.empty()) return true;

@@ -52,6 +52,14 @@ httplib::ContentProviderWithoutLength guardedProvider(Step step) {
     };
 }
 
+// Ends a stream. Its slot is freed before the final chunk goes out: httplib destroys the
+// provider (and the slot it holds) only after the response is written, so a client that has
+// seen the end could otherwise be refused a new stream for a moment.
+inline void endStream(httplib::DataSink& sink, std::shared_ptr<StreamSlots::Slot>& slot) {
+    slot.reset();
+    sink.done();
+}
+
 inline bool writeAll(httplib::DataSink& sink, const std::string& bytes) {
     return bytes.empty() || sink.write(bytes.data(), bytes.size());
 }

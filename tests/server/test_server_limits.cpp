@@ -141,7 +141,9 @@ TEST_F(LimitsTest, StreamsOverTheLimitAre503WithRetryAfter) {
     // The job ends, its stream ends, and the slot is free again.
     ASSERT_EQ(client().Post(("/api/v1/jobs/" + id + "/cancel").c_str())->status, 200);
     follower.join();
-    EXPECT_EQ(followEvents(id).back().type, "cancelled");
+    std::vector<SseEvent> events = followEvents(id);
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back().type, "cancelled");
 }
 
 TEST_F(LimitsTest, JobsPerClientAre429) {
