@@ -17,7 +17,7 @@ namespace photon {
 // Photons traced for one map: which hits are kept, and counts of what happened.
 enum class PhotonMapKind { Global, Caustic };
 struct PhotonTraceResult {
-    std::vector<StoredPhoton> photons;  // in photon-index order
+    std::vector<StoredPhoton> photons;  // chunk by chunk: the same order for any thread count
     std::vector<uint16_t> normals;      // shading normal where each photon was stored, octahedral 16-bit
     int64_t emitted = 0, misses = 0, segments = 0;
 };

@@ -85,7 +85,7 @@ private:
     // Photon hits are gathered in batches so that the memory each needs (grid bucket,
     // entries, discs, visible points) can be fetched for the whole batch at once.
     class GatherBatch;
-    void tracePhoton(int64_t index, GatherBatch& batch, PhotonCounters& counters);
+    class BatchingSink;
     void gather(GatherBatch& batch, PhotonCounters& counters);
     void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
     void updateStatistics();

@@ -4,7 +4,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 #include <atomic>
-#include "photon_roulette.h"
+#include "photon_paths.h"
 #include "shading.h"
 #include "sppm_gather_batch.h"
 
@@ -15,19 +15,39 @@ constexpr int64_t kPhotonsPerChunk = 4096;
 
 }  // namespace
 
+// Photon arrivals go into the batch, which is gathered whenever it fills.
+class SppmIntegrator::BatchingSink final : public PhotonArrivalSink {
+public:
+    BatchingSink(SppmIntegrator& sppm, PhotonCounters& counters) : sppm_(sppm), counters_(counters) {}
+    void flush() { sppm_.gather(batch_, counters_); }
+    void arrive(const PhotonArrival& a) override {
+        // Direct light may come from light sampling in the camera pass instead.
+        if (a.depth == 0 && sppm_.settings_.direct != DirectLighting::Photons) return;
+        batch_.push({a.sp.hit.p, a.sp.hit.ns, a.wi, a.flux});
+        if (batch_.full()) sppm_.gather(batch_, counters_);
+    }
+
+private:
+    SppmIntegrator& sppm_;
+    PhotonCounters& counters_;
+    GatherBatch batch_;
+};
+
 void SppmIntegrator::photonPass(const CancelToken& cancel) {
     const int64_t total = settings_.photonsPerPass;
     const int64_t chunks = (total + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
     PhotonCounters counters = tbb::parallel_reduce(
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
-            GatherBatch batch;
-            for (int64_t c = r.begin(); c < r.end(); ++c) {
-                if (cancel.cancelled()) return acc;
-                int64_t end = std::min(total, (c + 1) * kPhotonsPerChunk);
-                for (int64_t i = c * kPhotonsPerChunk; i < end; ++i) tracePhoton(i, batch, acc);
-            }
-            gather(batch, acc);
+            PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passes_), settings_.maxDepth};
+            PhotonPathCounters pathCounters;
+            BatchingSink sink(*this, acc);
+            for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)
+                tracePhotonPaths(*scene_, emitter_, paths, c * kPhotonsPerChunk,
+                                 std::min(total, (c + 1) * kPhotonsPerChunk), sink, pathCounters);
+            sink.flush();
+            acc.rays += pathCounters.rays;
+            acc.segments += pathCounters.segments;
             return acc;
         },
         [](PhotonCounters a, const PhotonCounters& b) {
@@ -42,38 +62,6 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
     stats_.photonSegments = counters.segments;
     stats_.gatherCandidates = counters.candidates;
     stats_.gatherHits = counters.accepted;
-}
-
-void SppmIntegrator::tracePhoton(int64_t index, GatherBatch& batch, PhotonCounters& counters) {
-    const Scene& scene = *scene_;
-    Rng rng(settings_.seed, static_cast<uint64_t>(passes_), static_cast<uint64_t>(index), StreamPurpose::Photon);
-    std::optional<EmittedPhoton> emitted = emitter_.emit(rng);
-    if (!emitted) return;
-    Color beta = emitted->beta;
-    Ray ray = emitted->ray;
-    const bool depositDirect = settings_.direct == DirectLighting::Photons;
-    for (int depth = 0; depth < settings_.maxDepth; ++depth) {
-        SurfaceHit hit;
-        ++counters.rays;
-        if (!scene.intersect(ray, hit)) break;
-        ++counters.segments;
-        Vec3 wi = -ray.d;  // toward where the photon came from
-        ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-        if (!sp.material->isDeltaOnly() && (depth > 0 || depositDirect)) {
-            batch.push({sp.hit.p, sp.hit.ns, wi, beta});
-            if (batch.full()) gather(batch, counters);
-        }
-        if (depth + 1 == settings_.maxDepth) break;
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
-        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.tint,
-                                                          TransportMode::Importance);
-        if (!s) break;
-        std::optional<Color> next = photonAfterRoulette(beta, s->weight, rng);
-        if (!next) break;
-        beta = *next;
-        ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
-    }
 }
 
 }  // namespace photon

@@ -18,8 +18,7 @@ LightSampler::Pick LightSampler::pick(float u) const {
     if (lights_.empty() || totalAveragePower_ <= 0) return {};
     size_t i = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
     i = std::min(i, lights_.size() - 1);
-    float lower = i == 0 ? 0.0f : cdf_[i - 1];
-    return {lights_[i], cdf_[i] - lower, i};
+    return {lights_[i], probability(i), i};
 }
 
 }  // namespace photon

@@ -19,6 +19,8 @@ public:
     Pick pick(float u) const;
     size_t size() const { return lights_.size(); }
     const Light& light(size_t i) const { return *lights_[i]; }
+    // The probability with which pick() returns light i.
+    float probability(size_t i) const { return cdf_[i] - (i == 0 ? 0.0f : cdf_[i - 1]); }
     // Mean over channels of the summed power: the unit photon fluxes are expressed in.
     float totalAveragePower() const { return totalAveragePower_; }
 

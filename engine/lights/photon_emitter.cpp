@@ -6,6 +6,10 @@ namespace photon {
 PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps) : scene_(scene) {
     const LightSampler& lights = scene.lights();
     maps_.resize(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) {
+        float probability = lights.probability(i);
+        fluxScale_.push_back(probability > 0 ? 1.0f / (probability * lights.totalAveragePower()) : 0.0f);
+    }
     if (!projectionMaps) return;
     std::vector<BoundingSphere> objects = shapeBoundingSpheres(scene.description().shapes);
     for (size_t i = 0; i < lights.size(); ++i) maps_[i] = ProjectionMap::build(lights.light(i), objects);
@@ -26,7 +30,7 @@ std::optional<EmittedPhoton> PhotonEmitter::emit(Rng& rng) const {
         e = pick.light->emitPhoton(uPos, uDir);
     }
     if (!e) return std::nullopt;
-    Color beta = e->flux / (pick.probability * scene_.lights().totalAveragePower());
+    Color beta = e->flux * fluxScale_[pick.index];
     Ray ray = isBlack(e->normal) ? Ray{e->origin, e->direction} : spawnRay(e->origin, e->normal, e->direction);
     return EmittedPhoton{ray, beta};
 }

@@ -35,6 +35,8 @@ public:
 private:
     const Scene& scene_;
     std::vector<std::optional<ProjectionMap>> maps_;  // by the light sampler's index
+    // 1 / (probability of the light * the lights' mean total power), by the same index.
+    std::vector<float> fluxScale_;
 };
 
 }  // namespace photon
