@@ -1,4 +1,6 @@
 #include "render.h"
+#include <iterator>
+#include <sstream>
 #include "integrators/checkpoint.h"
 
 namespace photon {
@@ -39,18 +41,24 @@ bool Renderer::renderPass(const CancelToken& cancel) {
 }
 
 void Renderer::saveCheckpoint(std::ostream& out) const {
-    writeRaw(out, &progress_.photonsTraced, 1);
-    writeRaw(out, &renderSeconds_, 1);
-    integrator_->saveState(out);
+    std::ostringstream body;
+    writeRaw(body, &progress_.photonsTraced, 1);
+    writeRaw(body, &renderSeconds_, 1);
+    integrator_->saveState(body);
+    const std::string sealed = sealCheckpoint(std::move(body).str());
+    writeRaw(out, sealed.data(), sealed.size());
 }
 
 void Renderer::restoreCheckpoint(std::istream& in) {
     // The integrator restores all or nothing; the progress is only taken once it has.
+    const std::string sealed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::istringstream body{std::string(unsealCheckpoint(sealed))};
     int64_t photons = 0;
     double seconds = 0;
-    readRaw(in, &photons, 1);
-    readRaw(in, &seconds, 1);
-    integrator_->restoreState(in);
+    readRaw(body, &photons, 1);
+    readRaw(body, &seconds, 1);
+    if (photons < 0 || !(seconds >= 0 && seconds <= 1e12)) throw CheckpointError("checkpoint: invalid progress");
+    integrator_->restoreState(body);
     renderSeconds_ = seconds;
     progress_.photonsTraced = photons;
     progress_.pass = integrator_->passesDone();

@@ -67,16 +67,17 @@ fuzz="$root/build-fuzz"
 fuzz_build() {
     CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$fuzz" "${cmake_args[@]}" -DPHOTON_FUZZ=ON -DBUILD_TESTING=OFF \
         > /dev/null
-    nice cmake --build "$fuzz" -j2 --target fuzz_scene fuzz_obj fuzz_http
+    nice cmake --build "$fuzz" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint
 }
 # fuzz_run TARGET CORPUS: new inputs go to build-fuzz/corpus (the seeds stay as they are).
 fuzz_run() {
-    local target="$1" corpus="$2" log="$fuzz/$1.log"
+    local target="$1" corpus="$2" log="$fuzz/$1.log" dict="$root/tests/fuzz/$1.dict"
+    [ -f "$dict" ] || dict=""
     mkdir -p "$fuzz/corpus/$corpus" "$fuzz/artifacts"
     if ! ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
         UBSAN_OPTIONS=print_stacktrace=1 \
         "$fuzz/tests/fuzz/$target" -max_total_time="$fuzz_seconds" -timeout=30 -rss_limit_mb=4096 \
-        -dict="$root/tests/fuzz/$target.dict" -artifact_prefix="$fuzz/artifacts/$target-" -print_final_stats=1 \
+        ${dict:+-dict="$dict"} -artifact_prefix="$fuzz/artifacts/$target-" -print_final_stats=1 \
         "$fuzz/corpus/$corpus" "$root/tests/fuzz/corpus/$corpus" > "$log" 2>&1; then
         tail -n 100 "$log"
         echo "$target failed; the input is in $fuzz/artifacts"
@@ -88,6 +89,7 @@ step "fuzz: build" fuzz_build
 step "fuzz: fuzz_scene ${fuzz_seconds}s" fuzz_run fuzz_scene scene
 step "fuzz: fuzz_obj ${fuzz_seconds}s" fuzz_run fuzz_obj obj
 step "fuzz: fuzz_http ${fuzz_seconds}s" fuzz_run fuzz_http http
+step "fuzz: fuzz_checkpoint ${fuzz_seconds}s" fuzz_run fuzz_checkpoint checkpoint
 
 # ---- (b) ThreadSanitizer ----
 # oneTBB, Embree, httplib and the other Debian libraries are not built with TSan, so TSan

@@ -1,4 +1,5 @@
 #include "checkpoint.h"
+#include <zlib.h>
 #include <cstring>
 #include "../math/rng.h"
 
@@ -66,6 +67,47 @@ void readCheckpointHeader(std::istream& in, const CheckpointKey& expected) {
                               " image");
     if (key.settings != expected.settings)
         throw CheckpointError("checkpoint: made with other render settings");
+}
+
+namespace {
+struct Seal {
+    uint64_t bodyBytes = 0;
+    uint32_t crc = 0;
+    uint32_t magic = 0x4c414553;  // "SEAL"
+};
+
+uint32_t crc32Of(std::string_view bytes) {
+    uLong crc = crc32_z(0L, Z_NULL, 0);
+    return static_cast<uint32_t>(crc32_z(crc, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size()));
+}
+}  // namespace
+
+std::string sealCheckpoint(std::string body) {
+    Seal seal{body.size(), crc32Of(body)};
+    body.append(reinterpret_cast<const char*>(&seal), sizeof seal);
+    return body;
+}
+
+std::string_view unsealCheckpoint(std::string_view sealed) {
+    Seal seal, expected;
+    if (sealed.size() < sizeof seal) throw CheckpointError("checkpoint: truncated");
+    std::memcpy(&seal, sealed.data() + sealed.size() - sizeof seal, sizeof seal);
+    std::string_view body = sealed.substr(0, sealed.size() - sizeof seal);
+    if (seal.magic != expected.magic || seal.bodyBytes != body.size())
+        throw CheckpointError("checkpoint: truncated or not a photon checkpoint");
+    if (seal.crc != crc32Of(body)) throw CheckpointError("checkpoint: damaged (CRC-32 mismatch)");
+    return body;
+}
+
+void requireEndOfCheckpoint(std::istream& in) {
+    if (in.peek() != std::char_traits<char>::eof()) throw CheckpointError("checkpoint: unexpected bytes at the end");
+}
+
+int readPassCount(std::istream& in) {
+    int passes = 0;
+    readRaw(in, &passes, 1);
+    if (passes < 0) throw CheckpointError("checkpoint: invalid pass count " + std::to_string(passes));
+    return passes;
 }
 
 }  // namespace photon

@@ -4,9 +4,13 @@
 #pragma once
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
+#include "../math/vec.h"
 #include "../scene/render_settings.h"
 
 namespace photon {
@@ -29,6 +33,12 @@ void writeCheckpointHeader(std::ostream& out, const CheckpointKey& key);
 // Throws CheckpointError if the stream is not a checkpoint or belongs to another key.
 void readCheckpointHeader(std::istream& in, const CheckpointKey& expected);
 
+// A whole checkpoint ends in a seal: the length and CRC-32 of everything before it. A file
+// cut short or damaged on disk is told from a good one before any of it is used.
+std::string sealCheckpoint(std::string body);
+// The body of a sealed checkpoint; throws CheckpointError if the seal does not match.
+std::string_view unsealCheckpoint(std::string_view sealed);
+
 template <class T>
 void writeRaw(std::ostream& out, const T* data, size_t count) {
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(sizeof(T) * count));
@@ -38,6 +48,18 @@ template <class T>
 void readRaw(std::istream& in, T* data, size_t count) {
     in.read(reinterpret_cast<char*>(data), static_cast<std::streamsize>(sizeof(T) * count));
     if (!in) throw CheckpointError("checkpoint: truncated");
+}
+
+// Reads a count of finished passes, which cannot be negative.
+int readPassCount(std::istream& in);
+// Throws CheckpointError unless everything has been read: restores call it before they
+// change any state, so that they take all of a checkpoint or nothing.
+void requireEndOfCheckpoint(std::istream& in);
+// What accumulated light, photon counts and radii can be: finite and >= 0. Restores check
+// every value, so a damaged checkpoint that slipped past its seal cannot poison a render.
+inline bool isFiniteNonNegative(float v) { return v >= 0 && v <= std::numeric_limits<float>::max(); }
+inline bool isFiniteNonNegative(Color c) {
+    return isFiniteNonNegative(c.x) && isFiniteNonNegative(c.y) && isFiniteNonNegative(c.z);
 }
 
 }  // namespace photon

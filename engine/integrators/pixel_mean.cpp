@@ -55,10 +55,12 @@ void PixelMeanIntegrator::saveState(std::ostream& out) const {
 
 void PixelMeanIntegrator::restoreState(std::istream& in) {
     readCheckpointHeader(in, checkpointKey(scene_->settings(), width_, height_));
-    int passes = 0;
-    readRaw(in, &passes, 1);
+    int passes = readPassCount(in);
     std::vector<Color> sum(sum_.size());
     readRaw(in, sum.data(), sum.size());
+    for (Color c : sum)
+        if (!isFiniteNonNegative(c)) throw CheckpointError("checkpoint: invalid pixel sum");
+    requireEndOfCheckpoint(in);
     std::lock_guard<std::mutex> lock(mutex_);
     passes_ = passes;
     sum_ = std::move(sum);

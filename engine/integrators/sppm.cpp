@@ -96,10 +96,14 @@ void SppmIntegrator::saveState(std::ostream& out) const {
 
 void SppmIntegrator::restoreState(std::istream& in) {
     readCheckpointHeader(in, checkpointKey(settings_, width_, height_));
-    int passes = 0;
-    readRaw(in, &passes, 1);
+    int passes = readPassCount(in);
     std::vector<PixelState> pixels(pixels_.size());
     readRaw(in, pixels.data(), pixels.size());
+    for (const PixelState& p : pixels)
+        if (!isFiniteNonNegative(p.directSum) || !isFiniteNonNegative(p.tau) || !isFiniteNonNegative(p.n) ||
+            !isFiniteNonNegative(p.r2))
+            throw CheckpointError("checkpoint: invalid pixel statistics");
+    requireEndOfCheckpoint(in);
     std::lock_guard<std::mutex> lock(stateMutex_);
     passes_ = passes;
     pixels_ = std::move(pixels);

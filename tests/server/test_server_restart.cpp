@@ -1,6 +1,7 @@
 // Jobs survive a restart: finished ones keep their records and images, queued ones run,
 // interrupted ones resume from their checkpoint.
 #include <atomic>
+#include <fstream>
 #include <thread>
 #include "server_fixture.h"
 
@@ -99,38 +100,72 @@ TEST_F(RestartTest, SecondServerOnTheSameDataDirectoryRefusesToStart) {
 namespace photon::test {
 namespace {
 
-class CrashTest : public ServerTest {};
+// A job of `passes` passes of 200k photons at 32x32 (long enough to be killed in the
+// middle) is killed with kill -9 once it has a checkpoint; then the server starts again.
+class CrashTest : public ServerTest {
+protected:
+    std::string killWithACheckpoint(int passes) {
+        scene_ = smallScene(passes, 200000, 32);
+        startServer({"--checkpoint-seconds", "1"});
+        std::string id = submitOk(scene_);
+        checkpoint_ = dataDir() / "jobs" / id / "checkpoint.bin";
+        json before = waitFor(
+            id, [&](const json& j) { return j["pass"].get<int>() >= 3 && std::filesystem::exists(checkpoint_); },
+            std::chrono::seconds(60));
+        EXPECT_TRUE(std::filesystem::exists(checkpoint_));
+        EXPECT_LT(before["pass"].get<int>(), passes) << "the job finished before it could be killed";
+        killServer();  // nothing is saved on the way out
+        return id;
+    }
+
+    // Restarts the server and follows the job to its end: the passes it reported.
+    std::vector<int> passesAfterRestart(const std::string& id) {
+        startServer({"--checkpoint-seconds", "1"});
+        std::vector<SseEvent> events = followEvents(id, {{"Last-Event-ID", "0"}});
+        std::vector<int> passes;
+        for (const SseEvent& e : events)
+            if (e.type == "progress" && e.data["pass"].get<int>() > 0) passes.push_back(e.data["pass"].get<int>());
+        EXPECT_TRUE(!events.empty() && events.back().type == "done");
+        return passes;
+    }
+
+    void expectTheImageOfAnUninterruptedRender(const std::string& id) {
+        httplib::Result exr = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
+        ASSERT_TRUE(exr);
+        ASSERT_EQ(exr->status, 200);
+        EXPECT_TRUE(decodeImage(exr->body, "exr").rgb == renderInProcess(scene_).rgb);
+    }
+
+    json scene_;
+    std::filesystem::path checkpoint_;
+};
 
 TEST_F(CrashTest, AKilledServerResumesTheJobFromItsLastCheckpoint) {
-    // 200 passes of 200k photons at 32x32: long enough to be killed in the middle.
-    json scene = smallScene(200, 200000, 32);
-    startServer({"--checkpoint-seconds", "1"});
-    std::string id = submitOk(scene);
-    const auto checkpoint = dataDir() / "jobs" / id / "checkpoint.bin";
-    json before = waitFor(
-        id, [&](const json& j) { return j["pass"].get<int>() >= 3 && std::filesystem::exists(checkpoint); },
-        std::chrono::seconds(60));
-    ASSERT_TRUE(std::filesystem::exists(checkpoint));
-    ASSERT_LT(before["pass"].get<int>(), 200) << "the job finished before it could be killed";
-    killServer();  // kill -9: nothing is saved on the way out
-
-    startServer({"--checkpoint-seconds", "1"});
-    std::vector<SseEvent> events = followEvents(id, {{"Last-Event-ID", "0"}});
-    std::vector<int> passes;
-    for (const SseEvent& e : events)
-        if (e.type == "progress" && e.data["pass"].get<int>() > 0) passes.push_back(e.data["pass"].get<int>());
+    std::string id = killWithACheckpoint(200);
+    std::vector<int> passes = passesAfterRestart(id);
     ASSERT_FALSE(passes.empty());
     EXPECT_GT(passes.front(), 1) << "resumed from pass 0";
     EXPECT_EQ(passes.back(), 200);
-    ASSERT_EQ(events.back().type, "done");
-    EXPECT_FALSE(std::filesystem::exists(checkpoint));  // removed once the job is done
+    EXPECT_FALSE(std::filesystem::exists(checkpoint_));  // removed once the job is done
+    expectTheImageOfAnUninterruptedRender(id);
+}
 
-    httplib::Result exr = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
-    ASSERT_TRUE(exr);
-    ASSERT_EQ(exr->status, 200);
-    Image served = decodeImage(exr->body, "exr");
-    Image direct = renderInProcess(scene);
-    EXPECT_TRUE(served.rgb == direct.rgb) << "the resumed render differs from an uninterrupted one";
+TEST_F(CrashTest, ADamagedCheckpointIsDiscardedAndTheJobStartsOver) {
+    std::string id = killWithACheckpoint(100);
+    {  // one bit flipped in the middle of the pixel data, as a failing disk might
+        const auto middle = static_cast<std::streamoff>(std::filesystem::file_size(checkpoint_) / 2);
+        std::fstream file(checkpoint_, std::ios::in | std::ios::out | std::ios::binary);
+        file.seekg(middle);
+        char byte = 0;
+        file.get(byte);
+        file.seekp(middle);
+        file.put(static_cast<char>(byte ^ 0x10));
+    }
+    std::vector<int> passes = passesAfterRestart(id);
+    ASSERT_FALSE(passes.empty());
+    EXPECT_EQ(passes.front(), 1) << "resumed from a damaged checkpoint";
+    EXPECT_EQ(passes.back(), 100);
+    expectTheImageOfAnUninterruptedRender(id);
 }
 
 }  // namespace
