@@ -3,6 +3,7 @@
 // directional light) renders the same with and without them, for SPPM and for the photon
 // mapper, while far fewer emitted photons miss everything.
 #include <gtest/gtest.h>
+#include "integrators/photonmap.h"
 #include "lights/photon_emitter.h"
 #include "render.h"
 #include "scene_builders.h"
@@ -169,6 +170,48 @@ TEST(ProjectionMap, SpotLightDeliversTheSamePower) {
 
 TEST(ProjectionMap, SpheresApartUnderDirectionalLightSameImageTenfoldFewerMisses) {
     expectSameImageFewerMisses(spheresApartUnderSun(), "directional light");
+}
+
+// A glass sphere over a floor under a point light: the caustic map's photons leave only
+// toward the sphere (the one shape with a specular lobe), so the same number of emitted
+// photons stores many times the caustic photons, and they carry the same power.
+TEST(ProjectionMap, CausticPhotonsAimAtSpecularShapes) {
+    SceneDescription d;
+    d.camera = test::camera({0, 3.5f, 3}, {0, 0, 0}, {0, 1, 0}, 40, kResolution, kResolution);
+    d.materials = {makeDiffuse(Color(0.8f)), makeDielectric(1.5f)};
+    d.materialNames = {"floor", "glass"};
+    d.shapes = {test::quad({-4, 0, -4}, {0, 0, 8}, {8, 0, 0}, 0), test::sphere({0, 1, 0}, 0.5f, 1)};
+    LightDescription light;
+    light.kind = LightDescription::Kind::Point;
+    light.position = {0, 3, 0};
+    light.intensity = Color(20.0f);
+    d.lights = {light};
+    d.render.integrator = IntegratorKind::PhotonMap;
+    d.render.passes = 1;
+    d.render.photonMap.globalPhotons = 1000;
+    d.render.photonMap.causticPhotons = 500000;
+    d.render.seed = 3;
+    auto causticMap = [&](bool projectionMaps) {
+        SceneDescription s = d;
+        s.render.projectionMaps = projectionMaps;
+        auto renderer = std::make_unique<Renderer>(Scene::build(std::move(s)));
+        CancelToken cancel;
+        EXPECT_TRUE(renderer->renderPass(cancel));
+        const auto& pm = dynamic_cast<const PhotonMapIntegrator&>(renderer->integrator());
+        return std::pair(pm.causticMap().size(), pm.causticMap().totalPower());
+    };
+    auto [countWithout, powerWithout] = causticMap(false);
+    auto [countWith, powerWith] = causticMap(true);
+    std::printf("caustic photons %zu without, %zu with projection maps; power %f, %f W\n", countWithout, countWith,
+                average(powerWithout), average(powerWith));
+    EXPECT_GT(countWithout, 5000u);
+    EXPECT_GT(countWith, 10 * countWithout);
+    EXPECT_NEAR(average(powerWith), average(powerWithout), 0.05f * average(powerWithout));
+    // All of it first reached the sphere, which receives I * 2 pi (1 - cos a) with
+    // sin a = 0.5 / 2 (3.99 W); most of that leaves through the glass toward the floor.
+    const float ontoSphere = 20.0f * 2.0f * kPi * (1.0f - std::sqrt(1.0f - 0.25f * 0.25f));
+    EXPECT_LT(average(powerWith), ontoSphere);
+    EXPECT_GT(average(powerWith), 0.8f * ontoSphere);
 }
 
 }  // namespace

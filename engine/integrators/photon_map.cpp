@@ -41,6 +41,15 @@ void PhotonMap::build(std::vector<StoredPhoton> photons, float fluxScale) {
     tree_ = std::make_unique<Tree>(photons_);
 }
 
+Color PhotonMap::totalPower() const {
+    double sum[3] = {0, 0, 0};
+    for (const StoredPhoton& p : photons_) {
+        Color c = p.power();
+        for (int k = 0; k < 3; ++k) sum[k] += c[k];
+    }
+    return Color(static_cast<float>(sum[0]), static_cast<float>(sum[1]), static_cast<float>(sum[2])) * fluxScale_;
+}
+
 size_t PhotonMap::nearest(Vec3 x, int k, float maxRadius, uint32_t* indices, float* distances2) const {
     if (!tree_ || photons_.empty() || k <= 0) return 0;
     nanoflann::KNNResultSet<float, uint32_t> result(static_cast<size_t>(k));

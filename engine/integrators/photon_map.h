@@ -28,6 +28,8 @@ public:
     void build(std::vector<StoredPhoton> photons, float fluxScale);
     size_t size() const { return photons_.size(); }
     const StoredPhoton& operator[](size_t i) const { return photons_[i]; }
+    // The power all the map's photons carry (W): the light arriving where they were stored.
+    Color totalPower() const;
 
     // The k photons nearest x within maxRadius, nearest first: indices and squared
     // distances written to the arrays (room for k); returns how many were found.

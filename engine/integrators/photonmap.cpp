@@ -23,7 +23,10 @@ constexpr int kIrradianceStride = 4;
 }  // namespace
 
 PhotonMapIntegrator::PhotonMapIntegrator(std::shared_ptr<const Scene> scene)
-    : PixelMeanIntegrator(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps) {
+    : PixelMeanIntegrator(std::move(scene)),
+      settings_(scene_->settings()),
+      emitter_(*scene_, settings_.projectionMaps),
+      causticEmitter_(*scene_, settings_.projectionMaps, PhotonTargets::SpecularShapes) {
     const PhotonMapSettings& p = settings_.photonMap;
     const float radius = sceneRadius(*scene_);
     globalLookup_ = {p.globalNearest, p.globalMaxRadius > 0 ? p.globalMaxRadius : radius / 10, settings_.kernel};
@@ -37,7 +40,7 @@ bool PhotonMapIntegrator::buildMaps(const CancelToken& cancel) {
     const float power = scene_->lights().totalAveragePower();
     PhotonTraceResult g = tracePhotonMap(*scene_, emitter_, PhotonMapKind::Global, p.globalPhotons, cancel);
     if (cancel.cancelled()) return false;
-    PhotonTraceResult c = tracePhotonMap(*scene_, emitter_, PhotonMapKind::Caustic, p.causticPhotons, cancel);
+    PhotonTraceResult c = tracePhotonMap(*scene_, causticEmitter_, PhotonMapKind::Caustic, p.causticPhotons, cancel);
     if (cancel.cancelled()) return false;
     global_.build(std::move(g.photons), g.emitted > 0 ? power / static_cast<float>(g.emitted) : 0.0f);
     caustic_.build(std::move(c.photons), c.emitted > 0 ? power / static_cast<float>(c.emitted) : 0.0f);

@@ -49,7 +49,8 @@ private:
     Color globalRadiance(const ShadingPoint& y, Vec3 wo, unsigned lobes) const;
 
     const RenderSettings& settings_;
-    PhotonEmitter emitter_;
+    PhotonEmitter emitter_;         // for the global map: toward every shape
+    PhotonEmitter causticEmitter_;  // for the caustic map: toward specular shapes only
     PhotonLookup globalLookup_, causticLookup_;
     PhotonMap global_, caustic_;
     PhotonMap irradiance_;  // precomputed irradiance at every 4th global photon (Christensen 1999)

@@ -3,7 +3,7 @@
 
 namespace photon {
 
-PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps) : scene_(scene) {
+PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps, PhotonTargets targets) : scene_(scene) {
     const LightSampler& lights = scene.lights();
     maps_.resize(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -11,7 +11,10 @@ PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps) : scene_(s
         fluxScale_.push_back(probability > 0 ? 1.0f / (probability * lights.totalAveragePower()) : 0.0f);
     }
     if (!projectionMaps) return;
-    std::vector<BoundingSphere> objects = shapeBoundingSpheres(scene.description().shapes);
+    const SceneDescription& d = scene.description();
+    std::vector<BoundingSphere> objects = shapeBoundingSpheres(d.shapes, [&](const ShapeDescription& s) {
+        return targets == PhotonTargets::AllShapes || (d.materials[s.material]->lobes() & kDeltaLobe) != 0;
+    });
     for (size_t i = 0; i < lights.size(); ++i) maps_[i] = ProjectionMap::build(lights.light(i), objects);
 }
 

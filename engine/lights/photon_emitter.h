@@ -18,10 +18,15 @@ struct EmittedPhoton {
     Color beta;
 };
 
+// What a projection map marks: every shape, or only shapes whose material has a delta
+// (specular) lobe. Caustic paths (L S+ D) start at such a shape, so a caustic map loses
+// nothing by emitting toward them alone (Jensen 2001, sec. 9.2), and gains many photons.
+enum class PhotonTargets { AllShapes, SpecularShapes };
+
 class PhotonEmitter {
 public:
     // Builds projection maps for the point, spot and directional lights if asked to.
-    PhotonEmitter(const Scene& scene, bool projectionMaps);
+    PhotonEmitter(const Scene& scene, bool projectionMaps, PhotonTargets targets = PhotonTargets::AllShapes);
 
     // Draws five numbers from rng in every case (light, two for position, two for
     // direction), so the streams that follow do not depend on the light picked.

@@ -22,9 +22,11 @@ double cornerSolidAngle(double u, double v) { return std::atan2(u * v, std::sqrt
 
 }  // namespace
 
-std::vector<BoundingSphere> shapeBoundingSpheres(const std::vector<ShapeDescription>& shapes) {
+std::vector<BoundingSphere> shapeBoundingSpheres(const std::vector<ShapeDescription>& shapes,
+                                                 const std::function<bool(const ShapeDescription&)>& include) {
     std::vector<BoundingSphere> spheres;
     for (const ShapeDescription& s : shapes) {
+        if (!include(s)) continue;
         if (s.kind == ShapeDescription::Kind::Sphere) {
             spheres.push_back({s.center, s.radius});
             continue;

@@ -5,6 +5,7 @@
 // leave through marked cells only, so few of them are wasted on empty space around a
 // small or distant scene.
 #pragma once
+#include <functional>
 #include <optional>
 #include <vector>
 #include "../scene/scene_description.h"
@@ -17,8 +18,10 @@ struct BoundingSphere {
     float radius = 0;
 };
 
-// One bounding sphere per shape (the sphere itself, or the sphere about a mesh's bounding box).
-std::vector<BoundingSphere> shapeBoundingSpheres(const std::vector<ShapeDescription>& shapes);
+// One bounding sphere per shape that `include` accepts (the sphere itself, or the sphere
+// about a mesh's bounding box).
+std::vector<BoundingSphere> shapeBoundingSpheres(const std::vector<ShapeDescription>& shapes,
+                                                 const std::function<bool(const ShapeDescription&)>& include);
 
 class ProjectionMap {
 public:
