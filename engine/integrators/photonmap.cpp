@@ -26,7 +26,9 @@ PhotonMapIntegrator::PhotonMapIntegrator(std::shared_ptr<const Scene> scene)
     : PixelMeanIntegrator(std::move(scene)),
       settings_(scene_->settings()),
       emitter_(*scene_, settings_.projectionMaps),
-      causticEmitter_(*scene_, settings_.projectionMaps, PhotonTargets::SpecularShapes) {
+      // (no maps to build when no caustic photons are asked for)
+      causticEmitter_(*scene_, settings_.projectionMaps && settings_.photonMap.causticPhotons > 0,
+                      PhotonTargets::SpecularShapes) {
     const PhotonMapSettings& p = settings_.photonMap;
     const float radius = sceneRadius(*scene_);
     globalLookup_ = {p.globalNearest, p.globalMaxRadius > 0 ? p.globalMaxRadius : radius / 10, settings_.kernel};
