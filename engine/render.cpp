@@ -1,5 +1,4 @@
 #include "render.h"
-#include <iterator>
 #include <sstream>
 #include "integrators/checkpoint.h"
 
@@ -51,8 +50,10 @@ void Renderer::saveCheckpoint(std::ostream& out) const {
 
 void Renderer::restoreCheckpoint(std::istream& in) {
     // The integrator restores all or nothing; the progress is only taken once it has.
-    const std::string sealed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    std::istringstream body{std::string(unsealCheckpoint(sealed))};
+    std::ostringstream whole;
+    whole << in.rdbuf();
+    const std::string sealed = std::move(whole).str();
+    ViewInputStream body(unsealCheckpoint(sealed));
     int64_t photons = 0;
     double seconds = 0;
     readRaw(body, &photons, 1);

@@ -39,6 +39,21 @@ std::string sealCheckpoint(std::string body);
 // The body of a sealed checkpoint; throws CheckpointError if the seal does not match.
 std::string_view unsealCheckpoint(std::string_view sealed);
 
+// An input stream over bytes held elsewhere (C++20 has no ispanstream): a restore reads a
+// checkpoint's body where it lies instead of copying it (checkpoints of large images are
+// hundreds of megabytes).
+struct ViewBuffer : std::streambuf {
+    explicit ViewBuffer(std::string_view bytes) {
+        char* begin = const_cast<char*>(bytes.data());  // read only: no put area is set
+        setg(begin, begin, begin + bytes.size());
+    }
+};
+// The buffer is a base listed first, so it exists before the stream is handed it.
+class ViewInputStream : private ViewBuffer, public std::istream {
+public:
+    explicit ViewInputStream(std::string_view bytes) : ViewBuffer(bytes), std::istream(this) {}
+};
+
 template <class T>
 void writeRaw(std::ostream& out, const T* data, size_t count) {
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(sizeof(T) * count));
