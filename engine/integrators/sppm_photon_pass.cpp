@@ -11,7 +11,7 @@
 namespace photon {
 
 namespace {
-constexpr int64_t kPhotonsPerChunk = 4096;
+constexpr int64_t kPhotonsPerChunk = 1024;
 
 }  // namespace
 
