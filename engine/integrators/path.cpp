@@ -25,12 +25,8 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
     bool afterDelta = true;  // emission found by shadow rays is not counted twice
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!scene.intersect(ray, hit)) {
-            if (afterDelta) L += beta * scene.environment(ray.d);
-            break;
-        }
+        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, L)) break;
         Vec3 wo = -ray.d;
-        if (afterDelta) L += beta * scene.emitted(hit, wo);
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng);
         float uLobe = rng.uniform();

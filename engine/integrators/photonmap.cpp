@@ -74,12 +74,8 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!scene.intersect(ray, hit)) {
-            L += beta * scene.environment(ray.d);
-            break;
-        }
+        if (!traceCameraRay(scene, ray, beta, true, hit, L)) break;
         Vec3 wo = -ray.d;
-        L += beta * scene.emitted(hit, wo);
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         unsigned lobes = sp.material->lobes();
         if (lobes & kSmoothLobes) L += beta * reflectedAt(sp, wo, lobes & kSmoothLobes, rng);

@@ -38,12 +38,8 @@ Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, R
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!scene.intersect(ray, hit)) {
-            L += beta * scene.environment(ray.d);
-            break;
-        }
+        if (!traceCameraRay(scene, ray, beta, true, hit, L)) break;
         Vec3 wo = -ray.d;
-        L += beta * scene.emitted(hit, wo);
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         Vec3 woLocal = sp.frame.toLocal(wo);

@@ -25,4 +25,18 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
     return sp;
 }
 
+// Casts a camera path's ray; returns whether it hit. Light the ray reaches directly (the
+// environment when it leaves, emission where it lands) is added to L with weight beta when
+// `countEmitted`: integrators that sample lights count it only after delta bounces, where
+// no shadow ray could have found it.
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool countEmitted, SurfaceHit& hit,
+                           Color& L) {
+    if (!scene.intersect(ray, hit)) {
+        if (countEmitted) L += beta * scene.environment(ray.d);
+        return false;
+    }
+    if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
+    return true;
+}
+
 }  // namespace photon

@@ -43,13 +43,9 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     float pathLength = 0;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!scene.intersect(ray, hit)) {
-            if (afterDelta) direct += beta * scene.environment(ray.d);
-            break;
-        }
+        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, direct)) break;
         pathLength += hit.t;
         Vec3 wo = -ray.d;
-        if (afterDelta) direct += beta * scene.emitted(hit, wo);
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         // The visible point goes on the first surface with a diffuse lobe (or any non-delta
