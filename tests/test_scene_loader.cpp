@@ -1,6 +1,8 @@
 // The JSON scene loader (engine/scene/json_*.cpp), the mesh loader and texture loading:
 // a full scene parses to the expected values, defaults apply, the example scenes in scenes/
 // load, textures decode.
+#include <fstream>
+#include <iterator>
 #include "scene_loader_fixture.h"
 
 using namespace photon::test;
@@ -389,6 +391,31 @@ TEST(Texture, TooLargeIsRefused) {
                   "image is 16385x1, larger than the limit of 16384 pixels a side and 64M pixels in total");
     }
     EXPECT_THROW(photon::Texture::load(fixture().scene / "textures/missing.png"), std::runtime_error);
+}
+
+TEST(Texture, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+    const fs::path file = fixture().scene / "textures/cut.png";
+    writeImage<uint8_t>(file, 2, 2, 3, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(12, 200));
+    ASSERT_EQ(photon::Texture::load(file)->width(), 2);
+    std::string bytes;
+    {
+        std::ifstream in(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    // The IHDR chunk (13 bytes of data) starts at byte 8; the next chunk at 8 + 12 + 13.
+    ASSERT_EQ(bytes.substr(12, 4), "IHDR");
+    const size_t next = 33;
+    const std::string type = bytes.substr(next + 4, 4);
+    const std::string declared = "\x7f\xff\xff\xf0";  // 2147483632 bytes
+    bytes.replace(next, 4, declared);
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    try {
+        photon::Texture::load(file);
+        FAIL() << "loaded a PNG whose chunk runs past the end of the file";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "damaged PNG: chunk " + type + " at byte 33 declares 2147483632 bytes of data, "
+                                         "but the file has " + std::to_string(bytes.size() - next - 12) + " after it");
+    }
 }
 
 // ---- the JSON reader on its own ----
