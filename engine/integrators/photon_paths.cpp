@@ -6,8 +6,8 @@ namespace photon {
 namespace {
 
 void tracePhotonPath(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
-                     int64_t index, PhotonArrivalSink& sink, PhotonPathCounters& counters) {
-    Rng rng(settings.seed, settings.stream, static_cast<uint64_t>(index), StreamPurpose::Photon);
+                     const RngStream& stream, int64_t index, PhotonArrivalSink& sink, PhotonPathCounters& counters) {
+    Rng rng(stream, static_cast<uint64_t>(index));
     std::optional<EmittedPhoton> emitted = emitter.emit(rng);
     if (!emitted) return;
     Color beta = emitted->beta;
@@ -43,7 +43,8 @@ void tracePhotonPath(const Scene& scene, const PhotonEmitter& emitter, const Pho
 
 void tracePhotonPaths(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
                       int64_t begin, int64_t end, PhotonArrivalSink& sink, PhotonPathCounters& counters) {
-    for (int64_t i = begin; i < end; ++i) tracePhotonPath(scene, emitter, settings, i, sink, counters);
+    const RngStream stream(settings.seed, settings.stream, StreamPurpose::Photon);
+    for (int64_t i = begin; i < end; ++i) tracePhotonPath(scene, emitter, settings, stream, i, sink, counters);
 }
 
 }  // namespace photon

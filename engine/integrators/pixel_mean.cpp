@@ -14,12 +14,13 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     if (!preparePass(cancel)) return false;
     const RenderSettings& s = scene_->settings();
     auto start = std::chrono::steady_clock::now();
+    const RngStream stream(s.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
     tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y < rows.end(); ++y) {
             if (cancel.cancelled()) return;
             for (int x = 0; x < width_; ++x) {
                 size_t index = static_cast<size_t>(y) * width_ + x;
-                Rng rng(s.seed, static_cast<uint64_t>(passes_), index, StreamPurpose::Camera);
+                Rng rng(stream, index);
                 Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(),
                                                        static_cast<float>(y) + rng.uniform(),
                                                        {rng.uniform(), rng.uniform()});

@@ -8,12 +8,13 @@
 namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
+    const RngStream stream(settings_.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
     tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y < rows.end(); ++y) {
             if (cancel.cancelled()) return;
             for (int x = 0; x < width_; ++x) {
                 size_t index = static_cast<size_t>(y) * width_ + x;
-                Rng rng(settings_.seed, static_cast<uint64_t>(passes_), index, StreamPurpose::Camera);
+                Rng rng(stream, index);
                 tracePixel(index, rng);
             }
         }
