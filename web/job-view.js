@@ -226,7 +226,9 @@ export function createJobView({ onChanged, onDeleted }) {
     el.actionError.textContent = '';
     try {
       apply(s, await cancelJob(s.id));
-      // 202: still running until the pass ends; events or polls bring the final state.
+      // 202: still running until the pass ends; events bring the final state, and a poll
+      // as well, so that a stream that is reconnecting (or gone) cannot leave it unseen.
+      if (session === s && !(s.job && isFinished(s.job)) && !s.timer) poll(s);
     } catch (error) {
       if (session === s) el.actionError.textContent = error.message;
     }

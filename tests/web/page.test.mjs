@@ -158,6 +158,24 @@ async function clearOverrides() {
   for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
 }
 
+// Waits for the job view to show `status`; on a timeout the error says what the page, the
+// server's record of the job and the server's log showed instead.
+async function waitForStatus(id, status, timeout) {
+  try {
+    await page.waitForFunction((want) => document.querySelector('#job-status').textContent === want, status, {
+      timeout,
+    });
+  } catch (error) {
+    const record = await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl)).then((r) => r.text(), (e) => String(e));
+    throw new Error(
+      `job ${id} did not show "${status}" within ${timeout} ms: the page shows "${await textOf('#job-status')}" ` +
+        `(action error "${await textOf('#job-action-error')}"), the server has ${record}; server log:\n` +
+        server.stderr.slice(-2000),
+      { cause: error },
+    );
+  }
+}
+
 async function submittedJobId() {
   await page.waitForFunction(() => /^Submitted job \S+\.$/.test(document.querySelector('#form-status').textContent));
   return /^Submitted job (\S+)\.$/.exec(await textOf('#form-status'))[1];
@@ -320,13 +338,9 @@ test('a running job can be cancelled and a finished one deleted', async () => {
   await page.fill('#photons-per-pass', '20000');
   await page.click('#submit-button');
   const id = await submittedJobId();
-  await page.waitForFunction(() => document.querySelector('#job-status').textContent === 'running', null, {
-    timeout: 30_000,
-  });
+  await waitForStatus(id, 'running', 30_000);
   await page.click('#cancel-button');
-  await page.waitForFunction(() => document.querySelector('#job-status').textContent === 'cancelled', null, {
-    timeout: 30_000,
-  });
+  await waitForStatus(id, 'cancelled', 30_000);
   await page.waitForFunction(() => !document.querySelector('#delete-button').disabled);
   await page.click('#delete-button');
   await page.waitForFunction(
