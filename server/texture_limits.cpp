@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 #include "service_limits.h"
+#include "texture/texture.h"
 
 namespace photon::server {
 
@@ -50,6 +51,9 @@ void checkTextureSizes(const fs::path& folder, int64_t maxPixels) {
     // Symlinks are not followed (and cannot be uploaded); only regular files count.
     for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
         if (!it->is_regular_file(ec) || !isImageName(it->path())) continue;
+        // Not even the header of a damaged PNG is read (see findPngChunkDamage); the scene
+        // loader reports it if the scene uses it.
+        if (findPngChunkDamage(it->path())) continue;
         std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(it->path().string());
         if (!in) {
             OIIO::geterror();  // clear it: the scene loader reports unreadable textures it uses

@@ -39,9 +39,9 @@ void SppmIntegrator::gather(GatherBatch& batch, PhotonCounters& counters) {
     for (size_t i = 0; i < n; ++i)
         for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) __builtin_prefetch(&discs_[*e]);
 
-    // Distance tests, written without a branch on the outcome (about one in ten passes, at
-    // random, which a branch predictor cannot learn): every candidate is written and the
-    // end of the list moves on only for those inside their disc.
+    // Distance tests, written without a branch on the outcome (about one candidate in ten is
+    // inside its disc, at random, which a branch predictor cannot learn): every candidate is
+    // written and the end of the list moves on only for those inside.
     size_t total = 0;
     for (size_t i = 0; i < n; ++i) total += static_cast<size_t>(spans[i].end - spans[i].begin);
     counters.candidates += static_cast<int64_t>(total);

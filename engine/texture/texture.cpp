@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <OpenImageIO/imageio.h>
 
@@ -42,35 +43,6 @@ void checkSize(const OIIO::ImageSpec& spec) {
                                  std::to_string(kMaxTexels >> 20) + "M pixels in total");
 }
 
-// libpng believes a chunk's declared length and reserves that much memory before it finds
-// the file shorter: a 2 KB upload declaring a 2 GB chunk reserves 2 GB. So the chunks of a
-// PNG (PNG spec, sec. 5.3: length, type, data, CRC) are walked first and each length is
-// checked against the bytes that follow it. Files that are not PNGs are left to OIIO.
-void checkPngChunkLengths(const std::filesystem::path& file) {
-    static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
-    std::ifstream in(file, std::ios::binary);
-    char signature[8];
-    if (!in.read(signature, 8) || std::memcmp(signature, kSignature, 8) != 0) return;
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
-    if (ec) return;
-    for (uint64_t at = 8; at + 12 <= size;) {
-        unsigned char head[8];
-        if (!in.seekg(static_cast<std::streamoff>(at)) || !in.read(reinterpret_cast<char*>(head), 8)) return;
-        uint32_t length = (uint32_t(head[0]) << 24) | (uint32_t(head[1]) << 16) | (uint32_t(head[2]) << 8) | head[3];
-        std::string type(reinterpret_cast<const char*>(head + 4), 4);
-        if (!std::all_of(type.begin(), type.end(), [](unsigned char c) { return std::isalpha(c); }))
-            throw std::runtime_error("damaged PNG: no chunk type at byte " + std::to_string(at + 4));
-        const uint64_t follow = size - at - 12;  // bytes after this chunk's header and CRC
-        if (length > 0x7fffffffu || length > follow)
-            throw std::runtime_error("damaged PNG: chunk " + type + " at byte " + std::to_string(at) + " declares " +
-                                     std::to_string(length) + " bytes of data, but the file has " +
-                                     std::to_string(follow) + " after it");
-        if (type == "IEND") return;
-        at += 12 + uint64_t(length);
-    }
-}
-
 // Reads the first `channels` channels (1: grey, 3: RGB; alpha is never read) as `T`.
 template <typename T>
 std::vector<T> readPixels(OIIO::ImageInput& in, int channels, OIIO::TypeDesc type) {
@@ -96,10 +68,38 @@ std::vector<Color> toColors(const std::vector<T>& data, int channels, Decode dec
 
 }  // namespace
 
+std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file) {
+    static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+    std::ifstream in(file, std::ios::binary);
+    char signature[8];
+    if (!in.read(signature, 8) || std::memcmp(signature, kSignature, 8) != 0) return std::nullopt;
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    if (ec) return std::nullopt;
+    // Each chunk (PNG spec, sec. 5.3): 4-byte big-endian length, 4-letter type, data, CRC.
+    for (uint64_t at = 8; at + 12 <= size;) {
+        unsigned char head[8];
+        if (!in.seekg(static_cast<std::streamoff>(at)) || !in.read(reinterpret_cast<char*>(head), 8))
+            return std::nullopt;
+        uint32_t length = (uint32_t(head[0]) << 24) | (uint32_t(head[1]) << 16) | (uint32_t(head[2]) << 8) | head[3];
+        std::string type(reinterpret_cast<const char*>(head + 4), 4);
+        if (!std::all_of(type.begin(), type.end(), [](unsigned char c) { return std::isalpha(c); }))
+            return "damaged PNG: no chunk type at byte " + std::to_string(at + 4);
+        const uint64_t follow = size - at - 12;  // bytes after this chunk's header and CRC
+        if (length > 0x7fffffffu || length > follow)
+            return "damaged PNG: chunk " + type + " at byte " + std::to_string(at) + " declares " +
+                   std::to_string(length) + " bytes of data, but the file has " + std::to_string(follow) +
+                   " after it";
+        if (type == "IEND") return std::nullopt;
+        at += 12 + uint64_t(length);
+    }
+    return std::nullopt;  // cut short before IEND: OIIO reports that
+}
+
 std::shared_ptr<const Texture> Texture::load(const std::filesystem::path& file) {
+    if (std::optional<std::string> damage = findPngChunkDamage(file)) throw std::runtime_error(*damage);
     // Keep colour as stored: by default OIIO premultiplies unassociated alpha (PNG), which
     // would darken texels wherever alpha < 1, and the renderer ignores alpha.
-    checkPngChunkLengths(file);
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(file.string(), &config);

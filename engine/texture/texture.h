@@ -2,11 +2,18 @@
 #pragma once
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include "../math/vec.h"
 
 namespace photon {
+
+// libpng believes a chunk's declared length and reserves that much memory before it finds
+// the file shorter: a 2 KB file declaring a 2 GB chunk reserves 2 GB. So a PNG's chunk
+// lengths are checked against the file before any decoder opens it. Returns what is wrong
+// (with the chunk and its byte offset), or nothing for a sound PNG or a file of another kind.
+std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file);
 
 class Texture {
 public:

@@ -118,6 +118,25 @@ TEST_F(LimitsTest, TextureSizeIsCheckedFromTheHeader) {
     EXPECT_EQ(postMultipart(scene, "textures/t.png", pngBytes(64, 64))->status, 201);
 }
 
+TEST_F(LimitsTest, ADamagedPngIsNotDecodedAndItsSceneErrorNamesIt) {
+    // The chunk after IHDR declares 2 GB: libpng would reserve that much to read it.
+    std::string bytes = pngBytes(8, 8);
+    ASSERT_EQ(bytes.substr(12, 4), "IHDR");
+    const std::string type = bytes.substr(37, 4);
+    bytes.replace(33, 4, "\x7f\xff\xff\xf0");
+    json scene = smallScene();
+    scene["materials"]["white"]["albedo"] = {{"texture", "textures/t.png"}};
+    startServer({"--workers", "0"});
+    httplib::Result r = postMultipart(scene, "textures/t.png", bytes);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400) << r->body;
+    json body = json::parse(r->body);
+    EXPECT_EQ(body.value("path", ""), "materials.white.albedo.texture");
+    EXPECT_EQ(body.value("error", ""), "materials.white.albedo.texture: damaged PNG: chunk " + type +
+                                           " at byte 33 declares 2147483632 bytes of data, but the file has " +
+                                           std::to_string(bytes.size() - 45) + " after it");
+}
+
 TEST_F(LimitsTest, StreamsOverTheLimitAre503WithRetryAfter) {
     startServer({"--workers", "0", "--max-streams", "1"});
     std::string id = submitOk(smallScene());
