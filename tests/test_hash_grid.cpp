@@ -1,0 +1,81 @@
+// The spatial hash grid SPPM finds visible points with: every sphere that contains a point
+// is among the entries of that point's bucket (checked against brute force), spheres
+// without a radius are left out, and points outside the grid have no bucket.
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <vector>
+#include "accel/hash_grid.h"
+#include "math/rng.h"
+
+namespace photon {
+namespace {
+
+struct Spheres {
+    std::vector<Vec3> centers;
+    std::vector<float> radii;
+};
+
+// Centers in the unit cube; radii from 0.002 to 0.06 (so some spheres span many cells of a
+// grid sized by the mean radius), every 50th radius 0.
+Spheres randomSpheres(size_t n) {
+    Spheres s;
+    for (size_t i = 0; i < n; ++i) {
+        Rng rng(7, 0, i, StreamPurpose::Test);
+        s.centers.push_back({rng.uniform(), rng.uniform(), rng.uniform()});
+        float u = rng.uniform();
+        s.radii.push_back(i % 50 == 0 ? 0.0f : 0.002f + 0.058f * u * u);
+    }
+    return s;
+}
+
+HashGrid buildGrid(const Spheres& s) {
+    HashGrid grid;
+    grid.build(
+        s.centers.size(), [&](size_t i) { return s.centers[i]; }, [&](size_t i) { return s.radii[i]; });
+    return grid;
+}
+
+std::vector<uint32_t> bucketEntries(const HashGrid& grid, Vec3 p) {
+    uint32_t bucket = grid.bucketOf(p);
+    if (bucket == HashGrid::kNoBucket) return {};
+    HashGrid::Span span = grid.bucket(bucket);
+    std::vector<uint32_t> entries(span.begin, span.end);
+    std::sort(entries.begin(), entries.end());
+    return entries;
+}
+
+TEST(HashGrid, EveryContainingSphereIsInThePointsBucket) {
+    const Spheres s = randomSpheres(4000);
+    const HashGrid grid = buildGrid(s);
+    size_t containing = 0;
+    for (uint64_t q = 0; q < 20000; ++q) {
+        Rng rng(7, 1, q, StreamPurpose::Test);
+        // Query points reach a little past the cube, where sphere edges still are.
+        Vec3 p{1.1f * rng.uniform() - 0.05f, 1.1f * rng.uniform() - 0.05f, 1.1f * rng.uniform() - 0.05f};
+        std::vector<uint32_t> entries = bucketEntries(grid, p);
+        for (size_t i = 0; i < s.centers.size(); ++i) {
+            if (s.radii[i] > 0 && lengthSquared(p - s.centers[i]) <= s.radii[i] * s.radii[i]) {
+                ++containing;
+                EXPECT_TRUE(std::binary_search(entries.begin(), entries.end(), static_cast<uint32_t>(i)))
+                    << "sphere " << i << " contains the point but is not in its bucket";
+            }
+        }
+        for (uint32_t e : entries) ASSERT_GT(s.radii[e], 0) << "a sphere without a radius was entered";
+    }
+    EXPECT_GT(containing, 2000u);  // the check saw many spheres, not a handful
+}
+
+TEST(HashGrid, PointsOnTheSurfaceAreInsideAndPointsFarOutsideHaveNoBucket) {
+    Spheres s;
+    s.centers = {{0.5f, 0.5f, 0.5f}, {0.2f, 0.3f, 0.9f}};
+    s.radii = {0.125f, 0.03125f};  // exact in binary: p - c and r*r are exact too
+    const HashGrid grid = buildGrid(s);
+    std::vector<uint32_t> atSurface = bucketEntries(grid, {0.625f, 0.5f, 0.5f});
+    EXPECT_TRUE(std::binary_search(atSurface.begin(), atSurface.end(), 0u));
+    EXPECT_EQ(grid.bucketOf({5, 5, 5}), HashGrid::kNoBucket);
+    EXPECT_EQ(grid.bucketOf({-1, 0.5f, 0.5f}), HashGrid::kNoBucket);
+    EXPECT_GE(grid.entryCount(), 2u);
+}
+
+}  // namespace
+}  // namespace photon
