@@ -35,6 +35,7 @@ Scene::Scene(SceneDescription description) : description_(std::move(description)
     boundsMin_ = {b.lower_x, b.lower_y, b.lower_z};
     boundsMax_ = {b.upper_x, b.upper_y, b.upper_z};
     buildLights();
+    prepareHitData();
 }
 
 Scene::~Scene() {
@@ -100,6 +101,28 @@ void Scene::buildLights() {
     lightSampler_ = LightSampler(std::move(lights));
 }
 
+void Scene::prepareHitData() {
+    hitData_.resize(shapes_.size());
+    for (size_t i = 0; i < shapes_.size(); ++i) {
+        const ShapeDescription& shape = shapes_[i];
+        ShapeHitData& d = hitData_[i];
+        d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
+        d.needsUv = materials_[shape.material]->tint().textured();
+        if (shape.kind == ShapeDescription::Kind::Sphere) continue;
+        const TriangleMesh& m = shape.mesh;
+        d.faceNormals.reserve(m.triangleCount());
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            const uint32_t* v = &m.indices[3 * t];
+            Vec3 p0 = m.positions[v[0]], p1 = m.positions[v[1]], p2 = m.positions[v[2]];
+            Vec3 n = normalize(cross(p1 - p0, p2 - p0));
+            d.faceNormals.push_back(n * d.normalSign);
+            // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
+            for (int k = 0; k < 3 && !m.normals.empty(); ++k)
+                d.smoothNormals = d.smoothNormals || lengthSquared(m.normals[v[k]] - n) > 1e-10f;
+        }
+    }
+}
+
 bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -122,48 +145,45 @@ bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
     hit.shape = rh.hit.geomID;
     hit.primitive = rh.hit.primID;
     hit.barycentric = {rh.hit.u, rh.hit.v};
-    hit.p = ray.o + ray.d * hit.t;
+    hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
-    if (shape.kind == ShapeDescription::Kind::Sphere)
+    if (shape.kind == ShapeDescription::Kind::Sphere) {
+        hit.p = ray.o + ray.d * hit.t;
         fillSphereHit(shape, hit);
-    else
+    } else {
         fillTriangleHit(shape, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
-    if (shape.flipNormals) {
-        hit.ng = -hit.ng;
-        hit.ns = -hit.ns;
     }
     return true;
 }
 
 void Scene::fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const {
     const TriangleMesh& m = shape.mesh;
+    const ShapeHitData& d = hitData_[hit.shape];
     uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];
-    Vec3 p0 = m.positions[i0], p1 = m.positions[i1], p2 = m.positions[i2];
     // Embree's barycentrics: p = (1-u-v) p0 + u p1 + v p2. Recomputing p from them is
     // more accurate than o + t d far from the origin.
     float w = 1.0f - u - v;
-    hit.p = p0 * w + p1 * u + p2 * v;
-    hit.ng = normalize(cross(p1 - p0, p2 - p0));
-    hit.ns = hit.ng;
-    if (!m.normals.empty()) {
+    hit.p = m.positions[i0] * w + m.positions[i1] * u + m.positions[i2] * v;
+    hit.ng = hit.ns = d.faceNormals[prim];
+    if (d.smoothNormals) {
         Vec3 ns = m.normals[i0] * w + m.normals[i1] * u + m.normals[i2] * v;
         float len = length(ns);
         if (len > 0) hit.ns = ns / len;
         // Keep the shading normal on the geometric side so the two agree on which side is up.
         if (dot(hit.ns, hit.ng) < 0) hit.ns = -hit.ns;
     }
-    hit.uv = m.uvs.empty() ? Vec2{u, v}
-                           : Vec2{m.uvs[i0].x * w + m.uvs[i1].x * u + m.uvs[i2].x * v,
-                                  m.uvs[i0].y * w + m.uvs[i1].y * u + m.uvs[i2].y * v};
+    if (d.needsUv && !m.uvs.empty())
+        hit.uv = {m.uvs[i0].x * w + m.uvs[i1].x * u + m.uvs[i2].x * v, m.uvs[i0].y * w + m.uvs[i1].y * u + m.uvs[i2].y * v};
 }
 
 void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const {
     Vec3 n = normalize(hit.p - shape.center);
     hit.p = shape.center + n * shape.radius;  // reproject: removes the error of o + t d
-    hit.ng = hit.ns = n;
+    const ShapeHitData& d = hitData_[hit.shape];
+    hit.ng = hit.ns = n * d.normalSign;
     // Spherical (longitude, latitude) parameterisation, y up; the trigonometry is only
     // worth doing for textured spheres.
-    if (!materials_[shape.material]->tint().textured()) return;
+    if (!d.needsUv) return;
     float phi = std::atan2(n.z, n.x);
     hit.uv = {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }

@@ -57,12 +57,23 @@ private:
     void addMesh(uint32_t shapeIndex);
     void addSphere(uint32_t shapeIndex);
     void buildLights();
+    void prepareHitData();
     void fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const;
     void fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const;
+
+    // Per shape, what turning Embree's answer into a SurfaceHit needs, prepared once: a
+    // hit is the photon walk's hottest step after the ray itself.
+    struct ShapeHitData {
+        std::vector<Vec3> faceNormals;  // unit, per triangle, flip_normals applied
+        bool smoothNormals = false;     // vertex normals that bend the shading normal
+        bool needsUv = false;           // the material reads a texture
+        float normalSign = 1;           // -1 with flip_normals (spheres)
+    };
 
     SceneDescription description_;
     std::vector<ShapeDescription>& shapes_ = description_.shapes;
     std::vector<MaterialPtr>& materials_ = description_.materials;
+    std::vector<ShapeHitData> hitData_;  // by shape
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     const Light* environmentLight_ = nullptr;

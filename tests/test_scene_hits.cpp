@@ -1,0 +1,108 @@
+// What Scene::intersect reports at a hit, against values worked out by hand: the point, the
+// geometric and shading normals (flat faces, interpolated vertex normals, flip_normals on
+// meshes and spheres) and the texture coordinates of textured shapes.
+#include <gtest/gtest.h>
+#include "materials/material.h"
+#include "scene/scene.h"
+#include "scene_builders.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+constexpr float kEps = 1e-5f;
+
+// A camera is required; it plays no part here.
+SceneDescription baseScene() {
+    SceneDescription d;
+    d.camera = test::camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
+    d.materials.push_back(makeDiffuse(Color(0.5f)));
+    // A 2x1 texture: its lookup at the hit's uv shows the uv the hit carried.
+    d.materials.push_back(makeDiffuse(ColorParam(std::make_shared<Texture>(
+        2, 1, std::vector<Color>{Color(1, 0, 0), Color(0, 0, 1)}))));
+    return d;
+}
+
+SurfaceHit hitAlong(const Scene& scene, Vec3 o, Vec3 d) {
+    SurfaceHit hit;
+    EXPECT_TRUE(scene.intersect(Ray{o, normalize(d)}, hit));
+    return hit;
+}
+
+void expectNear(Vec3 a, Vec3 b) {
+    EXPECT_NEAR(a.x, b.x, kEps);
+    EXPECT_NEAR(a.y, b.y, kEps);
+    EXPECT_NEAR(a.z, b.z, kEps);
+}
+
+TEST(SceneHits, QuadReportsPointFaceNormalAndItsUv) {
+    SceneDescription d = baseScene();
+    // Facing +z: u x v = x x y. Its uvs run 0..1 along u and v.
+    d.shapes.push_back(test::quad({-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 1));
+    auto scene = Scene::build(std::move(d));
+    SurfaceHit hit = hitAlong(*scene, {0.5f, -0.25f, 3}, {0, 0, -1});
+    expectNear(hit.p, {0.5f, -0.25f, 0});
+    expectNear(hit.ng, {0, 0, 1});
+    expectNear(hit.ns, {0, 0, 1});
+    EXPECT_NEAR(hit.t, 3.0f, kEps);
+    EXPECT_NEAR(hit.uv.x, 0.75f, kEps);
+    EXPECT_NEAR(hit.uv.y, 0.375f, kEps);
+}
+
+TEST(SceneHits, VertexNormalsAreInterpolatedOnTheGeometricSide) {
+    SceneDescription d = baseScene();
+    ShapeDescription s;
+    s.mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    s.mesh.indices = {0, 1, 2};
+    // Leaning toward -x at the first vertex, +x at the second, straight up at the third;
+    // the winding faces +z but the normals are given facing -z: they are turned around.
+    s.mesh.normals = {normalize(Vec3(-1, 0, -1)), normalize(Vec3(1, 0, -1)), Vec3(0, 0, -1)};
+    d.shapes.push_back(s);
+    auto scene = Scene::build(std::move(d));
+    // On the edge midway between the first two vertices: the x components cancel.
+    SurfaceHit mid = hitAlong(*scene, {0, -1 + 1e-3f, 2}, {0, 0, -1});
+    expectNear(mid.ng, {0, 0, 1});
+    EXPECT_NEAR(mid.ns.x, 0.0f, 1e-3f);
+    EXPECT_NEAR(mid.ns.z, 1.0f, 1e-3f);
+    // Near the first vertex the given normal, (-1, 0, -1)/sqrt 2, is turned around whole:
+    // about (1, 0, 1)/sqrt 2.
+    SurfaceHit corner = hitAlong(*scene, {-0.9f, -0.95f, 2}, {0, 0, -1});
+    EXPECT_GT(corner.ns.x, 0.5f);
+    EXPECT_GT(corner.ns.z, 0.5f);
+    EXPECT_NEAR(length(corner.ns), 1.0f, kEps);
+}
+
+TEST(SceneHits, FlippedMeshAndSphereReportInwardNormals) {
+    SceneDescription d = baseScene();
+    ShapeDescription quad = test::quad({-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 0);
+    quad.flipNormals = true;
+    d.shapes.push_back(quad);
+    d.shapes.push_back(test::sphere({0, 0, -10}, 2, 0, Color(0.0f), true));
+    auto scene = Scene::build(std::move(d));
+    SurfaceHit q = hitAlong(*scene, {0, 0, 3}, {0, 0, -1});
+    expectNear(q.ng, {0, 0, -1});
+    expectNear(q.ns, {0, 0, -1});
+    // The sphere seen from below the quad: its near side at z = -8, normal pointing inward.
+    SurfaceHit s = hitAlong(*scene, {0, 0, -1}, {0, 0, -1});
+    expectNear(s.p, {0, 0, -8});
+    expectNear(s.ng, {0, 0, -1});
+    expectNear(s.ns, {0, 0, -1});
+}
+
+TEST(SceneHits, TexturedSphereCarriesLongitudeAndLatitude) {
+    SceneDescription d = baseScene();
+    d.shapes.push_back(test::sphere({0, 0, 0}, 1, 1));
+    auto scene = Scene::build(std::move(d));
+    // Hit at +x (phi = 0, on the equator): uv = (0.5, 0.5).
+    SurfaceHit hit = hitAlong(*scene, {3, 0, 0}, {-1, 0, 0});
+    expectNear(hit.p, {1, 0, 0});
+    expectNear(hit.ng, {1, 0, 0});
+    EXPECT_NEAR(hit.uv.x, 0.5f, kEps);
+    EXPECT_NEAR(hit.uv.y, 0.5f, kEps);
+    // At the top (latitude 90 degrees) v is 1.
+    SurfaceHit top = hitAlong(*scene, {0, 3, 0}, {0, -1, 0});
+    EXPECT_NEAR(top.uv.y, 1.0f, kEps);
+}
+
+}  // namespace
+}  // namespace photon
