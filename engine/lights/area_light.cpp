@@ -17,8 +17,8 @@ struct SurfacePoint {
 // Shared by every area light: direct-light samples and photons from uniform area samples.
 class AreaLight : public Light {
 public:
-    AreaLight(Color emission, float area) : emission_(emission), area_(area) {}
-    Color power() const override { return emission_ * (kPi * area_); }
+    AreaLight(Color emission, float area) : emission_(emission), area_(area), power_(emission * (kPi * area)) {}
+    Color power() const override { return power_; }
 
     std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2 u) const override {
         SurfacePoint s = samplePoint(u);
@@ -35,64 +35,93 @@ public:
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         SurfacePoint s = samplePoint(uPosition);
-        Frame frame = Frame::fromNormal(s.n);
-        Vec3 d = frame.toWorld(sampleCosineHemisphere(uDirection));
-        return PhotonEmission{s.p, d, power(), s.n};
+        return emitFrom(s.p, Frame::fromNormal(s.n), uDirection);
     }
 
 protected:
     virtual SurfacePoint samplePoint(Vec2 u) const = 0;
+    // A photon leaving p cosine-distributed about frame.n carries the light's whole power.
+    PhotonEmission emitFrom(Vec3 p, const Frame& frame, Vec2 uDirection) const {
+        return PhotonEmission{p, frame.toWorld(sampleCosineHemisphere(uDirection)), power_, frame.n};
+    }
     Color emission_;
     float area_;
+    Color power_;
 };
 
 class MeshAreaLight final : public AreaLight {
 public:
-    MeshAreaLight(const ShapeDescription& shape, std::vector<float> cdf, float area)
-        : AreaLight(shape.emission, area), mesh_(shape.mesh), cdf_(std::move(cdf)) {
+    MeshAreaLight(const ShapeDescription& shape, const std::vector<double>& areas, double total)
+        : AreaLight(shape.emission, static_cast<float>(total)) {
+        // Everything a sample needs, per triangle and in one place: photons are emitted
+        // millions of times a pass.
+        const TriangleMesh& m = shape.mesh;
         float sign = shape.flipNormals ? -1.0f : 1.0f;
-        for (size_t t = 0; t < mesh_.triangleCount(); ++t) {
-            Vec3 a = mesh_.positions[mesh_.indices[3 * t]], b = mesh_.positions[mesh_.indices[3 * t + 1]],
-                 c = mesh_.positions[mesh_.indices[3 * t + 2]];
-            normals_.push_back(normalize(cross(b - a, c - a)) * sign);
+        double sum = 0;
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                 c = m.positions[m.indices[3 * t + 2]];
+            Triangle tri{a, b - a, c - a, Frame::fromNormal(normalize(cross(b - a, c - a)) * sign), 0, 0};
+            // (A mesh without area has no power and is never picked; its shares stay finite.)
+            float lo = total > 0 ? static_cast<float>(sum / total) : 0.0f;
+            sum += areas[t];
+            float hi = t + 1 == m.triangleCount() || !(total > 0) ? 1.0f : static_cast<float>(sum / total);
+            tri.cdfLow = lo;
+            tri.inverseWidth = 1.0f / std::max(hi - lo, 1e-12f);
+            triangles_.push_back(tri);
+            cdf_.push_back(hi);
         }
     }
 
     static std::unique_ptr<Light> make(const ShapeDescription& shape) {
-        std::vector<float> cdf;
+        std::vector<double> areas;
         double sum = 0;
         for (size_t t = 0; t < shape.mesh.triangleCount(); ++t) {
-            sum += triangleArea(shape.mesh, t);
-            cdf.push_back(static_cast<float>(sum));
+            areas.push_back(triangleArea(shape.mesh, t));
+            sum += areas.back();
         }
-        for (float& c : cdf) c = static_cast<float>(c / sum);
-        if (!cdf.empty()) cdf.back() = 1.0f;
-        return std::make_unique<MeshAreaLight>(shape, std::move(cdf), static_cast<float>(sum));
+        return std::make_unique<MeshAreaLight>(shape, areas, sum);
+    }
+
+    std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
+        Vec3 p;
+        const Triangle& tri = sampleTriangle(uPosition, p);
+        return emitFrom(p, tri.frame, uDirection);
     }
 
 private:
-    static float triangleArea(const TriangleMesh& m, size_t t) {
+    struct Triangle {
+        Vec3 p0, e1, e2;  // p = p0 + b1 e1 + b2 e2
+        Frame frame;      // n faces the emitting side
+        float cdfLow, inverseWidth;  // where the triangle's share of [0, 1) starts, 1 / its size
+    };
+
+    static double triangleArea(const TriangleMesh& m, size_t t) {
         Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
              c = m.positions[m.indices[3 * t + 2]];
-        return 0.5f * length(cross(b - a, c - a));
+        return 0.5 * length(cross(b - a, c - a));
+    }
+
+    // Picks a triangle in proportion to its area with u.x, then reuses what is left of u.x
+    // within its share for a uniform point on it.
+    const Triangle& sampleTriangle(Vec2 u, Vec3& p) const {
+        size_t t = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u.x) - cdf_.begin());
+        const Triangle& tri = triangles_[std::min(t, triangles_.size() - 1)];
+        float ux = std::clamp((u.x - tri.cdfLow) * tri.inverseWidth, 0.0f, 0.99999994f);
+        Vec2 b = sampleUniformTriangle({ux, u.y});
+        // Barycentric b.x on the first vertex, b.y on the second.
+        p = tri.p0 + tri.e1 * b.y + tri.e2 * (1.0f - b.x - b.y);
+        return tri;
     }
 
     SurfacePoint samplePoint(Vec2 u) const override {
-        // Pick a triangle with u.x, then reuse what is left of u.x within its CDF interval.
-        size_t t = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u.x) - cdf_.begin());
-        t = std::min(t, cdf_.size() - 1);
-        float lo = t == 0 ? 0.0f : cdf_[t - 1];
-        float ux = std::clamp((u.x - lo) / std::max(cdf_[t] - lo, 1e-12f), 0.0f, 0.99999994f);
-        Vec2 b = sampleUniformTriangle({ux, u.y});
-        Vec3 a = mesh_.positions[mesh_.indices[3 * t]], p1 = mesh_.positions[mesh_.indices[3 * t + 1]],
-             p2 = mesh_.positions[mesh_.indices[3 * t + 2]];
-        Vec3 p = a * b.x + p1 * b.y + p2 * (1.0f - b.x - b.y);
-        return {p, normals_[t]};
+        Vec3 p;
+        const Triangle& tri = sampleTriangle(u, p);
+        return {p, tri.frame.n};
     }
 
-    const TriangleMesh& mesh_;
-    std::vector<float> cdf_;
-    std::vector<Vec3> normals_;  // per triangle, facing the emitting side
+    std::vector<Triangle> triangles_;
+    std::vector<float> cdf_;  // upper ends of the triangles' shares
 };
 
 class SphereAreaLight final : public AreaLight {
