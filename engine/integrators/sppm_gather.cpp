@@ -12,7 +12,7 @@ namespace {
 
 struct Candidate {
     uint32_t hit, point;
-    float d2OverR2;
+    float d2;  // squared distance from the hit to the point
 };
 
 // Per-thread scratch for the candidates inside their discs: no allocation per batch.
@@ -52,11 +52,13 @@ void SppmIntegrator::gather(GatherBatch& batch, PhotonCounters& counters) {
         for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) {
             const GatherDisc& disc = discs_[*e];
             float d2 = lengthSquared(disc.p - batch[i].p);
-            inside[count] = {static_cast<uint32_t>(i), *e, d2 / disc.r2};
+            inside[count] = {static_cast<uint32_t>(i), *e, d2};
             count += d2 <= disc.r2;
         }
     for (size_t c = 0; c < count; ++c) __builtin_prefetch(&visible_[inside[c].point], 1);
-    for (size_t c = 0; c < count; ++c) addPhoton(batch[inside[c].hit], inside[c].point, inside[c].d2OverR2, counters);
+    // The kernel's d^2 / r^2 only for the one candidate in ten that is inside.
+    for (size_t c = 0; c < count; ++c)
+        addPhoton(batch[inside[c].hit], inside[c].point, inside[c].d2 / discs_[inside[c].point].r2, counters);
     batch.clear();
 }
 
