@@ -1,7 +1,7 @@
 #include "pixel_mean.h"
-#include <tbb/parallel_for.h>
 #include <chrono>
 #include "checkpoint.h"
+#include "pixel_loop.h"
 
 namespace photon {
 
@@ -15,18 +15,10 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     const RenderSettings& s = scene_->settings();
     auto start = std::chrono::steady_clock::now();
     const RngStream stream(s.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
-    tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y) {
-            if (cancel.cancelled()) return;
-            for (int x = 0; x < width_; ++x) {
-                size_t index = static_cast<size_t>(y) * width_ + x;
-                Rng rng(stream, index);
-                Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(),
-                                                       static_cast<float>(y) + rng.uniform(),
-                                                       {rng.uniform(), rng.uniform()});
-                pass_[index] = radiance(ray, rng);
-            }
-        }
+    forEachPixel(width_, height_, stream, cancel, [&](int x, int y, size_t index, Rng& rng) {
+        Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(), static_cast<float>(y) + rng.uniform(),
+                                               {rng.uniform(), rng.uniform()});
+        pass_[index] = radiance(ray, rng);
     });
     if (cancel.cancelled()) return false;
     std::lock_guard<std::mutex> lock(mutex_);

@@ -1,24 +1,15 @@
 // SPPM camera pass: one jittered path per pixel, followed through delta bounces to the
 // first vertex with a diffuse lobe, where the visible point is stored. Direct light is
 // gathered on the way by shadow rays (or left to photons, per render.direct).
-#include <tbb/parallel_for.h>
 #include "direct_lighting.h"
+#include "pixel_loop.h"
 #include "sppm.h"
 
 namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
-    tbb::parallel_for(tbb::blocked_range<int>(0, height_), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y) {
-            if (cancel.cancelled()) return;
-            for (int x = 0; x < width_; ++x) {
-                size_t index = static_cast<size_t>(y) * width_ + x;
-                Rng rng(stream, index);
-                tracePixel(index, rng);
-            }
-        }
-    });
+    forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) { tracePixel(index, rng); });
     stats_.cameraRays = static_cast<int64_t>(pixels_.size());
 }
 
