@@ -53,8 +53,7 @@ uint64_t cellCount(const ShapeDescription& s, float size) {
                divisions(length(m.positions[3] - m.positions[0]), size);
     uint64_t total = 0;
     for (size_t t = 0; t < m.triangleCount(); ++t) {
-        Vec3 p0 = m.positions[m.indices[3 * t]], p1 = m.positions[m.indices[3 * t + 1]],
-             p2 = m.positions[m.indices[3 * t + 2]];
+        auto [p0, p1, p2] = m.corners(t);
         uint64_t n = divisions(std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}), size);
         total += n * n;
     }
@@ -160,8 +159,7 @@ private:
         const TriangleMesh& m = s.mesh;
         sc.kind = ShapeCells::Kind::Triangles;
         for (size_t t = 0; t < m.triangleCount(); ++t) {
-            Vec3 p0 = m.positions[m.indices[3 * t]], p1 = m.positions[m.indices[3 * t + 1]],
-                 p2 = m.positions[m.indices[3 * t + 2]];
+            auto [p0, p1, p2] = m.corners(t);
             uint32_t n = divisions(std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}), size_);
             sc.triangleFirstCell.push_back(static_cast<uint32_t>(mesh_.cells_.size()));
             sc.triangleDivisions.push_back(n);

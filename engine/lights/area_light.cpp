@@ -59,16 +59,13 @@ public:
         float sign = shape.flipNormals ? -1.0f : 1.0f;
         double sum = 0;
         for (size_t t = 0; t < m.triangleCount(); ++t) {
-            Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
-                 c = m.positions[m.indices[3 * t + 2]];
-            Triangle tri{a, b - a, c - a, Frame::fromNormal(normalize(cross(b - a, c - a)) * sign), 0, 0};
+            TriangleMesh::Corners k = m.corners(t);
             // (A mesh without area has no power and is never picked; its shares stay finite.)
             float lo = total > 0 ? static_cast<float>(sum / total) : 0.0f;
             sum += areas[t];
             float hi = t + 1 == m.triangleCount() || !(total > 0) ? 1.0f : static_cast<float>(sum / total);
-            tri.cdfLow = lo;
-            tri.inverseWidth = 1.0f / std::max(hi - lo, 1e-12f);
-            triangles_.push_back(tri);
+            triangles_.push_back({k.a, k.b - k.a, k.c - k.a, Frame::fromNormal(m.faceNormal(t) * sign), lo,
+                                  1.0f / std::max(hi - lo, 1e-12f)});
             cdf_.push_back(hi);
         }
     }
@@ -77,7 +74,7 @@ public:
         std::vector<double> areas;
         double sum = 0;
         for (size_t t = 0; t < shape.mesh.triangleCount(); ++t) {
-            areas.push_back(triangleArea(shape.mesh, t));
+            areas.push_back(shape.mesh.area(t));
             sum += areas.back();
         }
         return std::make_unique<MeshAreaLight>(shape, areas, sum);
@@ -95,12 +92,6 @@ private:
         Frame frame;      // n faces the emitting side
         float cdfLow, inverseWidth;  // where the triangle's share of [0, 1) starts, 1 / its size
     };
-
-    static double triangleArea(const TriangleMesh& m, size_t t) {
-        Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
-             c = m.positions[m.indices[3 * t + 2]];
-        return 0.5 * length(cross(b - a, c - a));
-    }
 
     // Picks a triangle in proportion to its area with u.x, then reuses what is left of u.x
     // within its share for a uniform point on it.

@@ -113,8 +113,7 @@ void Scene::prepareHitData() {
         d.faceNormals.reserve(m.triangleCount());
         for (size_t t = 0; t < m.triangleCount(); ++t) {
             const uint32_t* v = &m.indices[3 * t];
-            Vec3 p0 = m.positions[v[0]], p1 = m.positions[v[1]], p2 = m.positions[v[2]];
-            Vec3 n = normalize(cross(p1 - p0, p2 - p0));
+            Vec3 n = m.faceNormal(t);
             d.faceNormals.push_back(n * d.normalSign);
             // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
             for (int k = 0; k < 3 && !m.normals.empty(); ++k)

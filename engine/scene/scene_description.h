@@ -26,6 +26,22 @@ struct TriangleMesh {
     std::vector<Vec3> normals;
     std::vector<Vec2> uvs;
     size_t triangleCount() const { return indices.size() / 3; }
+
+    struct Corners {
+        Vec3 a, b, c;
+    };
+    Corners corners(size_t t) const {
+        return {positions[indices[3 * t]], positions[indices[3 * t + 1]], positions[indices[3 * t + 2]]};
+    }
+    // The side triangle t's winding faces: normalize((b - a) x (c - a)).
+    Vec3 faceNormal(size_t t) const {
+        Corners k = corners(t);
+        return normalize(cross(k.b - k.a, k.c - k.a));
+    }
+    float area(size_t t) const {
+        Corners k = corners(t);
+        return 0.5f * length(cross(k.b - k.a, k.c - k.a));
+    }
 };
 
 struct ShapeDescription {
