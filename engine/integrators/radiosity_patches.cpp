@@ -53,7 +53,8 @@ uint64_t cellCount(const ShapeDescription& s, float size) {
                divisions(length(m.positions[3] - m.positions[0]), size);
     uint64_t total = 0;
     for (size_t t = 0; t < m.triangleCount(); ++t) {
-        auto [p0, p1, p2] = m.corners(t);
+        TriangleMesh::Corners corners = m.corners(t);
+        Vec3 p0 = corners.a, p1 = corners.b, p2 = corners.c;
         uint64_t n = divisions(std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}), size);
         total += n * n;
     }
@@ -159,7 +160,8 @@ private:
         const TriangleMesh& m = s.mesh;
         sc.kind = ShapeCells::Kind::Triangles;
         for (size_t t = 0; t < m.triangleCount(); ++t) {
-            auto [p0, p1, p2] = m.corners(t);
+            TriangleMesh::Corners corners = m.corners(t);
+            Vec3 p0 = corners.a, p1 = corners.b, p2 = corners.c;
             uint32_t n = divisions(std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)}), size_);
             sc.triangleFirstCell.push_back(static_cast<uint32_t>(mesh_.cells_.size()));
             sc.triangleDivisions.push_back(n);
