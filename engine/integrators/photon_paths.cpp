@@ -1,50 +1,221 @@
 #include "photon_paths.h"
+#include <vector>
+#include "../math/lanes.h"
+#include "../math/sampling.h"
 #include "photon_roulette.h"
 
 namespace photon {
 
 namespace {
 
-void tracePhotonPath(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
-                     const RngStream& stream, int64_t index, PhotonArrivalSink& sink, PhotonPathCounters& counters) {
-    Rng rng(stream, static_cast<uint64_t>(index));
-    std::optional<EmittedPhoton> emitted = emitter.emit(rng);
-    if (!emitted) return;
-    Color beta = emitted->beta;
-    Ray ray = emitted->ray;
-    bool onlySpecular = true;
-    for (int depth = 0; depth < settings.maxDepth; ++depth) {
-        SurfaceHit hit;
-        ++counters.rays;
-        if (!scene.intersect(ray, hit)) {
-            counters.missedAtEmission += depth == 0;
-            return;
+constexpr int kWalkLanes = 2 * kLanes;
+
+// Sixteen photons side by side, one per lane, structure of arrays so that eight lanes load
+// into one SIMD register.
+struct PhotonLanes {
+    alignas(32) float ox[kWalkLanes], oy[kWalkLanes], oz[kWalkLanes];  // the next ray
+    alignas(32) float dx[kWalkLanes], dy[kWalkLanes], dz[kWalkLanes];
+    alignas(32) float betaR[kWalkLanes], betaG[kWalkLanes], betaB[kWalkLanes];  // flux
+    alignas(64) uint64_t state[kWalkLanes], increment[kWalkLanes];             // PCG32 streams
+    alignas(32) int32_t depth[kWalkLanes];         // surfaces reached so far
+    alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
+    alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
+    // A Lambertian hit waiting for its bounce: where, the normals (turned toward the
+    // photon), the surface colour.
+    alignas(32) int32_t lambertian[kWalkLanes];
+    alignas(32) float px[kWalkLanes], py[kWalkLanes], pz[kWalkLanes];
+    alignas(32) float ngx[kWalkLanes], ngy[kWalkLanes], ngz[kWalkLanes];
+    alignas(32) float nsx[kWalkLanes], nsy[kWalkLanes], nsz[kWalkLanes];
+    alignas(32) float tintR[kWalkLanes], tintG[kWalkLanes], tintB[kWalkLanes];
+
+    Ray ray(int i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
+    Color beta(int i) const { return {betaR[i], betaG[i], betaB[i]}; }
+    void setRay(int i, const Ray& r) {
+        ox[i] = r.o.x, oy[i] = r.o.y, oz[i] = r.o.z;
+        dx[i] = r.d.x, dy[i] = r.d.y, dz[i] = r.d.z;
+    }
+    void setBeta(int i, Color b) { betaR[i] = b.x, betaG[i] = b.y, betaB[i] = b.z; }
+};
+
+Vec3Lanes loadVec3(const float* x, const float* y, const float* z) {
+    return {loadLanes<float, FloatLanes>(x), loadLanes<float, FloatLanes>(y), loadLanes<float, FloatLanes>(z)};
+}
+void storeVec3(float* x, float* y, float* z, const Vec3Lanes& v) {
+    storeLanes(x, v.x);
+    storeLanes(y, v.y);
+    storeLanes(z, v.z);
+}
+
+// The Lambertian bounce of lanes [first, first + 8) that hold a waiting hit: exactly what
+// Diffuse::sample, photonAfterRoulette and spawnRay do for one photon, with the same random
+// numbers, for eight at once. Compiled for AVX2 too, picked at run time where the CPU has it.
+#if defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void bounceLambertian(PhotonLanes& L, int first) {
+    const IntLanes waiting = loadLanes<int32_t, IntLanes>(L.lambertian + first);
+    uint64_t* state = L.state + first;
+    const uint64_t* increment = L.increment + first;
+    // The lobe choice's number is drawn (as for any material) and unused: one lobe.
+    (void)uniformLanes(state, increment, waiting);
+    FloatLanes u1 = uniformLanes(state, increment, waiting), u2 = uniformLanes(state, increment, waiting);
+    FloatLanes lx, ly, lz;
+    cosineHemisphere(u1, u2, lx, ly, lz);
+
+    Vec3Lanes d = loadVec3(L.dx + first, L.dy + first, L.dz + first);
+    Vec3Lanes ns = loadVec3(L.nsx + first, L.nsy + first, L.nsz + first);
+    // Seen from below its shading normal, or sampled on the horizon, the surface ends the path.
+    IntLanes sampled = waiting & (-dot(d, ns) > 0.0f) & (lz > 0.0f);
+    Vec3Lanes s, t;
+    orthonormalBasis(ns.x, ns.y, ns.z, s.x, s.y, s.z, t.x, t.y, t.z);
+    Vec3Lanes wi = s * lx + t * ly + ns * lz;
+
+    // Russian roulette (photon_roulette.h): survive with q = max(beta f) / max(beta).
+    Vec3Lanes beta = loadVec3(L.betaR + first, L.betaG + first, L.betaB + first);
+    Vec3Lanes next = beta * loadVec3(L.tintR + first, L.tintG + first, L.tintB + first);
+    FloatLanes q = maxComponent(next) / maxComponent(beta);
+    IntLanes rolls = sampled & (q < 1.0f);
+    FloatLanes u = uniformLanes(state, increment, rolls);
+    IntLanes survives = sampled & ~(rolls & (u >= q));
+    next = select(rolls, next * (1.0f / q), next);
+    survives &= (maxComponent(next) > 0.0f) & isFiniteLanes(next.x) & isFiniteLanes(next.y) & isFiniteLanes(next.z);
+
+    // The next ray leaves from just off the surface, on the side it heads to (ray.h).
+    Vec3Lanes p = loadVec3(L.px + first, L.py + first, L.pz + first);
+    Vec3Lanes ng = loadVec3(L.ngx + first, L.ngy + first, L.ngz + first);
+    FloatLanes eps = rayOffsetDistance(p.x, p.y, p.z);
+    Vec3Lanes offset = ng * eps;
+    Vec3Lanes o = select(dot(wi, ng) >= 0.0f, p + offset, p - offset);
+
+    storeVec3(L.ox + first, L.oy + first, L.oz + first, select(waiting, o, loadVec3(L.ox + first, L.oy + first, L.oz + first)));
+    storeVec3(L.dx + first, L.dy + first, L.dz + first, select(waiting, wi, d));
+    storeVec3(L.betaR + first, L.betaG + first, L.betaB + first, select(waiting, next, beta));
+    IntLanes depth = loadLanes<int32_t, IntLanes>(L.depth + first);
+    storeLanes(L.depth + first, select(waiting, depth + 1, depth));
+    IntLanes onlySpecular = loadLanes<int32_t, IntLanes>(L.onlySpecular + first);
+    storeLanes(L.onlySpecular + first, onlySpecular & ~waiting);
+    IntLanes alive = loadLanes<int32_t, IntLanes>(L.alive + first);
+    storeLanes(L.alive + first, select(waiting, survives, alive));
+    storeLanes(L.lambertian + first, IntLanes{});
+}
+
+class PhotonWalk {
+public:
+    PhotonWalk(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
+               PhotonArrivalSink& sink, PhotonPathCounters& counters)
+        : scene_(scene), emitter_(emitter), settings_(settings), stream_(settings.seed, settings.stream, StreamPurpose::Photon),
+          sink_(sink), counters_(counters) {
+        // Two-sided Lambertian surfaces bounce in lanes; the caustic map's walk ends at
+        // them anyway (its paths stop at the first non-delta bounce).
+        for (size_t i = 0; i < scene.description().materials.size(); ++i) {
+            const Material& m = scene.materialAt(static_cast<uint32_t>(i));
+            inLanes_.push_back(m.lambertian() && m.twoSided() && !settings.specularOnly);
         }
-        ++counters.segments;
-        Vec3 wi = -ray.d;
-        ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-        if (!sp.material->isDeltaOnly()) sink.arrive({sp, wi, beta, depth, onlySpecular});
-        if (depth + 1 == settings.maxDepth) return;
+        for (int i = 0; i < kWalkLanes; ++i) lanes_.alive[i] = lanes_.lambertian[i] = 0;
+    }
+
+    void run(int64_t begin, int64_t end) {
+        int64_t next = begin;
+        for (;;) {
+            bool anyAlive = false;
+            for (int i = 0; i < kWalkLanes; ++i) {
+                while (!lanes_.alive[i] && next < end) emit(i, next++);
+                anyAlive |= lanes_.alive[i] != 0;
+            }
+            if (!anyAlive) return;
+            bool waiting[2] = {false, false};
+            for (int i = 0; i < kWalkLanes; ++i)
+                if (lanes_.alive[i]) waiting[i / kLanes] |= step(i);
+            for (int half = 0; half < 2; ++half)
+                if (waiting[half]) bounceLambertian(lanes_, half * kLanes);
+        }
+    }
+
+private:
+    void emit(int i, int64_t index) {
+        Rng rng(stream_, static_cast<uint64_t>(index));
+        std::optional<EmittedPhoton> e = emitter_.emit(rng);
+        if (!e) return;
+        lanes_.setRay(i, e->ray);
+        lanes_.setBeta(i, e->beta);
+        lanes_.state[i] = rng.state();
+        lanes_.increment[i] = rng.increment();
+        lanes_.depth[i] = 0;
+        lanes_.onlySpecular[i] = -1;
+        lanes_.alive[i] = -1;
+    }
+
+    // Casts lane i's ray and hands the arrival to the sink. Returns whether the hit waits
+    // for the Lambertian bounce in lanes; other materials bounce here.
+    bool step(int i) {
+        PhotonLanes& L = lanes_;
+        const Ray ray = L.ray(i);
+        SurfaceHit hit;
+        ++counters_.rays;
+        L.alive[i] = 0;
+        if (!scene_.intersect(ray, hit)) {
+            counters_.missedAtEmission += L.depth[i] == 0;
+            return false;
+        }
+        ++counters_.segments;
+        const Vec3 wi = -ray.d;
+        const int depth = L.depth[i];
+        const bool last = depth + 1 == settings_.maxDepth;
+        if (inLanes_[scene_.materialIndex(hit)]) {
+            const Material& m = scene_.material(hit);
+            turnTowardViewer(m, hit, wi);
+            sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+            if (last) return false;
+            Color tint = m.tint().eval(hit.uv);
+            L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
+            L.ngx[i] = hit.ng.x, L.ngy[i] = hit.ng.y, L.ngz[i] = hit.ng.z;
+            L.nsx[i] = hit.ns.x, L.nsy[i] = hit.ns.y, L.nsz[i] = hit.ns.z;
+            L.tintR[i] = tint.x, L.tintG[i] = tint.y, L.tintB[i] = tint.z;
+            L.lambertian[i] = -1;
+            return true;
+        }
+        ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
+        if (!sp.material->isDeltaOnly()) sink_.arrive({sp.hit.p, sp.hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+        if (!last) bounce(i, sp, wi);
+        return false;
+    }
+
+    // Any material's bounce, by BSDF sampling.
+    void bounce(int i, const ShadingPoint& sp, Vec3 wi) {
+        PhotonLanes& L = lanes_;
+        Rng rng = Rng::resume(L.state[i], L.increment[i]);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
         std::optional<BSDFSample> s =
             sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.tint, TransportMode::Importance);
         if (!s) return;
-        onlySpecular = onlySpecular && s->delta;
-        if (settings.specularOnly && !onlySpecular) return;
-        std::optional<Color> next = photonAfterRoulette(beta, s->weight, rng);
+        const bool onlySpecular = L.onlySpecular[i] && s->delta;
+        if (settings_.specularOnly && !onlySpecular) return;
+        std::optional<Color> next = photonAfterRoulette(L.beta(i), s->weight, rng);
         if (!next) return;
-        beta = *next;
-        ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        L.setBeta(i, *next);
+        L.setRay(i, spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi)));
+        L.state[i] = rng.state();
+        L.onlySpecular[i] = onlySpecular ? -1 : 0;
+        ++L.depth[i];
+        L.alive[i] = -1;
     }
-}
+
+    const Scene& scene_;
+    const PhotonEmitter& emitter_;
+    const PhotonPathSettings& settings_;
+    const RngStream stream_;
+    PhotonArrivalSink& sink_;
+    PhotonPathCounters& counters_;
+    std::vector<uint8_t> inLanes_;  // by material index: bounces in lanes
+    PhotonLanes lanes_;
+};
 
 }  // namespace
 
 void tracePhotonPaths(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
                       int64_t begin, int64_t end, PhotonArrivalSink& sink, PhotonPathCounters& counters) {
-    const RngStream stream(settings.seed, settings.stream, StreamPurpose::Photon);
-    for (int64_t i = begin; i < end; ++i) tracePhotonPath(scene, emitter, settings, stream, i, sink, counters);
+    PhotonWalk(scene, emitter, settings, sink, counters).run(begin, end);
 }
 
 }  // namespace photon

@@ -1,7 +1,9 @@
 // The photon random walk shared by the photon integrators (SPPM and the two-pass photon
 // map): emission through the PhotonEmitter, scattering by BSDF sampling, Russian roulette
-// on the maximum channel. (Tracing eight photons at a time through Embree's packet query
-// was tried: on photon-bench's scenes it gained 1%, not worth the lanes' bookkeeping.)
+// on the maximum channel. Photons are walked sixteen at a time in lanes: each ray is cast
+// on its own (Embree's packet queries gain nothing on incoherent photon rays), and the
+// bounces off Lambertian surfaces, most of a walk's bounces, are sampled eight lanes at a
+// time with SIMD instructions; every other material scatters lane by lane through its BSDF.
 #pragma once
 #include <cstdint>
 #include "../lights/photon_emitter.h"
@@ -11,7 +13,8 @@ namespace photon {
 
 // A photon arriving at a surface that is not purely specular.
 struct PhotonArrival {
-    const ShadingPoint& sp;
+    Vec3 p;             // where it landed
+    Vec3 ns;            // the shading normal there, turned toward wi on two-sided materials
     Vec3 wi;            // toward where the photon came from
     Color flux;         // in the emitter's units (photons average 1 without projection maps)
     int depth;          // 0: straight from the light
@@ -42,7 +45,7 @@ struct PhotonPathCounters {
 };
 
 // Traces photons [begin, end). The random numbers of photon i come from (seed, stream, i)
-// alone, so paths do not depend on threads.
+// alone, so paths do not depend on threads (nor on the lane a photon is walked in).
 void tracePhotonPaths(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
                       int64_t begin, int64_t end, PhotonArrivalSink& sink, PhotonPathCounters& counters);
 

@@ -25,8 +25,8 @@ public:
     StoringSink(PhotonMapKind kind, ChunkResult& out) : kind_(kind), out_(out) {}
     void arrive(const PhotonArrival& a) override {
         if (kind_ == PhotonMapKind::Caustic && a.depth == 0) return;
-        out_.photons.emplace_back(a.sp.hit.p, a.wi, a.flux, a.onlySpecular ? 0 : StoredPhoton::kIndirect);
-        out_.normals.push_back(StoredPhoton::encodeDirection(a.sp.hit.ns));
+        out_.photons.emplace_back(a.p, a.wi, a.flux, a.onlySpecular ? 0 : StoredPhoton::kIndirect);
+        out_.normals.push_back(StoredPhoton::encodeDirection(a.ns));
     }
 
 private:

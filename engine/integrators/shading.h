@@ -14,13 +14,16 @@ struct ShadingPoint {
 
 // `wo` points back along the arriving ray. Two-sided materials see their normals turned
 // toward it, so a quad or mesh shades alike whichever way its winding faces.
+inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
+    if (m.twoSided() && dot(wo, hit.ng) < 0) {
+        hit.ng = -hit.ng;
+        hit.ns = -hit.ns;
+    }
+}
 inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);
     ShadingPoint sp{hit, &m, {}, m.tint().eval(hit.uv)};
-    if (m.twoSided() && dot(wo, hit.ng) < 0) {
-        sp.hit.ng = -hit.ng;
-        sp.hit.ns = -hit.ns;
-    }
+    turnTowardViewer(m, sp.hit, wo);
     sp.frame = Frame::fromNormal(sp.hit.ns);
     return sp;
 }

@@ -23,7 +23,7 @@ public:
     void arrive(const PhotonArrival& a) override {
         // Direct light may come from light sampling in the camera pass instead.
         if (a.depth == 0 && sppm_.settings_.direct != DirectLighting::Photons) return;
-        batch_.push({a.sp.hit.p, a.sp.hit.ns, a.wi, a.flux});
+        batch_.push({a.p, a.ns, a.wi, a.flux});
         if (batch_.full()) sppm_.gather(batch_, counters_);
     }
 

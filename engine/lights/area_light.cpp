@@ -96,8 +96,7 @@ private:
     // Picks a triangle in proportion to its area with u.x, then reuses what is left of u.x
     // within its share for a uniform point on it.
     const Triangle& sampleTriangle(Vec2 u, Vec3& p) const {
-        size_t t = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u.x) - cdf_.begin());
-        const Triangle& tri = triangles_[std::min(t, triangles_.size() - 1)];
+        const Triangle& tri = triangles_[std::min(triangleAt(u.x), triangles_.size() - 1)];
         float ux = std::clamp((u.x - tri.cdfLow) * tri.inverseWidth, 0.0f, 0.99999994f);
         Vec2 b = sampleUniformTriangle({ux, u.y});
         // Barycentric b.x on the first vertex, b.y on the second.
@@ -109,6 +108,16 @@ private:
         Vec3 p;
         const Triangle& tri = sampleTriangle(u, p);
         return {p, tri.frame.n};
+    }
+
+    // The triangle whose share of [0, 1) holds u. A few triangles (a quad's two) are counted
+    // without branches: the binary search's branch is a coin toss there, mispredicted half
+    // the time.
+    size_t triangleAt(float u) const {
+        if (cdf_.size() > 16) return static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
+        size_t below = 0;
+        for (float c : cdf_) below += c <= u;
+        return below;
     }
 
     std::vector<Triangle> triangles_;

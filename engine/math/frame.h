@@ -1,20 +1,34 @@
 // Orthonormal frames: shading happens in a local frame whose z axis is the normal.
 #pragma once
+#include "lanes.h"
 #include "vec.h"
 
 namespace photon {
 
+// s and t completing the unit normal n to a right-handed basis: Duff et al. 2017, "Building
+// an Orthonormal Basis, Revisited", JCGT 6(1). F: float or FloatLanes.
+template <class F>
+PHOTON_LANES_INLINE void orthonormalBasis(F nx, F ny, F nz, F& sx, F& sy, F& sz, F& tx, F& ty, F& tz) {
+    F sign = signOf(nz);
+    F a = -1.0f / (sign + nz);
+    F b = nx * ny * a;
+    sx = 1.0f + sign * nx * nx * a;
+    sy = sign * b;
+    sz = -sign * nx;
+    tx = b;
+    ty = sign + ny * ny * a;
+    tz = -ny;
+}
+
 struct Frame {
     Vec3 s, t, n;
 
-    // Branchless basis from a unit normal: Duff et al. 2017, "Building an Orthonormal
-    // Basis, Revisited", JCGT 6(1). Deterministic, so a frame rebuilt from a stored
-    // normal matches the one the camera pass used.
+    // Branchless, so deterministic: a frame rebuilt from a stored normal matches the one
+    // the camera pass used.
     static Frame fromNormal(Vec3 n) {
-        float sign = std::copysign(1.0f, n.z);
-        float a = -1.0f / (sign + n.z);
-        float b = n.x * n.y * a;
-        return {{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}, n};
+        Frame f{{}, {}, n};
+        orthonormalBasis(n.x, n.y, n.z, f.s.x, f.s.y, f.s.z, f.t.x, f.t.y, f.t.z);
+        return f;
     }
     Vec3 toLocal(Vec3 v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
     Vec3 toWorld(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }

@@ -49,7 +49,19 @@ public:
     // Uniform float in [0, 1): 24 random mantissa bits.
     float uniform() { return static_cast<float>(next() >> 8) * 0x1p-24f; }
 
+    // The generator's state, for code that keeps many streams side by side (lanes.h's
+    // uniformLanes continues them) and hands one back to an Rng.
+    uint64_t state() const { return state_; }
+    uint64_t increment() const { return inc_; }
+    static Rng resume(uint64_t state, uint64_t increment) {
+        Rng r;
+        r.state_ = state;
+        r.inc_ = increment;
+        return r;
+    }
+
 private:
+    Rng() = default;
     uint64_t state_ = 0, inc_ = 1;
 };
 

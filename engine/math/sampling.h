@@ -1,38 +1,54 @@
 // Sampling warps shared by materials, lights and cameras (pbrt-v4 ch. A.5 and 4.x).
 #pragma once
+#include "lanes.h"
 #include "vec.h"
 
 namespace photon {
 
 // sin and cos of |a| <= pi/4 by their Taylor series to a^9 and a^10: the truncation error
 // is below (pi/4)^11/11! < 2e-9, under float rounding, at a fraction of sincosf's cost
-// (every photon bounce and emission samples a disc).
-inline Vec2 cosSinQuarterTurn(float a) {
-    float a2 = a * a;
-    float s = a * (1 + a2 * (-1.0f / 6 + a2 * (1.0f / 120 + a2 * (-1.0f / 5040 + a2 * (1.0f / 362880)))));
-    float c = 1 + a2 * (-0.5f + a2 * (1.0f / 24 + a2 * (-1.0f / 720 + a2 * (1.0f / 40320 - a2 * (1.0f / 3628800)))));
-    return {c, s};
+// (every photon bounce and emission samples a disc). F: float or FloatLanes.
+template <class F>
+PHOTON_LANES_INLINE void cosSinQuarterTurn(F a, F& c, F& s) {
+    F a2 = a * a;
+    s = a * (1 + a2 * (-1.0f / 6 + a2 * (1.0f / 120 + a2 * (-1.0f / 5040 + a2 * (1.0f / 362880)))));
+    c = 1 + a2 * (-0.5f + a2 * (1.0f / 24 + a2 * (-1.0f / 720 + a2 * (1.0f / 40320 - a2 * (1.0f / 3628800)))));
+}
+
+// Shirley & Chiu 1997 concentric map of [0,1)^2 to the unit disc: low distortion, keeps
+// stratification. With the larger of |ox|, |oy| as the radius, the angle is pi/4 (oy/ox)
+// or pi/2 - pi/4 (ox/oy); the second's cos and sin are the sin and cos of pi/4 (ox/oy),
+// so both need the trigonometry of a quarter turn only. Written with selects, not
+// branches, so that the photon walk's lanes share it.
+template <class F>
+PHOTON_LANES_INLINE void concentricDisk(F ux, F uy, F& dx, F& dy) {
+    F ox = 2.0f * ux - 1.0f, oy = 2.0f * uy - 1.0f;
+    auto xMajor = absValue(ox) > absValue(oy);
+    F major = select(xMajor, ox, oy), minor = select(xMajor, oy, ox);
+    // major is 0 only at the centre, where both are: the disc's centre, not 0 / 0.
+    F safeMajor = select(major == 0.0f, broadcast<F>(1.0f), major);
+    F c, s;
+    cosSinQuarterTurn((kPi / 4.0f) * (minor / safeMajor), c, s);
+    dx = major * select(xMajor, c, s);
+    dy = major * select(xMajor, s, c);
 }
 
 inline Vec2 sampleUniformDiskConcentric(Vec2 u) {
-    // Shirley & Chiu 1997 concentric map: low distortion, keeps stratification. The angle
-    // is pi/4 * (oy/ox) or pi/2 - pi/4 * (ox/oy); the second's cos and sin are the sin and
-    // cos of pi/4 * (ox/oy), so both need the trigonometry of a quarter turn only.
-    float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
-    if (ox == 0 && oy == 0) return {0, 0};
-    if (std::abs(ox) > std::abs(oy)) {
-        Vec2 cs = cosSinQuarterTurn((kPi / 4.0f) * (oy / ox));
-        return {ox * cs.x, ox * cs.y};
-    }
-    Vec2 cs = cosSinQuarterTurn((kPi / 4.0f) * (ox / oy));
-    return {oy * cs.y, oy * cs.x};
+    Vec2 d;
+    concentricDisk(u.x, u.y, d.x, d.y);
+    return d;
 }
 
 // Cosine-weighted hemisphere about +z (Malley's method); pdf = cos(theta)/pi.
+template <class F>
+PHOTON_LANES_INLINE void cosineHemisphere(F ux, F uy, F& x, F& y, F& z) {
+    concentricDisk(ux, uy, x, y);
+    z = safeSqrt(1.0f - x * x - y * y);
+}
 inline Vec3 sampleCosineHemisphere(Vec2 u) {
-    Vec2 d = sampleUniformDiskConcentric(u);
-    float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
-    return {d.x, d.y, z};
+    Vec3 w;
+    cosineHemisphere(u.x, u.y, w.x, w.y, w.z);
+    return w;
 }
 inline float cosineHemispherePdf(float cosTheta) { return cosTheta * kInvPi; }
 
@@ -55,15 +71,13 @@ inline Vec3 sampleUniformCone(Vec2 u, float cosMax) {
 inline float uniformConePdf(float cosMax) { return 1.0f / (2.0f * kPi * (1.0f - cosMax)); }
 
 // Uniform point on a triangle as barycentrics (b0, b1); Heitz 2019's low-distortion map.
+// Written without a branch: which half of the square u falls in is a coin toss, which a
+// branch predictor gets wrong half the time (and photons are emitted millions of times).
 inline Vec2 sampleUniformTriangle(Vec2 u) {
-    float b0, b1;
-    if (u.x < u.y) {
-        b0 = u.x / 2;
-        b1 = u.y - b0;
-    } else {
-        b1 = u.y / 2;
-        b0 = u.x - b1;
-    }
+    bool lower = u.x < u.y;
+    float halved = 0.5f * (lower ? u.x : u.y);
+    float b0 = lower ? halved : u.x - halved;
+    float b1 = lower ? u.y - halved : halved;
     return {b0, b1};
 }
 

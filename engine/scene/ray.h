@@ -1,6 +1,7 @@
 // Rays and the offset that keeps a spawned ray from hitting its own surface.
 #pragma once
 #include <limits>
+#include "../math/lanes.h"
 #include "../math/vec.h"
 
 namespace photon {
@@ -13,9 +14,12 @@ struct Ray {
 // Moves p off its surface along the geometric normal, to the side `w` points to.
 // The offset grows with |p| because float error in the hit point does (pbrt-v4 6.8.6
 // bounds it properly; a relative epsilon is enough for the scene scales we accept).
+template <class F>
+PHOTON_LANES_INLINE F rayOffsetDistance(F px, F py, F pz) {
+    return 2e-5f * (1.0f + maxValue(absValue(px), maxValue(absValue(py), absValue(pz))));
+}
 inline Vec3 offsetRayOrigin(Vec3 p, Vec3 ng, Vec3 w) {
-    float scale = 1.0f + maxComponent(vmax(p, -p));
-    float eps = 2e-5f * scale;
+    float eps = rayOffsetDistance(p.x, p.y, p.z);
     return dot(w, ng) >= 0 ? p + ng * eps : p - ng * eps;
 }
 
