@@ -117,11 +117,9 @@ public:
     void run(int64_t begin, int64_t end) {
         int64_t next = begin;
         for (;;) {
+            for (int half = 0; half < 2; ++half) refill(half * kLanes, next, end);
             bool anyAlive = false;
-            for (int i = 0; i < kWalkLanes; ++i) {
-                while (!lanes_.alive[i] && next < end) emit(i, next++);
-                anyAlive |= lanes_.alive[i] != 0;
-            }
+            for (int i = 0; i < kWalkLanes; ++i) anyAlive |= lanes_.alive[i] != 0;
             if (!anyAlive) return;
             bool waiting[2] = {false, false};
             for (int i = 0; i < kWalkLanes; ++i)
@@ -132,17 +130,33 @@ public:
     }
 
 private:
-    void emit(int i, int64_t index) {
-        Rng rng(stream_, static_cast<uint64_t>(index));
-        std::optional<EmittedPhoton> e = emitter_.emit(rng);
-        if (!e) return;
-        lanes_.setRay(i, e->ray);
-        lanes_.setBeta(i, e->beta);
-        lanes_.state[i] = rng.state();
-        lanes_.increment[i] = rng.increment();
-        lanes_.depth[i] = 0;
-        lanes_.onlySpecular[i] = -1;
-        lanes_.alive[i] = -1;
+    // New photons for the empty lanes among [first, first + 8), while any are left.
+    void refill(int first, int64_t& next, int64_t end) {
+        PhotonLanes& L = lanes_;
+        for (;;) {
+            int64_t index[kLanes];
+            alignas(32) int32_t want[kLanes];
+            bool any = false;
+            for (int k = 0; k < kLanes; ++k) {
+                want[k] = !L.alive[first + k] && next < end ? -1 : 0;
+                index[k] = want[k] ? next++ : 0;
+                any |= want[k] != 0;
+            }
+            if (!any) return;
+            emitter_.emitLanes(stream_, index, want, emitted_);
+            for (int k = 0; k < kLanes; ++k) {
+                if (!emitted_.emitted[k]) continue;
+                const int i = first + k;
+                L.ox[i] = emitted_.ox[k], L.oy[i] = emitted_.oy[k], L.oz[i] = emitted_.oz[k];
+                L.dx[i] = emitted_.dx[k], L.dy[i] = emitted_.dy[k], L.dz[i] = emitted_.dz[k];
+                L.betaR[i] = emitted_.betaR[k], L.betaG[i] = emitted_.betaG[k], L.betaB[i] = emitted_.betaB[k];
+                L.state[i] = emitted_.state[k];
+                L.increment[i] = emitted_.increment[k];
+                L.depth[i] = 0;
+                L.onlySpecular[i] = -1;
+                L.alive[i] = -1;
+            }
+        }
     }
 
     // Casts lane i's ray and hands the arrival to the sink. Returns whether the hit waits
@@ -209,6 +223,7 @@ private:
     PhotonPathCounters& counters_;
     std::vector<uint8_t> inLanes_;  // by material index: bounces in lanes
     PhotonLanes lanes_;
+    PhotonEmitter::Lanes emitted_;
 };
 
 }  // namespace

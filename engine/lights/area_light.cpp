@@ -5,6 +5,7 @@
 #include <vector>
 #include "../math/frame.h"
 #include "../math/sampling.h"
+#include "emission_triangles.h"
 #include "light_factories.h"
 
 namespace photon {
@@ -52,23 +53,7 @@ protected:
 class MeshAreaLight final : public AreaLight {
 public:
     MeshAreaLight(const ShapeDescription& shape, const std::vector<double>& areas, double total)
-        : AreaLight(shape.emission, static_cast<float>(total)) {
-        // Everything a sample needs, per triangle and in one place: photons are emitted
-        // millions of times a pass.
-        const TriangleMesh& m = shape.mesh;
-        float sign = shape.flipNormals ? -1.0f : 1.0f;
-        double sum = 0;
-        for (size_t t = 0; t < m.triangleCount(); ++t) {
-            TriangleMesh::Corners k = m.corners(t);
-            // (A mesh without area has no power and is never picked; its shares stay finite.)
-            float lo = total > 0 ? static_cast<float>(sum / total) : 0.0f;
-            sum += areas[t];
-            float hi = t + 1 == m.triangleCount() || !(total > 0) ? 1.0f : static_cast<float>(sum / total);
-            triangles_.push_back({k.a, k.b - k.a, k.c - k.a, Frame::fromNormal(m.faceNormal(t) * sign), lo,
-                                  1.0f / std::max(hi - lo, 1e-12f)});
-            cdf_.push_back(hi);
-        }
-    }
+        : AreaLight(shape.emission, static_cast<float>(total)), triangles_(shape, areas, total) {}
 
     static std::unique_ptr<Light> make(const ShapeDescription& shape) {
         std::vector<double> areas;
@@ -82,46 +67,19 @@ public:
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         Vec3 p;
-        const Triangle& tri = sampleTriangle(uPosition, p);
+        const EmissionTriangles::Triangle& tri = triangles_.samplePoint(uPosition, p);
         return emitFrom(p, tri.frame, uDirection);
     }
+    const EmissionTriangles* emissionTriangles() const override { return &triangles_; }
 
 private:
-    struct Triangle {
-        Vec3 p0, e1, e2;  // p = p0 + b1 e1 + b2 e2
-        Frame frame;      // n faces the emitting side
-        float cdfLow, inverseWidth;  // where the triangle's share of [0, 1) starts, 1 / its size
-    };
-
-    // Picks a triangle in proportion to its area with u.x, then reuses what is left of u.x
-    // within its share for a uniform point on it.
-    const Triangle& sampleTriangle(Vec2 u, Vec3& p) const {
-        const Triangle& tri = triangles_[std::min(triangleAt(u.x), triangles_.size() - 1)];
-        float ux = std::clamp((u.x - tri.cdfLow) * tri.inverseWidth, 0.0f, 0.99999994f);
-        Vec2 b = sampleUniformTriangle({ux, u.y});
-        // Barycentric b.x on the first vertex, b.y on the second.
-        p = tri.p0 + tri.e1 * b.y + tri.e2 * (1.0f - b.x - b.y);
-        return tri;
-    }
-
     SurfacePoint samplePoint(Vec2 u) const override {
         Vec3 p;
-        const Triangle& tri = sampleTriangle(u, p);
+        const EmissionTriangles::Triangle& tri = triangles_.samplePoint(u, p);
         return {p, tri.frame.n};
     }
 
-    // The triangle whose share of [0, 1) holds u. A few triangles (a quad's two) are counted
-    // without branches: the binary search's branch is a coin toss there, mispredicted half
-    // the time.
-    size_t triangleAt(float u) const {
-        if (cdf_.size() > 16) return static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
-        size_t below = 0;
-        for (float c : cdf_) below += c <= u;
-        return below;
-    }
-
-    std::vector<Triangle> triangles_;
-    std::vector<float> cdf_;  // upper ends of the triangles' shares
+    EmissionTriangles triangles_;
 };
 
 class SphereAreaLight final : public AreaLight {

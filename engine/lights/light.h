@@ -45,6 +45,8 @@ struct EmissionGeometry {
     SceneSphere disc;   // Parallel: photons start on this sphere's disc facing frame.n
 };
 
+class EmissionTriangles;
+
 class Light {
 public:
     virtual ~Light() = default;
@@ -62,6 +64,9 @@ public:
     // disc (W/m^2), whatever w.
     virtual EmissionGeometry emissionGeometry() const { return {}; }
     virtual Color emittedDensity(Vec3 w) const { return Color(0.0f); }
+    // Lights on triangle meshes: the triangles photons leave from, cosine-distributed with
+    // the light's whole power each (the photon walk emits eight of those at a time).
+    virtual const EmissionTriangles* emissionTriangles() const { return nullptr; }
 };
 
 }  // namespace photon

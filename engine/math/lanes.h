@@ -23,7 +23,18 @@ using UintLanes = uint32_t __attribute__((vector_size(4 * kLanes)));
 using Uint64Lanes = uint64_t __attribute__((vector_size(8 * kLanes)));
 
 // select(mask, a, b): a where mask holds, else b.
-PHOTON_LANES_INLINE float select(bool m, float a, float b) { return m ? a : b; }
+// The scalar select is done on the bits: GCC turns `m ? a : b` on floats into a branch,
+// which the warps' coin-toss conditions would mispredict half the time.
+PHOTON_LANES_INLINE float select(bool m, float a, float b) {
+    uint32_t ia, ib;
+    std::memcpy(&ia, &a, 4);
+    std::memcpy(&ib, &b, 4);
+    uint32_t mask = 0u - static_cast<uint32_t>(m);
+    uint32_t r = (ia & mask) | (ib & ~mask);
+    float out;
+    std::memcpy(&out, &r, 4);
+    return out;
+}
 PHOTON_LANES_INLINE FloatLanes select(IntLanes m, FloatLanes a, FloatLanes b) { return m ? a : b; }
 PHOTON_LANES_INLINE IntLanes select(IntLanes m, IntLanes a, IntLanes b) { return m ? a : b; }
 

@@ -71,14 +71,19 @@ inline Vec3 sampleUniformCone(Vec2 u, float cosMax) {
 inline float uniformConePdf(float cosMax) { return 1.0f / (2.0f * kPi * (1.0f - cosMax)); }
 
 // Uniform point on a triangle as barycentrics (b0, b1); Heitz 2019's low-distortion map.
-// Written without a branch: which half of the square u falls in is a coin toss, which a
+// Written with selects: which half of the square u falls in is a coin toss, which a
 // branch predictor gets wrong half the time (and photons are emitted millions of times).
+template <class F>
+PHOTON_LANES_INLINE void uniformTriangle(F ux, F uy, F& b0, F& b1) {
+    auto lower = ux < uy;
+    F halved = 0.5f * select(lower, ux, uy);
+    b0 = select(lower, halved, ux - halved);
+    b1 = select(lower, uy - halved, halved);
+}
 inline Vec2 sampleUniformTriangle(Vec2 u) {
-    bool lower = u.x < u.y;
-    float halved = 0.5f * (lower ? u.x : u.y);
-    float b0 = lower ? halved : u.x - halved;
-    float b1 = lower ? u.y - halved : halved;
-    return {b0, b1};
+    Vec2 b;
+    uniformTriangle(u.x, u.y, b.x, b.y);
+    return b;
 }
 
 }  // namespace photon

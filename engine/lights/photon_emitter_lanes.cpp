@@ -1,0 +1,110 @@
+// Photons eight at a time: the light is picked lane by lane, then every photon that
+// leaves a triangle mesh (the usual area light) is placed and aimed in SIMD, exactly as
+// MeshAreaLight::emitPhoton and PhotonEmitter::emitFrom do for one.
+#include "../scene/scene.h"
+#include "emission_triangles.h"
+#include "photon_emitter.h"
+
+namespace photon {
+
+namespace {
+
+// Lanes waiting for a point on a mesh light: the light's triangles and the photon's flux.
+struct TriangleLanes {
+    const EmissionTriangles* triangles[kLanes];
+    Color beta[kLanes];
+    alignas(32) int32_t waiting[kLanes];
+};
+
+#if defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void emitFromTriangles(const TriangleLanes& in, PhotonEmitter::Lanes& out) {
+    const IntLanes waiting = loadLanes<int32_t, IntLanes>(in.waiting);
+    // The position's two numbers, then the direction's (PhotonEmitter::emitFrom).
+    FloatLanes u1 = uniformLanes(out.state, out.increment, waiting), u2 = uniformLanes(out.state, out.increment, waiting);
+    FloatLanes u3 = uniformLanes(out.state, out.increment, waiting), u4 = uniformLanes(out.state, out.increment, waiting);
+    // Each lane's triangle, gathered into lanes: field by field, from registers (writing
+    // lanes one by one to memory and reading them back as a vector stalls the load).
+    const EmissionTriangles::Triangle* tri[kLanes];
+    for (int i = 0; i < kLanes; ++i) tri[i] = &in.triangles[i]->triangleAt(waiting[i] ? u1[i] : 0.0f);
+    auto gather = [&](auto field) {
+        return FloatLanes{field(*tri[0]), field(*tri[1]), field(*tri[2]), field(*tri[3]),
+                          field(*tri[4]), field(*tri[5]), field(*tri[6]), field(*tri[7])};
+    };
+    using T = EmissionTriangles::Triangle;
+    Vec3Lanes p0{gather([](const T& t) { return t.p0.x; }), gather([](const T& t) { return t.p0.y; }),
+                 gather([](const T& t) { return t.p0.z; })};
+    Vec3Lanes e1{gather([](const T& t) { return t.e1.x; }), gather([](const T& t) { return t.e1.y; }),
+                 gather([](const T& t) { return t.e1.z; })};
+    Vec3Lanes e2{gather([](const T& t) { return t.e2.x; }), gather([](const T& t) { return t.e2.y; }),
+                 gather([](const T& t) { return t.e2.z; })};
+    Vec3Lanes s{gather([](const T& t) { return t.frame.s.x; }), gather([](const T& t) { return t.frame.s.y; }),
+                gather([](const T& t) { return t.frame.s.z; })};
+    Vec3Lanes t{gather([](const T& t) { return t.frame.t.x; }), gather([](const T& t) { return t.frame.t.y; }),
+                gather([](const T& t) { return t.frame.t.z; })};
+    Vec3Lanes n{gather([](const T& t) { return t.frame.n.x; }), gather([](const T& t) { return t.frame.n.y; }),
+                gather([](const T& t) { return t.frame.n.z; })};
+    FloatLanes cdfLow = gather([](const T& t) { return t.cdfLow; });
+    FloatLanes inverseWidth = gather([](const T& t) { return t.inverseWidth; });
+    FloatLanes b0, b1;
+    uniformTriangle(EmissionTriangles::reuse(u1, cdfLow, inverseWidth), u2, b0, b1);
+    FloatLanes b2 = 1.0f - b0 - b1;
+    Vec3Lanes p = p0 + e1 * b1 + e2 * b2;
+    FloatLanes lx, ly, lz;
+    cosineHemisphere(u3, u4, lx, ly, lz);
+    Vec3Lanes d = s * lx + t * ly + n * lz;
+    // spawnRay: off the light's surface, on the side the photon heads to.
+    FloatLanes eps = rayOffsetDistance(p.x, p.y, p.z);
+    Vec3Lanes offset = n * eps;
+    Vec3Lanes o = select(dot(d, n) >= 0.0f, p + offset, p - offset);
+    for (int i = 0; i < kLanes; ++i) {
+        if (!waiting[i]) continue;
+        out.ox[i] = o.x[i], out.oy[i] = o.y[i], out.oz[i] = o.z[i];
+        out.dx[i] = d.x[i], out.dy[i] = d.y[i], out.dz[i] = d.z[i];
+        out.betaR[i] = in.beta[i].x, out.betaG[i] = in.beta[i].y, out.betaB[i] = in.beta[i].z;
+        out.emitted[i] = -1;
+    }
+}
+
+}  // namespace
+
+void PhotonEmitter::emitLanes(const RngStream& stream, const int64_t* index, const int32_t* want, Lanes& out) const {
+    TriangleLanes fromTriangles;
+    bool anyTriangles = false;
+    for (int i = 0; i < kLanes; ++i) {
+        out.emitted[i] = 0;
+        fromTriangles.waiting[i] = 0;
+        fromTriangles.triangles[i] = nullptr;
+        if (!want[i]) continue;
+        Rng rng(stream, static_cast<uint64_t>(index[i]));
+        LightSampler::Pick pick = scene_.lights().pick(rng.uniform());
+        if (pick.light && laneTriangles_[pick.index]) {
+            fromTriangles.triangles[i] = laneTriangles_[pick.index];
+            fromTriangles.beta[i] = laneFlux_[pick.index];
+            fromTriangles.waiting[i] = -1;
+            anyTriangles = true;
+            out.state[i] = rng.state();
+            out.increment[i] = rng.increment();
+            continue;
+        }
+        std::optional<EmittedPhoton> e;
+        if (pick.light) e = emitFrom(pick.index, rng);
+        out.state[i] = rng.state();
+        out.increment[i] = rng.increment();
+        if (!e) continue;
+        out.ox[i] = e->ray.o.x, out.oy[i] = e->ray.o.y, out.oz[i] = e->ray.o.z;
+        out.dx[i] = e->ray.d.x, out.dy[i] = e->ray.d.y, out.dz[i] = e->ray.d.z;
+        out.betaR[i] = e->beta.x, out.betaG[i] = e->beta.y, out.betaB[i] = e->beta.z;
+        out.emitted[i] = -1;
+    }
+    if (!anyTriangles) return;
+    // Lanes that wait for no triangle read any waiting lane's (and keep their own results).
+    const EmissionTriangles* some = nullptr;
+    for (int i = 0; i < kLanes && !some; ++i) some = fromTriangles.triangles[i];
+    for (int i = 0; i < kLanes; ++i)
+        if (!fromTriangles.triangles[i]) fromTriangles.triangles[i] = some;
+    emitFromTriangles(fromTriangles, out);
+}
+
+}  // namespace photon
