@@ -48,11 +48,8 @@ void storeVec3(float* x, float* y, float* z, const Vec3Lanes& v) {
 
 // The Lambertian bounce of lanes [first, first + 8) that hold a waiting hit: exactly what
 // Diffuse::sample, photonAfterRoulette and spawnRay do for one photon, with the same random
-// numbers, for eight at once. Compiled for AVX2 too, picked at run time where the CPU has it.
-#if defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void bounceLambertian(PhotonLanes& L, int first) {
+// numbers, for eight at once.
+PHOTON_LANES_INLINE void bounceLambertianLanes(PhotonLanes& L, int first) {
     const IntLanes waiting = loadLanes<int32_t, IntLanes>(L.lambertian + first);
     uint64_t* state = L.state + first;
     const uint64_t* increment = L.increment + first;
@@ -98,6 +95,7 @@ void bounceLambertian(PhotonLanes& L, int first) {
     storeLanes(L.alive + first, select(waiting, survives, alive));
     storeLanes(L.lambertian + first, IntLanes{});
 }
+PHOTON_LANES_KERNEL(bounceLambertian, bounceLambertianLanes, (PhotonLanes & L, int first), (L, first))
 
 class PhotonWalk {
 public:
@@ -107,9 +105,10 @@ public:
           sink_(sink), counters_(counters) {
         // Two-sided Lambertian surfaces bounce in lanes; the caustic map's walk ends at
         // them anyway (its paths stop at the first non-delta bounce).
-        for (size_t i = 0; i < scene.description().materials.size(); ++i) {
-            const Material& m = scene.materialAt(static_cast<uint32_t>(i));
-            inLanes_.push_back(m.lambertian() && m.twoSided() && !settings.specularOnly);
+        for (const ShapeDescription& shape : scene.description().shapes) {
+            const Material& m = scene.materialAt(shape.material);
+            shapes_.push_back({&m, m.lambertian() && m.twoSided() && !settings.specularOnly, m.tint().textured(),
+                               m.tint().value});
         }
         for (int i = 0; i < kWalkLanes; ++i) lanes_.alive[i] = lanes_.lambertian[i] = 0;
     }
@@ -175,12 +174,12 @@ private:
         const Vec3 wi = -ray.d;
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
-        if (inLanes_[scene_.materialIndex(hit)]) {
-            const Material& m = scene_.material(hit);
-            turnTowardViewer(m, hit, wi);
+        const ShapeScattering& shape = shapes_[hit.shape];
+        if (shape.inLanes) {
+            turnTowardViewer(hit, wi);  // the material is two-sided
             sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
             if (last) return false;
-            Color tint = m.tint().eval(hit.uv);
+            Color tint = shape.textured ? shape.material->tint().eval(hit.uv) : shape.tint;
             L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
             L.ngx[i] = hit.ng.x, L.ngy[i] = hit.ng.y, L.ngz[i] = hit.ng.z;
             L.nsx[i] = hit.ns.x, L.nsy[i] = hit.ns.y, L.nsz[i] = hit.ns.z;
@@ -221,7 +220,14 @@ private:
     const RngStream stream_;
     PhotonArrivalSink& sink_;
     PhotonPathCounters& counters_;
-    std::vector<uint8_t> inLanes_;  // by material index: bounces in lanes
+    // What the walk needs of each shape's material, looked up once per hit.
+    struct ShapeScattering {
+        const Material* material;
+        bool inLanes;   // bounces in lanes (two-sided Lambertian)
+        bool textured;  // its colour comes from a texture
+        Color tint;     // else its colour
+    };
+    std::vector<ShapeScattering> shapes_;  // by shape index
     PhotonLanes lanes_;
     PhotonEmitter::Lanes emitted_;
 };

@@ -14,11 +14,14 @@ struct ShadingPoint {
 
 // `wo` points back along the arriving ray. Two-sided materials see their normals turned
 // toward it, so a quad or mesh shades alike whichever way its winding faces.
-inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
-    if (m.twoSided() && dot(wo, hit.ng) < 0) {
+inline void turnTowardViewer(SurfaceHit& hit, Vec3 wo) {
+    if (dot(wo, hit.ng) < 0) {
         hit.ng = -hit.ng;
         hit.ns = -hit.ns;
     }
+}
+inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
+    if (m.twoSided()) turnTowardViewer(hit, wo);
 }
 inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);

@@ -82,9 +82,11 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
     ++counters.accepted;
     c *= hit.flux * kernelWeight(settings_.kernel, d2OverR2);
     for (int k = 0; k < 3; ++k) {
-        double v = static_cast<double>(c[k]) * kFluxScale;
-        if (!(v >= 1.0)) continue;  // also drops NaN
-        auto units = static_cast<uint64_t>(std::min(v, 0x1p62));
+        // Scaling by a power of two is exact in float as in double, and the units fit a
+        // signed 64-bit integer: one conversion instruction, not the unsigned one's branches.
+        float v = c[k] * static_cast<float>(kFluxScale);
+        if (!(v >= 1.0f)) continue;  // also drops NaN
+        auto units = static_cast<uint64_t>(static_cast<int64_t>(std::min(v, 0x1p62f)));
         std::atomic_ref<uint64_t>(vp.flux[k]).fetch_add(units, std::memory_order_relaxed);
     }
     std::atomic_ref<uint32_t>(vp.photonCount).fetch_add(1, std::memory_order_relaxed);

@@ -57,6 +57,13 @@ public:
         return tri;
     }
 
+    size_t size() const { return triangles_.size(); }
+    const Triangle& operator[](size_t i) const { return triangles_[i]; }
+    float cdfUpper(size_t i) const { return cdf_[i]; }
+    // Meshes with at most this many triangles (a quad's two) are picked from in lanes by
+    // comparisons and selects rather than by a lookup per lane.
+    static constexpr size_t kFewTriangles = 4;
+
 private:
     // A few triangles (a quad's two) are counted without branches: the binary search's
     // branch is a coin toss there, mispredicted half the time.

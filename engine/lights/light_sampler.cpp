@@ -14,11 +14,4 @@ LightSampler::LightSampler(std::vector<const Light*> lights) : lights_(std::move
     if (!cdf_.empty()) cdf_.back() = 1.0f;
 }
 
-LightSampler::Pick LightSampler::pick(float u) const {
-    if (lights_.empty() || totalAveragePower_ <= 0) return {};
-    size_t i = static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
-    i = std::min(i, lights_.size() - 1);
-    return {lights_[i], probability(i), i};
-}
-
 }  // namespace photon

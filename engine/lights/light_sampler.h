@@ -1,6 +1,7 @@
 // Picks a light with probability proportional to its power: the rule for emitting
 // photons (flux stays equal across lights) and for direct-light shadow rays.
 #pragma once
+#include <algorithm>
 #include <vector>
 #include "light.h"
 
@@ -16,7 +17,13 @@ public:
         float probability = 0;
         size_t index = 0;  // position of the light in the list the sampler was made from
     };
-    Pick pick(float u) const;
+    // Inline: every photon and every shadow ray picks a light.
+    Pick pick(float u) const {
+        if (lights_.empty() || totalAveragePower_ <= 0) return {};
+        size_t i = lights_.size() == 1 ? 0 : static_cast<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin());
+        i = std::min(i, lights_.size() - 1);
+        return {lights_[i], probability(i), i};
+    }
     size_t size() const { return lights_.size(); }
     const Light& light(size_t i) const { return *lights_[i]; }
     // The probability with which pick() returns light i.

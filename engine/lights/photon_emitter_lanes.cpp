@@ -12,41 +12,55 @@ namespace {
 // Lanes waiting for a point on a mesh light: the light's triangles and the photon's flux.
 struct TriangleLanes {
     const EmissionTriangles* triangles[kLanes];
+    const EmissionTriangles* shared;  // the lanes' triangles when all are the same light's, else null
     Color beta[kLanes];
     alignas(32) int32_t waiting[kLanes];
 };
 
-#if defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-void emitFromTriangles(const TriangleLanes& in, PhotonEmitter::Lanes& out) {
+PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonEmitter::Lanes& out) {
     const IntLanes waiting = loadLanes<int32_t, IntLanes>(in.waiting);
     // The position's two numbers, then the direction's (PhotonEmitter::emitFrom).
     FloatLanes u1 = uniformLanes(out.state, out.increment, waiting), u2 = uniformLanes(out.state, out.increment, waiting);
     FloatLanes u3 = uniformLanes(out.state, out.increment, waiting), u4 = uniformLanes(out.state, out.increment, waiting);
-    // Each lane's triangle, gathered into lanes: field by field, from registers (writing
-    // lanes one by one to memory and reading them back as a vector stalls the load).
-    const EmissionTriangles::Triangle* tri[kLanes];
-    for (int i = 0; i < kLanes; ++i) tri[i] = &in.triangles[i]->triangleAt(waiting[i] ? u1[i] : 0.0f);
-    auto gather = [&](auto field) {
-        return FloatLanes{field(*tri[0]), field(*tri[1]), field(*tri[2]), field(*tri[3]),
-                          field(*tri[4]), field(*tri[5]), field(*tri[6]), field(*tri[7])};
-    };
     using T = EmissionTriangles::Triangle;
-    Vec3Lanes p0{gather([](const T& t) { return t.p0.x; }), gather([](const T& t) { return t.p0.y; }),
-                 gather([](const T& t) { return t.p0.z; })};
-    Vec3Lanes e1{gather([](const T& t) { return t.e1.x; }), gather([](const T& t) { return t.e1.y; }),
-                 gather([](const T& t) { return t.e1.z; })};
-    Vec3Lanes e2{gather([](const T& t) { return t.e2.x; }), gather([](const T& t) { return t.e2.y; }),
-                 gather([](const T& t) { return t.e2.z; })};
-    Vec3Lanes s{gather([](const T& t) { return t.frame.s.x; }), gather([](const T& t) { return t.frame.s.y; }),
-                gather([](const T& t) { return t.frame.s.z; })};
-    Vec3Lanes t{gather([](const T& t) { return t.frame.t.x; }), gather([](const T& t) { return t.frame.t.y; }),
-                gather([](const T& t) { return t.frame.t.z; })};
-    Vec3Lanes n{gather([](const T& t) { return t.frame.n.x; }), gather([](const T& t) { return t.frame.n.y; }),
-                gather([](const T& t) { return t.frame.n.z; })};
-    FloatLanes cdfLow = gather([](const T& t) { return t.cdfLow; });
-    FloatLanes inverseWidth = gather([](const T& t) { return t.inverseWidth; });
+    const EmissionTriangles::Triangle* tri[kLanes];
+    IntLanes picked{};
+    if (in.shared && in.shared->size() <= EmissionTriangles::kFewTriangles) {
+        // One light of a few triangles (the usual quad): each lane's triangle index by
+        // comparisons with the CDF, each field by selects among the triangles' values.
+        const EmissionTriangles& tris = *in.shared;
+        for (size_t k = 0; k < tris.size(); ++k) picked -= broadcast<FloatLanes>(tris.cdfUpper(k)) <= u1;
+        picked = select(picked > static_cast<int32_t>(tris.size() - 1), IntLanes{} + static_cast<int32_t>(tris.size() - 1), picked);
+    } else {
+        for (int i = 0; i < kLanes; ++i) tri[i] = &in.triangles[i]->triangleAt(waiting[i] ? u1[i] : 0.0f);
+    }
+    // Field by field, built in registers (lanes written one by one to memory and read back
+    // as a vector stall the load).
+    auto field = [&](auto value) {
+        if (in.shared && in.shared->size() <= EmissionTriangles::kFewTriangles) {
+            const EmissionTriangles& tris = *in.shared;
+            FloatLanes v = broadcast<FloatLanes>(value(tris[0]));
+            for (size_t k = 1; k < tris.size(); ++k)
+                v = select(picked == static_cast<int32_t>(k), broadcast<FloatLanes>(value(tris[k])), v);
+            return v;
+        }
+        return FloatLanes{value(*tri[0]), value(*tri[1]), value(*tri[2]), value(*tri[3]),
+                          value(*tri[4]), value(*tri[5]), value(*tri[6]), value(*tri[7])};
+    };
+    Vec3Lanes p0{field([](const T& t) { return t.p0.x; }), field([](const T& t) { return t.p0.y; }),
+                 field([](const T& t) { return t.p0.z; })};
+    Vec3Lanes e1{field([](const T& t) { return t.e1.x; }), field([](const T& t) { return t.e1.y; }),
+                 field([](const T& t) { return t.e1.z; })};
+    Vec3Lanes e2{field([](const T& t) { return t.e2.x; }), field([](const T& t) { return t.e2.y; }),
+                 field([](const T& t) { return t.e2.z; })};
+    Vec3Lanes s{field([](const T& t) { return t.frame.s.x; }), field([](const T& t) { return t.frame.s.y; }),
+                field([](const T& t) { return t.frame.s.z; })};
+    Vec3Lanes t{field([](const T& t) { return t.frame.t.x; }), field([](const T& t) { return t.frame.t.y; }),
+                field([](const T& t) { return t.frame.t.z; })};
+    Vec3Lanes n{field([](const T& t) { return t.frame.n.x; }), field([](const T& t) { return t.frame.n.y; }),
+                field([](const T& t) { return t.frame.n.z; })};
+    FloatLanes cdfLow = field([](const T& t) { return t.cdfLow; });
+    FloatLanes inverseWidth = field([](const T& t) { return t.inverseWidth; });
     FloatLanes b0, b1;
     uniformTriangle(EmissionTriangles::reuse(u1, cdfLow, inverseWidth), u2, b0, b1);
     FloatLanes b2 = 1.0f - b0 - b1;
@@ -66,6 +80,8 @@ void emitFromTriangles(const TriangleLanes& in, PhotonEmitter::Lanes& out) {
         out.emitted[i] = -1;
     }
 }
+PHOTON_LANES_KERNEL(emitFromTriangles, emitFromTrianglesLanes, (const TriangleLanes& in, PhotonEmitter::Lanes& out),
+                    (in, out))
 
 }  // namespace
 
@@ -102,8 +118,11 @@ void PhotonEmitter::emitLanes(const RngStream& stream, const int64_t* index, con
     // Lanes that wait for no triangle read any waiting lane's (and keep their own results).
     const EmissionTriangles* some = nullptr;
     for (int i = 0; i < kLanes && !some; ++i) some = fromTriangles.triangles[i];
-    for (int i = 0; i < kLanes; ++i)
+    fromTriangles.shared = some;
+    for (int i = 0; i < kLanes; ++i) {
         if (!fromTriangles.triangles[i]) fromTriangles.triangles[i] = some;
+        if (fromTriangles.triangles[i] != some) fromTriangles.shared = nullptr;
+    }
     emitFromTriangles(fromTriangles, out);
 }
 

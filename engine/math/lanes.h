@@ -11,10 +11,33 @@
 namespace photon {
 
 // Every helper here, and every shared template written for lanes, is always inlined: the
-// lanes' kernels are compiled for AVX2 as well as for the baseline CPU (target_clones), and
-// an out-of-line helper would run the baseline code, with a different way of passing
-// vectors, from inside the AVX2 one.
+// lanes' kernels are compiled for AVX2 as well as for the baseline CPU, and an out-of-line
+// helper would run the baseline code, with a different way of passing vectors, from inside
+// the AVX2 one.
 #define PHOTON_LANES_INLINE inline __attribute__((always_inline))
+
+// A kernel for lanes is written once, as an always-inline body; PHOTON_LANES_KERNEL makes
+// from it an AVX2 function and a baseline one and calls the first where the CPU has AVX2
+// (asked once). Chosen by hand rather than with GCC's target_clones, whose ifunc resolvers
+// run before the sanitizers' runtimes start.
+#if defined(__x86_64__)
+inline bool cpuHasAvx2() {
+    static const bool has = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return has;
+}
+#define PHOTON_LANES_KERNEL(name, body, params, args)                          \
+    __attribute__((target("avx2"))) static void name##Avx2 params { body args; } \
+    static void name params {                                                   \
+        if (cpuHasAvx2()) return name##Avx2 args;                               \
+        body args;                                                              \
+    }
+#else
+#define PHOTON_LANES_KERNEL(name, body, params, args) \
+    static void name params { body args; }
+#endif
 
 constexpr int kLanes = 8;
 using FloatLanes = float __attribute__((vector_size(4 * kLanes)));
