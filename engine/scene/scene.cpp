@@ -122,24 +122,7 @@ void Scene::prepareHitData() {
     }
 }
 
-bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = ray.o.x;
-    rh.ray.org_y = ray.o.y;
-    rh.ray.org_z = ray.o.z;
-    rh.ray.dir_x = ray.d.x;
-    rh.ray.dir_y = ray.d.y;
-    rh.ray.dir_z = ray.d.z;
-    rh.ray.tnear = 0;
-    rh.ray.tfar = ray.tMax;
-    rh.ray.mask = ~0u;
-    rh.ray.flags = 0;
-    rh.ray.time = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(rtcScene_, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+void Scene::fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const {
     hit.t = rh.ray.tfar;
     hit.shape = rh.hit.geomID;
     hit.primitive = rh.hit.primID;
@@ -152,7 +135,6 @@ bool Scene::intersect(const Ray& ray, SurfaceHit& hit) const {
     } else {
         fillTriangleHit(shape, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
     }
-    return true;
 }
 
 void Scene::fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const {

@@ -31,8 +31,30 @@ public:
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
-    // Closest hit along the ray within (0, ray.tMax).
-    bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // Closest hit along the ray within (0, ray.tMax). Inline, so that the ray goes to
+    // Embree from the caller's registers: a copy of the Ray through memory, stored field by
+    // field and read back in wider pieces, stalled every photon ray's setup.
+    bool intersect(const Ray& ray, SurfaceHit& hit) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh;
+        rh.ray.org_x = ray.o.x;
+        rh.ray.org_y = ray.o.y;
+        rh.ray.org_z = ray.o.z;
+        rh.ray.dir_x = ray.d.x;
+        rh.ray.dir_y = ray.d.y;
+        rh.ray.dir_z = ray.d.z;
+        rh.ray.tnear = 0;
+        rh.ray.tfar = ray.tMax;
+        rh.ray.mask = ~0u;
+        rh.ray.flags = 0;
+        rh.ray.time = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(rtcScene_, &context, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        fillHit(ray, rh, hit);
+        return true;
+    }
     // True if anything blocks the ray within (0, tMax).
     bool occluded(const Ray& ray) const;
 
@@ -58,6 +80,8 @@ private:
     void addSphere(uint32_t shapeIndex);
     void buildLights();
     void prepareHitData();
+    // The hit record of Embree's closest hit on the ray.
+    void fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const;
     void fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const;
     void fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const;
 
