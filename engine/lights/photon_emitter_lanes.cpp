@@ -25,7 +25,8 @@ PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonE
     using T = EmissionTriangles::Triangle;
     const EmissionTriangles::Triangle* tri[kLanes];
     IntLanes picked{};
-    if (in.shared && in.shared->size() <= EmissionTriangles::kFewTriangles) {
+    const bool fewTriangles = in.shared && in.shared->size() <= EmissionTriangles::kFewTriangles;
+    if (fewTriangles) {
         // One light of a few triangles (the usual quad): each lane's triangle index by
         // comparisons with the CDF, each field by selects among the triangles' values.
         const EmissionTriangles& tris = *in.shared;
@@ -37,7 +38,7 @@ PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonE
     // Field by field, built in registers (lanes written one by one to memory and read back
     // as a vector stall the load).
     auto field = [&](auto value) {
-        if (in.shared && in.shared->size() <= EmissionTriangles::kFewTriangles) {
+        if (fewTriangles) {
             const EmissionTriangles& tris = *in.shared;
             FloatLanes v = broadcast<FloatLanes>(value(tris[0]));
             for (size_t k = 1; k < tris.size(); ++k)

@@ -93,11 +93,6 @@ PHOTON_LANES_INLINE F broadcast(float v) {
     return F{} + v;
 }
 
-PHOTON_LANES_INLINE bool any(IntLanes m) {
-    for (int i = 0; i < kLanes; ++i)
-        if (m[i]) return true;
-    return false;
-}
 PHOTON_LANES_INLINE bool isFiniteLanes(float x) { return std::isfinite(x); }
 PHOTON_LANES_INLINE IntLanes isFiniteLanes(FloatLanes x) {
     UintLanes bits;
@@ -124,7 +119,6 @@ PHOTON_LANES_INLINE Vec3Lanes operator+(const Vec3Lanes& a, const Vec3Lanes& b) 
 PHOTON_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 PHOTON_LANES_INLINE Vec3Lanes operator*(const Vec3Lanes& a, const Vec3Lanes& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 PHOTON_LANES_INLINE Vec3Lanes operator*(const Vec3Lanes& a, FloatLanes s) { return {a.x * s, a.y * s, a.z * s}; }
-PHOTON_LANES_INLINE Vec3Lanes operator-(const Vec3Lanes& a) { return {-a.x, -a.y, -a.z}; }
 PHOTON_LANES_INLINE FloatLanes dot(const Vec3Lanes& a, const Vec3Lanes& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 PHOTON_LANES_INLINE FloatLanes maxComponent(const Vec3Lanes& a) { return maxValue(a.x, maxValue(a.y, a.z)); }
 PHOTON_LANES_INLINE Vec3Lanes select(IntLanes m, const Vec3Lanes& a, const Vec3Lanes& b) {
