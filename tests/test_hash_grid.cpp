@@ -31,15 +31,19 @@ Spheres randomSpheres(size_t n) {
 HashGrid buildGrid(const Spheres& s) {
     HashGrid grid;
     grid.build(
-        s.centers.size(), [&](size_t i) { return s.centers[i]; }, [&](size_t i) { return s.radii[i]; });
+        s.centers.size(), [&](size_t i) { return s.centers[i]; }, [&](size_t i) { return s.radii[i] * s.radii[i]; });
     return grid;
 }
 
-std::vector<uint32_t> bucketEntries(const HashGrid& grid, Vec3 p) {
+std::vector<uint32_t> bucketEntries(const HashGrid& grid, const Spheres& s, Vec3 p) {
     uint32_t bucket = grid.bucketOf(p);
     if (bucket == HashGrid::kNoBucket) return {};
     HashGrid::Span span = grid.bucket(bucket);
-    std::vector<uint32_t> entries(span.begin, span.end);
+    std::vector<uint32_t> entries(span.indices, span.indices + span.size);
+    for (uint32_t k = 0; k < span.size; ++k) {  // each entry carries its sphere
+        EXPECT_EQ(span.spheres[k].center, s.centers[span.indices[k]]);
+        EXPECT_EQ(span.spheres[k].radiusSquared, s.radii[span.indices[k]] * s.radii[span.indices[k]]);
+    }
     std::sort(entries.begin(), entries.end());
     return entries;
 }
@@ -52,7 +56,7 @@ TEST(HashGrid, EveryContainingSphereIsInThePointsBucket) {
         Rng rng(7, 1, q, StreamPurpose::Test);
         // Query points reach a little past the cube, where sphere edges still are.
         Vec3 p{1.1f * rng.uniform() - 0.05f, 1.1f * rng.uniform() - 0.05f, 1.1f * rng.uniform() - 0.05f};
-        std::vector<uint32_t> entries = bucketEntries(grid, p);
+        std::vector<uint32_t> entries = bucketEntries(grid, s, p);
         for (size_t i = 0; i < s.centers.size(); ++i) {
             if (s.radii[i] > 0 && lengthSquared(p - s.centers[i]) <= s.radii[i] * s.radii[i]) {
                 ++containing;
@@ -70,7 +74,7 @@ TEST(HashGrid, PointsOnTheSurfaceAreInsideAndPointsFarOutsideHaveNoBucket) {
     s.centers = {{0.5f, 0.5f, 0.5f}, {0.2f, 0.3f, 0.9f}};
     s.radii = {0.125f, 0.03125f};  // exact in binary: p - c and r*r are exact too
     const HashGrid grid = buildGrid(s);
-    std::vector<uint32_t> atSurface = bucketEntries(grid, {0.625f, 0.5f, 0.5f});
+    std::vector<uint32_t> atSurface = bucketEntries(grid, s, {0.625f, 0.5f, 0.5f});
     EXPECT_TRUE(std::binary_search(atSurface.begin(), atSurface.end(), 0u));
     EXPECT_EQ(grid.bucketOf({5, 5, 5}), HashGrid::kNoBucket);
     EXPECT_EQ(grid.bucketOf({-1, 0.5f, 0.5f}), HashGrid::kNoBucket);

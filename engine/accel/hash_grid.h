@@ -13,10 +13,10 @@ namespace photon {
 
 class HashGrid {
 public:
-    // Builds over `count` spheres; centers[i] and radii[i] are read through the callables.
-    // Spheres with radius <= 0 are left out.
-    template <class CenterFn, class RadiusFn>
-    void build(size_t count, CenterFn center, RadiusFn radius);
+    // Builds over `count` spheres; center(i) and radiusSquared(i) are read through the
+    // callables. Spheres with radius <= 0 are left out.
+    template <class CenterFn, class RadiusSquaredFn>
+    void build(size_t count, CenterFn center, RadiusSquaredFn radiusSquared);
 
     // Photons look up their bucket in three steps so that callers can work on many at once
     // and prefetch each step's memory before the next needs it.
@@ -27,15 +27,25 @@ public:
         return cellOf(p, ix, iy, iz) ? hash(ix, iy, iz) : kNoBucket;
     }
     void prefetchBucket(uint32_t h) const { __builtin_prefetch(&offsets_[h]); }
-    // Indices of the spheres entered in bucket h: a superset of those containing any point
-    // of its cells (callers test the distance).
-    struct Span {
-        const uint32_t *begin = nullptr, *end = nullptr;
+    struct Sphere {
+        Vec3 center;
+        float radiusSquared;
     };
-    Span bucket(uint32_t h) const { return {entries_.data() + offsets_[h], entries_.data() + offsets_[h + 1]}; }
+    // The spheres entered in bucket h, with their indices: a superset of those containing
+    // any point of its cells (callers test the distance).
+    struct Span {
+        const Sphere* spheres = nullptr;
+        const uint32_t* indices = nullptr;
+        uint32_t size = 0;
+    };
+    Span bucket(uint32_t h) const {
+        return {spheres_.data() + offsets_[h], indices_.data() + offsets_[h], offsets_[h + 1] - offsets_[h]};
+    }
 
-    size_t entryCount() const { return entries_.size(); }
-    size_t bytes() const { return (offsets_.capacity() + entries_.capacity()) * sizeof(uint32_t); }
+    size_t entryCount() const { return indices_.size(); }
+    size_t bytes() const {
+        return (offsets_.capacity() + indices_.capacity()) * sizeof(uint32_t) + spheres_.capacity() * sizeof(Sphere);
+    }
 
 private:
     struct CellRange {
@@ -49,14 +59,15 @@ private:
                 (static_cast<uint32_t>(iz) * 83492791u)) & mask_;
     }
     void setup(size_t count, Vec3 lo, Vec3 hi, double radiusSum, size_t withRadius);
-    void countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radii);
+    void countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radiiSquared);
 
     Vec3 origin_;
     float invCellSize_ = 1;
     int resolution_[3] = {1, 1, 1};
     uint32_t mask_ = 0;
-    std::vector<uint32_t> offsets_;  // bucket h holds entries_[offsets_[h], offsets_[h+1])
-    std::vector<uint32_t> entries_;
+    std::vector<uint32_t> offsets_;  // bucket h holds entries [offsets_[h], offsets_[h+1])
+    std::vector<Sphere> spheres_;    // by entry
+    std::vector<uint32_t> indices_;  // by entry: the sphere's index
 };
 
 }  // namespace photon

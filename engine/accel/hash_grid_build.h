@@ -4,15 +4,15 @@
 
 namespace photon {
 
-template <class CenterFn, class RadiusFn>
-void HashGrid::build(size_t count, CenterFn center, RadiusFn radius) {
+template <class CenterFn, class RadiusSquaredFn>
+void HashGrid::build(size_t count, CenterFn center, RadiusSquaredFn radiusSquared) {
     std::vector<Vec3> centers(count);
-    std::vector<float> radii(count);
+    std::vector<float> radiiSquared(count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         centers[i] = center(i);
-        radii[i] = radius(i);
+        radiiSquared[i] = radiusSquared(i);
     });
-    countAndFill(count, centers, radii);
+    countAndFill(count, centers, radiiSquared);
 }
 
 }  // namespace photon

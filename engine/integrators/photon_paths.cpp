@@ -9,6 +9,11 @@ namespace photon {
 namespace {
 
 constexpr int kWalkLanes = 2 * kLanes;
+// Eight lanes are refilled with new photons once this many of them are empty (or all are):
+// emission costs the same for one photon as for eight, while the rays are cast lane by lane
+// and do not mind empty lanes. Measured on photon-bench: 6 about 3% faster than refilling
+// every empty lane at once; 4 and 8 between the two.
+constexpr int kRefillThreshold = 6;
 
 // Sixteen photons side by side, one per lane, structure of arrays so that eight lanes load
 // into one SIMD register.
@@ -129,9 +134,13 @@ public:
     }
 
 private:
-    // New photons for the empty lanes among [first, first + 8), while any are left.
+    // New photons for the empty lanes among [first, first + 8), while any are left, once
+    // enough of them are empty.
     void refill(int first, int64_t& next, int64_t end) {
         PhotonLanes& L = lanes_;
+        int empty = 0;
+        for (int k = 0; k < kLanes; ++k) empty += !L.alive[first + k];
+        if (empty < kRefillThreshold && empty < kLanes) return;
         for (;;) {
             int64_t index[kLanes];
             alignas(32) int32_t want[kLanes];

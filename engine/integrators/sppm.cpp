@@ -51,7 +51,7 @@ bool SppmIntegrator::renderPass(const CancelToken& cancel) {
 
 void SppmIntegrator::buildGrid() {
     grid_.build(
-        discs_.size(), [&](size_t i) { return discs_[i].p; }, [&](size_t i) { return std::sqrt(discs_[i].r2); });
+        discs_.size(), [&](size_t i) { return discs_[i].p; }, [&](size_t i) { return discs_[i].r2; });
 }
 
 // Hachisuka & Jensen 2009, eq. 7-10: N' = N + alpha M, R'^2 = R^2 (N + alpha M)/(N + M),

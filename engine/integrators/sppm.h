@@ -82,11 +82,11 @@ private:
         Vec3 p, n, wi;  // position, shading normal, direction back toward the photon's origin
         Color flux;
     };
-    // Photon hits are gathered in batches so that the memory each needs (grid bucket,
-    // entries, discs, visible points) can be fetched for the whole batch at once.
-    class GatherBatch;
-    class BatchingSink;
-    void gather(GatherBatch& batch, PhotonCounters& counters);
+    // Photon hits reach their visible points through a pipeline of batches, so that the
+    // memory each step needs (grid bucket, entries, discs, visible points) is fetched well
+    // before it is used (sppm_gather_pipeline.h).
+    class GatherPipeline;
+    class GatheringSink;
     void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
     void updateStatistics();
 

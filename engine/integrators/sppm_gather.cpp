@@ -1,65 +1,75 @@
-// Adding a batch of photon hits to the visible points around them. The lookups form a
-// chain of dependent loads (grid bucket -> entries -> discs -> visible point), each likely
-// a cache miss; walking the whole batch one step at a time, with a prefetch for the next
-// step, keeps many misses in flight instead of one.
+// The gather's steps (sppm_gather_pipeline.h) and what one accepted photon adds.
 #include <atomic>
 #include "photon_kernel.h"
-#include "sppm_gather_batch.h"
+#include "sppm_gather_pipeline.h"
 
 namespace photon {
 
-namespace {
 
-struct Candidate {
-    uint32_t hit, point;
-    float d2;  // squared distance from the hit to the point
-};
-
-// Per-thread scratch for the candidates inside their discs: no allocation per batch.
-std::vector<Candidate>& gatherScratch() {
-    thread_local std::vector<Candidate> scratch;
-    return scratch;
+void SppmIntegrator::GatherPipeline::advance() {
+    // Oldest first: the batch after its last step is emptied and fills next.
+    addInside(at(3));
+    testSpheres(at(2));
+    openBuckets(at(1));
+    findBuckets(at(0));
+    filling_ = (filling_ + 1) % kSlots;
 }
 
+void SppmIntegrator::GatherPipeline::findBuckets(Batch& b) {
+    for (size_t i = 0; i < b.size; ++i) {
+        b.buckets[i] = sppm_.grid_.bucketOf(b.hits[i].p);
+        if (b.buckets[i] != HashGrid::kNoBucket) sppm_.grid_.prefetchBucket(b.buckets[i]);
+    }
+}
+
+namespace {
+// Every cache line of [begin, end).
+template <class T>
+void prefetchRange(const T* begin, const T* end) {
+    constexpr uintptr_t kLine = 64;
+    for (uintptr_t a = reinterpret_cast<uintptr_t>(begin) & ~(kLine - 1); a < reinterpret_cast<uintptr_t>(end); a += kLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(a));
+}
 }  // namespace
 
-void SppmIntegrator::gather(GatherBatch& batch, PhotonCounters& counters) {
-    const size_t n = batch.size();
-    std::array<HashGrid::Span, GatherBatch::kCapacity> spans{};
-    std::array<uint32_t, GatherBatch::kCapacity> buckets;
-    for (size_t i = 0; i < n; ++i) {
-        buckets[i] = grid_.bucketOf(batch[i].p);
-        if (buckets[i] != HashGrid::kNoBucket) grid_.prefetchBucket(buckets[i]);
-    }
-    for (size_t i = 0; i < n; ++i) {
-        if (buckets[i] == HashGrid::kNoBucket) continue;
-        spans[i] = grid_.bucket(buckets[i]);
-        __builtin_prefetch(spans[i].begin);
-    }
-    for (size_t i = 0; i < n; ++i)
-        for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) __builtin_prefetch(&discs_[*e]);
-
-    // Distance tests, written without a branch on the outcome (about one candidate in ten is
-    // inside its disc, at random, which a branch predictor cannot learn): every candidate is
-    // written and the end of the list moves on only for those inside.
+void SppmIntegrator::GatherPipeline::openBuckets(Batch& b) {
     size_t total = 0;
-    for (size_t i = 0; i < n; ++i) total += static_cast<size_t>(spans[i].end - spans[i].begin);
-    counters.candidates += static_cast<int64_t>(total);
-    std::vector<Candidate>& inside = gatherScratch();
-    if (inside.size() < total) inside.resize(total);
+    for (size_t i = 0; i < b.size; ++i) {
+        b.spans[i] = b.buckets[i] == HashGrid::kNoBucket ? HashGrid::Span{} : sppm_.grid_.bucket(b.buckets[i]);
+        prefetchRange(b.spans[i].spheres, b.spans[i].spheres + b.spans[i].size);
+        prefetchRange(b.spans[i].indices, b.spans[i].indices + b.spans[i].size);
+        total += b.spans[i].size;
+    }
+    counters_.candidates += static_cast<int64_t>(total);
+    if (b.inside.size() < total) b.inside.resize(total);
+}
+
+void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
+    // Written without a branch on the outcome (about one candidate in ten is inside its
+    // disc, at random, which a branch predictor cannot learn): every candidate is written
+    // and the end of the list moves on only for those inside.
     size_t count = 0;
-    for (size_t i = 0; i < n; ++i)
-        for (const uint32_t* e = spans[i].begin; e != spans[i].end; ++e) {
-            const GatherDisc& disc = discs_[*e];
-            float d2 = lengthSquared(disc.p - batch[i].p);
-            inside[count] = {static_cast<uint32_t>(i), *e, d2};
-            count += d2 <= disc.r2;
+    for (size_t i = 0; i < b.size; ++i) {
+        const HashGrid::Span& span = b.spans[i];
+        const Vec3 p = b.hits[i].p;
+        for (uint32_t k = 0; k < span.size; ++k) {
+            const HashGrid::Sphere& sphere = span.spheres[k];
+            float d2 = lengthSquared(sphere.center - p);
+            b.inside[count] = {static_cast<uint32_t>(i), span.indices[k], d2 / sphere.radiusSquared};
+            count += d2 <= sphere.radiusSquared;
         }
-    for (size_t c = 0; c < count; ++c) __builtin_prefetch(&visible_[inside[c].point], 1);
-    // The kernel's d^2 / r^2 only for the one candidate in ten that is inside.
-    for (size_t c = 0; c < count; ++c)
-        addPhoton(batch[inside[c].hit], inside[c].point, inside[c].d2 / discs_[inside[c].point].r2, counters);
-    batch.clear();
+    }
+    b.insideCount = count;
+    for (size_t c = 0; c < count; ++c) __builtin_prefetch(&sppm_.visible_[b.inside[c].point], 1);
+}
+
+void SppmIntegrator::GatherPipeline::addInside(Batch& b) {
+    for (size_t c = 0; c < b.insideCount; ++c) {
+        const Candidate& k = b.inside[c];
+        sppm_.addPhoton(b.hits[k.hit], k.point, k.d2OverR2, counters_);
+    }
+    b.size = 0;
+    b.insideCount = 0;
 }
 
 void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters) {

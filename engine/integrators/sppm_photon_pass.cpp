@@ -6,7 +6,7 @@
 #include <atomic>
 #include "photon_paths.h"
 #include "shading.h"
-#include "sppm_gather_batch.h"
+#include "sppm_gather_pipeline.h"
 
 namespace photon {
 
@@ -15,22 +15,21 @@ constexpr int64_t kPhotonsPerChunk = 1024;
 
 }  // namespace
 
-// Photon arrivals go into the batch, which is gathered whenever it fills.
-class SppmIntegrator::BatchingSink final : public PhotonArrivalSink {
+// Photon arrivals go into the gather pipeline.
+class SppmIntegrator::GatheringSink final : public PhotonArrivalSink {
 public:
-    BatchingSink(SppmIntegrator& sppm, PhotonCounters& counters) : sppm_(sppm), counters_(counters) {}
-    void flush() { sppm_.gather(batch_, counters_); }
+    GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters)
+        : pipeline_(sppm, counters), photonDirect_(sppm.settings_.direct == DirectLighting::Photons) {}
+    void flush() { pipeline_.flush(); }
     void arrive(const PhotonArrival& a) override {
         // Direct light may come from light sampling in the camera pass instead.
-        if (a.depth == 0 && sppm_.settings_.direct != DirectLighting::Photons) return;
-        batch_.push({a.p, a.ns, a.wi, a.flux});
-        if (batch_.full()) sppm_.gather(batch_, counters_);
+        if (a.depth == 0 && !photonDirect_) return;
+        pipeline_.push({a.p, a.ns, a.wi, a.flux});
     }
 
 private:
-    SppmIntegrator& sppm_;
-    PhotonCounters& counters_;
-    GatherBatch batch_;
+    GatherPipeline pipeline_;
+    bool photonDirect_;
 };
 
 void SppmIntegrator::photonPass(const CancelToken& cancel) {
@@ -41,7 +40,7 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
             PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passes_), settings_.maxDepth};
             PhotonPathCounters pathCounters;
-            BatchingSink sink(*this, acc);
+            GatheringSink sink(*this, acc);
             for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)
                 tracePhotonPaths(*scene_, emitter_, paths, c * kPhotonsPerChunk,
                                  std::min(total, (c + 1) * kPhotonsPerChunk), sink, pathCounters);
