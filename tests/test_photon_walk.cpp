@@ -5,6 +5,7 @@
 // with the same flux, whatever the lanes' order.
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <iterator>
 #include <tuple>
 #include <vector>
 #include "integrators/photon_paths.h"
@@ -51,7 +52,8 @@ void referenceWalk(const Scene& scene, const PhotonEmitter& emitter, const Photo
             ++counters.segments;
             Vec3 wi = -ray.d;
             ShadingPoint sp = makeShadingPoint(scene, hit, wi);
-            if (!sp.material->isDeltaOnly()) out.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, onlySpecular});
+            if (!sp.material->isDeltaOnly() && depth >= settings.firstArrivalDepth)
+                out.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, onlySpecular});
             if (depth + 1 == settings.maxDepth) break;
             float uLobe = rng.uniform();
             Vec2 u{rng.uniform(), rng.uniform()};
@@ -126,6 +128,22 @@ TEST(PhotonWalk, MaximumDepthEndsPathsAlike) {
     expectSameWalk("cornell-box", {7, 1, 2, false}, 20000, landings);
     EXPECT_GT(indirectShare(landings), 0.2);
     for (const Landing& l : landings) ASSERT_LT(l.depth, 2);
+}
+
+// SPPM with direct light from light sampling: no arrivals straight from the lights, and
+// every later one as before.
+TEST(PhotonWalk, ArrivalsBeforeTheFirstArrivalDepthAreNotHandedOn) {
+    std::vector<Landing> all, later;
+    expectSameWalk("cornell-glass", {3, 0, 8, false, 0}, 20000, all);
+    expectSameWalk("cornell-glass", {3, 0, 8, false, 1}, 20000, later);
+    std::vector<Landing> expected;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(expected), [](const Landing& l) { return l.depth >= 1; });
+    ASSERT_EQ(later.size(), expected.size());
+    ASSERT_LT(later.size(), all.size() * 3 / 4);  // the lights' own photons were many
+    for (size_t i = 0; i < later.size(); ++i) {
+        ASSERT_EQ(later[i].p, expected[i].p) << i;
+        ASSERT_EQ(later[i].flux, expected[i].flux) << i;
+    }
 }
 
 // The caustic map's walk (delta bounces only) ends at the first Lambertian surface.

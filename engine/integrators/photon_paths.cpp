@@ -186,7 +186,8 @@ private:
         const ShapeScattering& shape = shapes_[hit.shape];
         if (shape.inLanes) {
             turnTowardViewer(hit, wi);  // the material is two-sided
-            sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+            if (depth >= settings_.firstArrivalDepth)
+                sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
             if (last) return false;
             Color tint = shape.textured ? shape.material->tint().eval(hit.uv) : shape.tint;
             L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
@@ -197,7 +198,8 @@ private:
             return true;
         }
         ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
-        if (!sp.material->isDeltaOnly()) sink_.arrive({sp.hit.p, sp.hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+        if (!sp.material->isDeltaOnly() && depth >= settings_.firstArrivalDepth)
+            sink_.arrive({sp.hit.p, sp.hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
         if (!last) bounce(i, sp, wi);
         return false;
     }

@@ -36,6 +36,9 @@ struct PhotonPathSettings {
     int maxDepth = 8;     // surfaces a photon reaches at most
     // Follow only delta bounces (a caustic map): a path ends at its first non-delta sample.
     bool specularOnly = false;
+    // Arrivals at smaller depths are not handed to the sink (1: no photons straight from
+    // the lights, where direct light is found another way).
+    int firstArrivalDepth = 0;
 };
 
 struct PhotonPathCounters {

@@ -18,19 +18,17 @@ struct ChunkResult {
 };
 
 // The global map keeps every photon arriving at a non-specular surface; the caustic map
-// only those that came there through one or more specular bounces (L S+ D), whose paths
-// the tracer ends at their first non-specular bounce.
+// only those that came there through one or more specular bounces (L S+ D): the walk hands
+// on none straight from the lights and ends paths at their first non-specular bounce.
 class StoringSink final : public PhotonArrivalSink {
 public:
-    StoringSink(PhotonMapKind kind, ChunkResult& out) : kind_(kind), out_(out) {}
+    explicit StoringSink(ChunkResult& out) : out_(out) {}
     void arrive(const PhotonArrival& a) override {
-        if (kind_ == PhotonMapKind::Caustic && a.depth == 0) return;
         out_.photons.emplace_back(a.p, a.wi, a.flux, a.onlySpecular ? 0 : StoredPhoton::kIndirect);
         out_.normals.push_back(StoredPhoton::encodeDirection(a.ns));
     }
 
 private:
-    PhotonMapKind kind_;
     ChunkResult& out_;
 };
 
@@ -43,8 +41,9 @@ PhotonTraceResult tracePhotonMap(const Scene& scene, const PhotonEmitter& emitte
     tbb::parallel_for(int64_t(0), chunks, [&](int64_t c) {
         if (cancel.cancelled()) return;
         const RenderSettings& s = scene.settings();
-        PhotonPathSettings paths{s.seed, static_cast<uint64_t>(kind), s.maxDepth, kind == PhotonMapKind::Caustic};
-        StoringSink sink(kind, results[c]);
+        const bool caustic = kind == PhotonMapKind::Caustic;
+        PhotonPathSettings paths{s.seed, static_cast<uint64_t>(kind), s.maxDepth, caustic, caustic ? 1 : 0};
+        StoringSink sink(results[c]);
         PhotonPathCounters counters;
         tracePhotonPaths(scene, emitter, paths, c * kPhotonsPerChunk, std::min(count, (c + 1) * kPhotonsPerChunk),
                          sink, counters);

@@ -18,18 +18,12 @@ constexpr int64_t kPhotonsPerChunk = 1024;
 // Photon arrivals go into the gather pipeline.
 class SppmIntegrator::GatheringSink final : public PhotonArrivalSink {
 public:
-    GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters)
-        : pipeline_(sppm, counters), photonDirect_(sppm.settings_.direct == DirectLighting::Photons) {}
+    GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters) : pipeline_(sppm, counters) {}
     void flush() { pipeline_.flush(); }
-    void arrive(const PhotonArrival& a) override {
-        // Direct light may come from light sampling in the camera pass instead.
-        if (a.depth == 0 && !photonDirect_) return;
-        pipeline_.push({a.p, a.ns, a.wi, a.flux});
-    }
+    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux}); }
 
 private:
     GatherPipeline pipeline_;
-    bool photonDirect_;
 };
 
 void SppmIntegrator::photonPass(const CancelToken& cancel) {
@@ -39,6 +33,8 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
             PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passes_), settings_.maxDepth};
+            // Direct light may come from light sampling in the camera pass instead.
+            paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
             PhotonPathCounters pathCounters;
             GatheringSink sink(*this, acc);
             for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)
