@@ -1,6 +1,7 @@
 #include "photon_paths.h"
 #include <vector>
 #include "../math/lanes.h"
+#include "../materials/fresnel.h"
 #include "../math/sampling.h"
 #include "photon_roulette.h"
 
@@ -25,9 +26,12 @@ struct PhotonLanes {
     alignas(32) int32_t depth[kWalkLanes];         // surfaces reached so far
     alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
-    // A Lambertian hit waiting for its bounce: where, the normals (turned toward the
-    // photon), the surface colour.
+    // A hit waiting for its bounce in lanes, off a Lambertian or a smooth specular surface:
+    // which kind, where, the normals (turned toward the photon on two-sided surfaces), the
+    // surface colour, and a specular surface's index (0: a mirror).
     alignas(32) int32_t lambertian[kWalkLanes];
+    alignas(32) int32_t specular[kWalkLanes];
+    alignas(32) float ior[kWalkLanes];
     alignas(32) float px[kWalkLanes], py[kWalkLanes], pz[kWalkLanes];
     alignas(32) float ngx[kWalkLanes], ngy[kWalkLanes], ngz[kWalkLanes];
     alignas(32) float nsx[kWalkLanes], nsy[kWalkLanes], nsz[kWalkLanes];
@@ -51,8 +55,42 @@ void storeVec3(float* x, float* y, float* z, const Vec3Lanes& v) {
     storeLanes(z, v.z);
 }
 
+// What follows a bounce sampled for the waiting lanes among [first, first + 8), exactly as
+// photonAfterRoulette and spawnRay do it for one photon: Russian roulette (photon_roulette.h:
+// survive with q = max(beta weight) / max(beta)), the next ray from just off the surface on
+// the side it heads to (ray.h), the depth, and whether the path is still specular only.
+PHOTON_LANES_INLINE void continueLanes(PhotonLanes& L, int first, IntLanes waiting, IntLanes sampled, const Vec3Lanes& wi,
+                                       const Vec3Lanes& weight, IntLanes bounceIsDelta) {
+    uint64_t* state = L.state + first;
+    const uint64_t* increment = L.increment + first;
+    Vec3Lanes beta = loadVec3(L.betaR + first, L.betaG + first, L.betaB + first);
+    Vec3Lanes next = beta * weight;
+    FloatLanes q = maxComponent(next) / maxComponent(beta);
+    IntLanes rolls = sampled & (q < 1.0f);
+    FloatLanes u = uniformLanes(state, increment, rolls);
+    IntLanes survives = sampled & ~(rolls & (u >= q));
+    next = select(rolls, next * (1.0f / q), next);
+    survives &= (maxComponent(next) > 0.0f) & isFiniteLanes(next.x) & isFiniteLanes(next.y) & isFiniteLanes(next.z);
+
+    Vec3Lanes p = loadVec3(L.px + first, L.py + first, L.pz + first);
+    Vec3Lanes ng = loadVec3(L.ngx + first, L.ngy + first, L.ngz + first);
+    FloatLanes eps = rayOffsetDistance(p.x, p.y, p.z);
+    Vec3Lanes offset = ng * eps;
+    Vec3Lanes o = select(dot(wi, ng) >= 0.0f, p + offset, p - offset);
+
+    storeVec3(L.ox + first, L.oy + first, L.oz + first, select(waiting, o, loadVec3(L.ox + first, L.oy + first, L.oz + first)));
+    storeVec3(L.dx + first, L.dy + first, L.dz + first, select(waiting, wi, loadVec3(L.dx + first, L.dy + first, L.dz + first)));
+    storeVec3(L.betaR + first, L.betaG + first, L.betaB + first, select(waiting, next, beta));
+    IntLanes depth = loadLanes<int32_t, IntLanes>(L.depth + first);
+    storeLanes(L.depth + first, select(waiting, depth + 1, depth));
+    IntLanes onlySpecular = loadLanes<int32_t, IntLanes>(L.onlySpecular + first);
+    storeLanes(L.onlySpecular + first, onlySpecular & (~waiting | bounceIsDelta));
+    IntLanes alive = loadLanes<int32_t, IntLanes>(L.alive + first);
+    storeLanes(L.alive + first, select(waiting, survives, alive));
+}
+
 // The Lambertian bounce of lanes [first, first + 8) that hold a waiting hit: exactly what
-// Diffuse::sample, photonAfterRoulette and spawnRay do for one photon, with the same random
+// Diffuse::sample and the walk's continuation do for one photon, with the same random
 // numbers, for eight at once.
 PHOTON_LANES_INLINE void bounceLambertianLanes(PhotonLanes& L, int first) {
     const IntLanes waiting = loadLanes<int32_t, IntLanes>(L.lambertian + first);
@@ -71,36 +109,47 @@ PHOTON_LANES_INLINE void bounceLambertianLanes(PhotonLanes& L, int first) {
     Vec3Lanes s, t;
     orthonormalBasis(ns.x, ns.y, ns.z, s.x, s.y, s.z, t.x, t.y, t.z);
     Vec3Lanes wi = s * lx + t * ly + ns * lz;
-
-    // Russian roulette (photon_roulette.h): survive with q = max(beta f) / max(beta).
-    Vec3Lanes beta = loadVec3(L.betaR + first, L.betaG + first, L.betaB + first);
-    Vec3Lanes next = beta * loadVec3(L.tintR + first, L.tintG + first, L.tintB + first);
-    FloatLanes q = maxComponent(next) / maxComponent(beta);
-    IntLanes rolls = sampled & (q < 1.0f);
-    FloatLanes u = uniformLanes(state, increment, rolls);
-    IntLanes survives = sampled & ~(rolls & (u >= q));
-    next = select(rolls, next * (1.0f / q), next);
-    survives &= (maxComponent(next) > 0.0f) & isFiniteLanes(next.x) & isFiniteLanes(next.y) & isFiniteLanes(next.z);
-
-    // The next ray leaves from just off the surface, on the side it heads to (ray.h).
-    Vec3Lanes p = loadVec3(L.px + first, L.py + first, L.pz + first);
-    Vec3Lanes ng = loadVec3(L.ngx + first, L.ngy + first, L.ngz + first);
-    FloatLanes eps = rayOffsetDistance(p.x, p.y, p.z);
-    Vec3Lanes offset = ng * eps;
-    Vec3Lanes o = select(dot(wi, ng) >= 0.0f, p + offset, p - offset);
-
-    storeVec3(L.ox + first, L.oy + first, L.oz + first, select(waiting, o, loadVec3(L.ox + first, L.oy + first, L.oz + first)));
-    storeVec3(L.dx + first, L.dy + first, L.dz + first, select(waiting, wi, d));
-    storeVec3(L.betaR + first, L.betaG + first, L.betaB + first, select(waiting, next, beta));
-    IntLanes depth = loadLanes<int32_t, IntLanes>(L.depth + first);
-    storeLanes(L.depth + first, select(waiting, depth + 1, depth));
-    IntLanes onlySpecular = loadLanes<int32_t, IntLanes>(L.onlySpecular + first);
-    storeLanes(L.onlySpecular + first, onlySpecular & ~waiting);
-    IntLanes alive = loadLanes<int32_t, IntLanes>(L.alive + first);
-    storeLanes(L.alive + first, select(waiting, survives, alive));
+    continueLanes(L, first, waiting, sampled, wi, loadVec3(L.tintR + first, L.tintG + first, L.tintB + first), IntLanes{});
     storeLanes(L.lambertian + first, IntLanes{});
 }
 PHOTON_LANES_KERNEL(bounceLambertian, bounceLambertianLanes, (PhotonLanes & L, int first), (L, first))
+
+// The bounce off a perfect mirror or a smooth dielectric of lanes [first, first + 8) that
+// hold a waiting hit: Mirror::sample and Dielectric::sample (Fresnel's choice between
+// reflection and refraction, materials/fresnel.h) in the same local frame, for eight at once.
+PHOTON_LANES_INLINE void bounceSpecularLanes(PhotonLanes& L, int first) {
+    const IntLanes waiting = loadLanes<int32_t, IntLanes>(L.specular + first);
+    uint64_t* state = L.state + first;
+    const uint64_t* increment = L.increment + first;
+    FloatLanes uLobe = uniformLanes(state, increment, waiting);
+    // The two numbers any material is given for its direction: a Dirac lobe needs none.
+    (void)uniformLanes(state, increment, waiting);
+    (void)uniformLanes(state, increment, waiting);
+
+    Vec3Lanes d = loadVec3(L.dx + first, L.dy + first, L.dz + first);
+    Vec3Lanes ns = loadVec3(L.nsx + first, L.nsy + first, L.nsz + first);
+    Vec3Lanes s, t;
+    orthonormalBasis(ns.x, ns.y, ns.z, s.x, s.y, s.z, t.x, t.y, t.z);
+    const Vec3Lanes wo{-d.x, -d.y, -d.z};
+    const FloatLanes ox = dot(wo, s), oy = dot(wo, t), oz = dot(wo, ns);  // in the local frame
+
+    const FloatLanes ior = loadLanes<float, FloatLanes>(L.ior + first);
+    const IntLanes mirror = ior == 0.0f;
+    FloatLanes fresnel = fresnelDielectric(oz, ior);
+    FloatLanes tx, ty, tz, etap;
+    const FloatLanes zero{}, one = broadcast<FloatLanes>(1.0f);
+    IntLanes totalReflection = refractComponents(ox, oy, oz, zero, zero, one, ior, tx, ty, tz, etap);
+    IntLanes reflects = mirror | (uLobe < fresnel);
+    // The conditions are written as the materials' tests negated, so that NaNs fare alike.
+    IntLanes refracts = ~totalReflection & ~((1.0f - fresnel) <= 0.0f);
+    IntLanes sampled = waiting & select(mirror, ~(oz <= 0.0f), (oz != 0.0f) & (reflects | refracts));
+    Vec3Lanes local = select(reflects, Vec3Lanes{-ox, -oy, oz}, Vec3Lanes{tx, ty, tz});
+    Vec3Lanes wi = s * local.x + t * local.y + ns * local.z;
+    // The weight is the tint either way (importance is not scaled across the boundary).
+    continueLanes(L, first, waiting, sampled, wi, loadVec3(L.tintR + first, L.tintG + first, L.tintB + first), ~IntLanes{});
+    storeLanes(L.specular + first, IntLanes{});
+}
+PHOTON_LANES_KERNEL(bounceSpecular, bounceSpecularLanes, (PhotonLanes & L, int first), (L, first))
 
 class PhotonWalk {
 public:
@@ -108,14 +157,20 @@ public:
                PhotonArrivalSink& sink, PhotonPathCounters& counters)
         : scene_(scene), emitter_(emitter), settings_(settings), stream_(settings.seed, settings.stream, StreamPurpose::Photon),
           sink_(sink), counters_(counters) {
-        // Two-sided Lambertian surfaces bounce in lanes; the caustic map's walk ends at
-        // them anyway (its paths stop at the first non-delta bounce).
+        // Two-sided Lambertian surfaces bounce in lanes (the caustic map's walk ends at them
+        // anyway: its paths stop at the first non-delta bounce), and so do mirrors and
+        // smooth dielectrics.
         for (const ShapeDescription& shape : scene.description().shapes) {
             const Material& m = scene.materialAt(shape.material);
-            shapes_.push_back({&m, m.lambertian() && m.twoSided() && !settings.specularOnly, m.tint().textured(),
-                               m.tint().value});
+            ShapeScattering sc{&m, Bounce::OneByOne, m.twoSided(), m.tint().textured(), m.tint().value, 0.0f};
+            if (m.lambertian() && m.twoSided() && !settings.specularOnly) sc.bounce = Bounce::Lambertian;
+            if (std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular()) {
+                sc.bounce = Bounce::Specular;
+                sc.ior = smooth->ior;
+            }
+            shapes_.push_back(sc);
         }
-        for (int i = 0; i < kWalkLanes; ++i) lanes_.alive[i] = lanes_.lambertian[i] = 0;
+        for (int i = 0; i < kWalkLanes; ++i) lanes_.alive[i] = lanes_.lambertian[i] = lanes_.specular[i] = 0;
     }
 
     void run(int64_t begin, int64_t end) {
@@ -125,11 +180,13 @@ public:
             bool anyAlive = false;
             for (int i = 0; i < kWalkLanes; ++i) anyAlive |= lanes_.alive[i] != 0;
             if (!anyAlive) return;
-            bool waiting[2] = {false, false};
+            unsigned waiting[2] = {0, 0};
             for (int i = 0; i < kWalkLanes; ++i)
                 if (lanes_.alive[i]) waiting[i / kLanes] |= step(i);
-            for (int half = 0; half < 2; ++half)
-                if (waiting[half]) bounceLambertian(lanes_, half * kLanes);
+            for (int half = 0; half < 2; ++half) {
+                if (waiting[half] & kLambertianWaits) bounceLambertian(lanes_, half * kLanes);
+                if (waiting[half] & kSpecularWaits) bounceSpecular(lanes_, half * kLanes);
+            }
         }
     }
 
@@ -167,9 +224,13 @@ private:
         }
     }
 
-    // Casts lane i's ray and hands the arrival to the sink. Returns whether the hit waits
-    // for the Lambertian bounce in lanes; other materials bounce here.
-    bool step(int i) {
+    // What a lane's hit waits for after step(): nothing (its bounce is done, or its path
+    // ended), or one of the bounces in lanes.
+    static constexpr unsigned kLambertianWaits = 1, kSpecularWaits = 2;
+
+    // Casts lane i's ray, hands the arrival to the sink, and bounces the photon here unless
+    // its surface bounces in lanes.
+    unsigned step(int i) {
         PhotonLanes& L = lanes_;
         const Ray ray = L.ray(i);
         SurfaceHit hit;
@@ -177,31 +238,46 @@ private:
         L.alive[i] = 0;
         if (!scene_.intersect(ray, hit)) {
             counters_.missedAtEmission += L.depth[i] == 0;
-            return false;
+            return 0;
         }
         ++counters_.segments;
         const Vec3 wi = -ray.d;
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
         const ShapeScattering& shape = shapes_[hit.shape];
-        if (shape.inLanes) {
+        if (shape.bounce == Bounce::Lambertian) {
             turnTowardViewer(hit, wi);  // the material is two-sided
             if (depth >= settings_.firstArrivalDepth)
                 sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
-            if (last) return false;
-            Color tint = shape.textured ? shape.material->tint().eval(hit.uv) : shape.tint;
-            L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
-            L.ngx[i] = hit.ng.x, L.ngy[i] = hit.ng.y, L.ngz[i] = hit.ng.z;
-            L.nsx[i] = hit.ns.x, L.nsy[i] = hit.ns.y, L.nsz[i] = hit.ns.z;
-            L.tintR[i] = tint.x, L.tintG[i] = tint.y, L.tintB[i] = tint.z;
+            if (last) return 0;
+            keepHit(i, hit, shape);
             L.lambertian[i] = -1;
-            return true;
+            return kLambertianWaits;
+        }
+        if (shape.bounce == Bounce::Specular) {  // delta lobes only: no arrival
+            if (shape.twoSided) turnTowardViewer(hit, wi);
+            if (last) return 0;
+            keepHit(i, hit, shape);
+            L.ior[i] = shape.ior;
+            L.specular[i] = -1;
+            return kSpecularWaits;
         }
         ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
         if (!sp.material->isDeltaOnly() && depth >= settings_.firstArrivalDepth)
             sink_.arrive({sp.hit.p, sp.hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
         if (!last) bounce(i, sp, wi);
-        return false;
+        return 0;
+    }
+
+    // A hit that waits for its bounce in lanes.
+    struct ShapeScattering;
+    void keepHit(int i, const SurfaceHit& hit, const ShapeScattering& shape) {
+        PhotonLanes& L = lanes_;
+        Color tint = shape.textured ? shape.material->tint().eval(hit.uv) : shape.tint;
+        L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
+        L.ngx[i] = hit.ng.x, L.ngy[i] = hit.ng.y, L.ngz[i] = hit.ng.z;
+        L.nsx[i] = hit.ns.x, L.nsy[i] = hit.ns.y, L.nsz[i] = hit.ns.z;
+        L.tintR[i] = tint.x, L.tintG[i] = tint.y, L.tintB[i] = tint.z;
     }
 
     // Any material's bounce, by BSDF sampling.
@@ -232,11 +308,14 @@ private:
     PhotonArrivalSink& sink_;
     PhotonPathCounters& counters_;
     // What the walk needs of each shape's material, looked up once per hit.
+    enum class Bounce { Lambertian, Specular, OneByOne };  // in lanes (two kinds), or not
     struct ShapeScattering {
         const Material* material;
-        bool inLanes;   // bounces in lanes (two-sided Lambertian)
+        Bounce bounce;
+        bool twoSided;  // the normals are turned toward the photon
         bool textured;  // its colour comes from a texture
         Color tint;     // else its colour
+        float ior;      // of a smooth specular surface (0: a mirror)
     };
     std::vector<ShapeScattering> shapes_;  // by shape index
     PhotonLanes lanes_;

@@ -2,8 +2,9 @@
 // map): emission through the PhotonEmitter, scattering by BSDF sampling, Russian roulette
 // on the maximum channel. Photons are walked sixteen at a time in lanes: each ray is cast
 // on its own (Embree's packet queries gain nothing on incoherent photon rays), and the
-// bounces off Lambertian surfaces, most of a walk's bounces, are sampled eight lanes at a
-// time with SIMD instructions; every other material scatters lane by lane through its BSDF.
+// bounces off Lambertian surfaces (most of a walk's bounces), perfect mirrors and smooth
+// dielectrics are sampled eight lanes at a time with SIMD instructions; every other
+// material scatters lane by lane through its BSDF.
 #pragma once
 #include <cstdint>
 #include "../lights/photon_emitter.h"

@@ -12,6 +12,7 @@ public:
 
     unsigned lobes() const override { return kDeltaLobe; }
     bool twoSided() const override { return false; }  // inside and outside differ
+    std::optional<SmoothSpecular> smoothSpecular() const override { return SmoothSpecular{ior_}; }
 
     Color eval(Vec3, Vec3, Color, TransportMode, unsigned) const override { return Color(0.0f); }
     float pdf(Vec3, Vec3, Color, unsigned) const override { return 0; }

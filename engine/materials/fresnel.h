@@ -2,6 +2,7 @@
 // plastic materials. Local-frame conventions: directions point away from the surface.
 #pragma once
 #include <optional>
+#include "../math/lanes.h"
 #include "../math/vec.h"
 
 namespace photon {
@@ -10,20 +11,22 @@ namespace photon {
 // the s- and p-polarised amplitudes squared (Hecht, "Optics", ch. 4; pbrt-v4 sec. 9.3).
 // `eta` is n_inside / n_outside, the outside being the side the normal points to; a
 // negative cosThetaI means the light arrives from inside, so the ratio is inverted.
-// Returns 1 under total internal reflection.
-inline float fresnelDielectric(float cosThetaI, float eta) {
-    cosThetaI = std::clamp(cosThetaI, -1.0f, 1.0f);
-    if (cosThetaI < 0) {
-        eta = 1.0f / eta;
-        cosThetaI = -cosThetaI;
-    }
-    float sin2ThetaI = std::max(0.0f, 1.0f - cosThetaI * cosThetaI);
-    float sin2ThetaT = sin2ThetaI / (eta * eta);  // Snell: sin_t = sin_i / eta
-    if (sin2ThetaT >= 1.0f) return 1.0f;
-    float cosThetaT = std::sqrt(1.0f - sin2ThetaT);
-    float rParallel = (eta * cosThetaI - cosThetaT) / (eta * cosThetaI + cosThetaT);
-    float rPerpendicular = (cosThetaI - eta * cosThetaT) / (cosThetaI + eta * cosThetaT);
-    return 0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular);
+// Returns 1 under total internal reflection. F is a float or lanes of them (math/lanes.h):
+// one formula for both, written with selects.
+template <class F>
+PHOTON_LANES_INLINE F fresnelDielectric(F cosThetaI, F eta) {
+    cosThetaI = select(cosThetaI < -1.0f, broadcast<F>(-1.0f), select(1.0f < cosThetaI, broadcast<F>(1.0f), cosThetaI));
+    auto inside = cosThetaI < 0.0f;
+    eta = select(inside, 1.0f / eta, eta);
+    cosThetaI = select(inside, -cosThetaI, cosThetaI);
+    F sin2ThetaI = 1.0f - cosThetaI * cosThetaI;
+    sin2ThetaI = select(0.0f < sin2ThetaI, sin2ThetaI, broadcast<F>(0.0f));
+    F sin2ThetaT = sin2ThetaI / (eta * eta);  // Snell: sin_t = sin_i / eta
+    F cosThetaT = safeSqrt(1.0f - sin2ThetaT);
+    F rParallel = (eta * cosThetaI - cosThetaT) / (eta * cosThetaI + cosThetaT);
+    F rPerpendicular = (cosThetaI - eta * cosThetaT) / (cosThetaI + eta * cosThetaT);
+    return select(sin2ThetaT >= 1.0f, broadcast<F>(1.0f),
+                  0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular));
 }
 
 // Schlick's approximation F0 + (1 - F0)(1 - cos)^5 (Schlick 1994, "An Inexpensive BRDF
@@ -42,19 +45,36 @@ struct Refraction {
 
 // Refracts w (pointing away from the surface) through the boundary with normal n and
 // relative index eta = n_inside / n_outside, n pointing outside (pbrt-v4 sec. 9.3,
-// Snell's law in vector form). Works from either side; nullopt on total internal reflection.
+// Snell's law in vector form). Works from either side. Component by component, for a
+// float or lanes of them: writes the transmitted direction t and etap, and returns where
+// the light is totally reflected instead (t is then not a direction).
+template <class F>
+PHOTON_LANES_INLINE auto refractComponents(F wx, F wy, F wz, F nx, F ny, F nz, F eta, F& tx, F& ty, F& tz, F& etap) {
+    F cosThetaI = nx * wx + ny * wy + nz * wz;
+    auto flip = cosThetaI < 0.0f;
+    eta = select(flip, 1.0f / eta, eta);
+    cosThetaI = select(flip, -cosThetaI, cosThetaI);
+    nx = select(flip, -nx, nx);
+    ny = select(flip, -ny, ny);
+    nz = select(flip, -nz, nz);
+    F sin2ThetaI = 1.0f - cosThetaI * cosThetaI;
+    sin2ThetaI = select(0.0f < sin2ThetaI, sin2ThetaI, broadcast<F>(0.0f));
+    F sin2ThetaT = sin2ThetaI / (eta * eta);
+    F cosThetaT = safeSqrt(1.0f - sin2ThetaT);
+    // -w / eta + (cos_i / eta - cos_t) n, with Vec3's division by a scalar (times 1/eta).
+    F inverseEta = 1.0f / eta, along = cosThetaI / eta - cosThetaT;
+    tx = -wx * inverseEta + along * nx;
+    ty = -wy * inverseEta + along * ny;
+    tz = -wz * inverseEta + along * nz;
+    etap = eta;
+    return sin2ThetaT >= 1.0f;
+}
+
+// The same for one direction; nullopt on total internal reflection.
 inline std::optional<Refraction> refract(Vec3 w, Vec3 n, float eta) {
-    float cosThetaI = dot(n, w);
-    if (cosThetaI < 0) {
-        eta = 1.0f / eta;
-        cosThetaI = -cosThetaI;
-        n = -n;
-    }
-    float sin2ThetaI = std::max(0.0f, 1.0f - cosThetaI * cosThetaI);
-    float sin2ThetaT = sin2ThetaI / (eta * eta);
-    if (sin2ThetaT >= 1.0f) return std::nullopt;
-    float cosThetaT = std::sqrt(1.0f - sin2ThetaT);
-    return Refraction{-w / eta + (cosThetaI / eta - cosThetaT) * n, eta};
+    Refraction r;
+    if (refractComponents(w.x, w.y, w.z, n.x, n.y, n.z, eta, r.wt.x, r.wt.y, r.wt.z, r.etap)) return std::nullopt;
+    return r;
 }
 
 }  // namespace photon

@@ -53,6 +53,13 @@ public:
     // True if f = tint / pi for every pair of directions above the surface (and 0
     // otherwise): integrators may then premultiply it instead of calling eval().
     virtual bool lambertian() const { return false; }
+    // A perfect mirror (ior 0) or a smooth dielectric boundary of index ior: one whose
+    // sample() is a formula the photon walk can also run for eight photons at once
+    // (integrators/photon_paths.cpp), with the same result. Other materials: none.
+    struct SmoothSpecular {
+        float ior;
+    };
+    virtual std::optional<SmoothSpecular> smoothSpecular() const { return std::nullopt; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 

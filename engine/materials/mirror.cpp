@@ -9,6 +9,7 @@ public:
     explicit Mirror(ColorParam reflectance) : Material(std::move(reflectance)) {}
 
     unsigned lobes() const override { return kDeltaLobe; }
+    std::optional<SmoothSpecular> smoothSpecular() const override { return SmoothSpecular{0.0f}; }
 
     // A Dirac lobe has no finite value or density for any given wi.
     Color eval(Vec3, Vec3, Color, TransportMode, unsigned) const override { return Color(0.0f); }
