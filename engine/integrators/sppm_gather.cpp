@@ -55,7 +55,7 @@ void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
         for (uint32_t k = 0; k < span.size; ++k) {
             const HashGrid::Sphere& sphere = span.spheres[k];
             float d2 = lengthSquared(sphere.center - p);
-            b.inside[count] = {static_cast<uint32_t>(i), span.indices[k], d2 / sphere.radiusSquared};
+            b.inside[count] = {static_cast<uint32_t>(i), span.indices[k], d2, sphere.radiusSquared};
             count += d2 <= sphere.radiusSquared;
         }
     }
@@ -64,9 +64,10 @@ void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
 }
 
 void SppmIntegrator::GatherPipeline::addInside(Batch& b) {
+    // The kernel's d^2 / r^2 only for the one candidate in ten that is inside.
     for (size_t c = 0; c < b.insideCount; ++c) {
         const Candidate& k = b.inside[c];
-        sppm_.addPhoton(b.hits[k.hit], k.point, k.d2OverR2, counters_);
+        sppm_.addPhoton(b.hits[k.hit], k.point, k.d2 / k.r2, counters_);
     }
     b.size = 0;
     b.insideCount = 0;

@@ -34,7 +34,7 @@ private:
     static constexpr size_t kBatchSize = 64;
     struct Candidate {
         uint32_t hit, point;
-        float d2OverR2;  // squared distance from the hit to the point over the squared radius
+        float d2, r2;  // squared distance from the hit to the point, squared radius
     };
     struct Batch {
         std::array<PhotonHit, kBatchSize> hits;
