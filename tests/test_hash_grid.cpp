@@ -2,6 +2,7 @@
 // is among the entries of that point's bucket (checked against brute force), spheres
 // without a radius are left out, and points outside the grid have no bucket.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 #include <algorithm>
 #include <vector>
 #include "accel/hash_grid.h"
@@ -79,6 +80,32 @@ TEST(HashGrid, PointsOnTheSurfaceAreInsideAndPointsFarOutsideHaveNoBucket) {
     EXPECT_EQ(grid.bucketOf({5, 5, 5}), HashGrid::kNoBucket);
     EXPECT_EQ(grid.bucketOf({-1, 0.5f, 0.5f}), HashGrid::kNoBucket);
     EXPECT_GE(grid.entryCount(), 2u);
+}
+
+// The grid is built by a stable sort, so each bucket lists its spheres in index order and
+// the grid does not depend on the number of threads that built it.
+TEST(HashGrid, BucketsListSpheresInIndexOrderWhateverTheThreads) {
+    const Spheres s = randomSpheres(20000);
+    HashGrid one;
+    tbb::task_arena(1).execute([&] { one = buildGrid(s); });
+    const HashGrid many = buildGrid(s);
+    EXPECT_EQ(one.entryCount(), many.entryCount());
+    size_t seen = 0;
+    for (uint64_t q = 0; q < 5000; ++q) {
+        Rng rng(7, 2, q, StreamPurpose::Test);
+        Vec3 p{rng.uniform(), rng.uniform(), rng.uniform()};
+        const uint32_t bucket = one.bucketOf(p);
+        ASSERT_EQ(bucket, many.bucketOf(p));
+        if (bucket == HashGrid::kNoBucket) continue;
+        const HashGrid::Span a = one.bucket(bucket), b = many.bucket(bucket);
+        ASSERT_EQ(a.size, b.size);
+        for (uint32_t k = 0; k < a.size; ++k) {
+            ASSERT_EQ(a.indices[k], b.indices[k]);
+            if (k > 0) ASSERT_LT(a.indices[k - 1], a.indices[k]);
+        }
+        seen += a.size;
+    }
+    EXPECT_GT(seen, 5000u);
 }
 
 }  // namespace

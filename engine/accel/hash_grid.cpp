@@ -1,6 +1,7 @@
 
 
 #include "hash_grid.h"
+#include "radix_sort.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -77,35 +78,50 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     if (e.withRadius == 0) e.lo = e.hi = Vec3(0.0f);
     setup(count, e.lo, e.hi, e.radiusSum, e.withRadius);
 
-    // Counting sort into buckets: count entries per bucket, prefix-sum, then fill. The
-    // order inside a bucket varies with threads; callers accumulate order-independently.
+    // Every (bucket, sphere) pair as one key, bucket in the high half, written at the
+    // sphere's own place (its entries are counted first), then sorted by bucket. The sort
+    // is stable, so a bucket lists its spheres in index order: the grid is the same for
+    // any thread count. (It replaced a counting sort with an atomic counter per entry:
+    // the grid build of photon-bench went from 13.6 to 10.4 ms, docs/sppm.md.)
     auto forEachCell = [&](size_t i, auto&& fn) {
         CellRange cr = cellsOverlapping(centers[i], radii[i]);
         for (int z = cr.lo[2]; z <= cr.hi[2]; ++z)
             for (int y = cr.lo[1]; y <= cr.hi[1]; ++y)
                 for (int x = cr.lo[0]; x <= cr.hi[0]; ++x) fn(hash(x, y, z));
     };
+    firstKey_.resize(count + 1);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
-        if (radii[i] > 0)
-            forEachCell(i, [&](uint32_t h) { std::atomic_ref<uint32_t>(offsets_[h + 1]).fetch_add(1, std::memory_order_relaxed); });
+        uint32_t cells = 0;
+        if (radii[i] > 0) {
+            CellRange cr = cellsOverlapping(centers[i], radii[i]);
+            cells = static_cast<uint32_t>((cr.hi[0] - cr.lo[0] + 1) * (cr.hi[1] - cr.lo[1] + 1) * (cr.hi[2] - cr.lo[2] + 1));
+        }
+        firstKey_[i + 1] = cells;
     });
-    for (size_t h = 1; h < offsets_.size(); ++h) offsets_[h] += offsets_[h - 1];
-    spheres_.resize(offsets_.back());
-    indices_.resize(offsets_.back());
-    std::vector<uint32_t> cursor(offsets_.begin(), offsets_.end() - 1);
+    firstKey_[0] = 0;
+    for (size_t i = 0; i < count; ++i) firstKey_[i + 1] += firstKey_[i];
+    keys_.resize(firstKey_[count]);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
-        if (radii[i] > 0)
-            forEachCell(i, [&](uint32_t h) {
-                uint32_t slot = std::atomic_ref<uint32_t>(cursor[h]).fetch_add(1, std::memory_order_relaxed);
-                indices_[slot] = static_cast<uint32_t>(i);
-            });
+        if (!(radii[i] > 0)) return;
+        uint64_t* key = keys_.data() + firstKey_[i];
+        forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | i; });
     });
-    // The spheres' copies in entry order: written in sequence, their reads in bucket order
-    // can all be in flight at once (writing them with the indices' scattered stores took
-    // a third longer).
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, indices_.size()), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t k = r.begin(); k < r.end(); ++k) spheres_[k] = {centers[indices_[k]], radiiSquared[indices_[k]]};
+    radixSortByBits(keys_, sortScratch_, 32, std::countr_zero(mask_ + 1));
+
+    // Bucket h starts at its first key; an empty bucket where the next one starts.
+    const size_t n = keys_.size();
+    auto bucketAt = [&](size_t e) { return static_cast<uint32_t>(keys_[e] >> 32); };
+    spheres_.resize(n);
+    indices_.resize(n);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t e = r.begin(); e < r.end(); ++e) {
+            const uint32_t h = bucketAt(e), i = static_cast<uint32_t>(keys_[e]);
+            for (uint32_t b = e == 0 ? 0 : bucketAt(e - 1) + 1; b <= h; ++b) offsets_[b] = static_cast<uint32_t>(e);
+            indices_[e] = i;
+            spheres_[e] = {centers[i], radiiSquared[i]};
+        }
     });
+    for (size_t b = n == 0 ? 0 : bucketAt(n - 1) + 1; b < offsets_.size(); ++b) offsets_[b] = static_cast<uint32_t>(n);
 }
 
 }  // namespace photon

@@ -44,7 +44,8 @@ public:
 
     size_t entryCount() const { return indices_.size(); }
     size_t bytes() const {
-        return (offsets_.capacity() + indices_.capacity()) * sizeof(uint32_t) + spheres_.capacity() * sizeof(Sphere);
+        return (offsets_.capacity() + indices_.capacity() + firstKey_.capacity()) * sizeof(uint32_t) +
+               spheres_.capacity() * sizeof(Sphere) + (keys_.capacity() + sortScratch_.capacity()) * sizeof(uint64_t);
     }
 
 private:
@@ -68,6 +69,9 @@ private:
     std::vector<uint32_t> offsets_;  // bucket h holds entries [offsets_[h], offsets_[h+1])
     std::vector<Sphere> spheres_;    // by entry
     std::vector<uint32_t> indices_;  // by entry: the sphere's index
+    // Build scratch, kept between passes: each sphere's first key, the (bucket, sphere) keys.
+    std::vector<uint32_t> firstKey_;
+    std::vector<uint64_t> keys_, sortScratch_;
 };
 
 }  // namespace photon

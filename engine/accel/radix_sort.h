@@ -1,0 +1,15 @@
+// Stable least-significant-digit radix sort of 64-bit keys by a range of their bits, in
+// parallel with oneTBB and deterministic: the array is cut into a fixed number of pieces
+// whatever the thread count, each piece's digits are counted, and every key goes to a
+// position that depends only on the keys (Knuth, TAOCP vol. 3, sec. 5.2.5).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace photon {
+
+// Sorts keys by bits [lowBit, lowBit + bitCount); keys equal there keep their order.
+// `scratch` is resized to keys.size() and left holding garbage.
+void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch, int lowBit, int bitCount);
+
+}  // namespace photon
