@@ -1,6 +1,7 @@
 
 
 #include "hash_grid.h"
+#include "overwrite_buffer.h"
 #include "radix_sort.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -89,7 +90,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
             for (int y = cr.lo[1]; y <= cr.hi[1]; ++y)
                 for (int x = cr.lo[0]; x <= cr.hi[0]; ++x) fn(hash(x, y, z));
     };
-    firstKey_.resize(count + 1);
+    resizeForOverwrite(firstKey_, count + 1);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         uint32_t cells = 0;
         if (radii[i] > 0) {
@@ -100,7 +101,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     });
     firstKey_[0] = 0;
     for (size_t i = 0; i < count; ++i) firstKey_[i + 1] += firstKey_[i];
-    keys_.resize(firstKey_[count]);
+    resizeForOverwrite(keys_, firstKey_[count]);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         if (!(radii[i] > 0)) return;
         uint64_t* key = keys_.data() + firstKey_[i];
@@ -111,8 +112,8 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     // Bucket h starts at its first key; an empty bucket where the next one starts.
     const size_t n = keys_.size();
     auto bucketAt = [&](size_t e) { return static_cast<uint32_t>(keys_[e] >> 32); };
-    spheres_.resize(n);
-    indices_.resize(n);
+    resizeForOverwrite(spheres_, n);
+    resizeForOverwrite(indices_, n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t e = r.begin(); e < r.end(); ++e) {
             const uint32_t h = bucketAt(e), i = static_cast<uint32_t>(keys_[e]);

@@ -1,4 +1,5 @@
 #include "radix_sort.h"
+#include "overwrite_buffer.h"
 #include <tbb/parallel_for.h>
 #include <algorithm>
 #include <array>
@@ -13,7 +14,7 @@ constexpr size_t kPieces = 32;  // fixed, so that the result does not depend on 
 
 void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch, int lowBit, int bitCount) {
     const size_t n = keys.size();
-    scratch.resize(n);
+    resizeForOverwrite(scratch, n);
     const size_t pieceSize = (n + kPieces - 1) / kPieces;
     std::vector<std::array<uint32_t, kDigits>> counts(kPieces);
     // Equal digits: 18 bits as 9 + 9 scatter to 512 places at a time, not 2048 then 128.

@@ -9,7 +9,7 @@
 namespace photon {
 
 // Sorts keys by bits [lowBit, lowBit + bitCount); keys equal there keep their order.
-// `scratch` is resized to keys.size() and left holding garbage.
+// `scratch` is sized to keys.size() (accel/overwrite_buffer.h) and left holding garbage.
 void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch, int lowBit, int bitCount);
 
 }  // namespace photon
