@@ -5,6 +5,15 @@
 
 namespace photon {
 
+namespace {
+// Every cache line of [begin, end).
+template <class T>
+void prefetchRange(const T* begin, const T* end) {
+    constexpr uintptr_t kLine = 64;
+    for (uintptr_t a = reinterpret_cast<uintptr_t>(begin) & ~(kLine - 1); a < reinterpret_cast<uintptr_t>(end); a += kLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(a));
+}
+}  // namespace
 
 void SppmIntegrator::GatherPipeline::advance() {
     // Oldest first: the batch after its last step is emptied and fills next.
@@ -21,16 +30,6 @@ void SppmIntegrator::GatherPipeline::findBuckets(Batch& b) {
         if (b.buckets[i] != HashGrid::kNoBucket) sppm_.grid_.prefetchBucket(b.buckets[i]);
     }
 }
-
-namespace {
-// Every cache line of [begin, end).
-template <class T>
-void prefetchRange(const T* begin, const T* end) {
-    constexpr uintptr_t kLine = 64;
-    for (uintptr_t a = reinterpret_cast<uintptr_t>(begin) & ~(kLine - 1); a < reinterpret_cast<uintptr_t>(end); a += kLine)
-        __builtin_prefetch(reinterpret_cast<const void*>(a));
-}
-}  // namespace
 
 void SppmIntegrator::GatherPipeline::openBuckets(Batch& b) {
     size_t total = 0;
