@@ -82,6 +82,29 @@ TEST(HashGrid, PointsOnTheSurfaceAreInsideAndPointsFarOutsideHaveNoBucket) {
     EXPECT_GE(grid.entryCount(), 2u);
 }
 
+// Radii growing with distance, as on a floor receding to the horizon (the mean radius is
+// small against the far ones): no sphere enters more than three cells along an axis, and
+// every containing sphere is still found.
+TEST(HashGrid, SpreadRadiiKeepTheGridSmall) {
+    Spheres s;
+    for (size_t i = 0; i < 20000; ++i) {
+        Rng rng(7, 3, i, StreamPurpose::Test);
+        float depth = 1.0f / (rng.uniform() + 0.001f);  // image rows toward the horizon
+        s.centers.push_back({100.0f * (rng.uniform() - 0.5f), 0.0f, -depth});
+        s.radii.push_back(0.002f * (1.0f + depth));
+    }
+    const HashGrid grid = buildGrid(s);
+    EXPECT_LE(grid.entryCount(), 9 * s.centers.size());  // a plane: at most 3 x 3 cells each
+    for (uint64_t q = 0; q < 2000; ++q) {
+        Rng rng(7, 4, q, StreamPurpose::Test);
+        size_t i = q * 7 % s.centers.size();
+        // A point inside sphere i, on the plane.
+        Vec3 p = s.centers[i] + Vec3(0.7f * s.radii[i] * (2 * rng.uniform() - 1), 0, 0.7f * s.radii[i] * (2 * rng.uniform() - 1));
+        std::vector<uint32_t> entries = bucketEntries(grid, s, p);
+        ASSERT_TRUE(std::binary_search(entries.begin(), entries.end(), static_cast<uint32_t>(i))) << i;
+    }
+}
+
 // The grid is built by a stable sort, so each bucket lists its spheres in index order and
 // the grid does not depend on the number of threads that built it.
 TEST(HashGrid, BucketsListSpheresInIndexOrderWhateverTheThreads) {

@@ -18,6 +18,7 @@ namespace {
 struct Extent {
     Vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
     double radiusSum = 0;
+    float maxRadius = 0;
     size_t withRadius = 0;
 };
 }  // namespace
@@ -40,9 +41,12 @@ HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r) const {
     return range;
 }
 
-void HashGrid::setup(size_t count, Vec3 lo, Vec3 hi, double radiusSum, size_t withRadius) {
-    float meanRadius = withRadius ? static_cast<float>(radiusSum / static_cast<double>(withRadius)) : 1.0f;
-    float cellSize = std::max(3.0f * meanRadius, 1e-6f);
+void HashGrid::setup(size_t count, Vec3 lo, Vec3 hi, float meanRadius, float maxRadius) {
+    // Three mean radii, or the largest radius if that is wider: then no sphere spans more
+    // than three cells along an axis, so the grid's size is bounded whatever the spread of
+    // radii (a floor receding to the horizon has radii growing with distance: with mean-
+    // radius cells alone its far points entered hundreds of cells each).
+    float cellSize = std::max({3.0f * meanRadius, maxRadius, 1e-6f});
     invCellSize_ = 1.0f / cellSize;
     origin_ = lo;
     for (int a = 0; a < 3; ++a)
@@ -65,6 +69,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
                 acc.lo = vmin(acc.lo, centers[i] - Vec3(radii[i]));
                 acc.hi = vmax(acc.hi, centers[i] + Vec3(radii[i]));
                 acc.radiusSum += radii[i];
+                acc.maxRadius = std::max(acc.maxRadius, radii[i]);
                 ++acc.withRadius;
             }
             return acc;
@@ -73,11 +78,13 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
             a.lo = vmin(a.lo, b.lo);
             a.hi = vmax(a.hi, b.hi);
             a.radiusSum += b.radiusSum;
+            a.maxRadius = std::max(a.maxRadius, b.maxRadius);
             a.withRadius += b.withRadius;
             return a;
         });
     if (e.withRadius == 0) e.lo = e.hi = Vec3(0.0f);
-    setup(count, e.lo, e.hi, e.radiusSum, e.withRadius);
+    setup(count, e.lo, e.hi, e.withRadius ? static_cast<float>(e.radiusSum / static_cast<double>(e.withRadius)) : 1.0f,
+          e.maxRadius);
 
     // Every (bucket, sphere) pair as one key, bucket in the high half, written at the
     // sphere's own place (its entries are counted first), then sorted by bucket. The sort

@@ -1,8 +1,9 @@
 // A spatial hash grid over spheres (visible points and their gather radii), rebuilt each
 // pass. Each sphere is entered in every cell its bounding box overlaps, so a photon looks
 // in one cell only (Hachisuka & Jensen 2009, sec. 4.2). The cell size is three times the
-// mean radius, which measured fastest overall: fewer entries to build than with twice the
-// radius, for a few more candidates per photon.
+// mean radius, which measured fastest overall (fewer entries to build than with twice the
+// radius, for a few more candidates per photon), or the largest radius if that is wider,
+// which bounds the entries per sphere.
 #include <cstdint>
 #include <vector>
 #include "../math/vec.h"
@@ -59,7 +60,7 @@ private:
         return ((static_cast<uint32_t>(ix) * 73856093u) ^ (static_cast<uint32_t>(iy) * 19349663u) ^
                 (static_cast<uint32_t>(iz) * 83492791u)) & mask_;
     }
-    void setup(size_t count, Vec3 lo, Vec3 hi, double radiusSum, size_t withRadius);
+    void setup(size_t count, Vec3 lo, Vec3 hi, float meanRadius, float maxRadius);
     void countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radiiSquared);
 
     Vec3 origin_;
