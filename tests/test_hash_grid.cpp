@@ -36,16 +36,26 @@ HashGrid buildGrid(const Spheres& s) {
     return grid;
 }
 
+// The spheres that may hold p: those entered in its bucket on every level, without the
+// repeated entries (which hold no point).
 std::vector<uint32_t> bucketEntries(const HashGrid& grid, const Spheres& s, Vec3 p) {
-    uint32_t bucket = grid.bucketOf(p);
-    if (bucket == HashGrid::kNoBucket) return {};
-    HashGrid::Span span = grid.bucket(bucket);
-    std::vector<uint32_t> entries(span.indices, span.indices + span.size);
-    for (uint32_t k = 0; k < span.size; ++k) {  // each entry carries its sphere
-        EXPECT_EQ(span.spheres[k].center, s.centers[span.indices[k]]);
-        EXPECT_EQ(span.spheres[k].radiusSquared, s.radii[span.indices[k]] * s.radii[span.indices[k]]);
+    std::vector<uint32_t> entries;
+    for (int level = 0; level < grid.levelCount(); ++level) {
+        uint32_t bucket = grid.bucketOf(p, level);
+        if (bucket == HashGrid::kNoBucket) continue;
+        HashGrid::Span span = grid.bucket(bucket);
+        for (uint32_t k = 0; k < span.size; ++k) {  // each entry carries its sphere
+            const uint32_t i = HashGrid::sphereOf(span.entries[k]);
+            if (HashGrid::levelOf(span.entries[k]) != static_cast<uint32_t>(level)) continue;  // another level's cell
+            EXPECT_EQ(span.spheres[k].center, s.centers[i]);
+            if (span.spheres[k].radiusSquared < 0) continue;
+            EXPECT_EQ(span.spheres[k].radiusSquared, s.radii[i] * s.radii[i]);
+            entries.push_back(i);
+        }
     }
     std::sort(entries.begin(), entries.end());
+    // A sphere is on one level, and once in a bucket: a photon is added to it once.
+    EXPECT_TRUE(std::adjacent_find(entries.begin(), entries.end()) == entries.end());
     return entries;
 }
 
@@ -77,14 +87,17 @@ TEST(HashGrid, PointsOnTheSurfaceAreInsideAndPointsFarOutsideHaveNoBucket) {
     const HashGrid grid = buildGrid(s);
     std::vector<uint32_t> atSurface = bucketEntries(grid, s, {0.625f, 0.5f, 0.5f});
     EXPECT_TRUE(std::binary_search(atSurface.begin(), atSurface.end(), 0u));
-    EXPECT_EQ(grid.bucketOf({5, 5, 5}), HashGrid::kNoBucket);
-    EXPECT_EQ(grid.bucketOf({-1, 0.5f, 0.5f}), HashGrid::kNoBucket);
+    for (int level = 0; level < grid.levelCount(); ++level) {
+        EXPECT_EQ(grid.bucketOf({5, 5, 5}, level), HashGrid::kNoBucket);
+        EXPECT_EQ(grid.bucketOf({-1, 0.5f, 0.5f}, level), HashGrid::kNoBucket);
+    }
     EXPECT_GE(grid.entryCount(), 2u);
 }
 
 // Radii growing with distance, as on a floor receding to the horizon (the mean radius is
 // small against the far ones): no sphere enters more than three cells along an axis, and
-// every containing sphere is still found.
+// every containing sphere is still found. The near spheres stay in small cells: a point
+// among them has few candidates.
 TEST(HashGrid, SpreadRadiiKeepTheGridSmall) {
     Spheres s;
     for (size_t i = 0; i < 20000; ++i) {
@@ -95,6 +108,13 @@ TEST(HashGrid, SpreadRadiiKeepTheGridSmall) {
     }
     const HashGrid grid = buildGrid(s);
     EXPECT_LE(grid.entryCount(), 9 * s.centers.size());  // a plane: at most 3 x 3 cells each
+    EXPECT_GT(grid.levelCount(), 1);
+    size_t nearCandidates = 0;
+    for (int level = 0; level < grid.levelCount(); ++level) {
+        uint32_t bucket = grid.bucketOf(s.centers[0], level);  // depth ~1
+        if (bucket != HashGrid::kNoBucket) nearCandidates += grid.bucket(bucket).size;
+    }
+    EXPECT_LT(nearCandidates, 200u);
     for (uint64_t q = 0; q < 2000; ++q) {
         Rng rng(7, 4, q, StreamPurpose::Test);
         size_t i = q * 7 % s.centers.size();
@@ -114,19 +134,22 @@ TEST(HashGrid, BucketsListSpheresInIndexOrderWhateverTheThreads) {
     const HashGrid many = buildGrid(s);
     EXPECT_EQ(one.entryCount(), many.entryCount());
     size_t seen = 0;
+    ASSERT_EQ(one.levelCount(), many.levelCount());
     for (uint64_t q = 0; q < 5000; ++q) {
         Rng rng(7, 2, q, StreamPurpose::Test);
         Vec3 p{rng.uniform(), rng.uniform(), rng.uniform()};
-        const uint32_t bucket = one.bucketOf(p);
-        ASSERT_EQ(bucket, many.bucketOf(p));
-        if (bucket == HashGrid::kNoBucket) continue;
-        const HashGrid::Span a = one.bucket(bucket), b = many.bucket(bucket);
-        ASSERT_EQ(a.size, b.size);
-        for (uint32_t k = 0; k < a.size; ++k) {
-            ASSERT_EQ(a.indices[k], b.indices[k]);
-            if (k > 0) ASSERT_LT(a.indices[k - 1], a.indices[k]);
+        for (int level = 0; level < one.levelCount(); ++level) {
+            const uint32_t bucket = one.bucketOf(p, level);
+            ASSERT_EQ(bucket, many.bucketOf(p, level));
+            if (bucket == HashGrid::kNoBucket) continue;
+            const HashGrid::Span a = one.bucket(bucket), b = many.bucket(bucket);
+            ASSERT_EQ(a.size, b.size);
+            for (uint32_t k = 0; k < a.size; ++k) {
+                ASSERT_EQ(a.entries[k], b.entries[k]);
+                if (k > 0) ASSERT_LE(HashGrid::sphereOf(a.entries[k - 1]), HashGrid::sphereOf(a.entries[k]));
+            }
+            seen += a.size;
         }
-        seen += a.size;
     }
     EXPECT_GT(seen, 5000u);
 }

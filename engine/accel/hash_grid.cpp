@@ -18,39 +18,51 @@ namespace {
 struct Extent {
     Vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
     double radiusSum = 0;
-    float maxRadius = 0;
     size_t withRadius = 0;
 };
 }  // namespace
 
-bool HashGrid::cellOf(Vec3 p, int& ix, int& iy, int& iz) const {
-    Vec3 g = (p - origin_) * invCellSize_;
+bool HashGrid::cellOf(Vec3 p, const Level& l, int& ix, int& iy, int& iz) const {
+    Vec3 g = (p - origin_) * l.invCellSize;
     if (!(g.x >= 0 && g.y >= 0 && g.z >= 0)) return false;
     ix = static_cast<int>(g.x);
     iy = static_cast<int>(g.y);
     iz = static_cast<int>(g.z);
-    return ix < resolution_[0] && iy < resolution_[1] && iz < resolution_[2];
+    return ix < l.resolution[0] && iy < l.resolution[1] && iz < l.resolution[2];
 }
 
-HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r) const {
+HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r, const Level& l) const {
     CellRange range;
     for (int a = 0; a < 3; ++a) {
-        range.lo[a] = std::clamp(static_cast<int>((c[a] - r - origin_[a]) * invCellSize_), 0, resolution_[a] - 1);
-        range.hi[a] = std::clamp(static_cast<int>((c[a] + r - origin_[a]) * invCellSize_), 0, resolution_[a] - 1);
+        range.lo[a] = std::clamp(static_cast<int>((c[a] - r - origin_[a]) * l.invCellSize), 0, l.resolution[a] - 1);
+        range.hi[a] = std::clamp(static_cast<int>((c[a] + r - origin_[a]) * l.invCellSize), 0, l.resolution[a] - 1);
     }
     return range;
 }
 
-void HashGrid::setup(size_t count, Vec3 lo, Vec3 hi, float meanRadius, float maxRadius) {
-    // Three mean radii, or the largest radius if that is wider: then no sphere spans more
-    // than three cells along an axis, so the grid's size is bounded whatever the spread of
-    // radii (a floor receding to the horizon has radii growing with distance: with mean-
-    // radius cells alone its far points entered hundreds of cells each).
-    float cellSize = std::max({3.0f * meanRadius, maxRadius, 1e-6f});
-    invCellSize_ = 1.0f / cellSize;
+// Each sphere's level: the lowest whose cells are at least as wide as its radius.
+void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, const std::vector<float>& radii) {
+    resizeForOverwrite(levelOf_, count);
+    tbb::parallel_for(size_t(0), count, [&](size_t i) {
+        uint8_t id = 0;
+        for (float cell = baseCellSize; radii[i] > cell && id < kMaxLevels - 1; cell *= 4.0f) ++id;
+        levelOf_[i] = id;
+    });
+    bool used[kMaxLevels] = {};
+    for (size_t i = 0; i < count; ++i) used[levelOf_[i]] |= radii[i] > 0;
+    uint8_t indexOfId[kMaxLevels] = {};
+    levels_.clear();
     origin_ = lo;
-    for (int a = 0; a < 3; ++a)
-        resolution_[a] = std::clamp(static_cast<int>((hi[a] - lo[a]) * invCellSize_) + 1, 1, 1 << 30);
+    float cell = baseCellSize;
+    for (uint32_t id = 0; id < kMaxLevels; ++id, cell *= 4.0f) {
+        if (!used[id]) continue;
+        Level l{id, 1.0f / cell, {}};
+        for (int a = 0; a < 3; ++a)
+            l.resolution[a] = std::clamp(static_cast<int>((hi[a] - lo[a]) * l.invCellSize) + 1, 1, 1 << 30);
+        indexOfId[id] = static_cast<uint8_t>(levels_.size());
+        levels_.push_back(l);
+    }
+    tbb::parallel_for(size_t(0), count, [&](size_t i) { levelOf_[i] = indexOfId[levelOf_[i]]; });
     // One bucket per sphere: a table that stays in L2 builds and looks up faster than a sparser
     // one, for ~15% more candidates from cells sharing a bucket (photon-bench, 1x vs 4x).
     uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(count, 1024)));
@@ -69,7 +81,6 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
                 acc.lo = vmin(acc.lo, centers[i] - Vec3(radii[i]));
                 acc.hi = vmax(acc.hi, centers[i] + Vec3(radii[i]));
                 acc.radiusSum += radii[i];
-                acc.maxRadius = std::max(acc.maxRadius, radii[i]);
                 ++acc.withRadius;
             }
             return acc;
@@ -78,30 +89,30 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
             a.lo = vmin(a.lo, b.lo);
             a.hi = vmax(a.hi, b.hi);
             a.radiusSum += b.radiusSum;
-            a.maxRadius = std::max(a.maxRadius, b.maxRadius);
             a.withRadius += b.withRadius;
             return a;
         });
     if (e.withRadius == 0) e.lo = e.hi = Vec3(0.0f);
-    setup(count, e.lo, e.hi, e.withRadius ? static_cast<float>(e.radiusSum / static_cast<double>(e.withRadius)) : 1.0f,
-          e.maxRadius);
+    const float meanRadius = e.withRadius ? static_cast<float>(e.radiusSum / static_cast<double>(e.withRadius)) : 1.0f;
+    setLevels(count, e.lo, e.hi, std::max(3.0f * meanRadius, 1e-6f), radii);
 
-    // Every (bucket, sphere) pair as one key, bucket in the high half, written at the
+    // Every (bucket, entry) pair as one key, bucket in the high half, written at the
     // sphere's own place (its entries are counted first), then sorted by bucket. The sort
     // is stable, so a bucket lists its spheres in index order: the grid is the same for
     // any thread count. (It replaced a counting sort with an atomic counter per entry:
     // the grid build of photon-bench went from 13.6 to 10.4 ms, docs/sppm.md.)
     auto forEachCell = [&](size_t i, auto&& fn) {
-        CellRange cr = cellsOverlapping(centers[i], radii[i]);
+        const Level& l = levels_[levelOf_[i]];
+        CellRange cr = cellsOverlapping(centers[i], radii[i], l);
         for (int z = cr.lo[2]; z <= cr.hi[2]; ++z)
             for (int y = cr.lo[1]; y <= cr.hi[1]; ++y)
-                for (int x = cr.lo[0]; x <= cr.hi[0]; ++x) fn(hash(x, y, z));
+                for (int x = cr.lo[0]; x <= cr.hi[0]; ++x) fn(hash(x, y, z, l.id));
     };
     resizeForOverwrite(firstKey_, count + 1);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         uint32_t cells = 0;
         if (radii[i] > 0) {
-            CellRange cr = cellsOverlapping(centers[i], radii[i]);
+            CellRange cr = cellsOverlapping(centers[i], radii[i], levels_[levelOf_[i]]);
             cells = static_cast<uint32_t>((cr.hi[0] - cr.lo[0] + 1) * (cr.hi[1] - cr.lo[1] + 1) * (cr.hi[2] - cr.lo[2] + 1));
         }
         firstKey_[i + 1] = cells;
@@ -112,7 +123,8 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         if (!(radii[i] > 0)) return;
         uint64_t* key = keys_.data() + firstKey_[i];
-        forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | i; });
+        const uint64_t entry = (static_cast<uint64_t>(levelOf_[i]) << kSphereBits) | i;
+        forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | entry; });
     });
     radixSortByBits(keys_, sortScratch_, 32, std::countr_zero(mask_ + 1));
 
@@ -120,13 +132,16 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     const size_t n = keys_.size();
     auto bucketAt = [&](size_t e) { return static_cast<uint32_t>(keys_[e] >> 32); };
     resizeForOverwrite(spheres_, n);
-    resizeForOverwrite(indices_, n);
+    resizeForOverwrite(entries_, n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t e = r.begin(); e < r.end(); ++e) {
-            const uint32_t h = bucketAt(e), i = static_cast<uint32_t>(keys_[e]);
+            const uint32_t h = bucketAt(e), entry = static_cast<uint32_t>(keys_[e]), i = sphereOf(entry);
             for (uint32_t b = e == 0 ? 0 : bucketAt(e - 1) + 1; b <= h; ++b) offsets_[b] = static_cast<uint32_t>(e);
-            indices_[e] = i;
-            spheres_[e] = {centers[i], radiiSquared[i]};
+            entries_[e] = entry;
+            // The same sphere twice in a bucket (two of its cells hashed alike) holds no
+            // point the second time, or a photon there would be added to it twice.
+            const bool repeated = e > 0 && keys_[e] == keys_[e - 1];
+            spheres_[e] = {centers[i], repeated ? -1.0f : radiiSquared[i]};
         }
     });
     for (size_t b = n == 0 ? 0 : bucketAt(n - 1) + 1; b < offsets_.size(); ++b) offsets_[b] = static_cast<uint32_t>(n);

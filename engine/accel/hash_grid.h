@@ -1,9 +1,14 @@
 // A spatial hash grid over spheres (visible points and their gather radii), rebuilt each
 // pass. Each sphere is entered in every cell its bounding box overlaps, so a photon looks
-// in one cell only (Hachisuka & Jensen 2009, sec. 4.2). The cell size is three times the
-// mean radius, which measured fastest overall (fewer entries to build than with twice the
-// radius, for a few more candidates per photon), or the largest radius if that is wider,
-// which bounds the entries per sphere.
+// in one cell only (Hachisuka & Jensen 2009, sec. 4.2), one on each level of the grid.
+// Level 0's cells are three mean radii wide, which measured fastest overall (fewer entries
+// to build than with twice the radius, for a few more candidates per photon); each level
+// above has cells four times wider, and a sphere goes on the lowest level whose cells are
+// at least as wide as its radius, so it enters at most three cells along an axis however
+// widely radii spread. (On a floor receding to the horizon radii grow with distance: with
+// one level of mean-radius cells its far points entered hundreds of cells each, and with
+// cells as wide as the largest radius the near ones crowded into a few.) Most scenes need
+// level 0 alone.
 #include <cstdint>
 #include <vector>
 #include "../math/vec.h"
@@ -19,57 +24,75 @@ public:
     template <class CenterFn, class RadiusSquaredFn>
     void build(size_t count, CenterFn center, RadiusSquaredFn radiusSquared);
 
-    // Photons look up their bucket in three steps so that callers can work on many at once
-    // and prefetch each step's memory before the next needs it.
+    // Photons look up their buckets in three steps so that callers can work on many at
+    // once and prefetch each step's memory before the next needs it.
     static constexpr uint32_t kNoBucket = ~0u;
-    // The bucket of the cell holding p, or kNoBucket outside the grid.
-    uint32_t bucketOf(Vec3 p) const {
+    // The levels that hold spheres: a photon looks in one bucket on each (once in a bucket
+    // that two levels share).
+    int levelCount() const { return static_cast<int>(levels_.size()); }
+    // The bucket of the cell holding p on a level (0 to levelCount() - 1), or kNoBucket
+    // outside the grid.
+    uint32_t bucketOf(Vec3 p, int level) const {
+        const Level& l = levels_[level];
         int ix, iy, iz;
-        return cellOf(p, ix, iy, iz) ? hash(ix, iy, iz) : kNoBucket;
+        return cellOf(p, l, ix, iy, iz) ? hash(ix, iy, iz, l.id) : kNoBucket;
     }
     void prefetchBucket(uint32_t h) const { __builtin_prefetch(&offsets_[h]); }
     struct Sphere {
         Vec3 center;
         float radiusSquared;
     };
-    // The spheres entered in bucket h, with their indices: a superset of those containing
-    // any point of its cells (callers test the distance).
+    // The spheres entered in bucket h, with their entries: a superset of those containing
+    // any point of its cells on the level looked up (callers test the distance, and the
+    // level: a bucket also holds other cells', of any level). A sphere entered twice in one
+    // bucket (two of its cells hashed alike) has a negative radiusSquared the second time,
+    // so that it holds no point there.
     struct Span {
         const Sphere* spheres = nullptr;
-        const uint32_t* indices = nullptr;
+        const uint32_t* entries = nullptr;
         uint32_t size = 0;
     };
     Span bucket(uint32_t h) const {
-        return {spheres_.data() + offsets_[h], indices_.data() + offsets_[h], offsets_[h + 1] - offsets_[h]};
+        return {spheres_.data() + offsets_[h], entries_.data() + offsets_[h], offsets_[h + 1] - offsets_[h]};
     }
+    // An entry is its sphere's index and, in the top bits, its level (16384^2 pixels fit).
+    static constexpr int kSphereBits = 28;
+    static uint32_t sphereOf(uint32_t entry) { return entry & ((1u << kSphereBits) - 1); }
+    static uint32_t levelOf(uint32_t entry) { return entry >> kSphereBits; }
 
-    size_t entryCount() const { return indices_.size(); }
+    size_t entryCount() const { return entries_.size(); }
     size_t bytes() const {
-        return (offsets_.capacity() + indices_.capacity() + firstKey_.capacity()) * sizeof(uint32_t) +
+        return (offsets_.capacity() + entries_.capacity() + firstKey_.capacity()) * sizeof(uint32_t) +
                spheres_.capacity() * sizeof(Sphere) + (keys_.capacity() + sortScratch_.capacity()) * sizeof(uint64_t);
     }
 
 private:
+    static constexpr int kMaxLevels = 16;
+    struct Level {
+        uint32_t id;  // cells 4^id times level 0's
+        float invCellSize;
+        int resolution[3];
+    };
     struct CellRange {
         int lo[3], hi[3];
     };
-    bool cellOf(Vec3 p, int& ix, int& iy, int& iz) const;
-    CellRange cellsOverlapping(Vec3 c, float r) const;
-    uint32_t hash(int ix, int iy, int iz) const {
-        // Teschner et al. 2003 spatial hash.
+    bool cellOf(Vec3 p, const Level& l, int& ix, int& iy, int& iz) const;
+    CellRange cellsOverlapping(Vec3 c, float r, const Level& l) const;
+    uint32_t hash(int ix, int iy, int iz, uint32_t levelId) const {
+        // Teschner et al. 2003 spatial hash, with the level as a fourth coordinate.
         return ((static_cast<uint32_t>(ix) * 73856093u) ^ (static_cast<uint32_t>(iy) * 19349663u) ^
-                (static_cast<uint32_t>(iz) * 83492791u)) & mask_;
+                (static_cast<uint32_t>(iz) * 83492791u) ^ (levelId * 2654435761u)) & mask_;
     }
-    void setup(size_t count, Vec3 lo, Vec3 hi, float meanRadius, float maxRadius);
+    void setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, const std::vector<float>& radii);
     void countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radiiSquared);
 
     Vec3 origin_;
-    float invCellSize_ = 1;
-    int resolution_[3] = {1, 1, 1};
+    std::vector<Level> levels_;       // the levels that hold spheres, finest first
+    std::vector<uint8_t> levelOf_;    // by sphere: its index in levels_ (build scratch)
     uint32_t mask_ = 0;
     std::vector<uint32_t> offsets_;  // bucket h holds entries [offsets_[h], offsets_[h+1])
     std::vector<Sphere> spheres_;    // by entry
-    std::vector<uint32_t> indices_;  // by entry: the sphere's index
+    std::vector<uint32_t> entries_;  // by entry: the sphere's index and level (sphereOf, levelOf)
     // Build scratch, kept between passes: each sphere's first key, the (bucket, sphere) keys.
     std::vector<uint32_t> firstKey_;
     std::vector<uint64_t> keys_, sortScratch_;

@@ -25,19 +25,24 @@ void SppmIntegrator::GatherPipeline::advance() {
 }
 
 void SppmIntegrator::GatherPipeline::findBuckets(Batch& b) {
-    for (size_t i = 0; i < b.size; ++i) {
-        b.buckets[i] = sppm_.grid_.bucketOf(b.hits[i].p);
-        if (b.buckets[i] != HashGrid::kNoBucket) sppm_.grid_.prefetchBucket(b.buckets[i]);
-    }
+    const HashGrid& grid = sppm_.grid_;
+    b.lookups.clear();
+    for (int level = 0; level < grid.levelCount(); ++level)
+        for (size_t i = 0; i < b.size; ++i) {
+            const uint32_t bucket = grid.bucketOf(b.hits[i].p, level);
+            if (bucket == HashGrid::kNoBucket) continue;
+            grid.prefetchBucket(bucket);
+            b.lookups.push_back({static_cast<uint32_t>(i), static_cast<uint32_t>(level), bucket, {}});
+        }
 }
 
 void SppmIntegrator::GatherPipeline::openBuckets(Batch& b) {
     size_t total = 0;
-    for (size_t i = 0; i < b.size; ++i) {
-        b.spans[i] = b.buckets[i] == HashGrid::kNoBucket ? HashGrid::Span{} : sppm_.grid_.bucket(b.buckets[i]);
-        prefetchRange(b.spans[i].spheres, b.spans[i].spheres + b.spans[i].size);
-        prefetchRange(b.spans[i].indices, b.spans[i].indices + b.spans[i].size);
-        total += b.spans[i].size;
+    for (Lookup& l : b.lookups) {
+        l.span = sppm_.grid_.bucket(l.bucket);
+        prefetchRange(l.span.spheres, l.span.spheres + l.span.size);
+        prefetchRange(l.span.entries, l.span.entries + l.span.size);
+        total += l.span.size;
     }
     counters_.candidates += static_cast<int64_t>(total);
     if (b.inside.size() < total) b.inside.resize(total);
@@ -46,16 +51,17 @@ void SppmIntegrator::GatherPipeline::openBuckets(Batch& b) {
 void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
     // Written without a branch on the outcome (about one candidate in ten is inside its
     // disc, at random, which a branch predictor cannot learn): every candidate is written
-    // and the end of the list moves on only for those inside.
+    // and the end of the list moves on only for those inside. Entries of other levels share
+    // the bucket but not the cell looked up.
     size_t count = 0;
-    for (size_t i = 0; i < b.size; ++i) {
-        const HashGrid::Span& span = b.spans[i];
-        const Vec3 p = b.hits[i].p;
-        for (uint32_t k = 0; k < span.size; ++k) {
-            const HashGrid::Sphere& sphere = span.spheres[k];
+    for (const Lookup& l : b.lookups) {
+        const Vec3 p = b.hits[l.hit].p;
+        for (uint32_t k = 0; k < l.span.size; ++k) {
+            const HashGrid::Sphere& sphere = l.span.spheres[k];
+            const uint32_t entry = l.span.entries[k];
             float d2 = lengthSquared(sphere.center - p);
-            b.inside[count] = {static_cast<uint32_t>(i), span.indices[k], d2, sphere.radiusSquared};
-            count += d2 <= sphere.radiusSquared;
+            b.inside[count] = {l.hit, HashGrid::sphereOf(entry), d2, sphere.radiusSquared};
+            count += (d2 <= sphere.radiusSquared) & (HashGrid::levelOf(entry) == l.level);
         }
     }
     b.insideCount = count;

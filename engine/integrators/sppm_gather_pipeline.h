@@ -36,11 +36,15 @@ private:
         uint32_t hit, point;
         float d2, r2;  // squared distance from the hit to the point, squared radius
     };
+    // One bucket to look in for a hit: one per level of the grid (most scenes have one).
+    struct Lookup {
+        uint32_t hit, level, bucket;
+        HashGrid::Span span;
+    };
     struct Batch {
         std::array<PhotonHit, kBatchSize> hits;
         size_t size = 0;
-        std::array<uint32_t, kBatchSize> buckets;
-        std::array<HashGrid::Span, kBatchSize> spans;
+        std::vector<Lookup> lookups;
         std::vector<Candidate> inside;  // candidates inside their disc
         size_t insideCount = 0;
     };
