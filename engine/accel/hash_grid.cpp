@@ -48,21 +48,28 @@ void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, con
         for (float cell = baseCellSize; radii[i] > cell && id < kMaxLevels - 1; cell *= 4.0f) ++id;
         levelOf_[i] = id;
     });
-    bool used[kMaxLevels] = {};
-    for (size_t i = 0; i < count; ++i) used[levelOf_[i]] |= radii[i] > 0;
+    const uint32_t usedIds = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, count), 0u,
+        [&](const tbb::blocked_range<size_t>& r, uint32_t bits) {
+            for (size_t i = r.begin(); i < r.end(); ++i) bits |= static_cast<uint32_t>(radii[i] > 0) << levelOf_[i];
+            return bits;
+        },
+        [](uint32_t a, uint32_t b) { return a | b; });
     uint8_t indexOfId[kMaxLevels] = {};
     levels_.clear();
     origin_ = lo;
     float cell = baseCellSize;
     for (uint32_t id = 0; id < kMaxLevels; ++id, cell *= 4.0f) {
-        if (!used[id]) continue;
+        if (!(usedIds & (1u << id))) continue;
         Level l{id, 1.0f / cell, {}};
         for (int a = 0; a < 3; ++a)
             l.resolution[a] = std::clamp(static_cast<int>((hi[a] - lo[a]) * l.invCellSize) + 1, 1, 1 << 30);
         indexOfId[id] = static_cast<uint8_t>(levels_.size());
         levels_.push_back(l);
     }
-    tbb::parallel_for(size_t(0), count, [&](size_t i) { levelOf_[i] = indexOfId[levelOf_[i]]; });
+    // Levels by index among those used (most often level 0 alone, where nothing changes).
+    if (usedIds & (usedIds + 1))
+        tbb::parallel_for(size_t(0), count, [&](size_t i) { levelOf_[i] = indexOfId[levelOf_[i]]; });
     // One bucket per sphere: a table that stays in L2 builds and looks up faster than a sparser
     // one, for ~15% more candidates from cells sharing a bucket (photon-bench, 1x vs 4x).
     uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(count, 1024)));

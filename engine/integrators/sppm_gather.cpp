@@ -48,22 +48,34 @@ void SppmIntegrator::GatherPipeline::openBuckets(Batch& b) {
     if (b.inside.size() < total) b.inside.resize(total);
 }
 
-void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
-    // Written without a branch on the outcome (about one candidate in ten is inside its
-    // disc, at random, which a branch predictor cannot learn): every candidate is written
-    // and the end of the list moves on only for those inside. Entries of other levels share
-    // the bucket but not the cell looked up.
+namespace {
+// The distance tests of one batch's lookups, written without a branch on the outcome (about
+// one candidate in ten is inside its disc, at random, which a branch predictor cannot
+// learn): every candidate is written and the end of the list moves on only for those
+// inside. With several levels, entries of other levels share a bucket but not the cell
+// looked up; with one there are none to skip.
+template <bool kLevels, class Lookup, class Hit, class Candidate>
+size_t testLookups(const std::vector<Lookup>& lookups, const Hit& hits, std::vector<Candidate>& inside) {
     size_t count = 0;
-    for (const Lookup& l : b.lookups) {
-        const Vec3 p = b.hits[l.hit].p;
+    for (const Lookup& l : lookups) {
+        const Vec3 p = hits[l.hit].p;
         for (uint32_t k = 0; k < l.span.size; ++k) {
             const HashGrid::Sphere& sphere = l.span.spheres[k];
             const uint32_t entry = l.span.entries[k];
             float d2 = lengthSquared(sphere.center - p);
-            b.inside[count] = {l.hit, HashGrid::sphereOf(entry), d2, sphere.radiusSquared};
-            count += (d2 <= sphere.radiusSquared) & (HashGrid::levelOf(entry) == l.level);
+            inside[count] = {l.hit, HashGrid::sphereOf(entry), d2, sphere.radiusSquared};
+            bool in = d2 <= sphere.radiusSquared;
+            if constexpr (kLevels) in &= HashGrid::levelOf(entry) == l.level;
+            count += in;
         }
     }
+    return count;
+}
+}  // namespace
+
+void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
+    const size_t count = sppm_.grid_.levelCount() > 1 ? testLookups<true>(b.lookups, b.hits, b.inside)
+                                                      : testLookups<false>(b.lookups, b.hits, b.inside);
     b.insideCount = count;
     for (size_t c = 0; c < count; ++c) __builtin_prefetch(&sppm_.visible_[b.inside[c].point], 1);
 }
