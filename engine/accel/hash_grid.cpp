@@ -7,7 +7,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -42,16 +41,16 @@ HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r, const Level& l) 
 
 // Each sphere's level: the lowest whose cells are at least as wide as its radius.
 void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, const std::vector<float>& radii) {
-    resizeForOverwrite(levelOf_, count);
+    resizeForOverwrite(sphereLevel_, count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         uint8_t id = 0;
         for (float cell = baseCellSize; radii[i] > cell && id < kMaxLevels - 1; cell *= 4.0f) ++id;
-        levelOf_[i] = id;
+        sphereLevel_[i] = id;
     });
     const uint32_t usedIds = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, count), 0u,
         [&](const tbb::blocked_range<size_t>& r, uint32_t bits) {
-            for (size_t i = r.begin(); i < r.end(); ++i) bits |= static_cast<uint32_t>(radii[i] > 0) << levelOf_[i];
+            for (size_t i = r.begin(); i < r.end(); ++i) bits |= static_cast<uint32_t>(radii[i] > 0) << sphereLevel_[i];
             return bits;
         },
         [](uint32_t a, uint32_t b) { return a | b; });
@@ -69,7 +68,7 @@ void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, con
     }
     // Levels by index among those used (most often level 0 alone, where nothing changes).
     if (usedIds & (usedIds + 1))
-        tbb::parallel_for(size_t(0), count, [&](size_t i) { levelOf_[i] = indexOfId[levelOf_[i]]; });
+        tbb::parallel_for(size_t(0), count, [&](size_t i) { sphereLevel_[i] = indexOfId[sphereLevel_[i]]; });
     // One bucket per sphere: a table that stays in L2 builds and looks up faster than a sparser
     // one, for ~15% more candidates from cells sharing a bucket (photon-bench, 1x vs 4x).
     uint32_t buckets = std::bit_ceil(static_cast<uint32_t>(std::max<size_t>(count, 1024)));
@@ -109,7 +108,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     // any thread count. (It replaced a counting sort with an atomic counter per entry:
     // the grid build of photon-bench went from 13.6 to 10.4 ms, docs/sppm.md.)
     auto forEachCell = [&](size_t i, auto&& fn) {
-        const Level& l = levels_[levelOf_[i]];
+        const Level& l = levels_[sphereLevel_[i]];
         CellRange cr = cellsOverlapping(centers[i], radii[i], l);
         for (int z = cr.lo[2]; z <= cr.hi[2]; ++z)
             for (int y = cr.lo[1]; y <= cr.hi[1]; ++y)
@@ -119,7 +118,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         uint32_t cells = 0;
         if (radii[i] > 0) {
-            CellRange cr = cellsOverlapping(centers[i], radii[i], levels_[levelOf_[i]]);
+            CellRange cr = cellsOverlapping(centers[i], radii[i], levels_[sphereLevel_[i]]);
             cells = static_cast<uint32_t>((cr.hi[0] - cr.lo[0] + 1) * (cr.hi[1] - cr.lo[1] + 1) * (cr.hi[2] - cr.lo[2] + 1));
         }
         firstKey_[i + 1] = cells;
@@ -130,7 +129,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         if (!(radii[i] > 0)) return;
         uint64_t* key = keys_.data() + firstKey_[i];
-        const uint64_t entry = (static_cast<uint64_t>(levelOf_[i]) << kSphereBits) | i;
+        const uint64_t entry = (static_cast<uint64_t>(sphereLevel_[i]) << kSphereBits) | i;
         forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | entry; });
     });
     radixSortByBits(keys_, sortScratch_, 32, std::countr_zero(mask_ + 1));

@@ -88,7 +88,7 @@ private:
 
     Vec3 origin_;
     std::vector<Level> levels_;       // the levels that hold spheres, finest first
-    std::vector<uint8_t> levelOf_;    // by sphere: its index in levels_ (build scratch)
+    std::vector<uint8_t> sphereLevel_;    // by sphere: its index in levels_ (build scratch)
     uint32_t mask_ = 0;
     std::vector<uint32_t> offsets_;  // bucket h holds entries [offsets_[h], offsets_[h+1])
     std::vector<Sphere> spheres_;    // by entry

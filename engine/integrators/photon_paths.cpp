@@ -152,6 +152,17 @@ PHOTON_LANES_INLINE void bounceSpecularLanes(PhotonLanes& L, int first) {
 PHOTON_LANES_KERNEL(bounceSpecular, bounceSpecularLanes, (PhotonLanes & L, int first), (L, first))
 
 class PhotonWalk {
+    // What the walk needs of each shape's material, looked up once per hit.
+    enum class Bounce { Lambertian, Specular, OneByOne };  // in lanes (two kinds), or not
+    struct ShapeScattering {
+        const Material* material;
+        Bounce bounce;
+        bool twoSided;  // the normals are turned toward the photon
+        bool textured;  // its colour comes from a texture
+        Color tint;     // else its colour
+        float ior;      // of a smooth specular surface (0: a mirror)
+    };
+
 public:
     PhotonWalk(const Scene& scene, const PhotonEmitter& emitter, const PhotonPathSettings& settings,
                PhotonArrivalSink& sink, PhotonPathCounters& counters)
@@ -270,7 +281,6 @@ private:
     }
 
     // A hit that waits for its bounce in lanes.
-    struct ShapeScattering;
     void keepHit(int i, const SurfaceHit& hit, const ShapeScattering& shape) {
         PhotonLanes& L = lanes_;
         Color tint = shape.textured ? shape.material->tint().eval(hit.uv) : shape.tint;
@@ -307,16 +317,6 @@ private:
     const RngStream stream_;
     PhotonArrivalSink& sink_;
     PhotonPathCounters& counters_;
-    // What the walk needs of each shape's material, looked up once per hit.
-    enum class Bounce { Lambertian, Specular, OneByOne };  // in lanes (two kinds), or not
-    struct ShapeScattering {
-        const Material* material;
-        Bounce bounce;
-        bool twoSided;  // the normals are turned toward the photon
-        bool textured;  // its colour comes from a texture
-        Color tint;     // else its colour
-        float ior;      // of a smooth specular surface (0: a mirror)
-    };
     std::vector<ShapeScattering> shapes_;  // by shape index
     PhotonLanes lanes_;
     PhotonEmitter::Lanes emitted_;
