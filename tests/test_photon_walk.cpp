@@ -1,4 +1,5 @@
-// The photon walk in lanes (sixteen photons side by side, Lambertian bounces in SIMD)
+// The photon walk in lanes (sixteen photons side by side, Lambertian bounces in SIMD,
+// with each instruction set the kernels are compiled for)
 // against the plain definition of the walk, photon after photon: emit, intersect, hand the
 // arrival over, sample the BSDF, Russian roulette, next ray. Both draw each photon's random
 // numbers from the same stream, so they must land the same photons in the same places
@@ -9,6 +10,7 @@
 #include <tuple>
 #include <vector>
 #include "integrators/photon_paths.h"
+#include "math/lanes.h"
 #include "integrators/photon_roulette.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -70,9 +72,25 @@ void referenceWalk(const Scene& scene, const PhotonEmitter& emitter, const Photo
     }
 }
 
-// Walks `photons` both ways and checks they agree; `landings` receives them.
+void expectSameWalkIn(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
+                      std::vector<Landing>& landings);
+
+// Walks `photons` both ways and checks they agree, once with each instruction set the
+// lanes' kernels are compiled for that this CPU runs; `landings` receives them.
 void expectSameWalk(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
                     std::vector<Landing>& landings) {
+    for (LanesIsa isa : {LanesIsa::Baseline, LanesIsa::Avx2, LanesIsa::Avx512}) {
+        if (isa > cpuLanesIsa()) continue;
+        SCOPED_TRACE(static_cast<int>(isa));
+        limitLanesIsa(isa);
+        expectSameWalkIn(sceneName, settings, photons, landings);
+        limitLanesIsa(LanesIsa::Avx512);
+        if (::testing::Test::HasFatalFailure()) return;
+    }
+}
+
+void expectSameWalkIn(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
+                      std::vector<Landing>& landings) {
     SceneDescription d = test::exampleScene(sceneName, 64, 1, photons, 1);
     std::shared_ptr<const Scene> scene = Scene::build(std::move(d));
     PhotonEmitter emitter(*scene, false);
