@@ -84,27 +84,39 @@ PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonE
 PHOTON_LANES_KERNEL(emitFromTriangles, emitFromTrianglesLanes, (const TriangleLanes& in, PhotonEmitter::Lanes& out),
                     (in, out))
 
+// Every lane's stream, Rng(stream, index[i]) eight at a time, and its first number (the
+// light's). Lanes not wanted are seeded too, and ignored.
+PHOTON_LANES_INLINE void seedLanesBody(uint64_t streamKey, const int64_t* index, PhotonEmitter::Lanes& out, float* uLight) {
+    Uint64Lanes state, increment;
+    seedPcg32<Uint64Lanes>(Uint64Lanes{} + streamKey, loadLanes<int64_t, Uint64Lanes>(index), state, increment);
+    storeLanes(out.state, state);
+    storeLanes(out.increment, increment);
+    storeLanes(uLight, uniformLanes(out.state, out.increment, ~IntLanes{}));
+}
+PHOTON_LANES_KERNEL(seedLanes, seedLanesBody, (uint64_t streamKey, const int64_t* index, PhotonEmitter::Lanes& out, float* uLight),
+                    (streamKey, index, out, uLight))
+
 }  // namespace
 
 void PhotonEmitter::emitLanes(const RngStream& stream, const int64_t* index, const int32_t* want, Lanes& out) const {
     TriangleLanes fromTriangles;
     bool anyTriangles = false;
+    alignas(32) float uLight[kLanes];
+    seedLanes(stream.key(), index, out, uLight);
     for (int i = 0; i < kLanes; ++i) {
         out.emitted[i] = 0;
         fromTriangles.waiting[i] = 0;
         fromTriangles.triangles[i] = nullptr;
         if (!want[i]) continue;
-        Rng rng(stream, static_cast<uint64_t>(index[i]));
-        LightSampler::Pick pick = scene_.lights().pick(rng.uniform());
+        LightSampler::Pick pick = scene_.lights().pick(uLight[i]);
         if (pick.light && laneTriangles_[pick.index]) {
             fromTriangles.triangles[i] = laneTriangles_[pick.index];
             fromTriangles.beta[i] = laneFlux_[pick.index];
             fromTriangles.waiting[i] = -1;
             anyTriangles = true;
-            out.state[i] = rng.state();
-            out.increment[i] = rng.increment();
             continue;
         }
+        Rng rng = Rng::resume(out.state[i], out.increment[i]);
         std::optional<EmittedPhoton> e;
         if (pick.light) e = emitFrom(pick.index, rng);
         out.state[i] = rng.state();
