@@ -10,8 +10,8 @@
 #include <tuple>
 #include <vector>
 #include "integrators/photon_paths.h"
-#include "math/lanes.h"
 #include "integrators/photon_roulette.h"
+#include "math/lanes.h"
 #include "scene/scene.h"
 #include "test_support.h"
 
@@ -72,23 +72,7 @@ void referenceWalk(const Scene& scene, const PhotonEmitter& emitter, const Photo
     }
 }
 
-void expectSameWalkIn(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
-                      std::vector<Landing>& landings);
-
-// Walks `photons` both ways and checks they agree, once with each instruction set the
-// lanes' kernels are compiled for that this CPU runs; `landings` receives them.
-void expectSameWalk(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
-                    std::vector<Landing>& landings) {
-    for (LanesIsa isa : {LanesIsa::Baseline, LanesIsa::Avx2, LanesIsa::Avx512}) {
-        if (isa > cpuLanesIsa()) continue;
-        SCOPED_TRACE(static_cast<int>(isa));
-        limitLanesIsa(isa);
-        expectSameWalkIn(sceneName, settings, photons, landings);
-        limitLanesIsa(LanesIsa::Avx512);
-        if (::testing::Test::HasFatalFailure()) return;
-    }
-}
-
+// Walks `photons` both ways with the kernels as they are and checks they agree.
 void expectSameWalkIn(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
                       std::vector<Landing>& landings) {
     SceneDescription d = test::exampleScene(sceneName, 64, 1, photons, 1);
@@ -118,6 +102,20 @@ void expectSameWalkIn(const std::string& sceneName, PhotonPathSettings settings,
         ASSERT_EQ(a.onlySpecular, b.onlySpecular) << i;
     }
     landings = reference.landings;
+}
+
+// Walks `photons` both ways and checks they agree, once with each instruction set the
+// lanes' kernels are compiled for that this CPU runs; `landings` receives them.
+void expectSameWalk(const std::string& sceneName, PhotonPathSettings settings, int64_t photons,
+                    std::vector<Landing>& landings) {
+    for (LanesIsa isa : {LanesIsa::Baseline, LanesIsa::Avx2, LanesIsa::Avx512}) {
+        if (isa > cpuLanesIsa()) continue;
+        SCOPED_TRACE(static_cast<int>(isa));
+        limitLanesIsa(isa);
+        expectSameWalkIn(sceneName, settings, photons, landings);
+        limitLanesIsa(LanesIsa::Avx512);
+        if (::testing::Test::HasFatalFailure()) return;
+    }
 }
 
 double indirectShare(const std::vector<Landing>& landings) {
