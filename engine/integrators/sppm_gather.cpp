@@ -6,12 +6,19 @@
 namespace photon {
 
 namespace {
+// Every prefetch of the gather goes to L2 (prefetcht1), not L1. A batch's lines are used a
+// whole batch of photon walking later; fetched into L1 (32 KiB) they pushed out the walk's
+// own working set (Embree's nodes, the lanes) and were pushed out themselves before use,
+// while L2 (1 MiB per core) holds several batches. photon-bench, 2 threads, on an AMD EPYC
+// (Zen 4) VM whose other tenants leave it about 6 MiB of L3: ratio 0.44 -> 0.50.
+void prefetchIntoL2(const void* p) { __builtin_prefetch(p, 0, 2); }
+
 // Every cache line of [begin, end).
 template <class T>
 void prefetchRange(const T* begin, const T* end) {
     constexpr uintptr_t kLine = 64;
     for (uintptr_t a = reinterpret_cast<uintptr_t>(begin) & ~(kLine - 1); a < reinterpret_cast<uintptr_t>(end); a += kLine)
-        __builtin_prefetch(reinterpret_cast<const void*>(a));
+        prefetchIntoL2(reinterpret_cast<const void*>(a));
 }
 }  // namespace
 
@@ -77,7 +84,7 @@ void SppmIntegrator::GatherPipeline::testSpheres(Batch& b) {
     const size_t count = sppm_.grid_.levelCount() > 1 ? testLookups<true>(b.lookups, b.hits, b.inside)
                                                       : testLookups<false>(b.lookups, b.hits, b.inside);
     b.insideCount = count;
-    for (size_t c = 0; c < count; ++c) __builtin_prefetch(&sppm_.visible_[b.inside[c].point], 1);
+    for (size_t c = 0; c < count; ++c) prefetchIntoL2(&sppm_.visible_[b.inside[c].point]);
 }
 
 void SppmIntegrator::GatherPipeline::addInside(Batch& b) {
