@@ -10,7 +10,7 @@ namespace {
 // whole batch of photon walking later; fetched into L1 (32 KiB) they pushed out the walk's
 // own working set (Embree's nodes, the lanes) and were pushed out themselves before use,
 // while L2 (1 MiB per core) holds several batches. photon-bench, 2 threads, on an AMD EPYC
-// (Zen 4) VM whose other tenants leave it about 6 MiB of L3: ratio 0.44 -> 0.50.
+// (Zen 4) VM whose other tenants leave it about 6 MiB of L3: ratio 0.44 -> 0.52.
 void prefetchIntoL2(const void* p) { __builtin_prefetch(p, 0, 2); }
 
 // Every cache line of [begin, end).

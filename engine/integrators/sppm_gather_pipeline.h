@@ -3,10 +3,10 @@
 // likely a cache miss. Hits wait in batches, and each batch takes one step of the chain
 // whenever a new batch fills, after prefetching the memory of its next step, so that a
 // prefetch has a whole batch's worth of photon walking to arrive. When one batch ran every
-// step back to back, loading a bucket's entries took a third of the gather's time; now the
-// time goes to the prefetches themselves (the core has only so many misses in flight), and
-// photon-bench moved by about 1%: the gather is bound by how many cache lines it touches,
-// which is why the grid's entries carry their spheres (accel/hash_grid.h).
+// step back to back, loading a bucket's entries took a third of the gather's time. The
+// prefetches go to L2, not L1 (sppm_gather.cpp says why). What is left is bound by how
+// many cache lines the gather touches, which is why the grid's entries carry their spheres
+// (accel/hash_grid.h).
 #pragma once
 #include <array>
 #include <vector>
