@@ -6,11 +6,13 @@
 namespace photon {
 
 namespace {
-// Every prefetch of the gather goes to L2 (prefetcht1), not L1. A batch's lines are used a
-// whole batch of photon walking later; fetched into L1 (32 KiB) they pushed out the walk's
-// own working set (Embree's nodes, the lanes) and were pushed out themselves before use,
-// while L2 (1 MiB per core) holds several batches. photon-bench, 2 threads, on an AMD EPYC
-// (Zen 4) VM whose other tenants leave it about 6 MiB of L3: ratio 0.44 -> 0.52.
+// Every prefetch of the gather goes to L2 (prefetcht1), not L1 (prefetcht0): photon-bench,
+// 2 threads, on an AMD EPYC (Zen 4) VM whose other tenants leave it about 6 MiB of L3,
+// ratio 0.44 -> 0.52. Not for want of room in L1: batches of 8 or 16 hits, whose lines
+// fill a fraction of it, were as slow with L1 prefetches (0.44-0.45), and so was the whole
+// gather run apart from the walk. Evidently a prefetch into L1 holds one of the core's few
+// L1 miss buffers for its whole trip to memory (~200 ns here), and every other load that
+// misses L1, the walk's and Embree's included, waits for one; L2 keeps its own.
 void prefetchIntoL2(const void* p) { __builtin_prefetch(p, 0, 2); }
 
 // Every cache line of [begin, end).
