@@ -37,8 +37,8 @@ public:
         int ix, iy, iz;
         return cellOf(p, l, ix, iy, iz) ? hash(ix, iy, iz, l.id) : kNoBucket;
     }
-    // Into L2 (prefetcht1), where the callers' other prefetches go too (sppm_gather.cpp).
-    void prefetchBucket(uint32_t h) const { __builtin_prefetch(&offsets_[h], 0, 2); }
+    // What bucket(h) reads first, for callers to prefetch (into the cache level they choose).
+    const void* bucketAddress(uint32_t h) const { return &offsets_[h]; }
     struct Sphere {
         Vec3 center;
         float radiusSquared;

@@ -40,7 +40,7 @@ void SppmIntegrator::GatherPipeline::findBuckets(Batch& b) {
         for (size_t i = 0; i < b.size; ++i) {
             const uint32_t bucket = grid.bucketOf(b.hits[i].p, level);
             if (bucket == HashGrid::kNoBucket) continue;
-            grid.prefetchBucket(bucket);
+            prefetchIntoL2(grid.bucketAddress(bucket));
             b.lookups.push_back({static_cast<uint32_t>(i), static_cast<uint32_t>(level), bucket, {}});
         }
 }
