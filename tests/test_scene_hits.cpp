@@ -1,8 +1,11 @@
 // What Scene::intersect reports at a hit, against values worked out by hand: the point, the
 // geometric and shading normals (flat faces, interpolated vertex normals, flip_normals on
-// meshes and spheres) and the texture coordinates of textured shapes.
+// meshes and spheres) and the texture coordinates of textured shapes; and that Embree's
+// packet query reports, lane by lane, exactly what the single-ray query does.
 #include <gtest/gtest.h>
 #include "materials/material.h"
+#include "math/rng.h"
+#include "math/sampling.h"
 #include "scene/scene.h"
 #include "scene_builders.h"
 #include "test_support.h"
@@ -102,6 +105,59 @@ TEST(SceneHits, TexturedSphereCarriesLongitudeAndLatitude) {
     // At the top (latitude 90 degrees) v is 1.
     SurfaceHit top = hitAlong(*scene, {0, 3, 0}, {0, -1, 0});
     EXPECT_NEAR(top.uv.y, 1.0f, kEps);
+}
+
+// Random rays through a box of quads around two spheres (one inside-out), cast once one by
+// one and once sixteen to a packet with lanes left empty: every lane's hit must match its
+// single ray's bit for bit, spheres included (the photon walk casts packets, and must land
+// photons where the one-by-one definition does).
+TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
+    SceneDescription d = baseScene();
+    d.shapes.push_back(test::quad({-2, -2, -2}, {4, 0, 0}, {0, 4, 0}, 0));
+    d.shapes.push_back(test::quad({-2, -2, -2}, {0, 0, 4}, {4, 0, 0}, 0));
+    d.shapes.push_back(test::quad({-2, -2, -2}, {0, 4, 0}, {0, 0, 4}, 0));
+    d.shapes.push_back(test::sphere({0.5f, -1, 0}, 0.7f, 1));
+    d.shapes.push_back(test::sphere({-0.6f, 0.4f, -0.5f}, 0.5f, 0, Color(0.0f), true));
+    auto scene = Scene::build(std::move(d));
+    int sphereHits = 0, compared = 0;
+    for (int first = 0; first < 4096; first += Scene::RayPacket::kSize) {
+        Scene::RayPacket packet;
+        Ray rays[Scene::RayPacket::kSize];
+        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
+            Rng rng(7, 0, static_cast<uint64_t>(first + k), StreamPurpose::Test);
+            rays[k] = {Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 3.0f - Vec3(1.5f),
+                       sampleUniformSphere({rng.uniform(), rng.uniform()})};
+            RTCRayHit one = Scene::embreeQuery(rays[k]);
+            packet.valid[k] = (first / 16 + k) % 5 == 0 ? 0 : -1;  // some lanes empty
+            packet.rh.ray.org_x[k] = one.ray.org_x, packet.rh.ray.org_y[k] = one.ray.org_y;
+            packet.rh.ray.org_z[k] = one.ray.org_z, packet.rh.ray.dir_x[k] = one.ray.dir_x;
+            packet.rh.ray.dir_y[k] = one.ray.dir_y, packet.rh.ray.dir_z[k] = one.ray.dir_z;
+            packet.rh.ray.tnear[k] = one.ray.tnear, packet.rh.ray.tfar[k] = one.ray.tfar;
+            packet.rh.ray.time[k] = one.ray.time, packet.rh.ray.mask[k] = one.ray.mask;
+            packet.rh.ray.flags[k] = one.ray.flags, packet.rh.hit.geomID[k] = one.hit.geomID;
+        }
+        scene->intersect(packet);
+        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
+            if (!packet.valid[k]) continue;
+            SurfaceHit single, lane;
+            const bool hitSingle = scene->intersect(rays[k], single);
+            ASSERT_EQ(scene->hitOf(packet, k, lane), hitSingle);
+            if (!hitSingle) continue;
+            ++compared;
+            sphereHits += single.shape >= 3;
+            ASSERT_EQ(lane.shape, single.shape);
+            ASSERT_EQ(lane.primitive, single.primitive);
+            for (int a = 0; a < 3; ++a) {
+                ASSERT_EQ(lane.p[a], single.p[a]) << "ray " << first + k;
+                ASSERT_EQ(lane.ng[a], single.ng[a]);
+                ASSERT_EQ(lane.ns[a], single.ns[a]);
+            }
+            ASSERT_EQ(lane.uv.x, single.uv.x);
+            ASSERT_EQ(lane.uv.y, single.uv.y);
+        }
+    }
+    EXPECT_GT(compared, 1500);
+    EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points come from the distance, were hit often
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "photon_paths.h"
+#include <limits>
 #include <vector>
 #include "../math/lanes.h"
 #include "../materials/fresnel.h"
@@ -191,6 +192,7 @@ public:
             bool anyAlive = false;
             for (int i = 0; i < kWalkLanes; ++i) anyAlive |= lanes_.alive[i] != 0;
             if (!anyAlive) return;
+            castRays();
             unsigned waiting[2] = {0, 0};
             for (int i = 0; i < kWalkLanes; ++i)
                 if (lanes_.alive[i]) waiting[i / kLanes] |= step(i);
@@ -235,19 +237,38 @@ private:
         }
     }
 
+    // Every live lane's ray, in one packet query.
+    void castRays() {
+        static_assert(Scene::RayPacket::kSize == kWalkLanes);
+        const PhotonLanes& L = lanes_;
+        Scene::RayPacket& p = packet_;
+        for (int i = 0; i < kWalkLanes; ++i) {
+            p.valid[i] = L.alive[i];
+            p.rh.ray.org_x[i] = L.ox[i], p.rh.ray.org_y[i] = L.oy[i], p.rh.ray.org_z[i] = L.oz[i];
+            p.rh.ray.dir_x[i] = L.dx[i], p.rh.ray.dir_y[i] = L.dy[i], p.rh.ray.dir_z[i] = L.dz[i];
+            p.rh.ray.tnear[i] = 0;
+            p.rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
+            p.rh.ray.time[i] = 0;
+            p.rh.ray.mask[i] = ~0u;
+            p.rh.ray.flags[i] = 0;
+            p.rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        }
+        scene_.intersect(p);
+    }
+
     // What a lane's hit waits for after step(): nothing (its bounce is done, or its path
     // ended), or one of the bounces in lanes.
     static constexpr unsigned kLambertianWaits = 1, kSpecularWaits = 2;
 
-    // Casts lane i's ray, hands the arrival to the sink, and bounces the photon here unless
-    // its surface bounces in lanes.
+    // Takes lane i's hit from the packet, hands the arrival to the sink, and bounces the
+    // photon here unless its surface bounces in lanes.
     unsigned step(int i) {
         PhotonLanes& L = lanes_;
         const Ray ray = L.ray(i);
         SurfaceHit hit;
         ++counters_.rays;
         L.alive[i] = 0;
-        if (!scene_.intersect(ray, hit)) {
+        if (!scene_.hitOf(packet_, i, hit)) {
             counters_.missedAtEmission += L.depth[i] == 0;
             return 0;
         }
@@ -319,6 +340,7 @@ private:
     PhotonPathCounters& counters_;
     std::vector<ShapeScattering> shapes_;  // by shape index
     PhotonLanes lanes_;
+    Scene::RayPacket packet_;
     PhotonEmitter::Lanes emitted_;
 };
 

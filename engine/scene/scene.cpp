@@ -1,4 +1,6 @@
 #include "scene.h"
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include "../lights/light_factories.h"
@@ -130,11 +132,27 @@ void Scene::fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const 
     hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
-        hit.p = ray.o + ray.d * hit.t;
+        hit.p = sphereHitPoint(ray, shape.center, shape.radius, hit.t);
         fillSphereHit(shape, hit);
     } else {
         fillTriangleHit(shape, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
     }
+}
+
+// Where the ray meets the sphere, computed from the ray rather than from Embree's distance,
+// whose last bit Embree's single-ray and packet kernels may round differently: the root of
+// |o + t d - c|^2 = r^2 nearer that distance, in double precision (the origin may be far
+// from the sphere, and the roots nearly equal on a grazing ray).
+Vec3 Scene::sphereHitPoint(const Ray& ray, Vec3 center, float radius, float tEmbree) {
+    const double ox = ray.o.x - center.x, oy = ray.o.y - center.y, oz = ray.o.z - center.z;
+    const double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
+    const double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz;
+    const double c = ox * ox + oy * oy + oz * oz - static_cast<double>(radius) * radius;
+    const double s = std::sqrt(std::max(b * b - a * c, 0.0));
+    const double near = (-b - s) / a, far = (-b + s) / a;
+    const double t = std::abs(near - tEmbree) <= std::abs(far - tEmbree) ? near : far;
+    return {static_cast<float>(ray.o.x + dx * t), static_cast<float>(ray.o.y + dy * t),
+            static_cast<float>(ray.o.z + dz * t)};
 }
 
 void Scene::fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const {

@@ -37,6 +37,46 @@ public:
     bool intersect(const Ray& ray, SurfaceHit& hit) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
+        RTCRayHit rh = embreeQuery(ray);
+        rtcIntersect1(rtcScene_, &context, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        fillHit(ray, rh, hit);
+        return true;
+    }
+    // Up to sixteen rays cast together by Embree's packet query, for callers that hold many
+    // independent rays at once (the photon walk's lanes). On this renderer's incoherent
+    // photon rays it spends a sixth less time per ray than casting them one by one, even
+    // with half the lanes empty (docs/sppm.md). A lane's hit is exactly the one intersect()
+    // finds for its ray: Embree's packet and single-ray kernels agree on the primitive and
+    // its barycentrics, from which hit points are made (on spheres from the ray itself), and
+    // may differ only in the last bit of the distance.
+    struct RayPacket {
+        static constexpr int kSize = 16;
+        alignas(64) int valid[kSize];  // -1: the lane holds a ray, 0: it is empty
+        RTCRayHit16 rh;
+    };
+    void intersect(RayPacket& packet) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        rtcIntersect16(packet.valid, rtcScene_, &context, &packet.rh);
+    }
+    // The hit of a lane of a packet that intersect() has cast, if any.
+    bool hitOf(const RayPacket& packet, int lane, SurfaceHit& hit) const {
+        const RTCRayHit16& p = packet.rh;
+        if (p.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) return false;
+        RTCRayHit rh;
+        rh.ray.tfar = p.ray.tfar[lane];
+        rh.hit.geomID = p.hit.geomID[lane];
+        rh.hit.primID = p.hit.primID[lane];
+        rh.hit.u = p.hit.u[lane];
+        rh.hit.v = p.hit.v[lane];
+        const Ray ray{{p.ray.org_x[lane], p.ray.org_y[lane], p.ray.org_z[lane]},
+                      {p.ray.dir_x[lane], p.ray.dir_y[lane], p.ray.dir_z[lane]}};
+        fillHit(ray, rh, hit);
+        return true;
+    }
+    // Embree's closest-hit query for the ray, nothing found yet.
+    static RTCRayHit embreeQuery(const Ray& ray) {
         RTCRayHit rh;
         rh.ray.org_x = ray.o.x;
         rh.ray.org_y = ray.o.y;
@@ -50,10 +90,7 @@ public:
         rh.ray.flags = 0;
         rh.ray.time = 0;
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(rtcScene_, &context, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-        fillHit(ray, rh, hit);
-        return true;
+        return rh;
     }
     // True if anything blocks the ray within (0, tMax).
     bool occluded(const Ray& ray) const;
@@ -84,6 +121,7 @@ private:
     void fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const;
     void fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const;
     void fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const;
+    static Vec3 sphereHitPoint(const Ray& ray, Vec3 center, float radius, float tEmbree);
 
     // Per shape, what turning Embree's answer into a SurfaceHit needs, prepared once: a
     // hit is the photon walk's hottest step after the ray itself.

@@ -21,5 +21,8 @@ struct RayThroughput {
 // Rays start at uniform points in the scene's bounding box with uniform directions,
 // incoherent like photon paths; cast with rtcIntersect1 over all TBB threads.
 RayThroughput measureEmbreeThroughput(const Scene& scene, int64_t rays);
+// The same rays sixteen at a time, with Embree's packet query (Scene::intersect(RayPacket&)),
+// as the photon walk casts its lanes' rays.
+RayThroughput measureEmbreePacketThroughput(const Scene& scene, int64_t rays);
 
 }  // namespace photon::bench
