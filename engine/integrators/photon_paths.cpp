@@ -20,8 +20,15 @@ constexpr int kRefillThreshold = 6;
 // Sixteen photons side by side, one per lane, structure of arrays so that eight lanes load
 // into one SIMD register.
 struct PhotonLanes {
-    alignas(32) float ox[kWalkLanes], oy[kWalkLanes], oz[kWalkLanes];  // the next ray
-    alignas(32) float dx[kWalkLanes], dy[kWalkLanes], dz[kWalkLanes];
+    // The next rays, kept where Embree's packet query reads them: origins and directions
+    // are its inputs, never written by it.
+    Scene::RayPacket packet;
+    float* ox() { return packet.rh.ray.org_x; }
+    float* oy() { return packet.rh.ray.org_y; }
+    float* oz() { return packet.rh.ray.org_z; }
+    float* dx() { return packet.rh.ray.dir_x; }
+    float* dy() { return packet.rh.ray.dir_y; }
+    float* dz() { return packet.rh.ray.dir_z; }
     alignas(32) float betaR[kWalkLanes], betaG[kWalkLanes], betaB[kWalkLanes];  // flux
     alignas(64) uint64_t state[kWalkLanes], increment[kWalkLanes];             // PCG32 streams
     alignas(32) int32_t depth[kWalkLanes];         // surfaces reached so far
@@ -38,11 +45,14 @@ struct PhotonLanes {
     alignas(32) float nsx[kWalkLanes], nsy[kWalkLanes], nsz[kWalkLanes];
     alignas(32) float tintR[kWalkLanes], tintG[kWalkLanes], tintB[kWalkLanes];
 
-    Ray ray(int i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
+    Vec3 direction(int i) const {
+        const RTCRay16& r = packet.rh.ray;
+        return {r.dir_x[i], r.dir_y[i], r.dir_z[i]};
+    }
     Color beta(int i) const { return {betaR[i], betaG[i], betaB[i]}; }
     void setRay(int i, const Ray& r) {
-        ox[i] = r.o.x, oy[i] = r.o.y, oz[i] = r.o.z;
-        dx[i] = r.d.x, dy[i] = r.d.y, dz[i] = r.d.z;
+        ox()[i] = r.o.x, oy()[i] = r.o.y, oz()[i] = r.o.z;
+        dx()[i] = r.d.x, dy()[i] = r.d.y, dz()[i] = r.d.z;
     }
     void setBeta(int i, Color b) { betaR[i] = b.x, betaG[i] = b.y, betaB[i] = b.z; }
 };
@@ -79,8 +89,8 @@ PHOTON_LANES_INLINE void continueLanes(PhotonLanes& L, int first, IntLanes waiti
     Vec3Lanes offset = ng * eps;
     Vec3Lanes o = select(dot(wi, ng) >= 0.0f, p + offset, p - offset);
 
-    storeVec3(L.ox + first, L.oy + first, L.oz + first, select(waiting, o, loadVec3(L.ox + first, L.oy + first, L.oz + first)));
-    storeVec3(L.dx + first, L.dy + first, L.dz + first, select(waiting, wi, loadVec3(L.dx + first, L.dy + first, L.dz + first)));
+    storeVec3(L.ox() + first, L.oy() + first, L.oz() + first, select(waiting, o, loadVec3(L.ox() + first, L.oy() + first, L.oz() + first)));
+    storeVec3(L.dx() + first, L.dy() + first, L.dz() + first, select(waiting, wi, loadVec3(L.dx() + first, L.dy() + first, L.dz() + first)));
     storeVec3(L.betaR + first, L.betaG + first, L.betaB + first, select(waiting, next, beta));
     IntLanes depth = loadLanes<int32_t, IntLanes>(L.depth + first);
     storeLanes(L.depth + first, select(waiting, depth + 1, depth));
@@ -103,7 +113,7 @@ PHOTON_LANES_INLINE void bounceLambertianLanes(PhotonLanes& L, int first) {
     FloatLanes lx, ly, lz;
     cosineHemisphere(u1, u2, lx, ly, lz);
 
-    Vec3Lanes d = loadVec3(L.dx + first, L.dy + first, L.dz + first);
+    Vec3Lanes d = loadVec3(L.dx() + first, L.dy() + first, L.dz() + first);
     Vec3Lanes ns = loadVec3(L.nsx + first, L.nsy + first, L.nsz + first);
     // Seen from below its shading normal, or sampled on the horizon, the surface ends the path.
     IntLanes sampled = waiting & (-dot(d, ns) > 0.0f) & (lz > 0.0f);
@@ -127,7 +137,7 @@ PHOTON_LANES_INLINE void bounceSpecularLanes(PhotonLanes& L, int first) {
     (void)uniformLanes(state, increment, waiting);
     (void)uniformLanes(state, increment, waiting);
 
-    Vec3Lanes d = loadVec3(L.dx + first, L.dy + first, L.dz + first);
+    Vec3Lanes d = loadVec3(L.dx() + first, L.dy() + first, L.dz() + first);
     Vec3Lanes ns = loadVec3(L.nsx + first, L.nsy + first, L.nsz + first);
     Vec3Lanes s, t;
     orthonormalBasis(ns.x, ns.y, ns.z, s.x, s.y, s.z, t.x, t.y, t.z);
@@ -182,7 +192,14 @@ public:
             }
             shapes_.push_back(sc);
         }
-        for (int i = 0; i < kWalkLanes; ++i) lanes_.alive[i] = lanes_.lambertian[i] = lanes_.specular[i] = 0;
+        static_assert(Scene::RayPacket::kSize == kWalkLanes);
+        RTCRay16& rays = lanes_.packet.rh.ray;
+        for (int i = 0; i < kWalkLanes; ++i) {
+            lanes_.alive[i] = lanes_.lambertian[i] = lanes_.specular[i] = 0;
+            rays.tnear[i] = rays.time[i] = 0;  // the rest of the query that Embree does not change
+            rays.mask[i] = ~0u;
+            rays.flags[i] = 0;
+        }
     }
 
     void run(int64_t begin, int64_t end) {
@@ -225,8 +242,8 @@ private:
             for (int k = 0; k < kLanes; ++k) {
                 if (!emitted_.emitted[k]) continue;
                 const int i = first + k;
-                L.ox[i] = emitted_.ox[k], L.oy[i] = emitted_.oy[k], L.oz[i] = emitted_.oz[k];
-                L.dx[i] = emitted_.dx[k], L.dy[i] = emitted_.dy[k], L.dz[i] = emitted_.dz[k];
+                L.ox()[i] = emitted_.ox[k], L.oy()[i] = emitted_.oy[k], L.oz()[i] = emitted_.oz[k];
+                L.dx()[i] = emitted_.dx[k], L.dy()[i] = emitted_.dy[k], L.dz()[i] = emitted_.dz[k];
                 L.betaR[i] = emitted_.betaR[k], L.betaG[i] = emitted_.betaG[k], L.betaB[i] = emitted_.betaB[k];
                 L.state[i] = emitted_.state[k];
                 L.increment[i] = emitted_.increment[k];
@@ -239,18 +256,10 @@ private:
 
     // Every live lane's ray, in one packet query.
     void castRays() {
-        static_assert(Scene::RayPacket::kSize == kWalkLanes);
-        const PhotonLanes& L = lanes_;
-        Scene::RayPacket& p = packet_;
+        Scene::RayPacket& p = lanes_.packet;
         for (int i = 0; i < kWalkLanes; ++i) {
-            p.valid[i] = L.alive[i];
-            p.rh.ray.org_x[i] = L.ox[i], p.rh.ray.org_y[i] = L.oy[i], p.rh.ray.org_z[i] = L.oz[i];
-            p.rh.ray.dir_x[i] = L.dx[i], p.rh.ray.dir_y[i] = L.dy[i], p.rh.ray.dir_z[i] = L.dz[i];
-            p.rh.ray.tnear[i] = 0;
+            p.valid[i] = lanes_.alive[i];
             p.rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
-            p.rh.ray.time[i] = 0;
-            p.rh.ray.mask[i] = ~0u;
-            p.rh.ray.flags[i] = 0;
             p.rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
         }
         scene_.intersect(p);
@@ -264,16 +273,15 @@ private:
     // photon here unless its surface bounces in lanes.
     unsigned step(int i) {
         PhotonLanes& L = lanes_;
-        const Ray ray = L.ray(i);
         SurfaceHit hit;
         ++counters_.rays;
         L.alive[i] = 0;
-        if (!scene_.hitOf(packet_, i, hit)) {
+        if (!scene_.hitOf(L.packet, i, hit)) {
             counters_.missedAtEmission += L.depth[i] == 0;
             return 0;
         }
         ++counters_.segments;
-        const Vec3 wi = -ray.d;
+        const Vec3 wi = -L.direction(i);
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
         const ShapeScattering& shape = shapes_[hit.shape];
@@ -340,7 +348,6 @@ private:
     PhotonPathCounters& counters_;
     std::vector<ShapeScattering> shapes_;  // by shape index
     PhotonLanes lanes_;
-    Scene::RayPacket packet_;
     PhotonEmitter::Lanes emitted_;
 };
 

@@ -124,18 +124,14 @@ void Scene::prepareHitData() {
     }
 }
 
-void Scene::fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const {
-    hit.t = rh.ray.tfar;
-    hit.shape = rh.hit.geomID;
-    hit.primitive = rh.hit.primID;
-    hit.barycentric = {rh.hit.u, rh.hit.v};
+void Scene::completeHit(const Ray& ray, SurfaceHit& hit) const {
     hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
         hit.p = sphereHitPoint(ray, shape.center, shape.radius, hit.t);
         fillSphereHit(shape, hit);
     } else {
-        fillTriangleHit(shape, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
+        fillTriangleHit(shape, hit);
     }
 }
 
@@ -144,18 +140,21 @@ void Scene::fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const 
 // |o + t d - c|^2 = r^2 nearer that distance, in double precision (the origin may be far
 // from the sphere, and the roots nearly equal on a grazing ray).
 Vec3 Scene::sphereHitPoint(const Ray& ray, Vec3 center, float radius, float tEmbree) {
-    const double ox = ray.o.x - center.x, oy = ray.o.y - center.y, oz = ray.o.z - center.z;
+    const double ox = static_cast<double>(ray.o.x) - center.x, oy = static_cast<double>(ray.o.y) - center.y,
+                 oz = static_cast<double>(ray.o.z) - center.z;
     const double dx = ray.d.x, dy = ray.d.y, dz = ray.d.z;
     const double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz;
     const double c = ox * ox + oy * oy + oz * oz - static_cast<double>(radius) * radius;
     const double s = std::sqrt(std::max(b * b - a * c, 0.0));
-    const double near = (-b - s) / a, far = (-b + s) / a;
-    const double t = std::abs(near - tEmbree) <= std::abs(far - tEmbree) ? near : far;
+    // The roots (-b -+ s) / a lie either side of -b / a: the far one if Embree's is past it.
+    const double t = (-b + (tEmbree * a > -b ? s : -s)) / a;
     return {static_cast<float>(ray.o.x + dx * t), static_cast<float>(ray.o.y + dy * t),
             static_cast<float>(ray.o.z + dz * t)};
 }
 
-void Scene::fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const {
+void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) const {
+    const unsigned prim = hit.primitive;
+    const float u = hit.barycentric.x, v = hit.barycentric.y;
     const TriangleMesh& m = shape.mesh;
     const ShapeHitData& d = hitData_[hit.shape];
     uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];

@@ -40,7 +40,11 @@ public:
         RTCRayHit rh = embreeQuery(ray);
         rtcIntersect1(rtcScene_, &context, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-        fillHit(ray, rh, hit);
+        hit.t = rh.ray.tfar;
+        hit.shape = rh.hit.geomID;
+        hit.primitive = rh.hit.primID;
+        hit.barycentric = {rh.hit.u, rh.hit.v};
+        completeHit(ray, hit);
         return true;
     }
     // Up to sixteen rays cast together by Embree's packet query, for callers that hold many
@@ -64,15 +68,13 @@ public:
     bool hitOf(const RayPacket& packet, int lane, SurfaceHit& hit) const {
         const RTCRayHit16& p = packet.rh;
         if (p.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) return false;
-        RTCRayHit rh;
-        rh.ray.tfar = p.ray.tfar[lane];
-        rh.hit.geomID = p.hit.geomID[lane];
-        rh.hit.primID = p.hit.primID[lane];
-        rh.hit.u = p.hit.u[lane];
-        rh.hit.v = p.hit.v[lane];
+        hit.t = p.ray.tfar[lane];
+        hit.shape = p.hit.geomID[lane];
+        hit.primitive = p.hit.primID[lane];
+        hit.barycentric = {p.hit.u[lane], p.hit.v[lane]};
         const Ray ray{{p.ray.org_x[lane], p.ray.org_y[lane], p.ray.org_z[lane]},
                       {p.ray.dir_x[lane], p.ray.dir_y[lane], p.ray.dir_z[lane]}};
-        fillHit(ray, rh, hit);
+        completeHit(ray, hit);
         return true;
     }
     // Embree's closest-hit query for the ray, nothing found yet.
@@ -117,9 +119,10 @@ private:
     void addSphere(uint32_t shapeIndex);
     void buildLights();
     void prepareHitData();
-    // The hit record of Embree's closest hit on the ray.
-    void fillHit(const Ray& ray, const RTCRayHit& rh, SurfaceHit& hit) const;
-    void fillTriangleHit(const ShapeDescription& shape, unsigned prim, float u, float v, SurfaceHit& hit) const;
+    // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)
+    // is in it.
+    void completeHit(const Ray& ray, SurfaceHit& hit) const;
+    void fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) const;
     void fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const;
     static Vec3 sphereHitPoint(const Ray& ray, Vec3 center, float radius, float tEmbree);
 
