@@ -127,14 +127,8 @@ TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
             Rng rng(7, 0, static_cast<uint64_t>(first + k), StreamPurpose::Test);
             rays[k] = {Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 3.0f - Vec3(1.5f),
                        sampleUniformSphere({rng.uniform(), rng.uniform()})};
-            RTCRayHit one = Scene::embreeQuery(rays[k]);
-            packet.valid[k] = (first / 16 + k) % 5 == 0 ? 0 : -1;  // some lanes empty
-            packet.rh.ray.org_x[k] = one.ray.org_x, packet.rh.ray.org_y[k] = one.ray.org_y;
-            packet.rh.ray.org_z[k] = one.ray.org_z, packet.rh.ray.dir_x[k] = one.ray.dir_x;
-            packet.rh.ray.dir_y[k] = one.ray.dir_y, packet.rh.ray.dir_z[k] = one.ray.dir_z;
-            packet.rh.ray.tnear[k] = one.ray.tnear, packet.rh.ray.tfar[k] = one.ray.tfar;
-            packet.rh.ray.time[k] = one.ray.time, packet.rh.ray.mask[k] = one.ray.mask;
-            packet.rh.ray.flags[k] = one.ray.flags, packet.rh.hit.geomID[k] = one.hit.geomID;
+            if ((first / 16 + k) % 5 == 0) packet.clearLane(k);  // some lanes empty
+            else packet.setLane(k, rays[k]);
         }
         scene->intersect(packet);
         for (int k = 0; k < Scene::RayPacket::kSize; ++k) {

@@ -58,6 +58,20 @@ public:
         static constexpr int kSize = 16;
         alignas(64) int valid[kSize];  // -1: the lane holds a ray, 0: it is empty
         RTCRayHit16 rh;
+
+        void setLane(int lane, const Ray& ray) {
+            const RTCRayHit one = embreeQuery(ray);
+            valid[lane] = -1;
+            rh.ray.org_x[lane] = one.ray.org_x, rh.ray.org_y[lane] = one.ray.org_y, rh.ray.org_z[lane] = one.ray.org_z;
+            rh.ray.dir_x[lane] = one.ray.dir_x, rh.ray.dir_y[lane] = one.ray.dir_y, rh.ray.dir_z[lane] = one.ray.dir_z;
+            rh.ray.tnear[lane] = one.ray.tnear, rh.ray.tfar[lane] = one.ray.tfar, rh.ray.time[lane] = one.ray.time;
+            rh.ray.mask[lane] = one.ray.mask, rh.ray.flags[lane] = one.ray.flags;
+            rh.hit.geomID[lane] = one.hit.geomID;
+        }
+        void clearLane(int lane) {
+            valid[lane] = 0;
+            rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        }
     };
     void intersect(RayPacket& packet) const {
         RTCIntersectContext context;

@@ -48,25 +48,15 @@ RayThroughput measureEmbreePacketThroughput(const Scene& scene, int64_t rays) {
     const Vec3 lo = scene.boundsMin(), extent = scene.boundsMax() - lo;
     return measure(rays, [&](int64_t begin, int64_t end) {
         Scene::RayPacket packet;
-        RTCRayHit16& p = packet.rh;
         int64_t hits = 0;
         for (int64_t first = begin; first < end; first += Scene::RayPacket::kSize) {
             for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
-                const int64_t i = first + k;
-                packet.valid[k] = i < end ? -1 : 0;
-                const Ray ray = randomRay(lo, extent, i);
-                p.ray.org_x[k] = ray.o.x, p.ray.org_y[k] = ray.o.y, p.ray.org_z[k] = ray.o.z;
-                p.ray.dir_x[k] = ray.d.x, p.ray.dir_y[k] = ray.d.y, p.ray.dir_z[k] = ray.d.z;
-                p.ray.tnear[k] = 0;
-                p.ray.tfar[k] = std::numeric_limits<float>::infinity();
-                p.ray.time[k] = 0;
-                p.ray.mask[k] = ~0u;
-                p.ray.flags[k] = 0;
-                p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                if (first + k < end) packet.setLane(k, randomRay(lo, extent, first + k));
+                else packet.clearLane(k);
             }
             scene.intersect(packet);
             for (int k = 0; k < Scene::RayPacket::kSize; ++k)
-                hits += packet.valid[k] && p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+                hits += packet.valid[k] && packet.rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
         }
         return hits;
     });
