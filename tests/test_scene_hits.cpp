@@ -151,7 +151,7 @@ TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
         }
     }
     EXPECT_GT(compared, 1500);
-    EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points come from the distance, were hit often
+    EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points are solved from the ray, were hit often
 }
 
 }  // namespace

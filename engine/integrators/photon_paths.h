@@ -2,9 +2,9 @@
 // map): emission through the PhotonEmitter, scattering by BSDF sampling, Russian roulette
 // on the maximum channel. Photons are walked sixteen at a time in lanes: their rays are
 // cast together in one Embree packet query (a sixth less time per ray than one by one,
-// docs/sppm.md), and the bounces off Lambertian surfaces (most of a walk's bounces), perfect mirrors and smooth
-// dielectrics are sampled eight lanes at a time with SIMD instructions; every other
-// material scatters lane by lane through its BSDF.
+// docs/sppm.md), and the bounces off Lambertian surfaces (most of a walk's bounces),
+// perfect mirrors and smooth dielectrics are sampled eight lanes at a time with SIMD
+// instructions; every other material scatters lane by lane through its BSDF.
 #pragma once
 #include <cstdint>
 #include "../lights/photon_emitter.h"
