@@ -91,6 +91,7 @@ INVALID = [
     ("alpha 1.5", set_path("render", "alpha", 1.5)),
     ("passes not an integer", set_path("render", "passes", 1.5)),
     ("initial_radius not auto", set_path("render", "initial_radius", "big")),
+    ("auto_radius_photons 0", set_path("render", "auto_radius_photons", 0)),
     ("albedo above 1", set_path("materials", "white", "albedo", [0.5, 1.2, 0.5])),
     ("negative emission", set_path("shapes", 4, "emission", [1, -1, 1])),
     ("absolute path", set_path("shapes", 2, "file", "/etc/passwd")),

@@ -51,7 +51,9 @@ TEST_P(Checkpoint, OtherSettingsOrSizeAreRefused) {
     otherSeed.render.seed = 12;
     SceneDescription otherSize = glassBox(GetParam());
     otherSize.camera.width = 25;
-    for (SceneDescription* d : {&otherSeed, &otherSize}) {
+    SceneDescription otherDiscs = glassBox(GetParam());
+    otherDiscs.render.autoRadiusPhotons = 16;
+    for (SceneDescription* d : {&otherSeed, &otherSize, &otherDiscs}) {
         Renderer r(Scene::build(*d));
         std::stringstream in(bytes);
         EXPECT_THROW(r.restoreCheckpoint(in), CheckpointError);

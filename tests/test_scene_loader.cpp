@@ -184,6 +184,7 @@ TEST(SceneLoader, Defaults) {
     EXPECT_EQ(r.photonsPerPass, 200000);
     EXPECT_EQ(r.timeLimitSeconds, 0);
     EXPECT_EQ(r.initialRadius, 0);
+    EXPECT_EQ(r.autoRadiusPhotons, 8);
     EXPECT_FLOAT_EQ(r.alpha, d.alpha);
     EXPECT_EQ(r.maxDepth, 8);
     EXPECT_EQ(r.seed, 1u);
@@ -196,8 +197,10 @@ TEST(SceneLoader, NumericInitialRadiusAndBigSeed) {
     Json doc = fullScene();
     doc["render"]["initial_radius"] = 0.01;
     doc["render"]["seed"] = 18446744073709551615ull;
+    doc["render"]["auto_radius_photons"] = 16;
     photon::RenderSettings r = load(doc).render;
     EXPECT_FLOAT_EQ(r.initialRadius, 0.01f);
+    EXPECT_EQ(r.autoRadiusPhotons, 16);
     EXPECT_EQ(r.seed, 18446744073709551615ull);
 }
 

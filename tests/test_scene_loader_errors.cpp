@@ -74,6 +74,10 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["render"]["initial_radius"] = "big"; }, "render.initial_radius",
                 "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["initial_radius"] = 0; }, "render.initial_radius", "must be > 0");
+    expectError([](Json& d) { d["render"]["auto_radius_photons"] = 0; }, "render.auto_radius_photons",
+                "must be in (0, 10000]");
+    expectError([](Json& d) { d["render"]["auto_radius_photons"] = "many"; }, "render.auto_radius_photons",
+                "must be a number");
     expectError([](Json& d) { d["render"]["radiosity"]["patch_size"] = 0; }, "render.radiosity.patch_size",
                 "must be > 0");
     expectError([](Json& d) { d["render"]["radiosity"]["patch_size"] = "fine"; }, "render.radiosity.patch_size",

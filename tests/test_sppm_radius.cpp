@@ -44,6 +44,45 @@ TEST(SppmRadius, FollowsTheProgressiveSchedule) {
     EXPECT_GT(checked, res * res);  // most pixels gathered photons in most passes
 }
 
+// The auto radius: r = (distance travelled) (pixel angle) sqrt(k P / (pi photons)), with k
+// photons per disc (render.auto_radius_photons), P pixels, clamped to 1.5-16 pixel
+// footprints. The camera paths do not depend on k, so a pixel's starting radius squared
+// scales with k where it is not clamped and not at all where it is.
+TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
+    const int res = 32;
+    auto startingRadii2 = [&](float photonsPerDisc, int64_t photons) {
+        SceneDescription d = smallCornell(res);
+        d.render.photonsPerPass = photons;
+        d.render.autoRadiusPhotons = photonsPerDisc;
+        auto scene = Scene::build(std::move(d));
+        SppmIntegrator sppm(scene);
+        CancelToken cancel;
+        EXPECT_TRUE(sppm.renderPass(cancel));
+        std::vector<float> r2;
+        for (int y = 0; y < res; ++y)
+            for (int x = 0; x < res; ++x) {
+                // After the first pass, R^2 = R0^2 alpha M / M (eq. 9 with N = 0) where M > 0.
+                const SppmIntegrator::PixelState& px = sppm.pixel(x, y);
+                const float m = static_cast<float>(sppm.lastPhotonCount(x, y));
+                r2.push_back(m > 0 ? px.r2 / (scene->settings().alpha * m / m) : px.r2);
+            }
+        return r2;
+    };
+    // 1024 pixels, 100 photons: k = 4 and 16 give 3.6 and 7.2 footprints (unclamped),
+    // k = 0.05 and 0.1 give 0.40 and 0.57 (both clamped to 1.5).
+    const std::vector<float> k4 = startingRadii2(4, 100), k16 = startingRadii2(16, 100);
+    const std::vector<float> tiny = startingRadii2(0.05f, 100), small = startingRadii2(0.1f, 100);
+    int seen = 0;
+    for (size_t i = 0; i < k4.size(); ++i) {
+        if (k4[i] == 0) continue;  // the pixel saw no surface
+        ++seen;
+        EXPECT_NEAR(k16[i] / k4[i], 4.0f, 4e-5f) << "pixel " << i;
+        EXPECT_NEAR(small[i] / tiny[i], 1.0f, 1e-5f) << "pixel " << i;
+        EXPECT_NEAR(tiny[i] / k4[i], 1.5f * 1.5f * kPi * 100 / (4 * 1024.0f), 1e-5f) << "pixel " << i;
+    }
+    EXPECT_GT(seen, res * res / 2);
+}
+
 TEST(SppmRadius, ErrorFallsAsPassesGrow) {
     const int res = 32;
     SceneDescription ref = smallCornell(res);

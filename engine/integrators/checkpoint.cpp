@@ -22,6 +22,8 @@ CheckpointKey checkpointKey(const RenderSettings& s, int width, int height) {
     h = mixIn(h, static_cast<uint64_t>(s.integrator));
     h = mixIn(h, static_cast<uint64_t>(s.photonsPerPass));
     h = mixIn(h, bits(s.initialRadius));
+    // Only when not the default, so checkpoints written before the setting existed stay valid.
+    if (s.autoRadiusPhotons != RenderSettings{}.autoRadiusPhotons) h = mixIn(h, bits(s.autoRadiusPhotons));
     h = mixIn(h, bits(s.alpha));
     h = mixIn(h, static_cast<uint64_t>(s.maxDepth));
     h = mixIn(h, s.seed);

@@ -15,10 +15,12 @@ void SppmIntegrator::cameraPass(const CancelToken& cancel) {
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
 // grows with the distance travelled, and is widened so that a pass's photons, spread over
-// the image, put a handful (~8) in each disc.
+// the image, put render.auto_radius_photons (8 unless set) in each disc: k photons over
+// the image's P pixels fill pi r^2 pixels when r = sqrt(k P / (pi photons)) pixels.
 float SppmIntegrator::autoRadius(float pathLength) const {
     float pixels = static_cast<float>(width_) * static_cast<float>(height_);
-    float discPixels = std::sqrt(8.0f * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
+    float discPixels =
+        std::sqrt(settings_.autoRadiusPhotons * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
     return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
 }
 

@@ -120,6 +120,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
     r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
     if (auto radius = obj.optional("initial_radius")) r.initialRadius = readAutoOrPositive(*radius);
+    r.autoRadiusPhotons = obj.number("auto_radius_photons", r.autoRadiusPhotons, Range::openClosed(0, 10'000));
     r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));
     r.maxDepth = int(obj.integer("max_depth", r.maxDepth, 1, 1000));
     if (auto seed = obj.optional("seed")) r.seed = seed->unsignedInteger();

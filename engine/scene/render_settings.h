@@ -65,6 +65,8 @@ struct RenderSettings {
     int64_t photonsPerPass = 200000;
     double timeLimitSeconds = 0;      // 0: no limit; otherwise stop after the pass that crosses it
     float initialRadius = 0;          // 0: "auto", from each pixel's footprint
+    // With "auto": photons one pass is to put in a disc (docs/sppm.md, "The auto radius").
+    float autoRadiusPhotons = 8;
     float alpha = 2.0f / 3.0f;        // fraction of new photons kept per pass (Hachisuka & Jensen 2009)
     int maxDepth = 8;                 // path vertices after the camera or light
     uint64_t seed = 1;
