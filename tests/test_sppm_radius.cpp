@@ -50,7 +50,8 @@ TEST(SppmRadius, FollowsTheProgressiveSchedule) {
 // scales with k where it is not clamped and not at all where it is.
 TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
     const int res = 32;
-    auto startingRadii2 = [&](float photonsPerDisc, int64_t photons) {
+    const int64_t photons = 100;
+    auto startingRadii2 = [&](float photonsPerDisc) {
         SceneDescription d = smallCornell(res);
         d.render.photonsPerPass = photons;
         d.render.autoRadiusPhotons = photonsPerDisc;
@@ -70,15 +71,15 @@ TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
     };
     // 1024 pixels, 100 photons: k = 4 and 16 give 3.6 and 7.2 footprints (unclamped),
     // k = 0.05 and 0.1 give 0.40 and 0.57 (both clamped to 1.5).
-    const std::vector<float> k4 = startingRadii2(4, 100), k16 = startingRadii2(16, 100);
-    const std::vector<float> tiny = startingRadii2(0.05f, 100), small = startingRadii2(0.1f, 100);
+    const std::vector<float> k4 = startingRadii2(4), k16 = startingRadii2(16);
+    const std::vector<float> tiny = startingRadii2(0.05f), small = startingRadii2(0.1f);
     int seen = 0;
     for (size_t i = 0; i < k4.size(); ++i) {
         if (k4[i] == 0) continue;  // the pixel saw no surface
         ++seen;
         EXPECT_NEAR(k16[i] / k4[i], 4.0f, 4e-5f) << "pixel " << i;
         EXPECT_NEAR(small[i] / tiny[i], 1.0f, 1e-5f) << "pixel " << i;
-        EXPECT_NEAR(tiny[i] / k4[i], 1.5f * 1.5f * kPi * 100 / (4 * 1024.0f), 1e-5f) << "pixel " << i;
+        EXPECT_NEAR(tiny[i] / k4[i], 1.5f * 1.5f * kPi * photons / (4 * 1024.0f), 1e-5f) << "pixel " << i;
     }
     EXPECT_GT(seen, res * res / 2);
 }
