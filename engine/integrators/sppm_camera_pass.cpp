@@ -15,8 +15,8 @@ void SppmIntegrator::cameraPass(const CancelToken& cancel) {
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
 // grows with the distance travelled, and is widened so that a pass's photons, spread over
-// the image, put render.auto_radius_photons (8 unless set) in each disc: k photons over
-// the image's P pixels fill pi r^2 pixels when r = sqrt(k P / (pi photons)) pixels.
+// the image, put render.auto_radius_photons (8 unless set) in each disc: photons spread
+// evenly over P pixels put k in a disc of pi r^2 pixels when r = sqrt(k P / (pi photons)).
 float SppmIntegrator::autoRadius(float pathLength) const {
     float pixels = static_cast<float>(width_) * static_cast<float>(height_);
     float discPixels =
