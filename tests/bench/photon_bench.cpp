@@ -1,5 +1,5 @@
 // photon-bench: SPPM throughput on a scene against raw Embree throughput in the same
-// process, per-pass timings, memory per pixel and peak RSS, and the share of photons that
+// process over the scene's whole render (or --passes N), per-pass timings, memory per pixel and peak RSS, and the share of photons that
 // miss a scene with and without projection maps, printed as JSON. With --compare SECONDS it
 // instead renders the scene with every integrator for that long and reports the RMSE of
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -26,7 +27,7 @@ using nlohmann::json;
 struct Options {
     std::string scene = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-glass.json";
     std::string projectionScene = std::string(PHOTON_SOURCE_DIR) + "/scenes/distant-spheres.json";
-    int passes = 8;
+    int passes = 0;        // 0: the scene's own setting (the whole render)
     int64_t photons = 0;  // 0: the scene's own setting
     int threads = 0;      // 0: all cores
     bool rssCheck = true;
@@ -64,27 +65,26 @@ long peakRssKiB() {
 std::shared_ptr<const photon::Scene> loadScene(const Options& o, int64_t photons) {
     photon::SceneDescription d = photon::loadSceneFile(o.scene);
     d.render.integrator = photon::IntegratorKind::Sppm;
-    d.render.passes = o.passes;
+    if (o.passes > 0) d.render.passes = o.passes;
     if (photons > 0) d.render.photonsPerPass = photons;
     return photon::Scene::build(std::move(d));
 }
 
-// Raw Embree rays are cast in bursts between the passes, so that both sides of the ratio
-// see the same machine: a load that comes and goes slows them alike.
+// Raw Embree rays cast between two passes.
 constexpr int64_t kRaysPerBurst = 1000000;
 
-json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput& raw,
-                 photon::bench::RayThroughput& rawPackets) {
-    photon::Renderer renderer(loadScene(o, photons));
-    photon::CancelToken cancel;
+// Passes 2-8 alone, when the gather radii are widest, for comparison with figures measured
+// over those passes only.
+constexpr int kFirstPassesTimed = 7;
+
+// Sums over timed passes.
+struct PassTotals {
     double cameraMs = 0, gridMs = 0, photonMs = 0;
-    int64_t rays = 0, segments = 0, emitted = 0, candidates = 0, accepted = 0;
-    for (int p = 0; p < o.passes; ++p) {
-        renderer.renderPass(cancel);
-        const photon::PassStats& s = renderer.integrator().lastPassStats();
-        if (p == 0) continue;  // the first pass warms caches and sets radii
-        raw += photon::bench::measureEmbreeThroughput(renderer.scene(), kRaysPerBurst);
-        rawPackets += photon::bench::measureEmbreePacketThroughput(renderer.scene(), kRaysPerBurst);
+    int64_t passes = 0, rays = 0, segments = 0, emitted = 0, candidates = 0, accepted = 0;
+    photon::bench::RayThroughput raw, rawPackets;
+
+    void add(const photon::PassStats& s, const photon::bench::RayThroughput& r, const photon::bench::RayThroughput& rp) {
+        ++passes;
         cameraMs += s.cameraMs;
         gridMs += s.gridMs;
         photonMs += s.photonMs;
@@ -93,20 +93,50 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
         emitted += s.photons;
         candidates += s.gatherCandidates;
         accepted += s.gatherHits;
+        raw += r;
+        rawPackets += rp;
     }
-    double timed = std::max(1, o.passes - 1);
+    double segmentsPerSecond() const { return static_cast<double>(segments) / (photonMs / 1000.0); }
+    double perSegment(int64_t n) const { return static_cast<double>(n) / static_cast<double>(std::max<int64_t>(segments, 1)); }
+};
+
+// Renders the scene pass by pass. Every pass but the first (which warms caches and sets the
+// radii) is timed, and raw Embree rays are cast in bursts between the passes, so that both
+// sides of the ratio see the same machine: a load that comes and goes slows them alike.
+json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput& raw,
+                 photon::bench::RayThroughput& rawPackets, json& firstPasses) {
+    photon::Renderer renderer(loadScene(o, photons));
+    photon::CancelToken cancel;
+    PassTotals all, first;
+    const int passes = renderer.scene().settings().passes;
+    for (int p = 0; p < passes; ++p) {
+        renderer.renderPass(cancel);
+        if (p == 0) continue;
+        photon::bench::RayThroughput r = photon::bench::measureEmbreeThroughput(renderer.scene(), kRaysPerBurst);
+        photon::bench::RayThroughput rp = photon::bench::measureEmbreePacketThroughput(renderer.scene(), kRaysPerBurst);
+        const photon::PassStats& s = renderer.integrator().lastPassStats();
+        all.add(s, r, rp);
+        if (p <= kFirstPassesTimed) first.add(s, r, rp);
+    }
+    raw = all.raw;
+    rawPackets = all.rawPackets;
+    firstPasses = {{"passes_timed", first.passes},
+                   {"segments_to_embree_ratio", first.segmentsPerSecond() / first.raw.raysPerSecond()},
+                   {"gather_candidates_per_segment", first.perSegment(first.candidates)},
+                   {"gather_accepted_per_segment", first.perSegment(first.accepted)}};
+    const double timed = static_cast<double>(std::max<int64_t>(all.passes, 1));
     const photon::Integrator& integrator = renderer.integrator();
     return {{"photons_per_pass", renderer.scene().settings().photonsPerPass},
-            {"passes_timed", o.passes - 1},
-            {"photons_per_second", emitted / (photonMs / 1000.0)},
-            {"photon_segments_per_second", segments / (photonMs / 1000.0)},
-            {"photon_rays_per_second", rays / (photonMs / 1000.0)},
-            {"segments_per_photon", static_cast<double>(segments) / static_cast<double>(std::max<int64_t>(emitted, 1))},
-            {"gather_candidates_per_segment", static_cast<double>(candidates) / static_cast<double>(std::max<int64_t>(segments, 1))},
-            {"gather_accepted_per_segment", static_cast<double>(accepted) / static_cast<double>(std::max<int64_t>(segments, 1))},
-            {"camera_pass_ms", cameraMs / timed},
-            {"hash_build_ms", gridMs / timed},
-            {"photon_pass_ms", photonMs / timed},
+            {"passes_timed", all.passes},
+            {"photons_per_second", all.emitted / (all.photonMs / 1000.0)},
+            {"photon_segments_per_second", all.segmentsPerSecond()},
+            {"photon_rays_per_second", all.rays / (all.photonMs / 1000.0)},
+            {"segments_per_photon", static_cast<double>(all.segments) / static_cast<double>(std::max<int64_t>(all.emitted, 1))},
+            {"gather_candidates_per_segment", all.perSegment(all.candidates)},
+            {"gather_accepted_per_segment", all.perSegment(all.accepted)},
+            {"camera_pass_ms", all.cameraMs / timed},
+            {"hash_build_ms", all.gridMs / timed},
+            {"photon_pass_ms", all.photonMs / timed},
             {"bytes_per_pixel_sppm_state", integrator.bytesPerPixel()},
             {"grid_entries_per_pixel", static_cast<double>(integrator.lastPassStats().gridEntries) /
                                            (renderer.scene().camera().width() * renderer.scene().camera().height())},
@@ -153,7 +183,8 @@ int main(int argc, char** argv) {
                                    {"ratio", static_cast<double>(large) / static_cast<double>(small)}};
         }
         photon::bench::RayThroughput raw, rawPackets;
-        json sppm = renderStats(o, o.photons, raw, rawPackets);
+        json firstPasses;
+        json sppm = renderStats(o, o.photons, raw, rawPackets, firstPasses);
         out["sppm"] = sppm;
         out["embree_random_rays"] = {{"rays_per_second", raw.raysPerSecond()},
                                      {"packet_rays_per_second", rawPackets.raysPerSecond()},
@@ -165,6 +196,7 @@ int main(int argc, char** argv) {
         out["segments_to_embree_packet_ratio"] = segmentsPerSecond / rawPackets.raysPerSecond();
         // Like for like: the raw rays are counted whether they hit or not, and so are these.
         out["photon_rays_to_embree_ratio"] = sppm["photon_rays_per_second"].get<double>() / raw.raysPerSecond();
+        out["first_passes"] = firstPasses;
         out["projection_maps"] = photon::bench::projectionMapMisses(o.projectionScene, 1000000);
         out["process_peak_rss_kib"] = peakRssKiB();
         std::cout << out.dump(2) << std::endl;
