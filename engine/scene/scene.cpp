@@ -122,9 +122,22 @@ void Scene::prepareHitData() {
                 d.smoothNormals = d.smoothNormals || lengthSquared(m.normals[v[k]] - n) > 1e-10f;
         }
     }
+    firstFlatTriangle_.assign(shapes_.size(), kNotFlat);
+    for (size_t i = 0; i < shapes_.size(); ++i) {
+        ShapeHitData& d = hitData_[i];
+        if (shapes_[i].kind == ShapeDescription::Kind::Sphere || d.smoothNormals || d.needsUv) continue;
+        const TriangleMesh& m = shapes_[i].mesh;
+        firstFlatTriangle_[i] = static_cast<uint32_t>(flatTriangles_.size());
+        for (size_t t = 0; t < m.triangleCount(); ++t) {
+            const uint32_t* v = &m.indices[3 * t];
+            flatTriangles_.push_back({m.positions[v[0]], m.positions[v[1]], m.positions[v[2]], d.faceNormals[t]});
+        }
+        d.faceNormals = {};  // in flatTriangles_ now
+    }
 }
 
 void Scene::completeHit(const Ray& ray, SurfaceHit& hit) const {
+    if (completeFlatTriangleHit(hit)) return;
     hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
