@@ -123,8 +123,11 @@ void Scene::prepareHitData() {
         }
     }
     firstFlatTriangle_.assign(shapes_.size(), kNotFlat);
+    plainSpheres_.assign(shapes_.size(), PlainSphere{});
     for (size_t i = 0; i < shapes_.size(); ++i) {
         ShapeHitData& d = hitData_[i];
+        if (shapes_[i].kind == ShapeDescription::Kind::Sphere && !d.needsUv)
+            plainSpheres_[i] = {shapes_[i].center, shapes_[i].radius, d.normalSign};
         if (shapes_[i].kind == ShapeDescription::Kind::Sphere || d.smoothNormals || d.needsUv) continue;
         const TriangleMesh& m = shapes_[i].mesh;
         firstFlatTriangle_[i] = static_cast<uint32_t>(flatTriangles_.size());
@@ -137,7 +140,7 @@ void Scene::prepareHitData() {
 }
 
 void Scene::completeHit(const Ray& ray, SurfaceHit& hit) const {
-    if (completeFlatTriangleHit(hit)) return;
+    if (completeFlatTriangleHit(hit) || completePlainSphereHit(ray, hit)) return;
     hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
@@ -188,13 +191,12 @@ void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) cons
 }
 
 void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const {
-    Vec3 n = normalize(hit.p - shape.center);
-    hit.p = shape.center + n * shape.radius;  // reproject: removes the error of o + t d
     const ShapeHitData& d = hitData_[hit.shape];
-    hit.ng = hit.ns = n * d.normalSign;
+    sphereNormals(shape.center, shape.radius, d.normalSign, hit);
     // Spherical (longitude, latitude) parameterisation, y up; the trigonometry is only
     // worth doing for textured spheres.
     if (!d.needsUv) return;
+    const Vec3 n = hit.ng * d.normalSign;
     float phi = std::atan2(n.z, n.x);
     hit.uv = {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }

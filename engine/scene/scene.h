@@ -89,6 +89,7 @@ public:
         if (completeFlatTriangleHit(hit)) return true;
         const Ray ray{{p.ray.org_x[lane], p.ray.org_y[lane], p.ray.org_z[lane]},
                       {p.ray.dir_x[lane], p.ray.dir_y[lane], p.ray.dir_z[lane]}};
+        if (completePlainSphereHit(ray, hit)) return true;
         completeHit(ray, hit);
         return true;
     }
@@ -137,6 +138,21 @@ private:
     // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)
     // is in it.
     void completeHit(const Ray& ray, SurfaceHit& hit) const;
+    // The same for an untextured sphere (see PlainSphere), inline; false for other shapes.
+    bool completePlainSphereHit(const Ray& ray, SurfaceHit& hit) const {
+        const PlainSphere& s = plainSpheres_[hit.shape];
+        if (!(s.radius > 0)) return false;
+        hit.uv = hit.barycentric;
+        hit.p = sphereHitPoint(ray, s.center, s.radius, hit.t);
+        sphereNormals(s.center, s.radius, s.normalSign, hit);
+        return true;
+    }
+    // The normals of a hit on a sphere, and its point moved onto the surface.
+    static void sphereNormals(Vec3 center, float radius, float normalSign, SurfaceHit& hit) {
+        Vec3 n = normalize(hit.p - center);
+        hit.p = center + n * radius;  // reproject: removes the error of o + t d
+        hit.ng = hit.ns = n * normalSign;
+    }
     // The same for a flat triangle (see FlatTriangle), inline; false for other shapes.
     bool completeFlatTriangleHit(SurfaceHit& hit) const {
         const uint32_t first = firstFlatTriangle_[hit.shape];
@@ -175,6 +191,13 @@ private:
         Vec3 n;  // unit, flip_normals applied
     };
     static constexpr uint32_t kNotFlat = ~0u;
+    // An untextured sphere's hit record needs these alone (radius 0: another shape).
+    struct PlainSphere {
+        Vec3 center;
+        float radius = 0;
+        float normalSign = 1;
+    };
+    std::vector<PlainSphere> plainSpheres_;  // by shape
     std::vector<FlatTriangle> flatTriangles_;
     std::vector<uint32_t> firstFlatTriangle_;  // by shape: its first in flatTriangles_, or kNotFlat
     std::vector<std::unique_ptr<Light>> ownedLights_;
