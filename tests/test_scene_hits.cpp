@@ -1,7 +1,9 @@
 // What Scene::intersect reports at a hit, against values worked out by hand: the point, the
 // geometric and shading normals (flat faces, interpolated vertex normals, flip_normals on
-// meshes and spheres) and the texture coordinates of textured shapes; and that Embree's
-// packet query reports, lane by lane, exactly what the single-ray query does.
+// meshes and spheres) and the texture coordinates of textured shapes; that Embree's packet
+// query reports, lane by lane, exactly what the single-ray query does; and that untextured
+// flat triangles and spheres, whose hit records take a shortcut, report what the general
+// path does.
 #include <gtest/gtest.h>
 #include "materials/material.h"
 #include "math/rng.h"
@@ -152,6 +154,50 @@ TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
     }
     EXPECT_GT(compared, 1500);
     EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points are solved from the ray, were hit often
+}
+
+// Untextured flat triangles and spheres take a shorter way to their hit record (one table,
+// inline) than textured ones: the same rays through the same shapes, once untextured and once
+// textured, must report the same points and normals bit for bit.
+TEST(SceneHits, ShortcutHitRecordsMatchTheGeneralOnes) {
+    auto build = [](uint32_t material) {
+        SceneDescription d = baseScene();
+        ShapeDescription faceted;  // a tetrahedron's faces, no vertex normals
+        faceted.mesh.positions = {{-1.1f, -0.9f, -1.3f}, {1.2f, -1.0f, -0.7f}, {0.1f, 1.3f, -0.9f}, {0.2f, 0.1f, 1.1f}};
+        faceted.mesh.indices = {0, 2, 1, 0, 1, 3, 1, 2, 3, 2, 0, 3};
+        faceted.material = material;
+        faceted.flipNormals = true;
+        d.shapes.push_back(faceted);
+        d.shapes.push_back(test::sphere({0.3f, 0.2f, 3.0f}, 0.8f, material));
+        return Scene::build(std::move(d));
+    };
+    auto plain = build(0), textured = build(1);
+    int compared = 0, sphereHits = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Rng rng(11, 0, static_cast<uint64_t>(i), StreamPurpose::Test);
+        // From around the shapes toward a point among them.
+        const Vec3 target = Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * Vec3(2.4f, 2.4f, 5.0f) - Vec3(1.2f, 1.1f, 1.3f);
+        const Vec3 origin = target + sampleUniformSphere({rng.uniform(), rng.uniform()}) * 6.0f;
+        const Ray ray{origin, normalize(target - origin)};
+        SurfaceHit a, b;
+        const bool hitA = plain->intersect(ray, a);
+        ASSERT_EQ(textured->intersect(ray, b), hitA);
+        if (!hitA) continue;
+        ++compared;
+        sphereHits += a.shape == 1;
+        ASSERT_EQ(a.shape, b.shape);
+        ASSERT_EQ(a.primitive, b.primitive);
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_EQ(a.p[k], b.p[k]) << "ray " << i;
+            ASSERT_EQ(a.ng[k], b.ng[k]);
+            ASSERT_EQ(a.ns[k], b.ns[k]);
+        }
+        // Untextured shapes carry Embree's barycentrics as their uv.
+        ASSERT_EQ(a.uv.x, a.barycentric.x);
+        ASSERT_EQ(a.uv.y, a.barycentric.y);
+    }
+    EXPECT_GT(compared - sphereHits, 500);  // the tetrahedron
+    EXPECT_GT(sphereHits, 500);
 }
 
 }  // namespace
