@@ -191,6 +191,8 @@ private:
         Vec3 n;  // unit, flip_normals applied
     };
     static constexpr uint32_t kNotFlat = ~0u;
+    std::vector<FlatTriangle> flatTriangles_;
+    std::vector<uint32_t> firstFlatTriangle_;  // by shape: its first in flatTriangles_, or kNotFlat
     // An untextured sphere's hit record needs these alone (radius 0: another shape).
     struct PlainSphere {
         Vec3 center;
@@ -198,8 +200,6 @@ private:
         float normalSign = 1;
     };
     std::vector<PlainSphere> plainSpheres_;  // by shape
-    std::vector<FlatTriangle> flatTriangles_;
-    std::vector<uint32_t> firstFlatTriangle_;  // by shape: its first in flatTriangles_, or kNotFlat
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     const Light* environmentLight_ = nullptr;
