@@ -125,11 +125,14 @@ void Scene::prepareHitData() {
     firstFlatTriangle_.assign(shapes_.size(), kNotFlat);
     plainSpheres_.assign(shapes_.size(), PlainSphere{});
     for (size_t i = 0; i < shapes_.size(); ++i) {
+        const ShapeDescription& shape = shapes_[i];
         ShapeHitData& d = hitData_[i];
-        if (shapes_[i].kind == ShapeDescription::Kind::Sphere && !d.needsUv)
-            plainSpheres_[i] = {shapes_[i].center, shapes_[i].radius, d.normalSign};
-        if (shapes_[i].kind == ShapeDescription::Kind::Sphere || d.smoothNormals || d.needsUv) continue;
-        const TriangleMesh& m = shapes_[i].mesh;
+        if (shape.kind == ShapeDescription::Kind::Sphere) {
+            if (!d.needsUv) plainSpheres_[i] = {shape.center, shape.radius, d.normalSign};
+            continue;
+        }
+        if (d.smoothNormals || d.needsUv) continue;
+        const TriangleMesh& m = shape.mesh;
         firstFlatTriangle_[i] = static_cast<uint32_t>(flatTriangles_.size());
         for (size_t t = 0; t < m.triangleCount(); ++t) {
             const uint32_t* v = &m.indices[3 * t];

@@ -1,6 +1,7 @@
-// photon-bench: SPPM throughput on a scene against raw Embree throughput in the same
-// process over the scene's whole render (or --passes N), per-pass timings, memory per pixel and peak RSS, and the share of photons that
-// miss a scene with and without projection maps, printed as JSON. With --compare SECONDS it
+// photon-bench: SPPM throughput on a scene over its whole render (or --passes N) against
+// raw Embree throughput in the same process, per-pass timings, memory per pixel and peak
+// RSS, and the share of photons that miss a scene with and without projection maps,
+// printed as JSON. With --compare SECONDS it
 // instead renders the scene with every integrator for that long and reports the RMSE of
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
@@ -27,7 +28,7 @@ using nlohmann::json;
 struct Options {
     std::string scene = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-glass.json";
     std::string projectionScene = std::string(PHOTON_SOURCE_DIR) + "/scenes/distant-spheres.json";
-    int passes = 0;        // 0: the scene's own setting (the whole render)
+    int passes = 0;       // 0: the scene's own setting (the whole render)
     int64_t photons = 0;  // 0: the scene's own setting
     int threads = 0;      // 0: all cores
     bool rssCheck = true;
@@ -109,6 +110,7 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
     photon::CancelToken cancel;
     PassTotals all, first;
     const int passes = renderer.scene().settings().passes;
+    if (passes < 2) throw std::invalid_argument("needs at least 2 passes: the first is not timed");
     for (int p = 0; p < passes; ++p) {
         renderer.renderPass(cancel);
         if (p == 0) continue;
