@@ -142,8 +142,7 @@ void Scene::prepareHitData() {
     }
 }
 
-void Scene::completeHit(const Ray& ray, SurfaceHit& hit) const {
-    if (completeFlatTriangleHit(hit) || completePlainSphereHit(ray, hit)) return;
+void Scene::completeOtherHit(const Ray& ray, SurfaceHit& hit) const {
     hit.uv = hit.barycentric;
     const ShapeDescription& shape = shapes_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
@@ -177,13 +176,12 @@ void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) cons
     const TriangleMesh& m = shape.mesh;
     const ShapeHitData& d = hitData_[hit.shape];
     uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];
-    // Embree's barycentrics: p = (1-u-v) p0 + u p1 + v p2. Recomputing p from them is
-    // more accurate than o + t d far from the origin.
-    float w = 1.0f - u - v;
-    hit.p = m.positions[i0] * w + m.positions[i1] * u + m.positions[i2] * v;
+    // p from Embree's barycentrics: more accurate than o + t d far from the origin.
+    const float w = 1.0f - u - v;
+    hit.p = atBarycentric(m.positions[i0], m.positions[i1], m.positions[i2], u, v);
     hit.ng = hit.ns = d.faceNormals[prim];
     if (d.smoothNormals) {
-        Vec3 ns = m.normals[i0] * w + m.normals[i1] * u + m.normals[i2] * v;
+        Vec3 ns = atBarycentric(m.normals[i0], m.normals[i1], m.normals[i2], u, v);
         float len = length(ns);
         if (len > 0) hit.ns = ns / len;
         // Keep the shading normal on the geometric side so the two agree on which side is up.

@@ -86,10 +86,8 @@ public:
         hit.shape = p.hit.geomID[lane];
         hit.primitive = p.hit.primID[lane];
         hit.barycentric = {p.hit.u[lane], p.hit.v[lane]};
-        if (completeFlatTriangleHit(hit)) return true;
         const Ray ray{{p.ray.org_x[lane], p.ray.org_y[lane], p.ray.org_z[lane]},
                       {p.ray.dir_x[lane], p.ray.dir_y[lane], p.ray.dir_z[lane]}};
-        if (completePlainSphereHit(ray, hit)) return true;
         completeHit(ray, hit);
         return true;
     }
@@ -136,8 +134,14 @@ private:
     void buildLights();
     void prepareHitData();
     // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)
-    // is in it.
-    void completeHit(const Ray& ray, SurfaceHit& hit) const;
+    // is in it: inline for flat triangles and plain spheres, out of line for the others.
+    void completeHit(const Ray& ray, SurfaceHit& hit) const {
+        if (!completeFlatTriangleHit(hit) && !completePlainSphereHit(ray, hit)) completeOtherHit(ray, hit);
+    }
+    // Textured shapes and meshes with vertex normals.
+    void completeOtherHit(const Ray& ray, SurfaceHit& hit) const;
+    // Embree's barycentrics (u, v) at a triangle's corners' values: (1-u-v) a + u b + v c.
+    static Vec3 atBarycentric(Vec3 a, Vec3 b, Vec3 c, float u, float v) { return a * (1.0f - u - v) + b * u + c * v; }
     // The same for an untextured sphere (see PlainSphere), inline; false for other shapes.
     bool completePlainSphereHit(const Ray& ray, SurfaceHit& hit) const {
         const PlainSphere& s = plainSpheres_[hit.shape];
@@ -158,10 +162,8 @@ private:
         const uint32_t first = firstFlatTriangle_[hit.shape];
         if (first == kNotFlat) return false;
         const FlatTriangle& f = flatTriangles_[first + hit.primitive];
-        // As fillTriangleHit: p = (1-u-v) p0 + u p1 + v p2, Embree's barycentrics.
-        const float u = hit.barycentric.x, v = hit.barycentric.y, w = 1.0f - u - v;
         hit.uv = hit.barycentric;
-        hit.p = f.p0 * w + f.p1 * u + f.p2 * v;
+        hit.p = atBarycentric(f.p0, f.p1, f.p2, hit.barycentric.x, hit.barycentric.y);
         hit.ng = hit.ns = f.n;
         return true;
     }
