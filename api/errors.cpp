@@ -1,6 +1,6 @@
 #include "api/errors.h"
 #include <httplib.h>
-#include <cstdio>
+#include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
 namespace photon::api {
@@ -46,10 +46,10 @@ void sendException(httplib::Response& res, std::exception_ptr error) {
     } catch (const nlohmann::json::exception& e) {
         sendError(res, 400, std::string("malformed JSON: ") + e.what());
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "photon-server: internal error: %s\n", e.what());
+        spdlog::error("internal error: {}", e.what());
         sendError(res, 500, "internal server error");
     } catch (...) {
-        std::fprintf(stderr, "photon-server: internal error of unknown type\n");
+        spdlog::error("internal error of unknown type");
         sendError(res, 500, "internal server error");
     }
 }

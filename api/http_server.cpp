@@ -1,4 +1,5 @@
 #include "api/http_server.h"
+#include <spdlog/spdlog.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #include <cctype>
@@ -100,8 +101,10 @@ void HttpServer::configure(const HttpConfig& config) {
     server_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
         sendException(res, e);
     });
+    // The access log: one line per answered request (streams when they end).
     server_.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
         context_.service.metrics().countRequest(routeLabel(req.method, req.path), res.status);
+        spdlog::info("{} {} {} {} {}", req.remote_addr, req.method, req.path, res.status, res.body.size());
     });
     std::error_code ec;
     if (!config.webRoot.empty() && std::filesystem::is_directory(config.webRoot, ec))

@@ -1,21 +1,8 @@
 #include "api/params.h"
 #include <httplib.h>
-#include <charconv>
 #include "api/errors.h"
 
 namespace photon::api {
-
-namespace {
-
-template <typename T>
-std::optional<T> parseWhole(const std::string& text) {
-    T value{};
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-    return value;
-}
-
-}  // namespace
 
 std::optional<std::string> stringParam(const httplib::Request& req, const std::string& name) {
     if (!req.has_param(name)) return std::nullopt;

@@ -4,7 +4,6 @@
 // Event ids are the job's event numbers, so a reconnecting EventSource resumes with
 // Last-Event-ID instead of missing passes.
 #include <httplib.h>
-#include <charconv>
 #include <memory>
 #include "api/errors.h"
 #include "api/handlers.h"
@@ -21,11 +20,7 @@ namespace {
 constexpr int kKeepAlivePolls = 15;
 
 std::optional<uint64_t> lastEventId(const httplib::Request& req) {
-    std::string text = req.get_header_value("Last-Event-ID");
-    uint64_t value = 0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
-    return value;
+    return parseWhole<uint64_t>(req.get_header_value("Last-Event-ID"));
 }
 
 std::string formatEvent(server::EventType type, uint64_t seq, const server::JobRecord& job) {

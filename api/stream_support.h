@@ -3,10 +3,10 @@
 // provider outside any handler's try block (an escaping exception would end the process).
 #pragma once
 #include <httplib.h>
+#include <spdlog/spdlog.h>
 #include <atomic>
 #include <chrono>
 #include <memory>
-#include <cstdio>
 #include <exception>
 
 namespace photon::api {
@@ -45,7 +45,7 @@ httplib::ContentProviderWithoutLength guardedProvider(Step step) {
         try {
             return step(sink);
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "photon-server: stream ended by error: %s\n", e.what());
+            spdlog::warn("stream ended by error: {}", e.what());
         } catch (...) {
         }
         return false;  // ends the response; the client sees the connection close

@@ -61,7 +61,7 @@ public:
         digest_.endField();
         if (sceneBytes_ > limits_.maxSceneBytes)
             server::checkLimit(ErrorKind::PayloadTooLarge, "scene JSON bytes", int64_t(sceneBytes_),
-                               int64_t(limits_.maxSceneBytes), "--max-scene-bytes");
+                               int64_t(limits_.maxSceneBytes), server::optionOf(&server::Limits::maxSceneBytes));
         if (failure_) std::rethrow_exception(failure_);
         if (!readOk && httplibStatus == 413) throw ServiceError(ErrorKind::PayloadTooLarge, bodyTooLarge());
         if (!readOk) throw ServiceError(ErrorKind::BadRequest, "could not read the request body");
@@ -82,7 +82,7 @@ private:
     }
     std::string bodyTooLarge() const {
         return "request body exceeds the server limit of " + std::to_string(limits_.maxBodyBytes) +
-               " bytes (--max-body-bytes)";
+               " bytes (" + server::optionOf(&server::Limits::maxBodyBytes) + ")";
     }
 
     template <typename Fn>

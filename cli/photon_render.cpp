@@ -1,76 +1,43 @@
 // photon-render: renders a scene file to EXR and/or PNG with a progress bar on stderr.
-#include <tbb/global_control.h>
+#include <photon/image_io.h>
+#include <photon/render.h>
+#include <photon/threads.h>
 #include <cstdio>
-#include <cstdlib>
-#include <iostream>
 #include <optional>
 #include <string>
-#include "film/image_io.h"
-#include "render.h"
+#include "cli/option_checks.h"
 
 namespace {
 
-const char* kUsage =
-    "usage: photon-render SCENE.json [-o OUT.exr] [--png OUT.png] [--passes N] [--photons-per-pass N]\n"
-    "                     [--time-limit SECONDS] [--threads N] [--seed N] [--integrator sppm|path|radiosity|photonmap] [--quiet]\n";
-
 struct Options {
     std::string scene, exr, png;
-    std::optional<long long> passes, photons, threads, seed;
-    std::optional<double> timeLimit;
+    std::optional<long long> passes, photons, threads, seed, timeLimit;
     std::string integrator;
     bool quiet = false;
 };
 
-long long parseInteger(const std::string& flag, const std::string& v, long long lo, long long hi) {
-    try {
-        size_t used = 0;
-        long long n = std::stoll(v, &used);
-        if (used == v.size() && n >= lo && n <= hi) return n;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                                "], got \"" + v + "\"");
-}
-
-Options parseOptions(int argc, char** argv) {
-    Options o;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw std::invalid_argument(a + ": missing value");
-            return argv[++i];
-        };
-        if (a == "-o" || a == "--output") o.exr = value();
-        else if (a == "--png") o.png = value();
-        else if (a == "--passes") o.passes = parseInteger(a, value(), 1, 1000000);
-        else if (a == "--photons-per-pass") o.photons = parseInteger(a, value(), 1, 100000000);
-        else if (a == "--threads") o.threads = parseInteger(a, value(), 1, 1024);
-        else if (a == "--seed") o.seed = parseInteger(a, value(), 0, 1LL << 62);
-        else if (a == "--time-limit") o.timeLimit = static_cast<double>(parseInteger(a, value(), 0, 1 << 30));
-        else if (a == "--integrator") o.integrator = value();
-        else if (a == "--quiet") o.quiet = true;
-        else if (a == "-h" || a == "--help") {
-            std::cout << kUsage;
-            std::exit(0);
-        } else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option " + a);
-        else if (o.scene.empty()) o.scene = a;
-        else throw std::invalid_argument("more than one scene given");
-    }
-    if (o.scene.empty()) throw std::invalid_argument("no scene file given");
-    if (o.exr.empty() && o.png.empty()) throw std::invalid_argument("give -o OUT.exr and/or --png OUT.png");
-    return o;
+void declareOptions(CLI::App& app, Options& o) {
+    using photon::cli::integerIn;
+    app.add_option("scene", o.scene, "the scene file (JSON)")->required();
+    app.add_option("-o,--output", o.exr, "linear HDR EXR to write");
+    app.add_option("--png", o.png, "tone-mapped PNG to write (the scene's exposure, sRGB)");
+    app.add_option("--passes", o.passes, "passes (samples per pixel for the path tracer)")->type_name("N")->check(integerIn(1, 1000000));
+    app.add_option("--photons-per-pass", o.photons, "photons per pass")->type_name("N")->check(integerIn(1, 100000000));
+    app.add_option("--time-limit", o.timeLimit, "stop after the pass that crosses this many seconds")
+        ->type_name("N")->check(integerIn(0, 1 << 30));
+    app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
+    app.add_option("--seed", o.seed, "random seed")->type_name("N")->check(integerIn(0, 1LL << 62));
+    std::vector<std::string> names(photon::kIntegratorNames.begin(), photon::kIntegratorNames.end());
+    app.add_option("--integrator", o.integrator, "the integrator, instead of the scene's")->check(CLI::IsMember(names));
+    app.add_flag("--quiet", o.quiet, "no progress bar");
 }
 
 void applyOverrides(const Options& o, photon::RenderSettings& s) {
     if (o.passes) s.passes = static_cast<int>(*o.passes);
     if (o.photons) s.photonsPerPass = *o.photons;
     if (o.seed) s.seed = static_cast<uint64_t>(*o.seed);
-    if (o.timeLimit) s.timeLimitSeconds = *o.timeLimit;
-    if (o.integrator.empty()) return;
-    std::optional<photon::IntegratorKind> kind = photon::integratorNamed(o.integrator);
-    if (!kind) throw std::invalid_argument("--integrator: expected sppm, path, radiosity or photonmap");
-    s.integrator = *kind;
+    if (o.timeLimit) s.timeLimitSeconds = static_cast<double>(*o.timeLimit);
+    if (!o.integrator.empty()) s.integrator = *photon::integratorNamed(o.integrator);
 }
 
 std::string formatSeconds(double s) {
@@ -94,29 +61,28 @@ void printProgress(const photon::RenderProgress& p) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app("Renders a scene to linear EXR and/or tone-mapped PNG.", "photon-render");
     Options options;
-    try {
-        options = parseOptions(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "photon-render: %s\n%s", e.what(), kUsage);
+    declareOptions(app, options);
+    if (int exit = photon::cli::parseCommandLine(app, argc, argv); exit >= 0) return exit;
+    if (options.exr.empty() && options.png.empty()) {
+        std::fprintf(stderr, "photon-render: give -o OUT.exr and/or --png OUT.png\n%s", app.help().c_str());
         return 2;
     }
     try {
-        std::optional<tbb::global_control> threads;
-        if (options.threads)
-            threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(*options.threads));
-        photon::SceneDescription description = photon::loadSceneFile(options.scene);
-        applyOverrides(options, description.render);
-        float exposure = description.render.exposure;
-        photon::Renderer renderer(photon::Scene::build(std::move(description)));
+        std::optional<photon::ThreadLimit> threads;
+        if (options.threads) threads.emplace(static_cast<size_t>(*options.threads));
+        photon::SceneFile scene = photon::SceneFile::read(options.scene);
+        applyOverrides(options, scene.render());
+        photon::Renderer renderer(std::move(scene));
         photon::CancelToken cancel;
         renderer.run(cancel, options.quiet ? photon::Renderer::ProgressFn{} : printProgress);
         if (!options.quiet) std::fprintf(stderr, "\n");
         // With render.denoise on, the EXR's R, G, B are denoised and it carries the raw image
         // and the guides as more channels; the PNG shows the denoised image.
-        photon::LayeredImage image = renderer.layers();
-        if (!options.exr.empty()) photon::writeExr(image, options.exr);
-        if (!options.png.empty()) photon::writePng(image.main, options.png, exposure);
+        std::shared_ptr<const photon::PendingImage> image = renderer.pendingLayers();
+        if (!options.exr.empty()) photon::writeExr(*image, options.exr);
+        if (!options.png.empty()) photon::writePng(*image, options.png);
     } catch (const photon::SceneError& e) {
         std::fprintf(stderr, "photon-render: %s: %s\n", options.scene.c_str(), e.what());
         return 1;

@@ -1,8 +1,19 @@
-#include "render.h"
+#include <photon/render.h>
+#include <chrono>
 #include <sstream>
-#include "integrators/checkpoint.h"
+#include "integrators/common/checkpoint.h"
+#include "integrator_factory.h"
+#include "post/denoiser.h"
+#include "scene/scene.h"
 
 namespace photon {
+
+Renderer::Renderer(SceneFile scene) : Renderer(Scene::build(std::move(scene.description()))) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+Image Renderer::rawSnapshot() const { return integrator_->snapshot(); }
 
 Renderer::Renderer(std::shared_ptr<const Scene> scene) : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)) {
     progress_.totalPasses = scene_->settings().passes;
@@ -18,7 +29,7 @@ Image Renderer::snapshot() const {
 LayeredImage Renderer::layers() const { return pendingLayers()->layers(); }
 
 std::shared_ptr<const PendingImage> Renderer::pendingLayers() const {
-    return std::make_shared<const PendingImage>(integrator_->snapshot(), denoiser_);
+    return std::make_shared<const PendingImage>(integrator_->snapshot(), denoiser_, scene_->settings().exposure);
 }
 
 bool Renderer::renderPass(const CancelToken& cancel) {

@@ -6,4 +6,4 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
-exec "$root/build/server/photon-server" --data "$root/data" --web-root "$root/web" "$@"
+exec "$root/build/app/photon-server" --data "$root/data" --web-root "$root/web" "$@"

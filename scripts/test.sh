@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# The test command: installs what is missing, builds, runs the scene-parser and BSDF tests
-# under AddressSanitizer + UndefinedBehaviorSanitizer, then every test with ctest.
+# The test command: installs what is missing, checks the walls between layers, builds, runs
+# the scene-parser and BSDF tests under AddressSanitizer + UndefinedBehaviorSanitizer, then
+# every test with ctest.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
+# The walls between layers (docs/architecture.md), from the include lines: seconds.
+python3 "$root/scripts/check_walls.py"
 
 # Sanitizer build: only what the bad-input tests need.
 asan="$root/build-asan"

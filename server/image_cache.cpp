@@ -1,13 +1,12 @@
 #include "image_cache.h"
-#include "film/image_io.h"
+#include <photon/image_io.h>
 
 namespace photon::server {
 
 namespace {
 
-std::shared_ptr<const std::string> encode(const PendingImage& pending, ImageFormat format, float exposure) {
-    const LayeredImage& image = pending.layers();
-    std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image.main, exposure) : encodeExr(image);
+std::shared_ptr<const std::string> encode(const PendingImage& image, ImageFormat format) {
+    std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image) : encodeExr(image);
     return std::make_shared<const std::string>(bytes.begin(), bytes.end());
 }
 
@@ -19,7 +18,7 @@ std::shared_ptr<ImageCache::Slot> ImageCache::slot(const std::string& id) const 
     return it == slots_.end() ? nullptr : it->second;
 }
 
-void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image, float exposure) {
+void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image) {
     std::shared_ptr<Slot> s;
     {
         std::lock_guard lock(mutex_);
@@ -30,7 +29,6 @@ void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const Pe
     std::lock_guard lock(s->stateMutex);
     s->pass = pass;
     s->image = std::move(image);
-    s->exposure = exposure;
     // The last encodings stay: a request soon after may still be answered with them.
 }
 
@@ -40,7 +38,6 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
     std::lock_guard encoding(s->encodeMutex);
     std::shared_ptr<const PendingImage> image;
     EncodedImage fresh;
-    float exposure = 0;
     {
         std::lock_guard state(s->stateMutex);
         if (!s->image) return std::nullopt;
@@ -52,9 +49,8 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
         }
         image = s->image;
         fresh.pass = s->pass;
-        exposure = s->exposure;
     }
-    fresh.bytes = encode(*image, format, exposure);
+    fresh.bytes = encode(*image, format);
     fresh.encodedAt = std::chrono::steady_clock::now();
     std::lock_guard state(s->stateMutex);
     // Keyed by pass: if a newer pass arrived meanwhile, the lookup above will not match it.

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include "post/pending_image.h"
+#include <photon/pending_image.h>
 #include "image_format.h"
 
 namespace photon::server {
@@ -31,7 +31,7 @@ public:
     // The image after `pass` as the engine hands it out (its layers go into the EXR, the
     // PNG shows the main image; a post filter runs at the first encode, so only for passes
     // someone fetches); replaces the previous pass's image and encodings.
-    void store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image, float exposure);
+    void store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image);
     // The latest image in `format`, encoded now if this pass has not been encoded yet.
     // nullopt if the job has no image in memory.
     std::optional<EncodedImage> get(const std::string& id, ImageFormat format,
@@ -47,7 +47,6 @@ private:
         std::mutex stateMutex;
         int pass = 0;
         std::shared_ptr<const PendingImage> image;
-        float exposure = 0;
         std::map<ImageFormat, EncodedImage> encoded;
     };
     std::shared_ptr<Slot> slot(const std::string& id) const;

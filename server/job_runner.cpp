@@ -1,11 +1,10 @@
 #include "job_runner.h"
 #include <chrono>
-#include <cstdio>
+#include <spdlog/spdlog.h>
 #include <fstream>
 #include <sstream>
-#include "integrators/checkpoint.h"
+#include <photon/render.h>
 #include "clock.h"
-#include "render.h"
 #include "scene_intake.h"
 
 namespace photon::server {
@@ -25,23 +24,21 @@ void JobRunner::run(const std::string& id) {
         try {
             finish(id, JobStatus::Failed, e.what());
         } catch (const std::exception& again) {
-            std::fprintf(stderr, "photon-server: job %s: %s (while recording: %s)\n", id.c_str(), again.what(),
-                         e.what());
+            spdlog::error("job {}: {} (while recording: {})", id, again.what(), e.what());
         }
     }
 }
 
 JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     const std::string& id = started.job.id;
-    SceneDescription description = loadSceneFile(folders_.sceneFile(id));
-    applySettings(started.job.settings, description);
-    const float exposure = description.render.exposure;
-    Renderer renderer(Scene::build(std::move(description)));
+    SceneFile scene = SceneFile::read(folders_.sceneFile(id));
+    applySettings(started.job.settings, scene.render());
+    Renderer renderer(std::move(scene));
     resumeFromCheckpoint(id, renderer);
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
-        onPass(id, renderer, p, exposure, elapsedBefore);
+        onPass(id, renderer, p, elapsedBefore);
         auto now = std::chrono::steady_clock::now();
         if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
             saveCheckpoint(id, renderer);
@@ -69,18 +66,18 @@ void JobRunner::resumeFromCheckpoint(const std::string& id, Renderer& renderer) 
         renderer.restoreCheckpoint(in);
     } catch (const CheckpointError& e) {
         // Unusable (another version, a damaged file): render from the start instead.
-        std::fprintf(stderr, "photon-server: job %s: %s; starting over\n", id.c_str(), e.what());
+        spdlog::warn("job {}: {}; starting over", id, e.what());
         std::error_code ec;
         std::filesystem::remove(file, ec);
     }
 }
 
-void JobRunner::onPass(const std::string& id, const Renderer& renderer, const RenderProgress& p, float exposure,
+void JobRunner::onPass(const std::string& id, const Renderer& renderer, const RenderProgress& p,
                        double& elapsedBefore) {
     // Between passes the snapshot is exactly the image after pass p.pass (denoised, with
     // its raw and guide layers, when the scene asks for it: the engine decides, and does
     // it when the image is first encoded).
-    images_.store(id, p.pass, renderer.pendingLayers(), exposure);
+    images_.store(id, p.pass, renderer.pendingLayers());
     JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);
     metrics_.addPass(p.lastPass.photons, p.elapsedSeconds - elapsedBefore);
@@ -93,6 +90,8 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
     std::error_code ec;
     std::filesystem::remove(folders_.checkpointFile(id), ec);
     JobRecord job = table_.finish(id, status, error, utcNowIso8601());
+    if (status == JobStatus::Failed) spdlog::warn("job {} failed: {}", id, error);
+    else spdlog::info("job {} {} after {} passes", id, toString(status), job.progress.pass);
     store_.update(job);
     hub_.publish(job, eventTypeFor(status));
     images_.drop(id);

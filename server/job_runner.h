@@ -30,7 +30,7 @@ public:
 private:
     enum class Ending { Completed, Cancelled, Interrupted };
     Ending render(const JobTable::Started& started);
-    void onPass(const std::string& id, const Renderer& renderer, const RenderProgress& progress, float exposure,
+    void onPass(const std::string& id, const Renderer& renderer, const RenderProgress& progress,
                 double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
     void writeImages(const std::string& id);

@@ -39,7 +39,7 @@ void JobService::restore() {
 }
 
 std::unique_ptr<StagedUpload> JobService::newUpload() const {
-    return std::make_unique<StagedUpload>(folders_.newStagingDir(), limits_.maxAssetBytes);
+    return std::make_unique<StagedUpload>(folders_.newStagingDir(), size_t(limits_.maxAssetBytes));
 }
 
 std::optional<JobRecord> JobService::replay(const std::string& key, const std::string& digest) {
@@ -56,14 +56,14 @@ void JobService::checkAdmission(const std::string& client) const {
         throw ServiceError(ErrorKind::TooManyRequests,
                            "client " + client + " has " + std::to_string(active) +
                                " jobs queued or running, the server limit per client is " +
-                               std::to_string(limits_.maxJobsPerClient) +
-                               " (--max-jobs-per-client); retry when one has finished");
+                               std::to_string(limits_.maxJobsPerClient) + " (" +
+                               optionOf(&Limits::maxJobsPerClient) + "); retry when one has finished");
     int64_t queued = table_.countByStatus().at(JobStatus::Queued);
     if (queued >= limits_.maxQueuedJobs)
         throw ServiceError(ErrorKind::Unavailable, "the queue is full: " + std::to_string(queued) +
                                                        " jobs queued, the server limit is " +
-                                                       std::to_string(limits_.maxQueuedJobs) +
-                                                       " (--max-queued-jobs); retry later");
+                                                       std::to_string(limits_.maxQueuedJobs) + " (" +
+                                                       optionOf(&Limits::maxQueuedJobs) + "); retry later");
 }
 
 std::string JobService::unusedId() const {
@@ -85,7 +85,7 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
     }
     checkAdmission(request.client);  // early, before the costly validation
     upload.endAsset();
-    checkTextureSizes(upload.dir(), limits_.maxTexturePixels);
+    checkTextureSizes(upload.dir(), limits_);
     JobRecord job;
     job.settings = validateScene(upload.sceneText(), upload.dir(), request.options, limits_);
     guardStorage("storing the scene", [&] { writeFileAtomically(upload.dir() / "scene.json", upload.sceneText()); });

@@ -10,7 +10,7 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
-#include "integrators/integrator.h"
+#include <photon/progress.h>
 #include "job.h"
 
 namespace photon::server {

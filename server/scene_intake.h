@@ -6,12 +6,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <photon/render_settings.h>
 #include "job.h"
 #include "service_limits.h"
-
-namespace photon {
-struct SceneDescription;
-}
 
 namespace photon::server {
 
@@ -30,6 +27,6 @@ JobSettings validateScene(const std::string& sceneText, const std::filesystem::p
 
 // Puts a job's stored settings into a freshly loaded scene's render block, so the render
 // uses exactly what was accepted at submission.
-void applySettings(const JobSettings& settings, SceneDescription& description);
+void applySettings(const JobSettings& settings, RenderSettings& render);
 
 }  // namespace photon::server

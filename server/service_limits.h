@@ -1,33 +1,49 @@
 // What one client may ask of the server: keeps a single request from exhausting memory,
-// disk or render time. Every limit is a command-line option (options.cpp); a request over
-// one is refused with a message naming the value, the limit and that option.
+// disk or render time. Every limit is a command-line option; a request over one is refused
+// with a message naming the value, the limit and that option. Each limit's default is
+// written in Limits, its option, help and greatest value in limitOptions(), once.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 #include "errors.h"
 
 namespace photon::server {
 
 struct Limits {
-    int64_t maxPixels = 4096LL * 4096;       // width * height
+    int64_t maxPixels = 4096LL * 4096;
     int64_t maxPasses = 100000;
-    int64_t maxPhotonsPerPass = 100000000;   // 10^8
-    size_t maxBodyBytes = 64u << 20;         // whole request body (HTTP 413 beyond)
-    size_t maxAssetBytes = 64u << 20;        // each uploaded asset file (HTTP 422 beyond)
-    size_t maxSceneBytes = 8u << 20;         // the scene JSON itself (HTTP 413 beyond)
-    int64_t maxTriangles = 20'000'000;       // all meshes of one scene together
-    int64_t maxTexturePixels = 64LL << 20;   // width * height of each texture image
-    int maxStreams = 128;                    // open event and image streams, all clients together
-    int64_t maxJobsPerClient = 100;          // queued + running jobs of one remote address
-    int64_t maxQueuedJobs = 1000;            // queued jobs, all clients together
+    int64_t maxPhotonsPerPass = 100000000;
+    int64_t maxBodyBytes = 64 << 20;
+    int64_t maxAssetBytes = 64 << 20;
+    int64_t maxSceneBytes = 8 << 20;
+    int64_t maxTriangles = 20'000'000;
+    int64_t maxTexturePixels = 64LL << 20;
+    int64_t maxStreams = 128;
+    int64_t maxJobsPerClient = 100;
+    int64_t maxQueuedJobs = 1000;
 };
 
 // Each open stream holds one of the 256 HTTP threads: at least 64 stay for ordinary requests.
 constexpr int kMaxStreamsCap = 192;
 
+struct LimitOption {
+    int64_t Limits::*field;
+    const char* option;  // e.g. "--max-pixels"
+    const char* help;    // what it bounds, and the HTTP status beyond it
+    int64_t max;         // the most an operator may set it to
+};
+// Every limit, in the order --help lists them.
+const std::vector<LimitOption>& limitOptions();
+// The option that sets `field`, for messages: "--max-pixels" for &Limits::maxPixels.
+const char* optionOf(int64_t Limits::*field);
+
 // Throws ServiceError(kind) "<what> <value> exceeds the server limit of <limit> (<option>)"
 // when value > limit.
 void checkLimit(ErrorKind kind, const std::string& what, int64_t value, int64_t limit, const char* option);
+// The same for a limit held in `limits`.
+void checkLimit(ErrorKind kind, const std::string& what, int64_t value, const Limits& limits,
+                int64_t Limits::*field);
 
 }  // namespace photon::server

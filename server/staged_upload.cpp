@@ -2,6 +2,7 @@
 #include <array>
 #include <cctype>
 #include "errors.h"
+#include "service_limits.h"
 
 namespace photon::server {
 
@@ -90,7 +91,8 @@ void StagedUpload::appendAsset(const char* data, size_t size) {
     assetBytes_ += size;
     if (assetBytes_ > maxAssetBytes_)
         throw ServiceError(ErrorKind::LimitExceeded, "asset " + assetName_ + " is larger than the server limit of " +
-                                                         std::to_string(maxAssetBytes_) + " bytes (--max-asset-bytes)");
+                                                         std::to_string(maxAssetBytes_) + " bytes (" +
+                                                         optionOf(&Limits::maxAssetBytes) + ")");
     asset_->write(data, size);
 }
 

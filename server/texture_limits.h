@@ -4,12 +4,13 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include "service_limits.h"
 
 namespace photon::server {
 
 // Checks every file under `folder` whose extension OpenImageIO reads. Throws ServiceError
 // (LimitExceeded) naming the file, its size and --max-texture-pixels when width*height is
-// over `maxPixels`. Files that are not readable images are left to the scene loader.
-void checkTextureSizes(const std::filesystem::path& folder, int64_t maxPixels);
+// over limits.maxTexturePixels. Files that are not readable images are left to the scene loader.
+void checkTextureSizes(const std::filesystem::path& folder, const Limits& limits);
 
 }  // namespace photon::server

@@ -4,8 +4,11 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
-#include "integrators/checkpoint.h"
-#include "render.h"
+#include "integrators/common/checkpoint.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include "film/image_io.h"
+#include <photon/image_io.h>
 #include "test_support.h"
 
 namespace photon {

@@ -5,11 +5,14 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
-#include "film/image_io.h"
+#include <photon/image_io.h>
 #include "math/rng.h"
 #include "post/bilateral.h"
 #include "post/feature_buffers.h"
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

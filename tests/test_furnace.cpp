@@ -1,7 +1,10 @@
 // Furnace: inside a closed sphere of albedo rho emitting Le everywhere, the radiance in
 // every direction is Le / (1 - rho) (the sum of the Neumann series Le sum rho^k).
 #include <gtest/gtest.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <filesystem>
-#include "film/image_io.h"
+#include <photon/image_io.h>
 
 namespace photon {
 namespace {

@@ -1,7 +1,10 @@
 // Each kind of light over a diffuse plane against its analytic radiance, by shadow rays
 // and by photons (which tests its photon emission and power).
 #include <gtest/gtest.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

@@ -9,8 +9,8 @@
 #include <iterator>
 #include <tuple>
 #include <vector>
-#include "integrators/photon_paths.h"
-#include "integrators/photon_roulette.h"
+#include "integrators/common/photon_paths.h"
+#include "integrators/common/photon_roulette.h"
 #include "math/lanes.h"
 #include "scene/scene.h"
 #include "test_support.h"

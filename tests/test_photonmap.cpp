@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <sstream>
-#include "integrators/photon_kernel.h"
-#include "integrators/photon_map.h"
-#include "integrators/photonmap.h"
+#include "integrators/common/photon_kernel.h"
+#include "integrators/photon_mapping/photon_map.h"
+#include "integrators/photon_mapping/photon_mapping.h"
 #include "math/rng.h"
 #include "math/sampling.h"
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

@@ -1,7 +1,10 @@
 // A diffuse plane under a point light has radiance rho/pi * I cos(theta) / r^2: the
 // photon density estimate and the shadow-ray estimate must both reach it.
 #include <gtest/gtest.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

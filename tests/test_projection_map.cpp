@@ -3,9 +3,12 @@
 // directional light) renders the same with and without them, for SPPM and for the photon
 // mapper, while far fewer emitted photons miss everything.
 #include <gtest/gtest.h>
-#include "integrators/photonmap.h"
-#include "lights/photon_emitter.h"
-#include "render.h"
+#include "integrators/photon_mapping/photon_mapping.h"
+#include "integrators/common/photon_emitter.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

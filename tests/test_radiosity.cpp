@@ -2,8 +2,11 @@
 // reciprocity) and against SPPM on the diffuse Cornell box.
 #include <gtest/gtest.h>
 #include <cmath>
-#include "integrators/radiosity_solver.h"
-#include "render.h"
+#include "integrators/radiosity/radiosity_solver.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "test_support.h"
 

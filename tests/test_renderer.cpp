@@ -1,7 +1,10 @@
 // The engine's face: progress per pass, cancellation inside a pass, time limits, snapshots.
 #include <gtest/gtest.h>
 #include <thread>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

@@ -1,7 +1,10 @@
 // With a fixed seed the image is bit-identical whatever the number of threads: random
 // streams are keyed by pixel, photon and pass, and photon sums are integers.
 #include <gtest/gtest.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

@@ -2,9 +2,12 @@
 // error against a converged reference falling as passes accumulate.
 #include <gtest/gtest.h>
 #include <cmath>
-#include "integrators/path.h"
-#include "integrators/sppm.h"
-#include "render.h"
+#include "integrators/path/path.h"
+#include "integrators/sppm/sppm.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

@@ -2,7 +2,10 @@
 // Cornell box. Mean and every region of the image agree within 2%.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "test_support.h"
 
 namespace photon {

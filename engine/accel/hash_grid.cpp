@@ -1,8 +1,8 @@
 
 
-#include "hash_grid.h"
-#include "overwrite_buffer.h"
-#include "radix_sort.h"
+#include "accel/hash_grid.h"
+#include "accel/overwrite_buffer.h"
+#include "accel/radix_sort.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>

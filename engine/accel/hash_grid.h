@@ -11,7 +11,7 @@
 // level 0 alone.
 #include <cstdint>
 #include <vector>
-#include "../math/vec.h"
+#include <photon/vec.h>
 
 #pragma once
 
@@ -101,4 +101,4 @@ private:
 
 }  // namespace photon
 
-#include "hash_grid_build.h"
+#include "accel/hash_grid_build.h"

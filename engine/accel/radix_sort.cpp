@@ -1,5 +1,5 @@
-#include "radix_sort.h"
-#include "overwrite_buffer.h"
+#include "accel/radix_sort.h"
+#include "accel/overwrite_buffer.h"
 #include <tbb/parallel_for.h>
 #include <algorithm>
 #include <array>

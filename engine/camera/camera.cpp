@@ -1,5 +1,5 @@
-#include "camera.h"
-#include "../scene/scene_description.h"
+#include "camera/camera.h"
+#include "description/scene_description.h"
 
 namespace photon {
 

@@ -1,8 +1,8 @@
 // Perspective camera with an optional thin lens.
 #pragma once
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "../scene/ray.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "math/ray.h"
 
 namespace photon {
 

@@ -1,4 +1,4 @@
-#include "image_io.h"
+#include <photon/image_io.h>
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <algorithm>

@@ -3,10 +3,10 @@
 // photons leave cosine-distributed, so each carries Le pi A (Jensen 2001, 5.1.3).
 #include <algorithm>
 #include <vector>
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "emission_triangles.h"
-#include "light_factories.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "lights/emission_triangles.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 namespace {

@@ -1,8 +1,8 @@
 // Directional light: irradiance E (W/m^2) on surfaces facing it. Photons start on a disc
 // covering the scene's bounding sphere, so its power is E pi R^2 (pbrt-v4 12.4).
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "light_factories.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 namespace {

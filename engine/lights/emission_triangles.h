@@ -5,9 +5,9 @@
 #pragma once
 #include <algorithm>
 #include <vector>
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "../scene/scene_description.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "description/scene_description.h"
 
 namespace photon {
 

@@ -1,9 +1,9 @@
 // Uniform environment: radiance L from every direction. Photons come from a disc of the
 // scene's bounding-sphere radius facing a uniformly chosen direction, so each carries
 // L / (pdf_dir pdf_pos) = L 4 pi * pi R^2 (pbrt-v4 12.5.1).
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "light_factories.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 namespace {

@@ -3,9 +3,9 @@
 #pragma once
 #include <limits>
 #include <optional>
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "../math/vec.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -1,8 +1,8 @@
 // Constructors for each kind of light, one file each under lights/.
 #pragma once
 #include <memory>
-#include "../scene/scene_description.h"
-#include "light.h"
+#include "description/scene_description.h"
+#include "lights/light.h"
 
 namespace photon {
 

@@ -1,4 +1,4 @@
-#include "light_sampler.h"
+#include "lights/light_sampler.h"
 #include <algorithm>
 
 namespace photon {

@@ -3,7 +3,7 @@
 #pragma once
 #include <algorithm>
 #include <vector>
-#include "light.h"
+#include "lights/light.h"
 
 namespace photon {
 

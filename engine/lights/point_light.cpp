@@ -1,6 +1,6 @@
 // Isotropic point light of intensity I (W/sr): power 4 pi I.
-#include "../math/sampling.h"
-#include "light_factories.h"
+#include "math/sampling.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 namespace {

@@ -1,4 +1,4 @@
-#include "projection_map.h"
+#include "lights/projection_map.h"
 #include <tbb/parallel_for.h>
 #include <algorithm>
 #include <cmath>

@@ -8,8 +8,8 @@
 #include <functional>
 #include <optional>
 #include <vector>
-#include "../scene/scene_description.h"
-#include "light.h"
+#include "description/scene_description.h"
+#include "lights/light.h"
 
 namespace photon {
 

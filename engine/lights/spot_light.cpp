@@ -1,8 +1,8 @@
 // Spot light: intensity I inside falloff_angle, smoothly fading to zero at cone_angle
 // (pbrt-v4 12.2.1, smoothstep falloff).
-#include "../math/frame.h"
-#include "../math/sampling.h"
-#include "light_factories.h"
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 namespace {

@@ -1,8 +1,8 @@
 // Rough metal: GGX microfacet reflection (Walter et al. 2007) with Schlick's Fresnel
 // from the tint F0; roughness 0 becomes an ideal mirror with the same Fresnel.
-#include "fresnel.h"
-#include "material.h"
-#include "microfacet.h"
+#include "materials/fresnel.h"
+#include "materials/material.h"
+#include "materials/microfacet.h"
 
 namespace photon {
 namespace {

@@ -1,7 +1,7 @@
 // Smooth dielectric boundary (glass, water): exact Fresnel reflection plus Snell
 // refraction, both Dirac lobes. The outside medium has index 1.
-#include "fresnel.h"
-#include "material.h"
+#include "materials/fresnel.h"
+#include "materials/material.h"
 
 namespace photon {
 namespace {

@@ -1,6 +1,6 @@
 // Lambertian reflector: f = albedo / pi, the ideal matte surface (Lambert 1760).
-#include "material.h"
-#include "../math/sampling.h"
+#include "materials/material.h"
+#include "math/sampling.h"
 
 namespace photon {
 namespace {

@@ -2,8 +2,8 @@
 // plastic materials. Local-frame conventions: directions point away from the surface.
 #pragma once
 #include <optional>
-#include "../math/lanes.h"
-#include "../math/vec.h"
+#include "math/lanes.h"
+#include <photon/vec.h>
 
 namespace photon {
 

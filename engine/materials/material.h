@@ -3,9 +3,9 @@
 #pragma once
 #include <memory>
 #include <optional>
-#include "../math/frame.h"
-#include "../math/vec.h"
-#include "../texture/color_param.h"
+#include "math/frame.h"
+#include <photon/vec.h>
+#include "texture/color_param.h"
 
 namespace photon {
 

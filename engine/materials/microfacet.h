@@ -3,7 +3,7 @@
 // All vectors are in the local shading frame (z = macro normal).
 #pragma once
 #include <optional>
-#include "../math/vec.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -1,5 +1,5 @@
 // Perfect specular reflector tinted by `reflectance`: a single Dirac lobe.
-#include "material.h"
+#include "materials/material.h"
 
 namespace photon {
 namespace {

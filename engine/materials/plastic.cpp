@@ -1,10 +1,10 @@
 // Plastic: a Lambertian base under a dielectric coating of index `ior`. The coating is
 // a GGX microfacet reflector (or an ideal mirror when smooth); the base only receives
 // what the coating transmits on the way in and on the way out.
-#include "../math/sampling.h"
-#include "fresnel.h"
-#include "material.h"
-#include "microfacet.h"
+#include "math/sampling.h"
+#include "materials/fresnel.h"
+#include "materials/material.h"
+#include "materials/microfacet.h"
 
 namespace photon {
 namespace {

@@ -1,7 +1,7 @@
 // Orthonormal frames: shading happens in a local frame whose z axis is the normal.
 #pragma once
-#include "lanes.h"
-#include "vec.h"
+#include "math/lanes.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -3,7 +3,7 @@
 // 1e-4 rad, which keeps per-pixel state small.
 #pragma once
 #include <cstdint>
-#include "vec.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -1,7 +1,7 @@
 // Sampling warps shared by materials, lights and cameras (pbrt-v4 ch. A.5 and 4.x).
 #pragma once
-#include "lanes.h"
-#include "vec.h"
+#include "math/lanes.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -1,7 +1,7 @@
 // Affine transforms for mesh instancing: a 3x4 row-major matrix.
 #pragma once
 #include <array>
-#include "vec.h"
+#include <photon/vec.h>
 
 namespace photon {
 

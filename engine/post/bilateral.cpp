@@ -1,4 +1,4 @@
-#include "bilateral.h"
+#include "post/bilateral.h"
 #include <tbb/parallel_for.h>
 #include <algorithm>
 #include <bit>

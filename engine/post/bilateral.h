@@ -5,7 +5,7 @@
 // only where it also looks like the same material (albedo) facing the same way (normal),
 // so geometric and texture edges stay sharp even where noise hides them in I itself.
 #pragma once
-#include "../film/image.h"
+#include <photon/image.h>
 
 namespace photon {
 

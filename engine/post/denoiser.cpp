@@ -1,5 +1,5 @@
-#include "denoiser.h"
-#include "bilateral.h"
+#include "post/denoiser.h"
+#include "post/bilateral.h"
 
 namespace photon {
 

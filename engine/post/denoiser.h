@@ -1,9 +1,9 @@
 // The denoising post filter of render.denoise (docs/denoise.md): the scene's feature
 // buffers, computed once, and the bilateral filter applied to any snapshot.
 #pragma once
-#include "../film/image_layers.h"
-#include "../scene/render_settings.h"
-#include "feature_buffers.h"
+#include <photon/image.h>
+#include <photon/render_settings.h>
+#include "post/feature_buffers.h"
 
 namespace photon {
 

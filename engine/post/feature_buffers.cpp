@@ -1,7 +1,7 @@
-#include "feature_buffers.h"
+#include "post/feature_buffers.h"
 #include <tbb/parallel_for.h>
-#include "../integrators/shading.h"
-#include "../math/rng.h"
+#include "integrators/common/shading.h"
+#include "math/rng.h"
 
 namespace photon {
 

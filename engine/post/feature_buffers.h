@@ -4,7 +4,7 @@
 // refractor. They depend on the scene alone, not on any integrator, so every integrator
 // shares them and a render computes them once.
 #pragma once
-#include "../film/image.h"
+#include <photon/image.h>
 
 namespace photon {
 

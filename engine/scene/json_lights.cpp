@@ -1,5 +1,5 @@
 // The "lights" section: point, spot, directional and environment lights.
-#include "json_scene_parts.h"
+#include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
 

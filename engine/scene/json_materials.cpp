@@ -1,6 +1,6 @@
 // The "materials" section: a name → material map, built with the factories of
 // materials/material.h.
-#include "json_scene_parts.h"
+#include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
 

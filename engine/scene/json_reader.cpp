@@ -1,4 +1,4 @@
-#include "json_reader.h"
+#include "scene/json_reader.h"
 #include <cmath>
 #include <cstdio>
 #include <unordered_set>

@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 #include <nlohmann/json.hpp>
-#include "../math/vec.h"
-#include "scene_loader.h"
+#include <photon/vec.h>
+#include "scene/scene_loader.h"
 
 namespace photon {
 

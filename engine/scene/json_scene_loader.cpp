@@ -4,9 +4,9 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
-#include "json_scene_parts.h"
-#include "scene_loader.h"
-#include "scene_paths.h"
+#include "scene/json_scene_parts.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_paths.h"
 
 namespace photon {
 

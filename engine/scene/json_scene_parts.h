@@ -8,10 +8,10 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
-#include "../math/transform.h"
-#include "../texture/texture.h"
-#include "json_reader.h"
-#include "scene_description.h"
+#include "math/transform.h"
+#include "texture/texture.h"
+#include "scene/json_reader.h"
+#include "description/scene_description.h"
 
 namespace photon::scene_json {
 

@@ -1,6 +1,6 @@
 // The "camera" and "render" sections.
 #include <cmath>
-#include "json_scene_parts.h"
+#include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
 

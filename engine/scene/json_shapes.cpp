@@ -1,7 +1,7 @@
 // The "shapes" section: quads, spheres and triangle meshes (inline or from files).
 #include <cmath>
-#include "json_scene_parts.h"
-#include "mesh_loader.h"
+#include "scene/json_scene_parts.h"
+#include "scene/mesh_loader.h"
 
 namespace photon::scene_json {
 

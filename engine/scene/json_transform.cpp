@@ -1,6 +1,6 @@
 // The "transform" of a shape: scale, then rotate, then translate; or a full matrix.
 #include <cmath>
-#include "json_scene_parts.h"
+#include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
 

@@ -1,4 +1,4 @@
-#include "mesh_loader.h"
+#include "scene/mesh_loader.h"
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include "scene_paths.h"
+#include "scene/scene_paths.h"
 
 namespace photon {
 

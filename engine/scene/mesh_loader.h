@@ -2,7 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
-#include "scene_description.h"
+#include "description/scene_description.h"
 
 namespace photon {
 

@@ -1,9 +1,9 @@
-#include "scene.h"
+#include "scene/scene.h"
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include "../lights/light_factories.h"
+#include "lights/light_factories.h"
 
 namespace photon {
 

@@ -3,11 +3,11 @@
 #include <embree3/rtcore.h>
 #include <memory>
 #include <vector>
-#include "../camera/camera.h"
-#include "../lights/light.h"
-#include "../lights/light_sampler.h"
-#include "ray.h"
-#include "scene_description.h"
+#include "camera/camera.h"
+#include "lights/light.h"
+#include "lights/light_sampler.h"
+#include "math/ray.h"
+#include "description/scene_description.h"
 
 namespace photon {
 

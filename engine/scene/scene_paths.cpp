@@ -1,4 +1,4 @@
-#include "scene_paths.h"
+#include "scene/scene_paths.h"
 #include <system_error>
 
 namespace photon {

@@ -1,7 +1,7 @@
 // A colour that is either constant or looked up in a texture at the hit's uv.
 #pragma once
 #include <memory>
-#include "texture.h"
+#include "texture/texture.h"
 
 namespace photon {
 

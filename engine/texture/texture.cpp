@@ -1,4 +1,4 @@
-#include "texture.h"
+#include "texture/texture.h"
 #include <algorithm>
 #include <array>
 #include <cctype>

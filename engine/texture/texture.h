@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "../math/vec.h"
+#include <photon/vec.h>
 
 namespace photon {
 

@@ -1,6 +1,9 @@
 #include "integrator_comparison.h"
 #include <chrono>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace photon::bench {
 

@@ -19,7 +19,10 @@
 #include "embree_throughput.h"
 #include "integrator_comparison.h"
 #include "projection_misses.h"
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace {
 

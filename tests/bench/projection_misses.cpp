@@ -1,7 +1,10 @@
 #include "projection_misses.h"
 #include <chrono>
-#include "lights/photon_emitter.h"
-#include "render.h"
+#include "integrators/common/photon_emitter.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace photon::bench {
 

@@ -12,8 +12,10 @@
 #include <cstdlib>
 #include <sstream>
 #include <string>
-#include "integrators/checkpoint.h"
-#include "render.h"
+#include "integrators/common/checkpoint.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
 #include "scene/scene_loader.h"
 
 namespace {

@@ -8,7 +8,7 @@ require_wrk() {
 start_server() {
   local build="$1"; shift
   work="$(mktemp -d)"
-  "$build/server/photon-server" --host 127.0.0.1 --port 0 --data "$work/store" "$@" > "$work/server.log" 2>&1 &
+  "$build/app/photon-server" --host 127.0.0.1 --port 0 --data "$work/store" "$@" > "$work/server.log" 2>&1 &
   server=$!
   trap 'kill $server 2>/dev/null; wait $server 2>/dev/null; rm -rf "$work"' EXIT
   for _ in $(seq 100); do grep -q "listening on" "$work/server.log" && break; sleep 0.1; done

@@ -1,11 +1,10 @@
 #include "server_fixture.h"
-#include "render.h"
-#include "scene/scene_loader.h"
+#include <photon/render.h>
 #include <unistd.h>
 #include <fstream>
 #include <sstream>
 #include <thread>
-#include "film/image_io.h"
+#include <photon/image_io.h>
 
 namespace photon::test {
 
@@ -59,8 +58,7 @@ json smallScene(int passes, int64_t photonsPerPass, int resolution) {
 json longScene() { return smallScene(50000, 20000, 48); }
 
 Image renderInProcess(const json& scene) {
-    SceneDescription description = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
-    Renderer renderer(Scene::build(std::move(description)));
+    Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));
     CancelToken cancel;
     EXPECT_EQ(renderer.run(cancel), RenderOutcome::Completed);
     return renderer.snapshot();

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-#include "film/image.h"
+#include <photon/image.h>
 #include "server_process.h"
 
 namespace photon::test {

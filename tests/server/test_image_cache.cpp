@@ -10,19 +10,19 @@ namespace {
 std::shared_ptr<const PendingImage> imageOf(float value) {
     Image image(8, 8);
     for (float& v : image.rgb) v = value;
-    return std::make_shared<const PendingImage>(std::move(image), nullptr);
+    return std::make_shared<const PendingImage>(std::move(image), nullptr, 0.0f);
 }
 
 TEST(ImageCache, NewPassesAreEncodedAtMostEveryIntervalUnlessTheLatestIsAsked) {
     ImageCache cache;
     EXPECT_FALSE(cache.get("job", ImageFormat::Png));
-    cache.store("job", 1, imageOf(0.1f), 0);
+    cache.store("job", 1, imageOf(0.1f));
     EncodedImage first = *cache.get("job", ImageFormat::Png);
     EXPECT_EQ(first.pass, 1);
     // The same pass again: the very same bytes, not a new encoding.
     EXPECT_EQ(cache.get("job", ImageFormat::Png)->bytes, first.bytes);
 
-    cache.store("job", 2, imageOf(0.5f), 0);
+    cache.store("job", 2, imageOf(0.5f));
     auto throttled = std::chrono::steady_clock::now();
     EncodedImage soon = *cache.get("job", ImageFormat::Png);
     if (std::chrono::steady_clock::now() - first.encodedAt < kMinEncodeInterval - std::chrono::milliseconds(50)) {
@@ -34,7 +34,7 @@ TEST(ImageCache, NewPassesAreEncodedAtMostEveryIntervalUnlessTheLatestIsAsked) {
     EXPECT_NE(*latest.bytes, *first.bytes);
     EXPECT_EQ(cache.latestPass("job"), 2);
 
-    cache.store("job", 3, imageOf(0.9f), 0);
+    cache.store("job", 3, imageOf(0.9f));
     std::this_thread::sleep_until(throttled + kMinEncodeInterval + std::chrono::milliseconds(20));
     EXPECT_EQ(cache.get("job", ImageFormat::Png)->pass, 3);  // the interval has passed
     // Formats are encoded apart: the EXR of pass 3 was never throttled by the PNG's.

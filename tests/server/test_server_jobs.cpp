@@ -1,8 +1,7 @@
 // The job lifecycle over HTTP: submit, follow events, fetch images, cancel, delete.
 #include <atomic>
 #include <thread>
-#include "render.h"
-#include "scene/scene_loader.h"
+#include <photon/render.h>
 #include "server_fixture.h"
 
 namespace photon::test {

@@ -1,11 +1,11 @@
 // Every limit on what costs memory or time answers with its status, a message naming the
 // value, the limit and its option, and (for capacity) Retry-After.
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 #include <atomic>
 #include <fstream>
 #include <thread>
-#include "scene/scene_loader.h"
+#include <photon/image_io.h>
+#include <photon/scene_file.h>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -27,10 +27,7 @@ protected:
 };
 
 int64_t trianglesOf(const json& scene) {
-    SceneDescription d = loadSceneJson(scene.dump(), PHOTON_SOURCE_DIR);
-    int64_t n = 0;
-    for (const ShapeDescription& s : d.shapes) n += int64_t(s.mesh.triangleCount());
-    return n;
+    return SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR).triangleCount();
 }
 
 // An OBJ strip of `n` triangles.
@@ -42,15 +39,12 @@ std::string objStrip(int n) {
     return obj;
 }
 
-// A grey PNG of the given size, encoded with OpenImageIO.
+// A grey PNG of the given size.
 std::string pngBytes(int width, int height) {
     std::string file = (std::filesystem::temp_directory_path() / ("photon-limits-" + std::to_string(::getpid()) + ".png")).string();
-    auto out = OIIO::ImageOutput::create(file);
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    std::vector<unsigned char> pixels(size_t(width) * height * 3, 128);
-    out->open(file, spec);
-    out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
-    out->close();
+    Image grey(width, height);
+    std::fill(grey.rgb.begin(), grey.rgb.end(), 0.2f);
+    writePng(grey, file, 0);
     std::ifstream in(file, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::filesystem::remove(file);

@@ -1,6 +1,6 @@
 // Scenes built in code for the analytic tests, independent of the JSON loader.
 #pragma once
-#include "scene/scene_description.h"
+#include "description/scene_description.h"
 
 namespace photon::test {
 

@@ -1,7 +1,10 @@
 #include "test_support.h"
 #include "scene_builders.h"
 #include <tbb/task_arena.h>
-#include "render.h"
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
 
 namespace photon::test {
 

@@ -13,7 +13,7 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 }  // namespace photon::test
 
 #include <cmath>
-#include "film/image.h"
+#include <photon/image.h>
 #include "scene/scene_loader.h"
 
 namespace photon::test {

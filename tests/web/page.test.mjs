@@ -2,7 +2,7 @@
 // driven by playwright-core (no browser download).
 //
 //   npm ci --prefix tests/web
-//   PHOTON_SERVER_BIN=build-server/server/photon-server PHOTON_WEB_SCREENSHOT=out/web.png \
+//   PHOTON_SERVER_BIN=build/app/photon-server PHOTON_WEB_SCREENSHOT=out/web.png \
 //     node --test tests/web/page.test.mjs
 //
 // Starts the server on a free port with a fresh data folder, opens the page, checks the

@@ -1,0 +1,35 @@
+#include "app/options.h"
+#include "cli/option_checks.h"
+
+namespace photon::app {
+
+void declareOptions(CLI::App& app, ServerOptions& o) {
+    using cli::integerIn;
+    app.add_option("--host", o.host, "address to listen on")->capture_default_str();
+    app.add_option("--port", o.port, "port; 0 picks a free one")->type_name("N")->check(integerIn(0, 65535))->capture_default_str();
+    app.add_option("--data", o.service.dataDir, "folder of the job store, scenes and images")->capture_default_str();
+    app.add_option("--workers", o.service.workers, "jobs rendered at once; 0 stores jobs without rendering")
+        ->type_name("N")->check(integerIn(0, 256))
+        ->capture_default_str();
+    app.add_option("--token", o.token, "require \"Authorization: Bearer TOKEN\" on every API request")
+        ->check([](const std::string& t) {
+            return t.find_first_of(" \t\r\n") == std::string::npos ? "" : "must not contain whitespace";
+        });
+    app.add_option("--web-root", o.webRoot, "folder of the page served at /")->capture_default_str();
+    app.add_option("--checkpoint-seconds", o.service.checkpointSeconds, "seconds between a render's checkpoints")
+        ->type_name("N")->check(integerIn(1, 86400))
+        ->capture_default_str();
+    app.add_option("--log-level", o.logLevel, "trace, debug, info (each request), warn, error or off")
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}))
+        ->capture_default_str();
+    app.add_flag("--print-routes", o.printRoutes, "print the API's routes and exit");
+    for (const server::LimitOption& limit : server::limitOptions()) {
+        int64_t& value = o.service.limits.*limit.field;
+        app.add_option(limit.option, value, limit.help)
+            ->type_name("N")->check(integerIn(1, limit.max))
+            ->group("Limits (a request over one is refused, naming it)")
+            ->capture_default_str();
+    }
+}
+
+}  // namespace photon::app

@@ -1,0 +1,27 @@
+// The photon-server command line, declared once with CLI11: the parser and --help come from
+// the same declarations (the limits from server/service_limits.h's table).
+#pragma once
+#include <string>
+#include "server/job_service.h"
+
+namespace CLI {
+class App;
+}
+
+namespace photon::app {
+
+struct ServerOptions {
+    std::string host = "127.0.0.1";  // loopback unless the operator opts in to more
+    int port = 8080;                 // 0: any free port (the start line shows which)
+    std::string token;               // non-empty: require "Authorization: Bearer <token>"
+    // Static files for "/" if the folder exists: by default the page in the source tree.
+    std::string webRoot = PHOTON_DEFAULT_WEB_ROOT;
+    std::string logLevel = "info";   // spdlog level name: trace, debug, info, warn, error, off
+    bool printRoutes = false;
+    server::ServiceConfig service;
+};
+
+// Declares every option on `app`, writing into `options`.
+void declareOptions(CLI::App& app, ServerOptions& options);
+
+}  // namespace photon::app

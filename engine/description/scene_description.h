@@ -1,0 +1,76 @@
+// The format-neutral description of a scene: what a loader (JSON today, other formats
+// later) produces and what Scene::build turns into an Embree scene, lights and camera.
+// Plain data, world space, SI-style units as documented in docs/scene-format.md.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+#include "materials/material.h"
+#include <photon/vec.h>
+#include <photon/render_settings.h>
+
+namespace photon {
+
+struct CameraDescription {
+    Vec3 position{0, 1, 6.8f}, lookAt{0, 1, 0}, up{0, 1, 0};
+    float fovDegrees = 19.5f;  // vertical field of view
+    int width = 512, height = 512;
+    float apertureRadius = 0;  // 0: pinhole
+    float focusDistance = 1;   // distance to the plane in focus when apertureRadius > 0
+};
+
+// Triangles in world space; normals and uvs per vertex, either empty or one per position.
+struct TriangleMesh {
+    std::vector<Vec3> positions;
+    std::vector<uint32_t> indices;  // three per triangle
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
+    size_t triangleCount() const { return indices.size() / 3; }
+
+    struct Corners {
+        Vec3 a, b, c;
+    };
+    Corners corners(size_t t) const {
+        return {positions[indices[3 * t]], positions[indices[3 * t + 1]], positions[indices[3 * t + 2]]};
+    }
+    // The side triangle t's winding faces: normalize((b - a) x (c - a)).
+    Vec3 faceNormal(size_t t) const {
+        Corners k = corners(t);
+        return normalize(cross(k.b - k.a, k.c - k.a));
+    }
+    float area(size_t t) const {
+        Corners k = corners(t);
+        return 0.5f * length(cross(k.b - k.a, k.c - k.a));
+    }
+};
+
+struct ShapeDescription {
+    enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
+    TriangleMesh mesh;        // Kind::Mesh (quads arrive as two triangles with uvs)
+    Vec3 center;              // Kind::Sphere
+    float radius = 0;         // Kind::Sphere
+    uint32_t material = 0;    // index into SceneDescription::materials
+    Color emission{0.0f};     // W/(m^2 sr), emitted on the side the normal faces
+    bool flipNormals = false; // turn the surface inside out (e.g. a sphere lit from inside)
+    std::string name;         // for messages: the JSON path it came from
+};
+
+struct LightDescription {
+    enum class Kind { Point, Spot, Directional, Environment } kind = Kind::Point;
+    Vec3 position, direction{0, -1, 0};
+    Color intensity{0.0f};   // W/sr (point, spot)
+    Color irradiance{0.0f};  // W/m^2 perpendicular to the direction (directional)
+    Color radiance{0.0f};    // W/(m^2 sr) (environment)
+    float coneAngleDegrees = 30, falloffAngleDegrees = 25;  // spot: total and full-intensity half-angles
+};
+
+struct SceneDescription {
+    CameraDescription camera;
+    std::vector<MaterialPtr> materials;
+    std::vector<std::string> materialNames;
+    std::vector<ShapeDescription> shapes;
+    std::vector<LightDescription> lights;
+    RenderSettings render;
+};
+
+}  // namespace photon

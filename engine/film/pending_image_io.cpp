@@ -1,0 +1,14 @@
+// A render's image encoded as its scene asks: the exposure travels with the image, so no
+// caller has to fetch it from the scene and hand it back.
+#include <photon/image_io.h>
+
+namespace photon {
+
+std::vector<uint8_t> encodePng(const PendingImage& image) { return encodePng(image.layers().main, image.exposure()); }
+std::vector<uint8_t> encodeExr(const PendingImage& image) { return encodeExr(image.layers()); }
+void writePng(const PendingImage& image, const std::filesystem::path& file) {
+    writePng(image.layers().main, file, image.exposure());
+}
+void writeExr(const PendingImage& image, const std::filesystem::path& file) { writeExr(image.layers(), file); }
+
+}  // namespace photon

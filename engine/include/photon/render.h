@@ -1,0 +1,65 @@
+// The engine's face: render a scene pass by pass with progress reports and cancellation,
+// take snapshots, save and restore checkpoints. Nothing here knows of HTTP, jobs or files
+// to write.
+#pragma once
+#include <functional>
+#include <istream>
+#include <memory>
+#include <ostream>
+#include <photon/image.h>
+#include <photon/pending_image.h>
+#include <photon/progress.h>
+#include <photon/scene_file.h>
+
+namespace photon {
+
+class Scene;
+class Integrator;
+
+class Renderer {
+public:
+    // Builds the scene (its acceleration structure, lights, camera) and the integrator its
+    // render block names.
+    explicit Renderer(SceneFile scene);
+    // For the engine's own tests and tools, which build scenes themselves.
+    explicit Renderer(std::shared_ptr<const Scene> scene);
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    using ProgressFn = std::function<void(const RenderProgress&)>;
+    // Renders until the scene's pass count or time limit is reached, or `cancel` is set.
+    // onPass runs on the rendering thread after every finished pass.
+    RenderOutcome run(const CancelToken& cancel, const ProgressFn& onPass = {});
+    // Renders one pass; false if cancelled (the image stays as after the last pass).
+    bool renderPass(const CancelToken& cancel);
+
+    // The image after the passes done so far: denoised when render.denoise is on (the
+    // filter runs on every call, so call it once per pass, not per client).
+    Image snapshot() const;
+    // The integrator's own image, never denoised.
+    Image rawSnapshot() const;
+    // snapshot() as the main image; with denoising on, also the layers "raw", "albedo" and
+    // "normal" (the guides, when guided), for formats that hold them.
+    LayeredImage layers() const;
+    // The same, filtered only when first asked for, with the scene's exposure (see
+    // PendingImage).
+    std::shared_ptr<const PendingImage> pendingLayers() const;
+    // The render's whole state after the last finished pass, and its restoration into a
+    // new Renderer of the same scene: the passes that follow give the image an
+    // uninterrupted render would have. Where the bytes go is the caller's business.
+    void saveCheckpoint(std::ostream& out) const;
+    void restoreCheckpoint(std::istream& in);
+    const RenderProgress& progress() const { return progress_; }
+    const Integrator& integrator() const { return *integrator_; }
+    const Scene& scene() const { return *scene_; }
+
+private:
+    std::shared_ptr<const Scene> scene_;
+    std::unique_ptr<Integrator> integrator_;
+    std::shared_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
+    RenderProgress progress_;
+    double renderSeconds_ = 0;
+};
+
+}  // namespace photon

@@ -1,0 +1,99 @@
+// How to render: the scene's "render" block. Integrators read the fields they use.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <string>
+
+namespace photon {
+
+enum class IntegratorKind { Sppm, Path, Radiosity, PhotonMap };
+// Their names in scenes (render.integrator), on the command line and in the API, in the
+// enum's order.
+inline constexpr std::array<std::string_view, 4> kIntegratorNames{"sppm", "path", "radiosity", "photonmap"};
+inline std::string_view integratorName(IntegratorKind kind) { return kIntegratorNames[static_cast<size_t>(kind)]; }
+inline std::optional<IntegratorKind> integratorNamed(std::string_view name) {
+    for (size_t i = 0; i < kIntegratorNames.size(); ++i)
+        if (kIntegratorNames[i] == name) return IntegratorKind(i);
+    return std::nullopt;
+}
+enum class KernelKind { Uniform, Biweight, Cone };
+// Where SPPM takes direct light at visible points from.
+enum class DirectLighting { LightSampling, Photons };
+
+// Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
+// the form factors and the linear system are computed.
+struct RadiositySettings {
+    float patchSize = 0;          // target patch edge, scene units; 0: "auto", from the scene's size
+    int64_t maxPatches = 50000;   // patch sides (unknowns) at most; the patch size grows to fit
+    int raysPerPatch = 1024;      // form-factor rays cast from each patch side
+    int directSamples = 64;       // shadow rays per patch side for the first-shot direct light
+    float tolerance = 1e-4f;      // solver stops when max |change| / max radiosity is below it
+    int maxIterations = 1000;     // Gauss-Seidel sweeps at most
+};
+
+// The optional post filter (render.denoise; docs/denoise.md): a bilateral filter of the
+// snapshot, guided by first-hit albedo and normal buffers. It never changes the render's
+// state, so it is not part of a checkpoint's fingerprint.
+struct DenoiseSettings {
+    bool enabled = false;
+    float sigmaSpatial = 1.5f;   // pixels
+    float sigmaRange = 1.0f;     // on the difference of log colours
+    bool guide = true;           // weigh by the albedo and normal buffers too
+    float sigmaAlbedo = 0.1f;    // on the albedo difference
+    float sigmaNormal = 0.2f;    // on the (averaged) normal difference
+    int featureSamples = 4;      // jittered rays per pixel for the guide buffers
+};
+
+// Two-pass photon mapping (Jensen 1996): how many photons build each map and how each
+// radiance estimate looks them up.
+struct PhotonMapSettings {
+    int64_t globalPhotons = 200000;   // photons emitted to build the global map
+    int64_t causticPhotons = 200000;  // photons emitted to build the caustic map
+    int globalNearest = 100;          // k: photons per global-map estimate
+    int causticNearest = 50;          // k: photons per caustic-map estimate
+    float globalMaxRadius = 0;        // 0: "auto", a tenth of the scene's bounding-sphere radius
+    float causticMaxRadius = 0;       // 0: "auto", a fortieth of the scene's bounding-sphere radius
+    int gatherRays = 64;              // final-gather rays per camera hit; 0: global map read directly
+    bool precomputedIrradiance = true;  // gather rays read irradiance precomputed at photons (Christensen 1999)
+};
+
+struct RenderSettings {
+    IntegratorKind integrator = IntegratorKind::Sppm;
+    int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
+    int64_t photonsPerPass = 200000;
+    double timeLimitSeconds = 0;      // 0: no limit; otherwise stop after the pass that crosses it
+    float initialRadius = 0;          // 0: "auto", from each pixel's footprint
+    // With "auto": photons one pass is to put in a disc (docs/sppm.md, "The auto radius").
+    float autoRadiusPhotons = 8;
+    float alpha = 2.0f / 3.0f;        // fraction of new photons kept per pass (Hachisuka & Jensen 2009)
+    int maxDepth = 8;                 // path vertices after the camera or light
+    uint64_t seed = 1;
+    KernelKind kernel = KernelKind::Uniform;
+    float exposure = 0;               // stops, applied when tone mapping to PNG
+    DirectLighting direct = DirectLighting::LightSampling;
+    bool projectionMaps = true;       // emit photons only toward geometry (Jensen 2001, 5.1.3)
+    PhotonMapSettings photonMap;
+    RadiositySettings radiosity;
+    DenoiseSettings denoise;
+};
+
+// Hands `visit` every setting that changes what a render's state becomes, in a fixed
+// order: the one list a fingerprint of the settings (a checkpoint's key) is made from, kept
+// beside the structs so that a new setting is added to it where it is declared. Left out:
+// passes and the time limit (how far a render goes, not what it computes), and exposure and
+// denoise (applied to snapshots, never to the state).
+template <class Visit>
+void visitStateSettings(const RenderSettings& s, Visit&& visit) {
+    visit(s.integrator), visit(s.photonsPerPass), visit(s.initialRadius), visit(s.autoRadiusPhotons);
+    visit(s.alpha), visit(s.maxDepth), visit(s.seed), visit(s.kernel), visit(s.direct), visit(s.projectionMaps);
+    const PhotonMapSettings& p = s.photonMap;
+    visit(p.globalPhotons), visit(p.causticPhotons), visit(p.globalNearest), visit(p.causticNearest);
+    visit(p.globalMaxRadius), visit(p.causticMaxRadius), visit(p.gatherRays), visit(p.precomputedIrradiance);
+    const RadiositySettings& r = s.radiosity;
+    visit(r.patchSize), visit(r.maxPatches), visit(r.raysPerPatch), visit(r.directSamples), visit(r.tolerance);
+    visit(r.maxIterations);
+}
+
+}  // namespace photon

@@ -1,0 +1,53 @@
+#include "integrators/common/photon_emitter.h"
+#include "scene/scene.h"
+
+namespace photon {
+
+PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps, PhotonTargets targets) : scene_(scene) {
+    const LightSampler& lights = scene.lights();
+    maps_.resize(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) {
+        float probability = lights.probability(i);
+        fluxScale_.push_back(probability > 0 ? 1.0f / (probability * lights.totalAveragePower()) : 0.0f);
+    }
+    if (projectionMaps) {
+        const SceneDescription& d = scene.description();
+        std::vector<BoundingSphere> objects = shapeBoundingSpheres(d.shapes, [&](const ShapeDescription& s) {
+            return targets == PhotonTargets::AllShapes || (d.materials[s.material]->lobes() & kDeltaLobe) != 0;
+        });
+        for (size_t i = 0; i < lights.size(); ++i) maps_[i] = ProjectionMap::build(lights.light(i), objects);
+    }
+    for (size_t i = 0; i < lights.size(); ++i) {
+        laneTriangles_.push_back(maps_[i] ? nullptr : lights.light(i).emissionTriangles());
+        laneFlux_.push_back(lights.light(i).power() * fluxScale_[i]);
+    }
+}
+
+std::optional<EmittedPhoton> PhotonEmitter::emit(Rng& rng) const {
+    LightSampler::Pick pick = scene_.lights().pick(rng.uniform());
+    if (!pick.light) {
+        for (int i = 0; i < 4; ++i) rng.uniform();
+        return std::nullopt;
+    }
+    return emitFrom(pick.index, rng);
+}
+
+std::optional<EmittedPhoton> PhotonEmitter::emitFrom(size_t light, Rng& rng) const {
+    Vec2 uPos{rng.uniform(), rng.uniform()}, uDir{rng.uniform(), rng.uniform()};
+    std::optional<PhotonEmission> e;
+    if (const ProjectionMap* map = projectionMap(light)) {
+        // Point lights use only a direction and parallel lights only a position: the pair
+        // they leave unused picks the cell, as one 48-bit number (cells are many and small).
+        bool point = map->emitsFromPoint();
+        Vec2 uCell = point ? uPos : uDir;
+        e = map->emit(static_cast<double>(uCell.x) + static_cast<double>(uCell.y) * 0x1p-24, point ? uDir : uPos);
+    } else {
+        e = scene_.lights().light(light).emitPhoton(uPos, uDir);
+    }
+    if (!e) return std::nullopt;
+    Color beta = e->flux * fluxScale_[light];
+    Ray ray = isBlack(e->normal) ? Ray{e->origin, e->direction} : spawnRay(e->origin, e->normal, e->direction);
+    return EmittedPhoton{ray, beta};
+}
+
+}  // namespace photon

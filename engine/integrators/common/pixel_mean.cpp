@@ -1,0 +1,62 @@
+#include "integrators/common/pixel_mean.h"
+#include <chrono>
+#include "integrators/common/checkpoint.h"
+#include "integrators/common/pixel_loop.h"
+
+namespace photon {
+
+PixelMeanIntegrator::PixelMeanIntegrator(std::shared_ptr<const Scene> scene)
+    : scene_(std::move(scene)), width_(scene_->camera().width()), height_(scene_->camera().height()),
+      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()) {}
+
+bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
+    stats_ = PassStats{};
+    if (!preparePass(cancel)) return false;
+    const RenderSettings& s = scene_->settings();
+    auto start = std::chrono::steady_clock::now();
+    const RngStream stream(s.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
+    forEachPixel(width_, height_, stream, cancel, [&](int x, int y, size_t index, Rng& rng) {
+        Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(), static_cast<float>(y) + rng.uniform(),
+                                               {rng.uniform(), rng.uniform()});
+        pass_[index] = radiance(ray, rng);
+    });
+    if (cancel.cancelled()) return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (size_t i = 0; i < sum_.size(); ++i) sum_[i] += pass_[i];
+    ++passes_;
+    stats_.cameraRays = static_cast<int64_t>(sum_.size());
+    stats_.cameraMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return true;
+}
+
+Image PixelMeanIntegrator::snapshot() const {
+    Image image(width_, height_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (passes_ == 0) return image;
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x)
+            image.set(x, y, sum_[static_cast<size_t>(y) * width_ + x] / static_cast<float>(passes_));
+    return image;
+}
+
+void PixelMeanIntegrator::saveState(std::ostream& out) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    writeCheckpointHeader(out, checkpointKey(scene_->settings(), width_, height_));
+    writeRaw(out, &passes_, 1);
+    writeRaw(out, sum_.data(), sum_.size());
+}
+
+void PixelMeanIntegrator::restoreState(std::istream& in) {
+    readCheckpointHeader(in, checkpointKey(scene_->settings(), width_, height_));
+    int passes = readPassCount(in);
+    std::vector<Color> sum(sum_.size());
+    readRaw(in, sum.data(), sum.size());
+    for (Color c : sum)
+        if (!isFiniteNonNegative(c)) throw CheckpointError("checkpoint: invalid pixel sum");
+    requireEndOfCheckpoint(in);
+    std::lock_guard<std::mutex> lock(mutex_);
+    passes_ = passes;
+    sum_ = std::move(sum);
+}
+
+}  // namespace photon

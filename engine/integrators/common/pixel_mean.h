@@ -1,0 +1,42 @@
+// Integrators whose image is the running mean of one independent radiance sample per
+// pixel per pass (the path tracer, radiosity's camera pass): the pass loop, snapshot and
+// checkpoint of per-pixel sums live here once.
+#pragma once
+#include <mutex>
+#include <vector>
+#include "math/rng.h"
+#include "scene/scene.h"
+#include "integrators/integrator.h"
+
+namespace photon {
+
+class PixelMeanIntegrator : public Integrator {
+public:
+    bool renderPass(const CancelToken& cancel) override;
+    Image snapshot() const override;
+    const PassStats& lastPassStats() const override { return stats_; }
+    int passesDone() const override { return passes_; }
+    size_t bytesPerPixel() const override { return 2 * sizeof(Color); }
+    // The pixel sums and pass count: each pass's samples are keyed by pass and pixel, so
+    // that is the whole state.
+    void saveState(std::ostream& out) const override;
+    void restoreState(std::istream& in) override;
+
+protected:
+    explicit PixelMeanIntegrator(std::shared_ptr<const Scene> scene);
+    // Work before a pass's camera rays (e.g. a solve on the first pass); false if cancelled.
+    virtual bool preparePass(const CancelToken& cancel) { return true; }
+    // Radiance arriving along a camera ray; rng is the pixel's stream for this pass.
+    virtual Color radiance(const Ray& ray, Rng& rng) const = 0;
+
+    std::shared_ptr<const Scene> scene_;
+    PassStats stats_;
+
+private:
+    int width_, height_;
+    std::vector<Color> sum_, pass_;
+    int passes_ = 0;
+    mutable std::mutex mutex_;
+};
+
+}  // namespace photon

@@ -1,0 +1,54 @@
+// Unidirectional path tracer with next-event estimation: the independent reference the
+// photon mappers are tested against. One sample per pixel per pass.
+#include "integrators/common/direct_lighting.h"
+#include "integrators/path/path.h"
+#include "integrators/common/pixel_mean.h"
+
+namespace photon {
+
+namespace {
+
+class PathIntegrator final : public PixelMeanIntegrator {
+public:
+    explicit PathIntegrator(std::shared_ptr<const Scene> scene) : PixelMeanIntegrator(std::move(scene)) {}
+
+private:
+    Color radiance(const Ray& ray, Rng& rng) const override {
+        return traceRadiance(*scene_, ray, rng, scene_->settings().maxDepth);
+    }
+};
+
+}  // namespace
+
+Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
+    Color L(0.0f), beta(1.0f);
+    bool afterDelta = true;  // emission found by shadow rays is not counted twice
+    for (int depth = 0; depth < maxDepth; ++depth) {
+        SurfaceHit hit;
+        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, L)) break;
+        Vec3 wo = -ray.d;
+        ShadingPoint sp = makeShadingPoint(scene, hit, wo);
+        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng);
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.tint,
+                                                          TransportMode::Radiance);
+        if (!s) break;
+        beta *= s->weight;
+        afterDelta = s->delta;
+        // Russian roulette after a few bounces, on the throughput's largest channel.
+        if (depth >= 3) {
+            float q = std::min(1.0f, maxComponent(beta));
+            if (rng.uniform() >= q) break;
+            beta /= q;
+        }
+        ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+    }
+    return L;
+}
+
+std::unique_ptr<Integrator> makePathIntegrator(std::shared_ptr<const Scene> scene) {
+    return std::make_unique<PathIntegrator>(std::move(scene));
+}
+
+}  // namespace photon

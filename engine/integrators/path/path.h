@@ -1,0 +1,14 @@
+// The reference path tracer.
+#pragma once
+#include "math/rng.h"
+#include "scene/scene.h"
+#include "integrators/integrator.h"
+
+namespace photon {
+
+// Radiance along a camera ray: emission after delta bounces, direct light by shadow rays
+// at every other vertex, Russian roulette after three bounces.
+Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth);
+std::unique_ptr<Integrator> makePathIntegrator(std::shared_ptr<const Scene> scene);
+
+}  // namespace photon

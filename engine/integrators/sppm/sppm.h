@@ -1,0 +1,108 @@
+// Stochastic progressive photon mapping (Hachisuka & Jensen 2009), with the radius
+// schedule of Knaus & Zwicker 2011's probabilistic formulation. Each pass: a camera pass
+// finds one visible point per pixel, a hash grid is built over them, photons are traced
+// and splatted into the visible points around their hits, and per-pixel statistics are
+// updated. Photons are never stored, so memory does not grow with their number.
+#pragma once
+#include <mutex>
+#include <vector>
+#include "accel/hash_grid.h"
+#include "integrators/common/photon_emitter.h"
+#include "math/octahedral.h"
+#include "math/rng.h"
+#include "scene/scene.h"
+#include "integrators/common/shading.h"
+#include "integrators/integrator.h"
+
+namespace photon {
+
+class SppmIntegrator final : public Integrator {
+public:
+    explicit SppmIntegrator(std::shared_ptr<const Scene> scene);
+
+    bool renderPass(const CancelToken& cancel) override;
+    Image snapshot() const override;
+    const PassStats& lastPassStats() const override { return stats_; }
+    int passesDone() const override { return passes_; }
+    size_t bytesPerPixel() const override;
+    void saveState(std::ostream& out) const override;
+    void restoreState(std::istream& in) override;
+
+    // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
+    struct PixelState {
+        Color directSum;  // sum over passes of direct radiance at the camera path
+        Color tau;        // flux accumulated within the current radius
+        float n = 0;      // photon count N after the alpha reduction
+        float r2 = 0;     // squared gather radius; 0 until the pixel first sees a surface
+    };
+    const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
+    // Photons gathered by each pixel in the last pass (M in the paper), for tests.
+    uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
+
+private:
+    // The first non-specular vertex of a pixel's camera path in this pass. Its position
+    // and radius live apart (GatherDisc) because photons test many of those for every
+    // one they add to: a compact array keeps that test in cache.
+    struct GatherDisc {
+        Vec3 p;
+        float r2 = 0;  // squared gather radius for this pass (0: no visible point)
+    };
+    // Everything a photon needs once it is inside the disc, and what it adds to, in one
+    // cache line: one memory access per accepted photon.
+    struct alignas(64) VisiblePoint {
+        OctahedralVector n;        // shading normal
+        OctahedralVector woLocal;  // outgoing direction in the frame of n
+        // Camera path throughput up to here; for a Lambertian point already multiplied by
+        // its f = tint / pi, which then needs no eval() per photon.
+        Color beta;
+        Color tint;                // material colour at the hit
+        uint32_t material : 24 = 0;
+        uint32_t lobes : 7 = kAllLobes;  // the material's lobes photons are gathered through
+        uint32_t lambertian : 1 = 0;
+        uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
+        uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
+    };
+
+    // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
+    // (photons start with a mean flux of 1), so sums are exact integers whatever the order
+    // threads add them in, and the image is bit-identical for any thread count.
+    static constexpr double kFluxScale = 4294967296.0;
+
+    void cameraPass(const CancelToken& cancel);
+    void tracePixel(size_t index, Rng& rng);
+    float autoRadius(float pathLength) const;
+    void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
+    void buildGrid();
+    void photonPass(const CancelToken& cancel);
+    struct PhotonCounters {
+        int64_t rays = 0, segments = 0, candidates = 0, accepted = 0;
+    };
+    // A photon's arrival on a non-delta surface, waiting to be added to visible points.
+    struct PhotonHit {
+        Vec3 p, n, wi;  // position, shading normal, direction back toward the photon's origin
+        Color flux;
+    };
+    // Photon hits reach their visible points through a pipeline of batches, so that the
+    // memory each step needs (grid bucket, entries, discs, visible points) is fetched well
+    // before it is used (sppm_gather_pipeline.h).
+    class GatherPipeline;
+    class GatheringSink;
+    void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
+    void updateStatistics();
+
+    std::shared_ptr<const Scene> scene_;
+    const RenderSettings& settings_;
+    PhotonEmitter emitter_;
+    int width_, height_;
+    int passes_ = 0;
+    PassStats stats_;
+
+    std::vector<PixelState> pixels_;
+    std::vector<GatherDisc> discs_;
+    std::vector<VisiblePoint> visible_;
+    std::vector<Color> passDirect_;      // direct light found by this pass's camera paths
+    HashGrid grid_;
+    mutable std::mutex stateMutex_;      // guards pixels_ and passes_ between update and snapshot
+};
+
+}  // namespace photon

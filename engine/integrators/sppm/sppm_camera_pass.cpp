@@ -1,0 +1,101 @@
+// SPPM camera pass: one jittered path per pixel, followed through delta bounces to the
+// first vertex with a diffuse lobe, where the visible point is stored. Direct light is
+// gathered on the way by shadow rays (or left to photons, per render.direct).
+#include "integrators/common/direct_lighting.h"
+#include "integrators/common/pixel_loop.h"
+#include "integrators/sppm/sppm.h"
+
+namespace photon {
+
+void SppmIntegrator::cameraPass(const CancelToken& cancel) {
+    const RngStream stream(settings_.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
+    forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) { tracePixel(index, rng); });
+    stats_.cameraRays = static_cast<int64_t>(pixels_.size());
+}
+
+// Starting radius from the pixel's footprint at its first visible point: the footprint
+// grows with the distance travelled, and is widened so that a pass's photons, spread over
+// the image, put render.auto_radius_photons (8 unless set) in each disc: photons spread
+// evenly over P pixels put k in a disc of pi r^2 pixels when r = sqrt(k P / (pi photons)).
+float SppmIntegrator::autoRadius(float pathLength) const {
+    float pixels = static_cast<float>(width_) * static_cast<float>(height_);
+    float discPixels =
+        std::sqrt(settings_.autoRadiusPhotons * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
+    return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
+}
+
+void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
+    const Scene& scene = *scene_;
+    const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
+    discs_[index] = GatherDisc{};
+    visible_[index] = VisiblePoint{};
+    Color direct(0.0f), beta(1.0f);
+    float px = static_cast<float>(index % width_) + rng.uniform();
+    float py = static_cast<float>(index / width_) + rng.uniform();
+    Ray ray = scene.camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
+    bool afterDelta = true;  // emission is counted only where no shadow ray could have found it
+    float pathLength = 0;
+    for (int depth = 0; depth < settings_.maxDepth; ++depth) {
+        SurfaceHit hit;
+        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, direct)) break;
+        pathLength += hit.t;
+        Vec3 wo = -ray.d;
+        ShadingPoint sp = makeShadingPoint(scene, hit, wo);
+        const Material& m = *sp.material;
+        // The visible point goes on the first surface with a diffuse lobe (or any non-delta
+        // one at the last vertex). A material with other lobes beside the diffuse one
+        // (plastic's coat) stops on the diffuse lobe with probability pd and otherwise
+        // follows the others by sampling, so photons are never gathered through a sharp
+        // highlight, where they would show as fireflies.
+        const bool lastVertex = depth == settings_.maxDepth - 1;
+        const bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && lastVertex);
+        const unsigned others = m.lobes() & ~kDiffuseLobe;
+        const bool splits = m.hasDiffuse() && others && !lastVertex;
+        if (!m.isDeltaOnly() && (directBySampling || !storesHere))
+            direct += beta * sampleDirectLight(scene, sp, wo, rng);
+        else if (splits)  // photons bring direct light through the diffuse lobe only
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, others);
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        Vec3 woLocal = sp.frame.toLocal(wo);
+        if (storesHere) {
+            float pd = splits ? m.diffuseShare(woLocal, sp.tint) : 1.0f;
+            if (uLobe >= pd) {
+                std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.tint, TransportMode::Radiance, others);
+                if (!s) break;
+                beta *= s->weight / (1.0f - pd);
+                afterDelta = s->delta;
+                ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+                continue;
+            }
+            storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
+            break;
+        }
+        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
+        if (!s) break;
+        beta *= s->weight;
+        afterDelta = s->delta;
+        ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+    }
+    passDirect_[index] = direct;
+}
+
+void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
+                                       float pathLength) {
+    OctahedralVector n(sp.hit.ns);
+    Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
+    // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
+    float r2 = pixels_[index].r2;
+    if (r2 == 0) {
+        float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
+        r2 = r * r;
+    }
+    discs_[index] = GatherDisc{sp.hit.p, r2};
+    Vec3 woLocal = frame.toLocal(wo);
+    // Seen from below its (quantised) normal a surface reflects nothing: leave that to eval().
+    const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
+    visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.tint * kInvPi : beta,
+                                   sp.tint, scene_->materialIndex(sp.hit), lobes, lambertian};
+}
+
+}  // namespace photon

@@ -1,0 +1,62 @@
+// SPPM photon pass: photons leave the lights in proportion to power, bounce by BSDF
+// sampling with Russian roulette, and at every non-delta hit add their flux to the
+// visible points whose gather disc holds the hit.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <atomic>
+#include "integrators/common/photon_paths.h"
+#include "integrators/common/shading.h"
+#include "integrators/sppm/sppm_gather_pipeline.h"
+
+namespace photon {
+
+namespace {
+constexpr int64_t kPhotonsPerChunk = 1024;
+
+}  // namespace
+
+// Photon arrivals go into the gather pipeline.
+class SppmIntegrator::GatheringSink final : public PhotonArrivalSink {
+public:
+    GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters) : pipeline_(sppm, counters) {}
+    void flush() { pipeline_.flush(); }
+    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux}); }
+
+private:
+    GatherPipeline pipeline_;
+};
+
+void SppmIntegrator::photonPass(const CancelToken& cancel) {
+    const int64_t total = settings_.photonsPerPass;
+    const int64_t chunks = (total + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
+    PhotonCounters counters = tbb::parallel_reduce(
+        tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
+        [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
+            PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passes_), settings_.maxDepth};
+            // Direct light may come from light sampling in the camera pass instead.
+            paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
+            PhotonPathCounters pathCounters;
+            GatheringSink sink(*this, acc);
+            for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)
+                tracePhotonPaths(*scene_, emitter_, paths, c * kPhotonsPerChunk,
+                                 std::min(total, (c + 1) * kPhotonsPerChunk), sink, pathCounters);
+            sink.flush();
+            acc.rays += pathCounters.rays;
+            acc.segments += pathCounters.segments;
+            return acc;
+        },
+        [](PhotonCounters a, const PhotonCounters& b) {
+            a.rays += b.rays;
+            a.segments += b.segments;
+            a.candidates += b.candidates;
+            a.accepted += b.accepted;
+            return a;
+        });
+    stats_.photons = total;
+    stats_.photonRays = counters.rays;
+    stats_.photonSegments = counters.segments;
+    stats_.gatherCandidates = counters.candidates;
+    stats_.gatherHits = counters.accepted;
+}
+
+}  // namespace photon

@@ -1,0 +1,18 @@
+#include <photon/pending_image.h>
+#include "post/denoiser.h"
+
+namespace photon {
+
+PendingImage::PendingImage(Image raw, std::shared_ptr<const Denoiser> denoiser, float exposure)
+    : raw_(std::move(raw)), denoiser_(std::move(denoiser)), exposure_(exposure) {}
+
+PendingImage::~PendingImage() = default;
+
+const LayeredImage& PendingImage::layers() const {
+    std::call_once(once_, [&] {
+        layers_ = denoiser_ ? denoiser_->layers(std::move(raw_)) : LayeredImage{std::move(raw_), {}};
+    });
+    return layers_;
+}
+
+}  // namespace photon

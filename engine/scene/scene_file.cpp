@@ -1,0 +1,29 @@
+#include <photon/scene_file.h>
+#include "scene/scene_loader.h"
+
+namespace photon {
+
+SceneFile SceneFile::parseJson(const std::string& text, const std::filesystem::path& baseDir) {
+    return SceneFile(loadSceneJson(text, baseDir));
+}
+SceneFile SceneFile::read(const std::filesystem::path& file) { return SceneFile(loadSceneFile(file)); }
+
+SceneFile::SceneFile(SceneDescription description)
+    : description_(std::make_unique<SceneDescription>(std::move(description))) {}
+SceneFile::SceneFile(SceneFile&&) noexcept = default;
+SceneFile& SceneFile::operator=(SceneFile&&) noexcept = default;
+SceneFile::~SceneFile() = default;
+
+RenderSettings& SceneFile::render() { return description_->render; }
+const RenderSettings& SceneFile::render() const { return description_->render; }
+int SceneFile::width() const { return description_->camera.width; }
+int SceneFile::height() const { return description_->camera.height; }
+
+int64_t SceneFile::triangleCount() const {
+    int64_t total = 0;
+    for (const ShapeDescription& shape : description_->shapes)
+        if (shape.kind == ShapeDescription::Kind::Mesh) total += int64_t(shape.mesh.triangleCount());
+    return total;
+}
+
+}  // namespace photon

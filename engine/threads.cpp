@@ -1,0 +1,15 @@
+#include <photon/threads.h>
+#include <tbb/global_control.h>
+
+namespace photon {
+
+struct ThreadLimit::Control {
+    tbb::global_control control;
+};
+
+ThreadLimit::ThreadLimit(size_t threads)
+    : control_(new Control{tbb::global_control(tbb::global_control::max_allowed_parallelism, threads)}) {}
+
+ThreadLimit::~ThreadLimit() = default;
+
+}  // namespace photon
