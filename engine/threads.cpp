@@ -12,4 +12,6 @@ ThreadLimit::ThreadLimit(size_t threads)
 
 ThreadLimit::~ThreadLimit() = default;
 
+size_t ThreadLimit::active() { return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism); }
+
 }  // namespace photon

@@ -8,7 +8,6 @@
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
 #include <sys/resource.h>
 #include <sys/wait.h>
-#include <tbb/global_control.h>
 #include <unistd.h>
 #include <algorithm>
 #include <cstdio>
@@ -20,9 +19,11 @@
 #include "integrator_comparison.h"
 #include "projection_misses.h"
 #include <photon/render.h>
+#include <photon/threads.h>
 #include "integrators/integrator.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
+#include "cli/option_checks.h"
 
 namespace {
 
@@ -39,25 +40,23 @@ struct Options {
     double referenceSeconds = 0;  // 0: 10x compareSeconds
 };
 
-Options parse(int argc, char** argv) {
-    Options o;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        auto next = [&] {
-            if (i + 1 >= argc) throw std::invalid_argument(a + ": missing value");
-            return std::string(argv[++i]);
-        };
-        if (a == "--scene") o.scene = next();
-        else if (a == "--passes") o.passes = std::stoi(next());
-        else if (a == "--photons-per-pass") o.photons = std::stoll(next());
-        else if (a == "--threads") o.threads = std::stoi(next());
-        else if (a == "--no-rss-check") o.rssCheck = false;
-        else if (a == "--projection-scene") o.projectionScene = next();
-        else if (a == "--compare") o.compareSeconds = std::stod(next());
-        else if (a == "--reference-seconds") o.referenceSeconds = std::stod(next());
-        else throw std::invalid_argument("unknown option " + a);
-    }
-    return o;
+void declareOptions(CLI::App& app, Options& o) {
+    using photon::cli::integerIn;
+    app.add_option("--scene", o.scene, "the scene to time")->capture_default_str();
+    app.add_option("--passes", o.passes, "passes instead of the scene's (at least 2: the first is not timed)")
+        ->type_name("N")
+        ->check(integerIn(2, 1000000));
+    app.add_option("--photons-per-pass", o.photons, "photons per pass instead of the scene's")
+        ->type_name("N")
+        ->check(integerIn(1, 100000000));
+    app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
+    app.add_flag("--no-rss-check", [&o](int64_t) { o.rssCheck = false; }, "skip the peak-memory children");
+    app.add_option("--projection-scene", o.projectionScene, "the scene for projection-map misses")
+        ->capture_default_str();
+    app.add_option("--compare", o.compareSeconds, "compare the integrators at this many seconds each instead")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--reference-seconds", o.referenceSeconds, "the SPPM reference's seconds (default 10x --compare)")
+        ->check(CLI::PositiveNumber);
 }
 
 long peakRssKiB() {
@@ -168,10 +167,14 @@ long childPeakRssKiB(const Options& o, int64_t photons) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App app("SPPM throughput against raw Embree, memory, projection-map misses; or integrators at equal time.",
+                 "photon-bench");
+    Options o;
+    declareOptions(app, o);
+    if (int exit = photon::cli::parseCommandLine(app, argc, argv); exit >= 0) return exit;
     try {
-        Options o = parse(argc, argv);
-        std::optional<tbb::global_control> limit;
-        if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+        std::optional<photon::ThreadLimit> limit;
+        if (o.threads > 0) limit.emplace(size_t(o.threads));
         if (o.compareSeconds > 0) {
             double reference = o.referenceSeconds > 0 ? o.referenceSeconds : 10 * o.compareSeconds;
             std::cout << photon::bench::compareIntegrators(o.scene, o.compareSeconds, reference).dump(2) << std::endl;
@@ -179,7 +182,7 @@ int main(int argc, char** argv) {
         }
         json out;
         out["scene"] = o.scene;
-        out["threads"] = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+        out["threads"] = photon::ThreadLimit::active();
         if (o.rssCheck) {
             // Children first, so they do not inherit this process's memory.
             int64_t base = loadScene(o, o.photons)->settings().photonsPerPass;

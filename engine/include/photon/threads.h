@@ -13,6 +13,9 @@ public:
     ThreadLimit(const ThreadLimit&) = delete;
     ThreadLimit& operator=(const ThreadLimit&) = delete;
 
+    // The threads the engine's parallel loops may use now.
+    static size_t active();
+
 private:
     struct Control;
     std::unique_ptr<Control> control_;
