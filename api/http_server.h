@@ -26,6 +26,8 @@ public:
     // Serves until stop(); blocks.
     bool listen() { return server_.listen_after_bind(); }
     void stop() { server_.stop(); }
+    // See StreamSlots::waitUntilWritten.
+    bool waitForStreams(std::chrono::milliseconds timeout) { return streams_.waitUntilWritten(timeout); }
     bool running() const { return server_.is_running(); }
 
 private:

@@ -88,7 +88,8 @@ void jobEvents(RouteContext& ctx, const httplib::Request& req, httplib::Response
     res.set_header("Cache-Control", "no-cache");
     res.set_header("X-Accel-Buffering", "no");  // nginx and friends: do not buffer the stream
     res.set_chunked_content_provider("text/event-stream",
-                                     guardedProvider([stream](httplib::DataSink& sink) { return stream->step(sink); }));
+                                     guardedProvider([stream](httplib::DataSink& sink) { return stream->step(sink); }),
+                                     ctx.streams.countWriting());
 }
 
 }  // namespace photon::api

@@ -108,7 +108,8 @@ void streamImages(RouteContext& ctx, const httplib::Request& req, httplib::Respo
         FrameStream{ctx.streams.acquire(), ctx.service, id, snap->seq, server::isFinished(snap->job.status)});
     res.set_header("Cache-Control", "no-cache");
     res.set_chunked_content_provider("multipart/x-mixed-replace; boundary=frame",
-                                     guardedProvider([stream](httplib::DataSink& sink) { return stream->step(sink); }));
+                                     guardedProvider([stream](httplib::DataSink& sink) { return stream->step(sink); }),
+                                     ctx.streams.countWriting());
 }
 
 }  // namespace photon::api

@@ -6,6 +6,8 @@
 #include <spdlog/spdlog.h>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <memory>
 #include <exception>
 
@@ -34,9 +36,21 @@ public:
     // throws ServiceError (Unavailable) when every slot is taken.
     std::shared_ptr<Slot> acquire();
 
+    // Streams whose responses are still being written, to the last chunk. A stream counts
+    // from this call until httplib calls the returned releaser, once the response is out
+    // (pass it to set_chunked_content_provider).
+    httplib::ContentProviderResourceReleaser countWriting();
+    // Waits until no stream is being written, at most `timeout`; false if some still are.
+    // Stopping the HTTP server cuts responses in flight, so the process stops it only once
+    // the streams it has told to end have ended.
+    bool waitUntilWritten(std::chrono::milliseconds timeout);
+
 private:
     std::atomic<int> used_{0};
     const int max_;
+    std::mutex writingMutex_;
+    std::condition_variable written_;
+    int writing_ = 0;
 };
 
 template <typename Step>

@@ -13,7 +13,6 @@
 #include "api/http_server.h"
 #include "api/routes.h"
 #include "app/options.h"
-#include "cli/option_checks.h"
 
 namespace {
 
@@ -66,6 +65,8 @@ int serve(const app::ServerOptions& options) {
         while (!stopped) {
             if (sigtimedwait(&set, nullptr, &poll) < 0) continue;
             service.events().shutdown();  // end event streams first: they hold HTTP threads
+            // ...and let them write their last chunk: stopping the server would cut it.
+            if (!http.waitForStreams(std::chrono::seconds(2))) spdlog::warn("streams still open at shutdown");
             // stop() is a no-op until the listen loop runs; a signal can come before that.
             while (!http.running() && !stopped) std::this_thread::sleep_for(std::chrono::milliseconds(10));
             http.stop();
@@ -82,10 +83,8 @@ int serve(const app::ServerOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App cli("The photon render service: REST API, job queue and the page.", "photon-server");
     app::ServerOptions options;
-    app::declareOptions(cli, options);
-    if (int exit = photon::cli::parseCommandLine(cli, argc, argv); exit >= 0) return exit;
+    if (int exit = app::parseCommandLine(argc, argv, options); exit >= 0) return exit;
     if (options.printRoutes) {
         printRoutes();
         return 0;

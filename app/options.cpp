@@ -3,6 +3,8 @@
 
 namespace photon::app {
 
+namespace {
+
 void declareOptions(CLI::App& app, ServerOptions& o) {
     using cli::integerIn;
     app.add_option("--host", o.host, "address to listen on")->capture_default_str();
@@ -30,6 +32,14 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
             ->group("Limits (a request over one is refused, naming it)")
             ->capture_default_str();
     }
+}
+
+}  // namespace
+
+int parseCommandLine(int argc, char** argv, ServerOptions& options) {
+    CLI::App app("The photon render service: REST API, job queue and the page.", "photon-server");
+    declareOptions(app, options);
+    return cli::parseCommandLine(app, argc, argv);
 }
 
 }  // namespace photon::app

@@ -4,10 +4,6 @@
 #include <string>
 #include "server/job_service.h"
 
-namespace CLI {
-class App;
-}
-
 namespace photon::app {
 
 struct ServerOptions {
@@ -21,7 +17,8 @@ struct ServerOptions {
     server::ServiceConfig service;
 };
 
-// Declares every option on `app`, writing into `options`.
-void declareOptions(CLI::App& app, ServerOptions& options);
+// Reads argv into `options`. Returns -1 to go on, or the code to exit with: 0 after --help,
+// 2 after printing what is wrong and the usage.
+int parseCommandLine(int argc, char** argv, ServerOptions& options);
 
 }  // namespace photon::app

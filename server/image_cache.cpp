@@ -44,14 +44,14 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
         auto it = s->encoded.find(format);
         if (it != s->encoded.end()) {
             const EncodedImage& last = it->second;
-            bool recent = std::chrono::steady_clock::now() - last.encodedAt < kMinEncodeInterval;
+            bool recent = now_() - last.encodedAt < kMinEncodeInterval;
             if (last.pass == s->pass || (freshness == Freshness::Throttled && recent)) return last;
         }
         image = s->image;
         fresh.pass = s->pass;
     }
     fresh.bytes = encode(*image, format);
-    fresh.encodedAt = std::chrono::steady_clock::now();
+    fresh.encodedAt = now_();
     std::lock_guard state(s->stateMutex);
     // Keyed by pass: if a newer pass arrived meanwhile, the lookup above will not match it.
     s->encoded[format] = fresh;

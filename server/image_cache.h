@@ -3,6 +3,7 @@
 // bytes. So encoding costs at most one PNG and one EXR per pass, however many clients poll.
 #pragma once
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -28,6 +29,10 @@ inline constexpr std::chrono::milliseconds kMinEncodeInterval{250};
 
 class ImageCache {
 public:
+    using Clock = std::function<std::chrono::steady_clock::time_point()>;
+    // `now` tells the time for the encoding interval (tests set the clock by hand).
+    explicit ImageCache(Clock now = std::chrono::steady_clock::now) : now_(std::move(now)) {}
+
     // The image after `pass` as the engine hands it out (its layers go into the EXR, the
     // PNG shows the main image; a post filter runs at the first encode, so only for passes
     // someone fetches); replaces the previous pass's image and encodings.
@@ -51,6 +56,7 @@ private:
     };
     std::shared_ptr<Slot> slot(const std::string& id) const;
 
+    Clock now_;
     mutable std::mutex mutex_;  // guards the map only, never held while encoding
     std::unordered_map<std::string, std::shared_ptr<Slot>> slots_;
 };

@@ -1,8 +1,12 @@
 // Jobs survive a restart: finished ones keep their records and images, queued ones run,
 // interrupted ones resume from their checkpoint.
-#include <atomic>
+#include <photon/render.h>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <future>
 #include <thread>
+#include <utility>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -56,20 +60,33 @@ TEST_F(RestartTest, StoppingEndsOpenStreamsPromptly) {
     startServer();
     std::string id = submitOk(longScene());
     waitForStatus(id, "running");
-    std::atomic<int> streamsEnded{0};
-    auto follow = [&](const std::string& path) {
-        client().Get(path.c_str(), [](const char*, size_t) { return true; });
-        ++streamsEnded;
+    // Each follower says when its stream's first bytes arrived, and how the stream ended.
+    struct Follower {
+        std::promise<void> connected;
+        bool endedByServer = false;
     };
-    std::thread events(follow, "/api/v1/jobs/" + id + "/events");
-    std::thread frames(follow, "/api/v1/jobs/" + id + "/stream");
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    auto follow = [&](const std::string& path, Follower& f) {
+        bool first = true;
+        httplib::Result result = client().Get(path.c_str(), [&](const char*, size_t) {
+            if (std::exchange(first, false)) f.connected.set_value();
+            return true;
+        });
+        // A stream the server ends is a whole chunked response: 200 and no transport error.
+        f.endedByServer = result && result->status == 200;
+    };
+    Follower events, frames;
+    std::future<void> eventsConnected = events.connected.get_future(), framesConnected = frames.connected.get_future();
+    std::thread eventThread(follow, "/api/v1/jobs/" + id + "/events", std::ref(events));
+    std::thread frameThread(follow, "/api/v1/jobs/" + id + "/stream", std::ref(frames));
+    EXPECT_EQ(eventsConnected.wait_for(std::chrono::seconds(30)), std::future_status::ready);
+    EXPECT_EQ(framesConnected.wait_for(std::chrono::seconds(30)), std::future_status::ready);
     auto start = std::chrono::steady_clock::now();
     EXPECT_EQ(stopServer(), 0);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
-    events.join();
-    frames.join();
-    EXPECT_EQ(streamsEnded, 2);
+    eventThread.join();
+    frameThread.join();
+    EXPECT_TRUE(events.endedByServer);
+    EXPECT_TRUE(frames.endedByServer);
 }
 
 TEST_F(RestartTest, AJobWhoseSceneVanishedFails) {
@@ -100,12 +117,27 @@ TEST_F(RestartTest, SecondServerOnTheSameDataDirectoryRefusesToStart) {
 namespace photon::test {
 namespace {
 
-// A job of `passes` passes of 200k photons at 32x32 (long enough to be killed in the
-// middle) is killed with kill -9 once it has a checkpoint; then the server starts again.
+// A job of 200k photons per pass at 32x32, with as many passes as take this machine about
+// six seconds (so that it is still running after its first checkpoint, written after a
+// second, however many cores render it), is killed with kill -9 once it has a checkpoint;
+// then the server starts again.
 class CrashTest : public ServerTest {
 protected:
+    static constexpr int64_t kPhotonsPerPass = 200000;
+
+    // Passes of this scene that take about `seconds` here, measured in process (at least 20).
+    static int passesLasting(double seconds) {
+        Renderer renderer(SceneFile::parseJson(smallScene(4, kPhotonsPerPass, 32).dump(), PHOTON_SOURCE_DIR));
+        CancelToken cancel;
+        renderer.renderPass(cancel);  // the first pass also builds caches
+        auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < 3; ++i) renderer.renderPass(cancel);
+        double pass = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 3;
+        return int(std::clamp(std::ceil(seconds / pass), 20.0, 100000.0));
+    }
+
     std::string killWithACheckpoint(int passes) {
-        scene_ = smallScene(passes, 200000, 32);
+        scene_ = smallScene(passes, kPhotonsPerPass, 32);
         startServer({"--checkpoint-seconds", "1"});
         std::string id = submitOk(scene_);
         checkpoint_ = dataDir() / "jobs" / id / "checkpoint.bin";
@@ -141,17 +173,19 @@ protected:
 };
 
 TEST_F(CrashTest, AKilledServerResumesTheJobFromItsLastCheckpoint) {
-    std::string id = killWithACheckpoint(200);
+    const int total = passesLasting(6);
+    std::string id = killWithACheckpoint(total);
     std::vector<int> passes = passesAfterRestart(id);
     ASSERT_FALSE(passes.empty());
     EXPECT_GT(passes.front(), 1) << "resumed from pass 0";
-    EXPECT_EQ(passes.back(), 200);
+    EXPECT_EQ(passes.back(), total);
     EXPECT_FALSE(std::filesystem::exists(checkpoint_));  // removed once the job is done
     expectTheImageOfAnUninterruptedRender(id);
 }
 
 TEST_F(CrashTest, ADamagedCheckpointIsDiscardedAndTheJobStartsOver) {
-    std::string id = killWithACheckpoint(100);
+    const int total = passesLasting(6);
+    std::string id = killWithACheckpoint(total);
     {  // one bit flipped in the middle of the pixel data, as a failing disk might
         const auto middle = static_cast<std::streamoff>(std::filesystem::file_size(checkpoint_) / 2);
         std::fstream file(checkpoint_, std::ios::in | std::ios::out | std::ios::binary);
@@ -164,7 +198,7 @@ TEST_F(CrashTest, ADamagedCheckpointIsDiscardedAndTheJobStartsOver) {
     std::vector<int> passes = passesAfterRestart(id);
     ASSERT_FALSE(passes.empty());
     EXPECT_EQ(passes.front(), 1) << "resumed from a damaged checkpoint";
-    EXPECT_EQ(passes.back(), 100);
+    EXPECT_EQ(passes.back(), total);
     expectTheImageOfAnUninterruptedRender(id);
 }
 

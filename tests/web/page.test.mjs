@@ -13,7 +13,7 @@
 
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { createInterface } from 'node:readline';
@@ -176,6 +176,34 @@ async function waitForStatus(id, status, timeout) {
   }
 }
 
+// Occupies the server's one render worker with a job that would run for hours, so that a job
+// submitted next waits in the queue until releaseWorker() cancels it: a test can then watch
+// that job from its first pass on, however fast the machine renders.
+async function occupyWorker() {
+  const scene = JSON.parse(readFileSync(join(REPO, 'scenes', 'cornell-box.json'), 'utf8'));
+  scene.camera.resolution = [16, 16];
+  scene.render = { ...scene.render, passes: 100000, photons_per_pass: 100000 };
+  const response = await fetch(new URL('api/v1/jobs', server.baseUrl), {
+    method: 'POST',
+    headers: { 'Content-Type': 'application/json' },
+    body: JSON.stringify(scene),
+  });
+  const text = await response.text();
+  assert.equal(response.status, 201, text);
+  const { id } = JSON.parse(text);
+  for (let waited = 0; ; waited += 50) {
+    const job = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+    if (job.status === 'running') return id;
+    assert.ok(waited < 30_000, `the blocking job did not start: ${JSON.stringify(job)}`);
+    await new Promise((r) => setTimeout(r, 50));
+  }
+}
+
+async function releaseWorker(id) {
+  const response = await fetch(new URL(`api/v1/jobs/${id}/cancel`, server.baseUrl), { method: 'POST' });
+  assert.ok(response.ok, `cancel of the blocking job: ${response.status}`);
+}
+
 async function submittedJobId() {
   await page.waitForFunction(() => /^Submitted job \S+\.$/.test(document.querySelector('#form-status').textContent));
   return /^Submitted job (\S+)\.$/.exec(await textOf('#form-status'))[1];
@@ -257,6 +285,20 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
     if (match && response.status() === 200) loadedPasses.add(match[1]);
   });
 
+  // The event streams the page has open: the job view must be following the job before
+  // its first pass, or a fast machine finishes it before the page connects.
+  await page.evaluate(() => {
+    window.__openEventStreams = 0;
+    const Native = window.EventSource;
+    window.EventSource = class extends Native {
+      constructor(...args) {
+        super(...args);
+        this.addEventListener('open', () => window.__openEventStreams++);
+      }
+    };
+  });
+  const blocker = await occupyWorker();
+
   await chooseExample('cornell-box');
   await page.fill('#passes', '4');
   await page.fill('#photons-per-pass', '20000');
@@ -264,6 +306,10 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await page.click('#submit-button');
   const id = await submittedJobId();
   assert.equal(await textOf('#job-id'), id, 'the job view opens the submitted job');
+  await page.waitForFunction(
+    () => document.querySelector('#job-status').textContent === 'queued' && window.__openEventStreams >= 1,
+  );
+  await releaseWorker(blocker);
 
   await page.waitForFunction(
     () => document.querySelector('#job-status').textContent === 'completed' && window.__imagePasses.length >= 2,
