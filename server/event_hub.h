@@ -52,6 +52,13 @@ public:
     // Wakes every waiter for good: stream connections end so the HTTP server can stop.
     void shutdown();
 
+    // Events kept per job: enough for any client that keeps up at all; older passes are only
+    // history.
+    static constexpr size_t kLogLength = 1024;
+    // Finished jobs keep their full log for a while (a client may still be catching up or
+    // reconnecting); beyond this many, a finished job keeps only its final event.
+    static constexpr size_t kFinishedLogsKept = 32;
+
 private:
     struct Channel {
         JobRecord job;
@@ -59,12 +66,6 @@ private:
         std::deque<JobEvent> log;
     };
     void retireLogs(const std::string& finishedId);
-
-    // Enough for any client that keeps up at all; older passes are only history.
-    static constexpr size_t kLogLength = 1024;
-    // Finished jobs keep their full log for a while (a client may still be catching up or
-    // reconnecting); beyond this many, a finished job keeps only its final event.
-    static constexpr size_t kFinishedLogsKept = 32;
 
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;

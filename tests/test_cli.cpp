@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <photon/image_io.h>
+#include <photon/render.h>
 #include "test_support.h"
 
 namespace photon {
@@ -46,6 +48,38 @@ TEST(Cli, RendersSceneToExrAndPng) {
     EXPECT_EQ(exr.height, 512);
     EXPECT_EQ(png.width, 512);
     EXPECT_GT(test::meanOver(exr, 200, 200, 312, 312).y, 0.0f);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, ANonSquareImageKeepsItsShapeAndItsSides) {
+    // The Cornell box at 48x24: red wall left, green wall right, the light at the top; the
+    // EXR the CLI writes equals the engine's render of the same scene.
+    auto dir = tempDir();
+    std::ifstream in(test::sourcePath("scenes/cornell-box.json"));
+    nlohmann::json scene = nlohmann::json::parse(in);
+    scene["camera"]["resolution"] = {48, 24};
+    scene["render"]["passes"] = 2;
+    scene["render"]["photons_per_pass"] = 20000;
+    std::ofstream(dir / "wide.json") << scene.dump();
+    CommandResult r = runRender((dir / "wide.json").string() + " -o " + (dir / "wide.exr").string() + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Image image = readImage(dir / "wide.exr");
+    ASSERT_EQ(image.width, 48);
+    ASSERT_EQ(image.height, 24);
+    Renderer renderer(SceneFile::parseJson(scene.dump(), test::sourcePath("scenes")));
+    CancelToken cancel;
+    renderer.run(cancel);
+    EXPECT_TRUE(image.rgb == renderer.snapshot().rgb);
+    Color left = test::meanOver(image, 0, 0, 24, 24), right = test::meanOver(image, 24, 0, 48, 24);
+    // The light is orange, so every half is redder than green; the red wall makes the left
+    // half redder than the right.
+    EXPECT_GT(left.x / left.y, 1.2f * right.x / right.y) << "red wall on the left, green on the right";
+    int brightestRow = 0;
+    float brightest = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 48; ++x)
+            if (float l = luminance(image.at(x, y)); l > brightest) brightest = l, brightestRow = y;
+    EXPECT_LT(brightestRow, 6) << "the light in the ceiling, at the top";
     std::filesystem::remove_all(dir);
 }
 

@@ -30,15 +30,13 @@ float analyticPixel(const Camera& camera, int x, int y) {
     return static_cast<float>(sum / (n * n));
 }
 
-Image render(DirectLighting direct, int passes, int64_t photons) {
+Image render(DirectLighting direct, int passes, int64_t photons, KernelKind kernel = KernelKind::Uniform) {
     SceneDescription d = test::pointLightPlane(kRho, kIntensity, kHeight, kResolution);
     d.render.direct = direct;
+    d.render.kernel = kernel;
     d.render.passes = passes;
     d.render.photonsPerPass = photons;
-    Renderer renderer(Scene::build(std::move(d)));
-    CancelToken cancel;
-    renderer.run(cancel);
-    return renderer.snapshot();
+    return test::renderImage(std::move(d));
 }
 
 // 8x8-pixel blocks at the centre, off centre and near the corners.
@@ -58,6 +56,17 @@ void expectBlocksMatch(const Image& image, float tolerance) {
 
 TEST(PointLightPlane, PhotonDensityEstimateMatchesAnalyticRadiance) {
     expectBlocksMatch(render(DirectLighting::Photons, 64, 100000), 0.03f);
+}
+
+// The biweight and cone kernels weigh photons by distance (photon_kernel.h): normalised
+// right, their estimates reach the same analytic radiance; a wrong constant would be off by
+// it everywhere, a wrong shape where the radiance curves.
+TEST(PointLightPlane, BiweightKernelEstimateMatchesAnalyticRadiance) {
+    expectBlocksMatch(render(DirectLighting::Photons, 64, 100000, KernelKind::Biweight), 0.03f);
+}
+
+TEST(PointLightPlane, ConeKernelEstimateMatchesAnalyticRadiance) {
+    expectBlocksMatch(render(DirectLighting::Photons, 64, 100000, KernelKind::Cone), 0.03f);
 }
 
 TEST(PointLightPlane, ShadowRaysMatchAnalyticRadiance) {

@@ -81,11 +81,13 @@ void filterRows(const Image& image, const Features& f, const std::vector<float>&
                 float r = 0, g = 0, b = 0, weights = 0;
                 const int x0 = std::max(0, x - radius), x1 = std::min(w - 1, x + radius);
                 for (int qy = std::max(0, y - radius); qy <= std::min(h - 1, y + radius); ++qy) {
-                    const float* sp = &spatial[(qy - y + radius) * side + radius - x];
+                    // The spatial weights' row for qy, read at column qx - x + radius (a pointer
+                    // offset to column x - radius would point before the vector: undefined).
+                    const float* sp = &spatial[(qy - y + radius) * side] + radius - x + x0;
                     const size_t row = static_cast<size_t>(qy) * w;
                     for (int qx = x0; qx <= x1; ++qx) {
                         const float* fq = &f.values[(row + qx) * K];
-                        float exponent = sp[qx];
+                        float exponent = sp[qx - x0];
                         for (int k = 0; k < K; ++k) exponent += (fq[k] - fp[k]) * (fq[k] - fp[k]);
                         // One exponential per tap for the product of all the Gaussians.
                         const float weight = expNegative(exponent);

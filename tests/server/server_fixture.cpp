@@ -1,6 +1,8 @@
 #include "server_fixture.h"
 #include <photon/render.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -56,6 +58,16 @@ json smallScene(int passes, int64_t photonsPerPass, int resolution) {
 }
 
 json longScene() { return smallScene(50000, 20000, 48); }
+
+int passesLasting(double seconds, int64_t photonsPerPass, int resolution) {
+    Renderer renderer(SceneFile::parseJson(smallScene(4, photonsPerPass, resolution).dump(), PHOTON_SOURCE_DIR));
+    CancelToken cancel;
+    renderer.renderPass(cancel);  // the first pass also builds caches
+    auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 3; ++i) renderer.renderPass(cancel);
+    double pass = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 3;
+    return int(std::clamp(std::ceil(seconds / pass), 20.0, 100000.0));
+}
 
 Image renderInProcess(const json& scene) {
     Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));

@@ -111,6 +111,37 @@ TEST_F(JobsTest, LiveEventsStartWithTheCurrentStateThenOnePerPass) {
     EXPECT_EQ(client().Get(("/api/v1/jobs/" + id + "/events").c_str(), {{"Last-Event-ID", "4"}})->status, 204);
 }
 
+TEST_F(JobsTest, LastEventIdResumesMidStream) {
+    startServer();
+    std::string id = submitOk(smallScene(5));
+    waitForStatus(id, "completed");
+    // A client that saw events up to id 2 (pass 2) gets the rest and nothing before.
+    std::vector<SseEvent> events = followEvents(id, {{"Last-Event-ID", "2"}});
+    ASSERT_EQ(events.size(), 4u);
+    for (int pass = 3; pass <= 5; ++pass) {
+        const SseEvent& e = events[size_t(pass - 3)];
+        EXPECT_EQ(e.type, "progress");
+        EXPECT_EQ(e.id, std::to_string(pass));
+        EXPECT_EQ(e.data["pass"], pass);
+    }
+    EXPECT_EQ(events[3].type, "done");
+    EXPECT_EQ(events[3].id, "6");
+}
+
+TEST_F(JobsTest, TheScenesTimeLimitEndsTheJobAfterThePassThatCrossesIt) {
+    startServer();
+    json scene = smallScene(100000, 20000, 16);
+    scene["render"]["time_limit"] = 0.5;
+    std::string id = submitOk(scene);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed"; }, std::chrono::seconds(60));
+    EXPECT_EQ(job["status"], "completed");
+    EXPECT_GE(job["elapsed_seconds"].get<double>(), 0.5);
+    EXPECT_GT(job["pass"].get<int>(), 0);
+    EXPECT_LT(job["pass"].get<int>(), 100000);
+    EXPECT_EQ(client().Get(("/api/v1/jobs/" + id + "/image").c_str())->get_header_value("X-Photon-Pass"),
+              std::to_string(job["pass"].get<int>()));
+}
+
 TEST_F(JobsTest, QueryParametersOverrideTheRenderBlock) {
     startServer({"--workers", "0"});
     httplib::Result r = submit(smallScene(), "?passes=5&photons_per_pass=1000&seed=42&priority=3");

@@ -1,8 +1,6 @@
 // Jobs survive a restart: finished ones keep their records and images, queued ones run,
 // interrupted ones resume from their checkpoint.
 #include <photon/render.h>
-#include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <future>
 #include <thread>
@@ -119,34 +117,42 @@ namespace {
 
 // A job of 200k photons per pass at 32x32, with as many passes as take this machine about
 // six seconds (so that it is still running after its first checkpoint, written after a
-// second, however many cores render it), is killed with kill -9 once it has a checkpoint;
-// then the server starts again.
+// second, however many cores render it), is interrupted past its third pass: killed with
+// kill -9 once it has a checkpoint, or stopped with SIGTERM (which saves one); then the
+// server starts again.
 class CrashTest : public ServerTest {
 protected:
     static constexpr int64_t kPhotonsPerPass = 200000;
 
-    // Passes of this scene that take about `seconds` here, measured in process (at least 20).
-    static int passesLasting(double seconds) {
-        Renderer renderer(SceneFile::parseJson(smallScene(4, kPhotonsPerPass, 32).dump(), PHOTON_SOURCE_DIR));
-        CancelToken cancel;
-        renderer.renderPass(cancel);  // the first pass also builds caches
-        auto start = std::chrono::steady_clock::now();
-        for (int i = 0; i < 3; ++i) renderer.renderPass(cancel);
-        double pass = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 3;
-        return int(std::clamp(std::ceil(seconds / pass), 20.0, 100000.0));
-    }
+    static int passesLasting(double seconds) { return test::passesLasting(seconds, kPhotonsPerPass, 32); }
 
     std::string killWithACheckpoint(int passes) {
+        std::string id = startAndWaitForPass3(passes, "1", true);
+        killServer();  // nothing is saved on the way out
+        return id;
+    }
+
+    // The job's checkpoint comes from the stop itself: periodic ones are an hour apart.
+    std::string stopGracefully(int passes) {
+        std::string id = startAndWaitForPass3(passes, "3600", false);
+        EXPECT_FALSE(std::filesystem::exists(checkpoint_));
+        EXPECT_EQ(stopServer(), 0);
+        EXPECT_TRUE(std::filesystem::exists(checkpoint_));
+        return id;
+    }
+
+    std::string startAndWaitForPass3(int passes, const std::string& checkpointSeconds, bool withCheckpoint) {
         scene_ = smallScene(passes, kPhotonsPerPass, 32);
-        startServer({"--checkpoint-seconds", "1"});
+        startServer({"--checkpoint-seconds", checkpointSeconds});
         std::string id = submitOk(scene_);
         checkpoint_ = dataDir() / "jobs" / id / "checkpoint.bin";
         json before = waitFor(
-            id, [&](const json& j) { return j["pass"].get<int>() >= 3 && std::filesystem::exists(checkpoint_); },
+            id,
+            [&](const json& j) {
+                return j["pass"].get<int>() >= 3 && (!withCheckpoint || std::filesystem::exists(checkpoint_));
+            },
             std::chrono::seconds(60));
-        EXPECT_TRUE(std::filesystem::exists(checkpoint_));
-        EXPECT_LT(before["pass"].get<int>(), passes) << "the job finished before it could be killed";
-        killServer();  // nothing is saved on the way out
+        EXPECT_LT(before["pass"].get<int>(), passes) << "the job finished before it could be interrupted";
         return id;
     }
 
@@ -180,6 +186,16 @@ TEST_F(CrashTest, AKilledServerResumesTheJobFromItsLastCheckpoint) {
     EXPECT_GT(passes.front(), 1) << "resumed from pass 0";
     EXPECT_EQ(passes.back(), total);
     EXPECT_FALSE(std::filesystem::exists(checkpoint_));  // removed once the job is done
+    expectTheImageOfAnUninterruptedRender(id);
+}
+
+TEST_F(CrashTest, AServerStoppedWithSigtermResumesTheJobPastItsFirstPass) {
+    const int total = passesLasting(6);
+    std::string id = stopGracefully(total);
+    std::vector<int> passes = passesAfterRestart(id);
+    ASSERT_FALSE(passes.empty());
+    EXPECT_GT(passes.front(), 3) << "did not resume from the checkpoint saved at the stop";
+    EXPECT_EQ(passes.back(), total);
     expectTheImageOfAnUninterruptedRender(id);
 }
 

@@ -41,15 +41,17 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
     return c;
 }
 
+Image renderImage(SceneDescription d) {
+    Renderer renderer(Scene::build(std::move(d)));
+    CancelToken cancel;
+    renderer.run(cancel);
+    return renderer.snapshot();
+}
+
 Image renderWithThreads(SceneDescription d, int threads) {
     Image image;
     tbb::task_arena arena(threads);
-    arena.execute([&] {
-        Renderer renderer(Scene::build(std::move(d)));
-        CancelToken cancel;
-        renderer.run(cancel);
-        image = renderer.snapshot();
-    });
+    arena.execute([&] { image = renderImage(std::move(d)); });
     return image;
 }
 

@@ -30,10 +30,12 @@ inline SceneDescription exampleScene(const std::string& name, int resolution, in
     return d;
 }
 
-// Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
-// Renders the scene's passes with at most `threads` oneTBB threads (determinism tests).
+// Renders all the scene's passes; the snapshot after the last.
+Image renderImage(SceneDescription d);
+// The same with at most `threads` oneTBB threads (determinism tests).
 Image renderWithThreads(SceneDescription d, int threads);
 
+// Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
 inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
     Color sum(0.0f);
     for (int y = y0; y < y1; ++y)

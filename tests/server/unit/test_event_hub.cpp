@@ -13,9 +13,8 @@ namespace {
 // Only a guard against a hang: every wait that uses it is expected to end at once.
 constexpr auto kGuard = 10s;
 
-// The hub's bounds (private constants in event_hub.h).
-constexpr size_t kLogLength = 1024;
-constexpr size_t kFinishedLogsKept = 32;
+constexpr size_t kLogLength = EventHub::kLogLength;
+constexpr size_t kFinishedLogsKept = EventHub::kFinishedLogsKept;
 
 JobRecord job(const std::string& id, JobStatus status = JobStatus::Running, int pass = 0) {
     JobRecord j;
