@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 #include "api/errors.h"
+#include "api/request_ranges.h"
 
 namespace photon::api {
 
@@ -48,6 +49,8 @@ const char* reasonFor(int status) {
         case 405: return "method not allowed";
         case 413: return "request body too large";
         case 414: return "request URI too long";
+        case 415: return "unsupported request body type";
+        case 421: return "misdirected request";
         case 503: return "server busy";
         default: return status >= 500 ? "internal server error" : "request failed";
     }
@@ -64,7 +67,10 @@ bool constantTimeEquals(const std::string& given, const std::string& expected) {
 }
 
 HttpServer::HttpServer(server::JobService& service, const HttpConfig& config)
-    : streams_(config.maxStreams), context_{service, streams_}, token_(config.token) {
+    : streams_(config.maxStreams),
+      context_{service, streams_},
+      origin_{"", 0, config.allowedHosts, config.allowedOrigins},
+      token_(config.token) {
     configure(config);
 }
 
@@ -85,6 +91,20 @@ void HttpServer::configure(const HttpConfig& config) {
     server_.new_task_queue = [] { return new LowPriorityThreadPool(kHttpThreads); };
     server_.set_payload_max_length(config.maxBodyBytes);
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+        // Where it comes from first: a forged or rebound request is refused with or without
+        // a token, before its body is read.
+        if (std::optional<Refusal> refusal = checkRequestOrigin(req, origin_)) {
+            sendError(res, refusal->status, refusal->message);
+            return httplib::Server::HandlerResponse::Handled;
+        }
+        // The one change made to a request: ranges it may not have are dropped, with the Range
+        // header itself (httplib would answer a file 206 for the header alone), before httplib
+        // builds them (the request is httplib's own, not const; the handler's view of it is).
+        auto& mutableRequest = const_cast<httplib::Request&>(req);
+        std::vector<std::pair<long, long>> kept =
+            rangesToHonour(req.path, {mutableRequest.ranges.begin(), mutableRequest.ranges.end()});
+        mutableRequest.ranges.assign(kept.begin(), kept.end());
+        if (kept.empty()) mutableRequest.headers.erase("Range");
         if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
         res.set_header("WWW-Authenticate", "Bearer");
         sendError(res, 401, reasonFor(401));
@@ -113,8 +133,10 @@ void HttpServer::configure(const HttpConfig& config) {
 }
 
 int HttpServer::bind(const std::string& host, int port) {
-    if (port == 0) return server_.bind_to_any_port(host);
-    return server_.bind_to_port(host, port) ? port : -1;
+    int bound = port == 0 ? server_.bind_to_any_port(host) : (server_.bind_to_port(host, port) ? port : -1);
+    origin_.boundHost = host;
+    origin_.port = bound;
+    return bound;
 }
 
 }  // namespace photon::api

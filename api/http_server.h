@@ -5,6 +5,8 @@
 #include <httplib.h>
 #include <memory>
 #include <string>
+#include <vector>
+#include "api/request_origin.h"
 #include "api/routes.h"
 #include "api/stream_support.h"
 
@@ -15,6 +17,8 @@ struct HttpConfig {
     std::string webRoot;  // served at "/" if the folder exists
     size_t maxBodyBytes = 0;
     int maxStreams = 48;  // open event and image streams; each holds an HTTP thread
+    std::vector<std::string> allowedHosts;    // see OriginPolicy
+    std::vector<std::string> allowedOrigins;
 };
 
 class HttpServer {
@@ -36,6 +40,7 @@ private:
 
     StreamSlots streams_;
     RouteContext context_;
+    OriginPolicy origin_;  // the bound address and port are filled in by bind()
     std::string token_;
     httplib::Server server_;
 };

@@ -18,6 +18,15 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
             return t.find_first_of(" \t\r\n") == std::string::npos ? "" : "must not contain whitespace";
         });
     app.add_option("--web-root", o.webRoot, "folder of the page served at /")->capture_default_str();
+    app.add_option("--allow-host", o.allowedHosts,
+                   "another name (NAME or NAME:PORT) the server may be reached by, e.g. behind a reverse "
+                   "proxy; repeatable (by default only the listening address, and loopback names when it "
+                   "is a loopback address)")
+        ->allow_extra_args(false);
+    app.add_option("--allow-origin", o.allowedOrigins,
+                   "a web origin (e.g. https://farm.example.com) whose pages may submit and change jobs; "
+                   "repeatable (by default only the server's own page)")
+        ->allow_extra_args(false);
     app.add_option("--checkpoint-seconds", o.service.checkpointSeconds, "seconds between a render's checkpoints")
         ->type_name("N")->check(integerIn(1, 86400))
         ->capture_default_str();

@@ -2,6 +2,7 @@
 // the same declarations (the limits from server/service_limits.h's table).
 #pragma once
 #include <string>
+#include <vector>
 #include "server/job_service.h"
 
 namespace photon::app {
@@ -12,6 +13,8 @@ struct ServerOptions {
     std::string token;               // non-empty: require "Authorization: Bearer <token>"
     // Static files for "/" if the folder exists: by default the page in the source tree.
     std::string webRoot = PHOTON_DEFAULT_WEB_ROOT;
+    std::vector<std::string> allowedHosts;    // --allow-host
+    std::vector<std::string> allowedOrigins;  // --allow-origin
     std::string logLevel = "info";   // spdlog level name: trace, debug, info, warn, error, off
     bool printRoutes = false;
     server::ServiceConfig service;

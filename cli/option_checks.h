@@ -25,13 +25,18 @@ inline CLI::Validator integerIn(long long lo, long long hi) {
 }
 
 // Parses argv into `app`. Returns the exit code for main to return, or -1 to go on: 0
-// after printing --help, 2 after printing "<program>: <what is wrong>" and the usage.
+// after printing --help or --version, 2 after printing "<program>: <what is wrong>" and the
+// usage.
 inline int parseCommandLine(CLI::App& app, int argc, char** argv) {
+    app.set_version_flag("--version", std::string(app.get_name()) + " " + PHOTON_VERSION);
     try {
         app.parse(argc, argv);
         return -1;
     } catch (const CLI::CallForHelp&) {
         std::fputs(app.help().c_str(), stdout);
+        return 0;
+    } catch (const CLI::CallForVersion& e) {
+        std::printf("%s\n", e.what());
         return 0;
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "%s: %s\n%s", app.get_name().c_str(), e.what(), app.help().c_str());

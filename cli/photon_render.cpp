@@ -1,44 +1,28 @@
 // photon-render: renders a scene file to EXR and/or PNG with a progress bar on stderr.
+// Ctrl-C (SIGINT) or SIGTERM stops the render within the pass in flight and still writes the
+// image of the passes done (exit 130), and the checkpoint when one is asked for.
 #include <photon/image_io.h>
 #include <photon/render.h>
 #include <photon/threads.h>
+#include <cctype>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include "cli/option_checks.h"
+#include "cli/render_options.h"
 
 namespace {
 
-struct Options {
-    std::string scene, exr, png;
-    std::optional<long long> passes, photons, threads, seed, timeLimit;
-    std::string integrator;
-    bool quiet = false;
-};
+namespace fs = std::filesystem;
+using photon::cli::RenderOptions;
 
-void declareOptions(CLI::App& app, Options& o) {
-    using photon::cli::integerIn;
-    app.add_option("scene", o.scene, "the scene file (JSON)")->required();
-    app.add_option("-o,--output", o.exr, "linear HDR EXR to write");
-    app.add_option("--png", o.png, "tone-mapped PNG to write (the scene's exposure, sRGB)");
-    app.add_option("--passes", o.passes, "passes (samples per pixel for the path tracer)")->type_name("N")->check(integerIn(1, 1000000));
-    app.add_option("--photons-per-pass", o.photons, "photons per pass")->type_name("N")->check(integerIn(1, 100000000));
-    app.add_option("--time-limit", o.timeLimit, "stop after the pass that crosses this many seconds")
-        ->type_name("N")->check(integerIn(0, 1 << 30));
-    app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
-    app.add_option("--seed", o.seed, "random seed")->type_name("N")->check(integerIn(0, 1LL << 62));
-    std::vector<std::string> names(photon::kIntegratorNames.begin(), photon::kIntegratorNames.end());
-    app.add_option("--integrator", o.integrator, "the integrator, instead of the scene's")->check(CLI::IsMember(names));
-    app.add_flag("--quiet", o.quiet, "no progress bar");
-}
-
-void applyOverrides(const Options& o, photon::RenderSettings& s) {
-    if (o.passes) s.passes = static_cast<int>(*o.passes);
-    if (o.photons) s.photonsPerPass = *o.photons;
-    if (o.seed) s.seed = static_cast<uint64_t>(*o.seed);
-    if (o.timeLimit) s.timeLimitSeconds = static_cast<double>(*o.timeLimit);
-    if (!o.integrator.empty()) s.integrator = *photon::integratorNamed(o.integrator);
-}
+// The token a signal sets: an atomic flag, which a handler may store to.
+photon::CancelToken gInterrupt;
+extern "C" void onStopSignal(int) { gInterrupt.cancel(); }
 
 std::string formatSeconds(double s) {
     char buf[32];
@@ -58,37 +42,86 @@ void printProgress(const photon::RenderProgress& p) {
     std::fflush(stderr);
 }
 
+void printScene(const photon::SceneFile& scene) {
+    const photon::RenderSettings& r = scene.render();
+    std::printf("scene ok: %dx%d pixels, %lld triangles, %s, %d passes of %lld photons\n", scene.width(),
+                scene.height(), static_cast<long long>(scene.triangleCount()),
+                std::string(photon::integratorName(r.integrator)).c_str(), r.passes,
+                static_cast<long long>(r.photonsPerPass));
+}
+
+// Written to a temporary name and renamed, so a crash never leaves half a checkpoint.
+void saveCheckpoint(const photon::Renderer& renderer, const fs::path& file) {
+    const fs::path temporary = file.string() + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        renderer.saveCheckpoint(out);
+        if (!out.flush()) throw std::runtime_error("cannot write checkpoint " + temporary.string());
+    }
+    fs::rename(temporary, file);
+}
+
+void writeImages(const photon::Renderer& renderer, const RenderOptions& options) {
+    // With render.denoise on, the EXR's R, G, B are denoised and it carries the raw image
+    // and the guides as more channels; the PNG shows the denoised image.
+    std::shared_ptr<const photon::PendingImage> image = renderer.pendingLayers();
+    for (const std::string& out : options.outputs) {
+        // checkOutputs let through .exr and .png names only, in any case.
+        if (std::tolower(static_cast<unsigned char>(out[out.size() - 3])) == 'e') photon::writeExr(*image, out);
+        else photon::writePng(*image, out);
+    }
+}
+
+int render(const RenderOptions& options) {
+    std::optional<photon::ThreadLimit> threads;
+    if (options.threads) threads.emplace(static_cast<size_t>(*options.threads));
+    photon::SceneFile scene = photon::SceneFile::read(options.scene, options.overrides());
+    if (options.check) {
+        printScene(scene);
+        return 0;
+    }
+    photon::Renderer renderer(std::move(scene));
+    if (!options.resume.empty()) {
+        std::ifstream in(options.resume, std::ios::binary);
+        renderer.restoreCheckpoint(in);
+    }
+    auto lastCheckpoint = std::chrono::steady_clock::now();
+    photon::RenderOutcome outcome = renderer.run(gInterrupt, [&](const photon::RenderProgress& p) {
+        if (!options.quiet) printProgress(p);
+        if (!options.checkpoint.empty() && std::chrono::steady_clock::now() - lastCheckpoint > std::chrono::seconds(30)) {
+            saveCheckpoint(renderer, options.checkpoint);
+            lastCheckpoint = std::chrono::steady_clock::now();
+        }
+    });
+    if (!options.quiet) std::fprintf(stderr, "\n");
+    writeImages(renderer, options);
+    if (!options.checkpoint.empty()) saveCheckpoint(renderer, options.checkpoint);
+    if (outcome != photon::RenderOutcome::Cancelled) return 0;
+    std::fprintf(stderr, "photon-render: interrupted; wrote the image of %d passes\n", renderer.progress().pass);
+    return 130;  // 128 + SIGINT, as shells report an interrupted command
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app("Renders a scene to linear EXR and/or tone-mapped PNG.", "photon-render");
-    Options options;
-    declareOptions(app, options);
+    RenderOptions options;
+    photon::cli::declareOptions(app, options);
     if (int exit = photon::cli::parseCommandLine(app, argc, argv); exit >= 0) return exit;
-    if (options.exr.empty() && options.png.empty()) {
-        std::fprintf(stderr, "photon-render: give -o OUT.exr and/or --png OUT.png\n%s", app.help().c_str());
+    if (std::optional<std::string> wrong = photon::cli::checkOutputs(options)) {
+        std::fprintf(stderr, "photon-render: %s\n%s", wrong->c_str(), app.help().c_str());
         return 2;
     }
+    std::signal(SIGINT, onStopSignal);
+    std::signal(SIGTERM, onStopSignal);
     try {
-        std::optional<photon::ThreadLimit> threads;
-        if (options.threads) threads.emplace(static_cast<size_t>(*options.threads));
-        photon::SceneFile scene = photon::SceneFile::read(options.scene);
-        applyOverrides(options, scene.render());
-        photon::Renderer renderer(std::move(scene));
-        photon::CancelToken cancel;
-        renderer.run(cancel, options.quiet ? photon::Renderer::ProgressFn{} : printProgress);
-        if (!options.quiet) std::fprintf(stderr, "\n");
-        // With render.denoise on, the EXR's R, G, B are denoised and it carries the raw image
-        // and the guides as more channels; the PNG shows the denoised image.
-        std::shared_ptr<const photon::PendingImage> image = renderer.pendingLayers();
-        if (!options.exr.empty()) photon::writeExr(*image, options.exr);
-        if (!options.png.empty()) photon::writePng(*image, options.png);
+        return render(options);
     } catch (const photon::SceneError& e) {
         std::fprintf(stderr, "photon-render: %s: %s\n", options.scene.c_str(), e.what());
-        return 1;
+    } catch (const photon::CheckpointError& e) {
+        std::fprintf(stderr, "photon-render: %s: %s\n", options.resume.c_str(), e.what());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "photon-render: %s\n", e.what());
-        return 1;
     }
-    return 0;
+    return 1;
 }

@@ -3,8 +3,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
-# ccache (installed by install-deps.sh) makes rebuilds of unchanged sources free.
+# ccache (installed by install-deps.sh) makes rebuilds of unchanged sources free, also from
+# another clone of the repository (CI builds a fresh one each time): paths are hashed
+# relative to the checkout, and the build folder is left out of the hash.
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@"
 cmake --build "$build" -j2

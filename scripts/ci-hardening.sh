@@ -17,6 +17,8 @@ bash "$root/scripts/install-deps.sh" --hardening
 
 cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
 if command -v ccache > /dev/null; then cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+# As in build.sh: cached objects serve any clone of the repository.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 
 timings=()
 skipped=()
@@ -49,7 +51,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table)
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
-              test_server_faults test_server_images test_server_workers)
+              test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges)
 
 # run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
 # from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer

@@ -2,6 +2,10 @@
 // scene exits non-zero with the error's JSON path.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
+#include <csignal>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -98,6 +102,124 @@ TEST(Cli, BadOptionsExitWithUsage) {
     CommandResult r = runRender("scene.json -o x.exr --passes zero");
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("--passes: expected an integer"), std::string::npos) << r.output;
+}
+
+TEST(Cli, OutputFormatFollowsTheExtension) {
+    auto dir = tempDir();
+    const std::string scene = test::sourcePath("scenes/cornell-box.json").string();
+    CommandResult r = runRender(scene + " -D camera.resolution=[24,16] -D render.exposure=1 --passes 2 "
+                                "--photons-per-pass 2000 --quiet -o " + (dir / "a.exr").string() + " -o " +
+                                (dir / "a.PNG").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Image linear = readImage(dir / "a.exr"), png = readImage(dir / "a.PNG");
+    ASSERT_EQ(png.width, 24);
+    ASSERT_EQ(png.height, 16);
+    std::vector<uint8_t> expected = toneMapToSrgb8(linear, 1.0f);
+    for (size_t i = 0; i < expected.size(); ++i) ASSERT_FLOAT_EQ(png.rgb[i], expected[i] / 255.0f) << i;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, BadOutputsAreRefusedBeforeRendering) {
+    const std::string scene = test::sourcePath("scenes/cornell-box.json").string();
+    CommandResult tiff = runRender(scene + " -o /tmp/x.tif");
+    EXPECT_EQ(tiff.exitCode, 2);
+    EXPECT_NE(tiff.output.find("-o /tmp/x.tif: the name must end in .exr or .png"), std::string::npos) << tiff.output;
+    CommandResult folder = runRender(scene + " -o /nonexistent-folder/x.exr");
+    EXPECT_EQ(folder.exitCode, 2);
+    EXPECT_NE(folder.output.find("-o /nonexistent-folder/x.exr: cannot write in /nonexistent-folder"),
+              std::string::npos)
+        << folder.output;
+    EXPECT_EQ(folder.output.find("pass 1/"), std::string::npos);  // nothing was rendered
+}
+
+TEST(Cli, VersionAndCheck) {
+    CommandResult version = runRender("--version");
+    EXPECT_EQ(version.exitCode, 0);
+    EXPECT_EQ(version.output, "photon-render " PHOTON_VERSION_FOR_TESTS "\n");
+    CommandResult check = runRender(test::sourcePath("scenes/cornell-box.json").string() + " --check --spp 3");
+    EXPECT_EQ(check.exitCode, 0) << check.output;
+    EXPECT_EQ(check.output, "scene ok: 512x512 pixels, 32 triangles, sppm, 3 passes of 200000 photons\n");
+}
+
+TEST(Cli, DefinesOverrideSettingsAndAreCheckedLikeTheScenesOwn) {
+    auto dir = tempDir();
+    const std::string scene = test::sourcePath("scenes/cornell-box.json").string() + " --quiet -o " + (dir / "d.exr").string();
+    CommandResult ok = runRender(scene + " -D render.passes=2 -D camera.resolution=[16,8] --photons-per-pass 1000");
+    ASSERT_EQ(ok.exitCode, 0) << ok.output;
+    Image image = readImage(dir / "d.exr");
+    EXPECT_EQ(image.width, 16);
+    EXPECT_EQ(image.height, 8);
+    CommandResult geometry = runRender(scene + " -D shapes.radius=1");
+    EXPECT_EQ(geometry.exitCode, 1);
+    EXPECT_NE(geometry.output.find("shapes.radius: only render.* and camera.* settings can be overridden"),
+              std::string::npos)
+        << geometry.output;
+    CommandResult range = runRender(scene + " -D render.alpha=2");
+    EXPECT_EQ(range.exitCode, 1);
+    EXPECT_NE(range.output.find("render.alpha: must be"), std::string::npos) << range.output;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, AFractionalTimeLimitEndsTheRender) {
+    auto dir = tempDir();
+    CommandResult r = runRender(test::sourcePath("scenes/cornell-box.json").string() +
+                                " -D camera.resolution=[16,16] --photons-per-pass 1000 --passes 1000000 --time-limit 0.25 "
+                                "--quiet -o " + (dir / "t.exr").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(readImage(dir / "t.exr").width, 16);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, AResumedRenderEndsWhereAnUninterruptedOneDoes) {
+    auto dir = tempDir();
+    const std::string scene = test::sourcePath("scenes/cornell-box.json").string() +
+                              " -D camera.resolution=[24,24] --photons-per-pass 5000 --quiet";
+    ASSERT_EQ(runRender(scene + " --passes 4 -o " + (dir / "whole.exr").string()).exitCode, 0);
+    ASSERT_EQ(runRender(scene + " --passes 2 -o " + (dir / "half.exr").string() + " --checkpoint " +
+                        (dir / "state.bin").string())
+                  .exitCode,
+              0);
+    CommandResult resumed = runRender(scene + " --passes 4 -o " + (dir / "resumed.exr").string() + " --resume " +
+                                      (dir / "state.bin").string());
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.output;
+    EXPECT_TRUE(readImage(dir / "resumed.exr").rgb == readImage(dir / "whole.exr").rgb);
+    CommandResult other = runRender(scene + " --passes 4 --seed 99 -o " + (dir / "x.exr").string() + " --resume " +
+                                    (dir / "state.bin").string());
+    EXPECT_EQ(other.exitCode, 1);
+    EXPECT_NE(other.output.find("made with other render settings"), std::string::npos) << other.output;
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, SigintStopsTheRenderAndStillWritesItsImage) {
+    auto dir = tempDir();
+    const std::filesystem::path log = dir / "stderr.txt", out = dir / "i.exr";
+    pid_t pid = fork();
+    if (pid == 0) {
+        std::freopen(log.c_str(), "w", stderr);
+        const std::string scene = test::sourcePath("scenes/cornell-box.json").string();
+        execl(PHOTON_RENDER_BIN, PHOTON_RENDER_BIN, scene.c_str(), "-D", "camera.resolution=[32,32]",
+              "--photons-per-pass", "20000", "--passes", "1000000", "-o", out.c_str(), nullptr);
+        _exit(127);
+    }
+    // Once a pass is done (its progress line is out), interrupt.
+    for (int waited = 0; waited < 30000; waited += 20) {
+        std::ifstream in(log);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (text.find("pass 1/") != std::string::npos) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    Image image = readImage(out);
+    EXPECT_EQ(image.width, 32);
+    EXPECT_GT(test::meanOver(image, 0, 0, 32, 32).y, 0.0f);
+    std::ifstream in(log);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("interrupted; wrote the image of"), std::string::npos) << text;
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

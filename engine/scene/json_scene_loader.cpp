@@ -64,10 +64,12 @@ void checkHasLight(const SceneDescription& scene) {
 
 }  // namespace scene_json
 
-SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir) {
+SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
+                               const std::vector<SettingOverride>& overrides) {
     using namespace scene_json;
     Json doc = parseJsonDocument(text);
     if (!doc.is_object()) throw SceneError("", "the scene must be a JSON object");
+    applySettingOverrides(doc, overrides);
     JsonObject top(doc, "");
     LoadContext ctx;
     ctx.baseDir = baseDir;
@@ -83,7 +85,7 @@ SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir)
     return scene;
 }
 
-SceneDescription loadSceneFile(const fs::path& file) {
+SceneDescription loadSceneFile(const fs::path& file, const std::vector<SettingOverride>& overrides) {
     std::string prefix = "cannot read scene file \"" + file.string() + "\": ";
     std::error_code ec;
     if (fs::is_directory(file, ec)) throw SceneError("", prefix + "it is a directory");
@@ -92,7 +94,7 @@ SceneDescription loadSceneFile(const fs::path& file) {
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError("", prefix + std::strerror(errno));
-    return loadSceneJson(text.str(), file.parent_path());
+    return loadSceneJson(text.str(), file.parent_path(), overrides);
 }
 
 }  // namespace photon

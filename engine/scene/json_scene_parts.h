@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
+#include <photon/scene_file.h>
 #include "math/transform.h"
 #include "texture/texture.h"
 #include "scene/json_reader.h"
@@ -29,6 +31,10 @@ std::filesystem::path resolveFile(const JsonValue& value, const LoadContext& ctx
 // Rethrows a library failure (Assimp, OpenImageIO) as a SceneError at value's path, with
 // the scene folder removed from the message so only the scene's own names show.
 [[noreturn]] void failWithLibraryError(const JsonValue& value, const std::exception& e, const LoadContext& ctx);
+
+// Sets each override's key (a dotted path under "render" or "camera") in the document,
+// creating the objects on the way; throws SceneError at the key for any other key.
+void applySettingOverrides(Json& doc, const std::vector<SettingOverride>& overrides);
 
 CameraDescription readCamera(const JsonValue& value);
 RenderSettings readRender(const JsonValue& value);

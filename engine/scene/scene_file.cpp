@@ -3,10 +3,13 @@
 
 namespace photon {
 
-SceneFile SceneFile::parseJson(const std::string& text, const std::filesystem::path& baseDir) {
-    return SceneFile(loadSceneJson(text, baseDir));
+SceneFile SceneFile::parseJson(const std::string& text, const std::filesystem::path& baseDir,
+                               const std::vector<SettingOverride>& overrides) {
+    return SceneFile(loadSceneJson(text, baseDir, overrides));
 }
-SceneFile SceneFile::read(const std::filesystem::path& file) { return SceneFile(loadSceneFile(file)); }
+SceneFile SceneFile::read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides) {
+    return SceneFile(loadSceneFile(file, overrides));
+}
 
 SceneFile::SceneFile(SceneDescription description)
     : description_(std::make_unique<SceneDescription>(std::move(description))) {}

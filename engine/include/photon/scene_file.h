@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 #include <photon/errors.h>
 #include <photon/render_settings.h>
 
@@ -12,13 +13,22 @@ namespace photon {
 
 struct SceneDescription;
 
+// A setting given apart from the scene, e.g. on a command line: `key` is its path in the
+// scene ("render.passes", "camera.resolution", "render.photonmap.gather_rays"), `value` its
+// JSON ("16", "[640, 480]", "true") or, when that is not JSON, a string. Only the render
+// and camera blocks can be overridden; the value is checked as the scene's own would be.
+struct SettingOverride {
+    std::string key, value;
+};
+
 class SceneFile {
 public:
     // The JSON scene format (docs/scene-format.md). Files the scene names (meshes,
     // textures) resolve against `baseDir`; absolute paths and paths with ".." are refused.
     // Throws SceneError naming the JSON path of what is wrong.
-    static SceneFile parseJson(const std::string& text, const std::filesystem::path& baseDir);
-    static SceneFile read(const std::filesystem::path& file);
+    static SceneFile parseJson(const std::string& text, const std::filesystem::path& baseDir,
+                               const std::vector<SettingOverride>& overrides = {});
+    static SceneFile read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides = {});
 
     explicit SceneFile(SceneDescription description);
     SceneFile(SceneFile&&) noexcept;
