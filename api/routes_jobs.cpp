@@ -59,7 +59,7 @@ void createJob(RouteContext& ctx, const httplib::Request& req, httplib::Response
     // leave the rest of the upload in the connection.
     const server::Limits& limits = ctx.service.limits();
     server::RequestDigest digest;
-    readUpload(req, res, reader, *upload, {size_t(limits.maxBodyBytes), size_t(limits.maxSceneBytes)}, digest);
+    readUpload(req, res, reader, *upload, {size_t(limits.maxBodyBytes), size_t(limits.maxSceneBytes), size_t(limits.maxUploadParts)}, digest);
     addQuery(req, digest);
     server::SubmitRequest request{submitOptions(req), req.remote_addr, idempotencyKey(req), digest.hex()};
     server::SubmitResult result = ctx.service.submit(*upload, request);

@@ -21,6 +21,13 @@ public:
         : upload_(upload), limits_(limits), digest_(digest) {}
 
     bool onPart(const httplib::MultipartFormData& part) {
+        if (++parts_ > limits_.maxParts) {
+            fail(std::make_exception_ptr(ServiceError(
+                ErrorKind::PayloadTooLarge, "multipart upload has more than " + std::to_string(limits_.maxParts) +
+                                                " parts, the server limit (" +
+                                                server::optionOf(&server::Limits::maxUploadParts) + ")")));
+            return false;  // stop reading: the sender is over the limit
+        }
         // The part's identity, not the boundary (which a retry may choose afresh), is hashed.
         digest_.endField();
         for (const std::string* field : {&part.name, &part.filename}) {
@@ -102,6 +109,7 @@ private:
 
     server::StagedUpload& upload_;
     const UploadLimits& limits_;
+    size_t parts_ = 0;
     server::RequestDigest& digest_;
     size_t received_ = 0;
     size_t sceneBytes_ = 0;

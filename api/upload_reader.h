@@ -21,6 +21,7 @@ namespace photon::api {
 struct UploadLimits {
     size_t maxBodyBytes = 0;
     size_t maxSceneBytes = 0;
+    size_t maxParts = 0;  // of a multipart upload: each asset part is a file staged on disk
 };
 
 // Throws ServiceError: BadRequest (bad multipart, unsafe names, unreadable body),

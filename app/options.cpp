@@ -1,9 +1,26 @@
 #include "app/options.h"
+#include <fstream>
 #include "cli/option_checks.h"
 
 namespace photon::app {
 
 namespace {
+
+std::string tokenCheck(const std::string& token) {
+    if (token.empty()) return "must not be empty";
+    return token.find_first_of(" \t\r\n") == std::string::npos ? "" : "must not contain whitespace";
+}
+
+// The token from --token-file: its first line, without the line end.
+std::string readTokenFile(const std::string& file) {
+    std::ifstream in(file);
+    std::string line;
+    if (!std::getline(in, line)) throw std::runtime_error("--token-file " + file + ": cannot read a line");
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (std::string problem = tokenCheck(line); !problem.empty())
+        throw std::runtime_error("--token-file " + file + ": the token " + problem);
+    return line;
+}
 
 void declareOptions(CLI::App& app, ServerOptions& o) {
     using cli::integerIn;
@@ -13,10 +30,15 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
     app.add_option("--workers", o.service.workers, "jobs rendered at once; 0 stores jobs without rendering")
         ->type_name("N")->check(integerIn(0, 256))
         ->capture_default_str();
-    app.add_option("--token", o.token, "require \"Authorization: Bearer TOKEN\" on every API request")
-        ->check([](const std::string& t) {
-            return t.find_first_of(" \t\r\n") == std::string::npos ? "" : "must not contain whitespace";
-        });
+    CLI::Option* token =
+        app.add_option("--token", o.token,
+                       "require \"Authorization: Bearer TOKEN\" on every API request (seen by ps: prefer "
+                       "--token-file or the PHOTON_TOKEN environment variable)")
+            ->envname("PHOTON_TOKEN")
+            ->check(tokenCheck);
+    app.add_option("--token-file", o.tokenFile, "read the token from the first line of this file")
+        ->check(CLI::ExistingFile)
+        ->excludes(token);
     app.add_option("--web-root", o.webRoot, "folder of the page served at /")->capture_default_str();
     app.add_option("--allow-host", o.allowedHosts,
                    "another name (NAME or NAME:PORT) the server may be reached by, e.g. behind a reverse "
@@ -48,7 +70,14 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
 int parseCommandLine(int argc, char** argv, ServerOptions& options) {
     CLI::App app("The photon render service: REST API, job queue and the page.", "photon-server");
     declareOptions(app, options);
-    return cli::parseCommandLine(app, argc, argv);
+    if (int exit = cli::parseCommandLine(app, argc, argv); exit >= 0) return exit;
+    try {
+        if (!options.tokenFile.empty()) options.token = readTokenFile(options.tokenFile);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "photon-server: %s\n", e.what());
+        return 2;
+    }
+    return -1;
 }
 
 }  // namespace photon::app

@@ -11,6 +11,7 @@ struct ServerOptions {
     std::string host = "127.0.0.1";  // loopback unless the operator opts in to more
     int port = 8080;                 // 0: any free port (the start line shows which)
     std::string token;               // non-empty: require "Authorization: Bearer <token>"
+    std::string tokenFile;           // --token-file: where the token was read from
     // Static files for "/" if the folder exists: by default the page in the source tree.
     std::string webRoot = PHOTON_DEFAULT_WEB_ROOT;
     std::vector<std::string> allowedHosts;    // --allow-host

@@ -11,6 +11,8 @@ const std::vector<LimitOption>& limitOptions() {
         {&Limits::maxBodyBytes, "--max-body-bytes", "request body bytes (413)", kBig},
         {&Limits::maxAssetBytes, "--max-asset-bytes", "bytes of each uploaded asset file (422)", kBig},
         {&Limits::maxSceneBytes, "--max-scene-bytes", "bytes of the scene JSON (413)", kBig},
+        {&Limits::maxUploadParts, "--max-upload-parts", "parts of a multipart upload, the scene's included (413)",
+         1'000'000},
         {&Limits::maxTriangles, "--max-triangles", "triangles of all meshes of a scene (413)", kBig},
         {&Limits::maxTexturePixels, "--max-texture-pixels", "width*height of each uploaded texture image (413)",
          kBig},

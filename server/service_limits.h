@@ -18,6 +18,7 @@ struct Limits {
     int64_t maxBodyBytes = 64 << 20;
     int64_t maxAssetBytes = 64 << 20;
     int64_t maxSceneBytes = 8 << 20;
+    int64_t maxUploadParts = 1000;
     int64_t maxTriangles = 20'000'000;
     int64_t maxTexturePixels = 64LL << 20;
     int64_t maxStreams = 128;

@@ -94,6 +94,7 @@ void ServerProcess::kill() {
 std::string runServerBinary(const std::vector<std::string>& extra) {
     std::string command = PHOTON_SERVER_BINARY;
     for (const std::string& a : extra) command += " '" + a + "'";
+    command += " 2>&1";
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) throw std::runtime_error("popen failed");
     std::string output;

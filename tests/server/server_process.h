@@ -30,7 +30,7 @@ private:
     int port_ = 0;
 };
 
-// Runs the binary with `args` to completion and returns its standard output.
+// Runs the binary with `args` to completion and returns what it printed (stdout and stderr).
 std::string runServerBinary(const std::vector<std::string>& args);
 
 }  // namespace photon::test

@@ -1,4 +1,6 @@
 // Every client error maps to its status code with a JSON body, and none harms the server.
+#include <unistd.h>
+#include <fstream>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -116,6 +118,30 @@ TEST_F(ErrorsTest, TokenIsRequiredExceptForHealthAndThePage) {
     setToken("s3cret-token");
     EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
     EXPECT_EQ(submit(smallScene())->status, 201);
+}
+
+// A token on the command line shows in ps; a file or the environment keeps it out of sight.
+TEST_F(ErrorsTest, TheTokenCanComeFromAFileOrTheEnvironment) {
+    const std::filesystem::path file = dataDir().parent_path() / ("photon-token-" + std::to_string(::getpid()));
+    std::ofstream(file) << "from-a-file\n";
+    startServer({"--workers", "0", "--token-file", file.string()});
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 401);
+    setToken("from-a-file");
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
+    stopServer();
+    std::filesystem::remove(file);
+
+    ::setenv("PHOTON_TOKEN", "from-the-environment", 1);
+    startServer({"--workers", "0"});
+    ::unsetenv("PHOTON_TOKEN");
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 401);  // the file's token no longer counts
+    setToken("from-the-environment");
+    EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
+
+    std::string both = runServerBinary({"--token", "a", "--token-file", "/dev/null"});
+    EXPECT_NE(both.find("--token excludes --token-file"), std::string::npos) << both;
+    std::string empty = runServerBinary({"--token-file", "/dev/null"});
+    EXPECT_NE(empty.find("--token-file /dev/null: cannot read a line"), std::string::npos) << empty;
 }
 
 TEST_F(ErrorsTest, MultipartAssetsMustStayInsideTheJobFolder) {

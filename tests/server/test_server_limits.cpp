@@ -81,6 +81,20 @@ TEST_F(LimitsTest, BodySizeIs413) {
                 "request body exceeds the server limit of 1000 bytes (--max-body-bytes)");
 }
 
+// Each asset part is a file staged on disk: a body of thousands of tiny parts is refused.
+TEST_F(LimitsTest, UploadPartsAreCapped) {
+    startServer({"--workers", "0", "--max-upload-parts", "10"});
+    auto upload = [&](int assets) {
+        httplib::MultipartFormDataItems items{{"scene", smallScene().dump(), "", "application/json"}};
+        for (int i = 0; i < assets; ++i)
+            items.push_back({"asset", "x", "extra/" + std::to_string(i) + ".txt", "text/plain"});
+        return client().Post("/api/v1/jobs", items);
+    };
+    expectError(upload(10), 413,
+                "multipart upload has more than 10 parts, the server limit (--max-upload-parts)");
+    EXPECT_EQ(upload(9)->status, 201);  // the scene and nine assets: ten parts
+}
+
 TEST_F(LimitsTest, TrianglesPerSceneAreCountedOverAllMeshes) {
     json scene = smallScene();
     for (const char* file : {"a.obj", "b.obj"})
