@@ -56,6 +56,16 @@ const char* reasonFor(int status) {
     }
 }
 
+// An answer before the request's body was read: the connection is closed after it, or the
+// unread body would be taken for the next request on it (and that request never answered).
+// httplib closes a connection after a response when the request asked for it.
+void refuseUnread(const httplib::Request& req, httplib::Response& res, int status, const std::string& message) {
+    sendError(res, status, message);
+    auto& headers = const_cast<httplib::Request&>(req).headers;  // httplib's own request, not const
+    headers.erase("Connection");
+    headers.emplace("Connection", "close");
+}
+
 }  // namespace
 
 bool constantTimeEquals(const std::string& given, const std::string& expected) {
@@ -94,7 +104,7 @@ void HttpServer::configure(const HttpConfig& config) {
         // Where it comes from first: a forged or rebound request is refused with or without
         // a token, before its body is read.
         if (std::optional<Refusal> refusal = checkRequestOrigin(req, origin_)) {
-            sendError(res, refusal->status, refusal->message);
+            refuseUnread(req, res, refusal->status, refusal->message);
             return httplib::Server::HandlerResponse::Handled;
         }
         // The one change made to a request: ranges it may not have are dropped, with the Range
@@ -107,7 +117,7 @@ void HttpServer::configure(const HttpConfig& config) {
         if (kept.empty()) mutableRequest.headers.erase("Range");
         if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
         res.set_header("WWW-Authenticate", "Bearer");
-        sendError(res, 401, reasonFor(401));
+        refuseUnread(req, res, 401, reasonFor(401));
         return httplib::Server::HandlerResponse::Handled;
     });
     // Errors httplib produces itself (no route, 413, unparsable requests) get a JSON body
