@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 #include "api/errors.h"
+#include "api/request_framing.h"
 #include "api/request_ranges.h"
 
 namespace photon::api {
@@ -66,6 +67,19 @@ void refuseUnread(const httplib::Request& req, httplib::Response& res, int statu
     headers.emplace("Connection", "close");
 }
 
+// The two changes made to a request, before httplib reads on or answers it:
+//  - ranges it may not have are dropped (request_ranges.h), with the Range header itself
+//    (httplib would answer a file 206 for the header alone);
+//  - a request with neither Content-Length nor Transfer-Encoding has no body (RFC 9112 6.3),
+//    which httplib would otherwise wait for until the connection closes (curl -X POST).
+void adjustBeforeReading(httplib::Request& req) {
+    std::vector<std::pair<long, long>> kept = rangesToHonour(req.path, {req.ranges.begin(), req.ranges.end()});
+    req.ranges.assign(kept.begin(), kept.end());
+    if (kept.empty()) req.headers.erase("Range");
+    if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding"))
+        req.headers.emplace("Content-Length", "0");
+}
+
 }  // namespace
 
 bool constantTimeEquals(const std::string& given, const std::string& expected) {
@@ -101,20 +115,15 @@ void HttpServer::configure(const HttpConfig& config) {
     server_.new_task_queue = [] { return new LowPriorityThreadPool(kHttpThreads); };
     server_.set_payload_max_length(config.maxBodyBytes);
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-        // Where it comes from first: a forged or rebound request is refused with or without
-        // a token, before its body is read.
-        if (std::optional<Refusal> refusal = checkRequestOrigin(req, origin_)) {
+        // How it is framed and where it comes from first: an ambiguous, forged or rebound
+        // request is refused with or without a token, before its body is read.
+        std::optional<Refusal> refusal = checkRequestFraming(req);
+        if (!refusal) refusal = checkRequestOrigin(req, origin_);
+        if (refusal) {
             refuseUnread(req, res, refusal->status, refusal->message);
             return httplib::Server::HandlerResponse::Handled;
         }
-        // The one change made to a request: ranges it may not have are dropped, with the Range
-        // header itself (httplib would answer a file 206 for the header alone), before httplib
-        // builds them (the request is httplib's own, not const; the handler's view of it is).
-        auto& mutableRequest = const_cast<httplib::Request&>(req);
-        std::vector<std::pair<long, long>> kept =
-            rangesToHonour(req.path, {mutableRequest.ranges.begin(), mutableRequest.ranges.end()});
-        mutableRequest.ranges.assign(kept.begin(), kept.end());
-        if (kept.empty()) mutableRequest.headers.erase("Range");
+        adjustBeforeReading(const_cast<httplib::Request&>(req));  // httplib's own request, not const
         if (authorized(req)) return httplib::Server::HandlerResponse::Unhandled;
         res.set_header("WWW-Authenticate", "Bearer");
         refuseUnread(req, res, 401, reasonFor(401));

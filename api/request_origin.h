@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "api/refusal.h"
 
 namespace httplib {
 struct Request;
@@ -19,11 +20,6 @@ struct OriginPolicy {
     int port = 0;           // the port it listens on
     std::vector<std::string> allowedHosts;    // --allow-host: more names it may be reached by
     std::vector<std::string> allowedOrigins;  // --allow-origin: other sites that may send
-};
-
-struct Refusal {
-    int status = 0;
-    std::string message;
 };
 
 // Nothing when the request may go on; otherwise the status and the reason:

@@ -1,5 +1,8 @@
 #include "server_fixture.h"
 #include <photon/render.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 #include <algorithm>
 #include <cmath>
@@ -86,6 +89,24 @@ Image decodeImage(const std::string& bytes, const std::string& extension) {
     Image image = readImage(file);
     fs::remove_all(dir);
     return image;
+}
+
+std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds) {
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(uint16_t(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    std::string answer;
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0 &&
+        ::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) == ssize_t(bytes.size())) {
+        timeval timeout{timeoutSeconds, 0};
+        ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+        char buffer[4096];
+        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, size_t(n));
+    }
+    ::close(fd);
+    return answer;
 }
 
 void ServerTest::SetUp() { dataDir_ = makeTempDir("photon-server-test-"); }

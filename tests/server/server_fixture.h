@@ -39,6 +39,10 @@ Image renderInProcess(const json& scene);
 // Decodes PNG or EXR bytes with OpenImageIO (through a temporary file).
 Image decodeImage(const std::string& bytes, const std::string& extension);
 
+// Sends `bytes` to the server on a new connection and returns all it answers until it closes
+// the connection (or `timeoutSeconds` pass without a byte).
+std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds = 20);
+
 class ServerTest : public ::testing::Test {
 protected:
     void SetUp() override;

@@ -2,10 +2,6 @@
 // send without asking (text/plain), and names rebound to the loopback address. Each is
 // refused before anything happens; the server's own page, curl and the other clients that
 // send no Origin go on working.
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -101,19 +97,7 @@ TEST_F(OriginTest, ARefusedRequestsConnectionIsClosed) {
     const std::string requests = "POST /api/v1/jobs HTTP/1.1\r\n" + host +
                                  "Content-Type: text/plain\r\nContent-Length: " + std::to_string(body.size()) +
                                  "\r\n\r\n" + body + "GET /api/v1/health HTTP/1.1\r\n" + host + "\r\n";
-    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(uint16_t(port()));
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
-    ASSERT_EQ(::send(fd, requests.data(), requests.size(), 0), ssize_t(requests.size()));
-    timeval timeout{20, 0};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-    std::string answer;
-    char buffer[4096];
-    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, size_t(n));
-    ::close(fd);
+    const std::string answer = rawExchange(port(), requests);
     EXPECT_EQ(answer.rfind("HTTP/1.1 415 Unsupported Media Type\r\n", 0), 0u) << answer;
     EXPECT_NE(answer.find("\r\nConnection: close\r\n"), std::string::npos) << answer;
     EXPECT_EQ(answer.find("HTTP/1.1", 1), std::string::npos) << "a second answer: " << answer;

@@ -1,0 +1,18 @@
+// Where a request's body ends must be beyond doubt (RFC 9112 section 6.3): a server and a
+// proxy in front of it that read it differently let one request smuggle another. So a
+// request with two different Content-Length values, a Content-Length that is not a whole
+// non-negative number, or both Transfer-Encoding and Content-Length, is refused (400), as is
+// a transfer coding other than chunked.
+#pragma once
+#include <optional>
+#include "api/refusal.h"
+
+namespace httplib {
+struct Request;
+}
+
+namespace photon::api {
+
+std::optional<Refusal> checkRequestFraming(const httplib::Request& req);
+
+}  // namespace photon::api
