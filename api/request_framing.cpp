@@ -6,6 +6,8 @@
 namespace photon::api {
 
 std::optional<Refusal> checkRequestFraming(const httplib::Request& req) {
+    if (std::any_of(req.path.begin(), req.path.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+        return Refusal{404, "no such route or file: the path holds a control character"};
     auto [first, end] = req.headers.equal_range("Content-Length");
     for (auto it = first; it != end; ++it) {
         const std::string& value = it->second;

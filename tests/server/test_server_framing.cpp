@@ -37,6 +37,17 @@ TEST_F(FramingTest, AmbiguousLengthsAreRefused) {
     EXPECT_EQ(same.rfind("HTTP/1.1 201 Created\r\n", 0), 0u) << same;
 }
 
+TEST_F(FramingTest, APathWithAControlCharacterIsNotFound) {
+    startServer({"--workers", "0"});
+    for (const char* path : {"/index.html%00.js", "/index.html%0a", "/api/v1/jobs%00"}) {
+        httplib::Result r = client().Get(path);
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->status, 404) << path;
+        EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << path;
+    }
+    EXPECT_EQ(client().Get("/index.html")->get_header_value("Content-Type"), "text/html");
+}
+
 TEST_F(FramingTest, APostWithoutABodyIsAnOrdinaryRequest) {
     startServer({"--workers", "0"});
     std::string id = submitOk(smallScene());
