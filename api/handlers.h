@@ -17,6 +17,7 @@ void streamImages(RouteContext&, const httplib::Request&, httplib::Response&);
 void jobEvents(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_system.cpp
 void health(RouteContext&, const httplib::Request&, httplib::Response&);
+void info(RouteContext&, const httplib::Request&, httplib::Response&);
 void metrics(RouteContext&, const httplib::Request&, httplib::Response&);
 void homePage(RouteContext&, const httplib::Request&, httplib::Response&);
 

@@ -9,10 +9,11 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 11> kRoutes{{
+constexpr std::array<Route, 12> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
+    {"GET", "/api/v1/info", info, nullptr},
     {"GET", "/api/v1/jobs", listJobs, nullptr},
     {"POST", "/api/v1/jobs", nullptr, createJob},
     {"GET", "/api/v1/jobs/{id}", getJob, nullptr},

@@ -1,5 +1,8 @@
-// Service-level routes: health check, Prometheus metrics, the placeholder home page.
+// Service-level routes: health check, what the server offers, Prometheus metrics, the
+// placeholder home page.
 #include <httplib.h>
+#include <photon/render_settings.h>
+#include <algorithm>
 #include "api/handlers.h"
 #include "api/job_json.h"
 
@@ -22,6 +25,21 @@ see <a href="/api/v1/jobs">/api/v1/jobs</a>.</p>
 }  // namespace
 
 void health(RouteContext&, const httplib::Request&, httplib::Response& res) { sendJson(res, 200, {{"status", "ok"}}); }
+
+// What a client need not guess: the server's version, the integrators a scene may name, and
+// every limit with its value here (the options' names, "--max-pixels" as "max_pixels").
+void info(RouteContext& ctx, const httplib::Request&, httplib::Response& res) {
+    nlohmann::json limits = nlohmann::json::object();
+    for (const server::LimitOption& limit : server::limitOptions()) {
+        std::string name = std::string(limit.option).substr(2);
+        std::replace(name.begin(), name.end(), '-', '_');
+        limits[name] = ctx.service.limits().*limit.field;
+    }
+    sendJson(res, 200,
+             {{"version", PHOTON_VERSION},
+              {"integrators", std::vector<std::string>(kIntegratorNames.begin(), kIntegratorNames.end())},
+              {"limits", limits}});
+}
 
 void metrics(RouteContext& ctx, const httplib::Request&, httplib::Response& res) {
     res.set_content(ctx.service.metrics().prometheusText(ctx.service.jobCounts()), "text/plain; version=0.0.4");

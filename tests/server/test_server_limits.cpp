@@ -197,6 +197,20 @@ TEST_F(LimitsTest, AFullQueueIs503) {
     EXPECT_EQ(client().Get("/api/v1/jobs")->status, 200);
 }
 
+TEST_F(LimitsTest, InfoListsEveryLimitWithItsValueHere) {
+    startServer({"--workers", "0", "--max-pixels", "1234", "--max-upload-parts", "7"});
+    httplib::Result r = client().Get("/api/v1/info");
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200);
+    json info = json::parse(r->body);
+    EXPECT_EQ(info["version"], PHOTON_VERSION_FOR_TESTS);
+    EXPECT_EQ(info["integrators"], json({"sppm", "path", "radiosity", "photonmap"}));
+    EXPECT_EQ(info["limits"]["max_pixels"], 1234);
+    EXPECT_EQ(info["limits"]["max_upload_parts"], 7);
+    EXPECT_EQ(info["limits"]["max_passes"], 100000);  // a default
+    EXPECT_EQ(info["limits"].size(), 12u);            // every limit photon-server --help lists
+}
+
 TEST_F(LimitsTest, OptionsAreChecked) {
     EXPECT_NE(runServerBinary({"--help"}).find("--max-jobs-per-client N"), std::string::npos);
     // --max-streams beyond what the HTTP threads allow is refused at start.
