@@ -131,8 +131,17 @@ void HttpServer::configure(const HttpConfig& config) {
     });
     // Errors httplib produces itself (no route, 413, unparsable requests) get a JSON body
     // too; responses that already have one are left alone.
-    httplib::Server::HandlerWithResponse onError = [](const httplib::Request&, httplib::Response& res) {
+    httplib::Server::HandlerWithResponse onError = [](const httplib::Request& req, httplib::Response& res) {
         if (!res.body.empty() || res.content_provider_) return httplib::Server::HandlerResponse::Unhandled;
+        // A known route asked with another method: 405 and the methods it takes (RFC 9110 15.5.6).
+        if (res.status == 404) {
+            if (std::string allowed = allowedMethods(req.path); !allowed.empty()) {
+                res.status = 405;
+                res.set_header("Allow", allowed);
+                sendError(res, 405, req.method + " is not one of this route's methods: " + allowed);
+                return httplib::Server::HandlerResponse::Handled;
+            }
+        }
         sendError(res, res.status, reasonFor(res.status));
         return httplib::Server::HandlerResponse::Handled;
     };

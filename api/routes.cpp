@@ -79,18 +79,32 @@ void registerRoutes(httplib::Server& server, RouteContext& context) {
     for (const Route& route : kRoutes) registerOne(server, context, route);
 }
 
-std::string routeLabel(const std::string& method, const std::string& path) {
-    // Compiled once; the table is fixed for the life of the process.
+namespace {
+// The routes' patterns, compiled once: the table is fixed for the life of the process.
+const std::vector<std::regex>& routePatterns() {
     static const std::vector<std::regex> patterns = [] {
         std::vector<std::regex> out;
         for (const Route& r : kRoutes) out.emplace_back(toRegex(r.path));
         return out;
     }();
+    return patterns;
+}
+}  // namespace
+
+std::string routeLabel(const std::string& method, const std::string& path) {
     for (size_t i = 0; i < kRoutes.size(); ++i)
         if ((method == kRoutes[i].method || (method == "HEAD" && std::string(kRoutes[i].method) == "GET")) &&
-            std::regex_match(path, patterns[i]))
+            std::regex_match(path, routePatterns()[i]))
             return kRoutes[i].path;
     return "unmatched";
+}
+
+std::string allowedMethods(const std::string& path) {
+    std::string allowed;
+    for (size_t i = 0; i < kRoutes.size(); ++i)
+        if (std::regex_match(path, routePatterns()[i]))
+            allowed += (allowed.empty() ? "" : ", ") + std::string(kRoutes[i].method);
+    return allowed;
 }
 
 }  // namespace photon::api

@@ -42,5 +42,8 @@ void registerRoutes(httplib::Server& server, RouteContext& context);
 
 // The route template a request matched, or "unmatched": a bounded label for metrics.
 std::string routeLabel(const std::string& method, const std::string& path);
+// The methods the routes at `path` take, as an Allow header lists them ("GET, DELETE"), or
+// "" when no route has that path.
+std::string allowedMethods(const std::string& path);
 
 }  // namespace photon::api

@@ -120,6 +120,23 @@ TEST_F(ErrorsTest, TokenIsRequiredExceptForHealthAndThePage) {
     EXPECT_EQ(submit(smallScene())->status, 201);
 }
 
+TEST_F(ErrorsTest, AKnownRouteWithAnotherMethodIs405WithAllow) {
+    startServer({"--workers", "0"});
+    httplib::Client c = client();
+    httplib::Result health = c.Delete("/api/v1/health");
+    ASSERT_TRUE(health);
+    EXPECT_EQ(health->status, 405);
+    EXPECT_EQ(health->get_header_value("Allow"), "GET");
+    EXPECT_EQ(errorBody(health)["error"], "DELETE is not one of this route's methods: GET");
+    httplib::Result job = c.Put("/api/v1/jobs/0123456789abcdef", "{}", "application/json");
+    EXPECT_EQ(job->status, 405);
+    EXPECT_EQ(job->get_header_value("Allow"), "GET, DELETE");
+    httplib::Result cancel = c.Get("/api/v1/jobs/0123456789abcdef/cancel");
+    EXPECT_EQ(cancel->status, 405);
+    EXPECT_EQ(cancel->get_header_value("Allow"), "POST");
+    EXPECT_EQ(c.Delete("/api/v1/nothing-here")->status, 404);
+}
+
 // A token on the command line shows in ps; a file or the environment keeps it out of sight.
 TEST_F(ErrorsTest, TheTokenCanComeFromAFileOrTheEnvironment) {
     const std::filesystem::path file = dataDir().parent_path() / ("photon-token-" + std::to_string(::getpid()));
