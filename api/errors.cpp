@@ -5,13 +5,6 @@
 
 namespace photon::api {
 
-namespace {
-
-// A capacity limit frees up when a job finishes or a stream ends: seconds, not minutes.
-constexpr int kRetryAfterSeconds = 5;
-
-}  // namespace
-
 int statusFor(server::ErrorKind kind) {
     switch (kind) {
         case server::ErrorKind::BadRequest: return 400;
@@ -26,13 +19,17 @@ int statusFor(server::ErrorKind kind) {
     return 500;
 }
 
-void sendError(httplib::Response& res, int status, const std::string& message,
-               const std::optional<std::string>& path) {
+std::string errorBody(const std::string& message, const std::optional<std::string>& path) {
     nlohmann::json body{{"error", message}};
     if (path) body["path"] = *path;
-    res.status = status;
     // Replace: the message may not be valid UTF-8 (it can quote client input).
-    res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+    return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+void sendError(httplib::Response& res, int status, const std::string& message,
+               const std::optional<std::string>& path) {
+    res.status = status;
+    res.set_content(errorBody(message, path), "application/json");
 }
 
 void sendException(httplib::Response& res, std::exception_ptr error) {

@@ -12,9 +12,16 @@ struct Response;
 
 namespace photon::api {
 
+// Retry-After of capacity answers (429, 503): a limit frees up when a job finishes or a
+// stream ends, in seconds, not minutes.
+inline constexpr int kRetryAfterSeconds = 5;
+
 int statusFor(server::ErrorKind kind);
 
-// `path` is the scene's JSON path for scene errors; omitted otherwise.
+// The JSON body of every error: {"error": message, "path": path}; `path` is the scene's JSON
+// path for scene errors, omitted otherwise.
+std::string errorBody(const std::string& message, const std::optional<std::string>& path = std::nullopt);
+
 void sendError(httplib::Response& res, int status, const std::string& message,
                const std::optional<std::string>& path = std::nullopt);
 

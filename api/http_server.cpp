@@ -1,9 +1,13 @@
 #include "api/http_server.h"
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <unistd.h>
+#include <cstdlib>
+#include <thread>
 #include <cctype>
 #include <filesystem>
+#include "api/client_address.h"
 #include "api/errors.h"
 #include "api/request_framing.h"
 #include "api/request_ranges.h"
@@ -80,6 +84,14 @@ void adjustBeforeReading(httplib::Request& req) {
         req.headers.emplace("Content-Length", "0");
 }
 
+// A folder only this user can enter, for httplib's socket: no other local user can reach the
+// server past the guard.
+std::string makeSocketFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "photon-http-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot make a folder for the HTTP socket in " + pattern);
+    return pattern;
+}
+
 }  // namespace
 
 bool constantTimeEquals(const std::string& given, const std::string& expected) {
@@ -94,8 +106,28 @@ HttpServer::HttpServer(server::JobService& service, const HttpConfig& config)
     : streams_(config.maxStreams),
       context_{service, streams_},
       origin_{"", 0, config.allowedHosts, config.allowedOrigins},
-      token_(config.token) {
+      token_(config.token),
+      socketFolder_(makeSocketFolder()),
+      guard_(config.connections, socketFolder_ + "/http.sock") {
     configure(config);
+}
+
+HttpServer::~HttpServer() {
+    std::error_code ec;
+    std::filesystem::remove_all(socketFolder_, ec);
+}
+
+bool HttpServer::listen() {
+    std::thread guard([this] { guard_.run(); });
+    bool ok = server_.listen_after_bind();
+    guard_.stop();
+    guard.join();
+    return ok;
+}
+
+void HttpServer::stop() {
+    server_.stop();
+    guard_.stop();
 }
 
 bool HttpServer::authorized(const httplib::Request& req) const {
@@ -117,7 +149,7 @@ void HttpServer::configure(const HttpConfig& config) {
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
         // How it is framed and where it comes from first: an ambiguous, forged or rebound
         // request is refused with or without a token, before its body is read.
-        std::optional<Refusal> refusal = checkRequestFraming(req);
+        std::optional<Refusal> refusal = checkRequestPath(req);
         if (!refusal) refusal = checkRequestOrigin(req, origin_);
         if (refusal) {
             refuseUnread(req, res, refusal->status, refusal->message);
@@ -152,7 +184,7 @@ void HttpServer::configure(const HttpConfig& config) {
     // The access log: one line per answered request (streams when they end).
     server_.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
         context_.service.metrics().countRequest(routeLabel(req.method, req.path), res.status);
-        spdlog::info("{} {} {} {} {}", req.remote_addr, req.method, req.path, res.status, res.body.size());
+        spdlog::info("{} {} {} {} {}", clientAddress(req), req.method, req.path, res.status, res.body.size());
     });
     std::error_code ec;
     if (!config.webRoot.empty() && std::filesystem::is_directory(config.webRoot, ec))
@@ -161,7 +193,10 @@ void HttpServer::configure(const HttpConfig& config) {
 }
 
 int HttpServer::bind(const std::string& host, int port) {
-    int bound = port == 0 ? server_.bind_to_any_port(host) : (server_.bind_to_port(host, port) ? port : -1);
+    // httplib reads the host as the socket path for AF_UNIX; the port is not used.
+    server_.set_address_family(AF_UNIX);
+    if (!server_.bind_to_port(socketFolder_ + "/http.sock", 80)) return -1;
+    int bound = guard_.bind(host, port);
     origin_.boundHost = host;
     origin_.port = bound;
     return bound;

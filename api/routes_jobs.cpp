@@ -1,6 +1,7 @@
 // /api/v1/jobs: submit, list, inspect, cancel, delete.
 #include <httplib.h>
 #include <climits>
+#include "api/client_address.h"
 #include "api/errors.h"
 #include "api/handlers.h"
 #include "api/job_json.h"
@@ -61,7 +62,7 @@ void createJob(RouteContext& ctx, const httplib::Request& req, httplib::Response
     server::RequestDigest digest;
     readUpload(req, res, reader, *upload, {size_t(limits.maxBodyBytes), size_t(limits.maxSceneBytes), size_t(limits.maxUploadParts)}, digest);
     addQuery(req, digest);
-    server::SubmitRequest request{submitOptions(req), req.remote_addr, idempotencyKey(req), digest.hex()};
+    server::SubmitRequest request{submitOptions(req), clientAddress(req), idempotencyKey(req), digest.hex()};
     server::SubmitResult result = ctx.service.submit(*upload, request);
     res.set_header("Location", "/api/v1/jobs/" + result.job.id);
     // 200 for a retry: the job exists already and is what the first attempt created.

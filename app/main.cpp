@@ -45,8 +45,13 @@ void setUpLogging(const std::string& level) {
 int serve(const app::ServerOptions& options) {
     server::JobService service(options.service);
     const server::Limits& limits = options.service.limits;
+    api::GuardLimits connections{{size_t(limits.maxHeaderBytes), size_t(limits.maxHeaderFields)},
+                                 double(limits.requestHeadSeconds),
+                                 limits.minBodyBytesPerSecond,
+                                 limits.maxConnectionsPerClient,
+                                 limits.maxConnections};
     api::HttpServer http(service, {options.token, options.webRoot, size_t(limits.maxBodyBytes), int(limits.maxStreams),
-                                   options.allowedHosts, options.allowedOrigins});
+                                   options.allowedHosts, options.allowedOrigins, connections});
     int port = http.bind(options.host, options.port);
     if (port < 0) {
         spdlog::critical("cannot listen on {}:{}", options.host, options.port);

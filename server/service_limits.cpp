@@ -20,6 +20,17 @@ const std::vector<LimitOption>& limitOptions() {
         {&Limits::maxJobsPerClient, "--max-jobs-per-client", "queued and running jobs of one remote address (429)",
          kBig},
         {&Limits::maxQueuedJobs, "--max-queued-jobs", "queued jobs, all clients (503)", kBig},
+        {&Limits::maxHeaderBytes, "--max-header-bytes", "bytes of a request's line and header fields (414, 431)",
+         16 << 20},
+        {&Limits::maxHeaderFields, "--max-header-fields", "header fields of a request (431)", 10000},
+        {&Limits::requestHeadSeconds, "--request-head-seconds",
+         "seconds to send a whole request head (408), and before a body must keep up --min-body-rate", 3600},
+        {&Limits::minBodyBytesPerSecond, "--min-body-rate",
+         "bytes per second a request body must average after that grace, or its connection closes", kBig},
+        {&Limits::maxConnectionsPerClient, "--max-connections-per-client",
+         "open connections of one remote address; beyond, its oldest one without a request closes (503 if none)",
+         100000},
+        {&Limits::maxConnections, "--max-connections", "open connections, all clients (the same)", 100000},
     };
     return options;
 }

@@ -24,6 +24,13 @@ struct Limits {
     int64_t maxStreams = 128;
     int64_t maxJobsPerClient = 100;
     int64_t maxQueuedJobs = 1000;
+    // Of connections, before a request reaches a route (api/connection_guard.h).
+    int64_t maxHeaderBytes = 64 << 10;
+    int64_t maxHeaderFields = 100;
+    int64_t requestHeadSeconds = 10;
+    int64_t minBodyBytesPerSecond = 1024;
+    int64_t maxConnectionsPerClient = 256;
+    int64_t maxConnections = 4096;
 };
 
 // Each open stream holds one of the 256 HTTP threads: at least 64 stay for ordinary requests.

@@ -1,4 +1,6 @@
-// Fuzzes the HTTP API in process: raw request bytes go through httplib's own request parser
+// Fuzzes the HTTP API in process: raw request bytes go through the connection guard's request
+// relay (api/request_relay.h: bounded heads, framing, re-serialisation), as the server gets
+// them, then through httplib's own request parser
 // and router (Server::process_request over an in-memory Stream, no socket) into the real
 // route table (registerRoutes) backed by a JobService on a scratch data folder that renders
 // nothing (0 workers). Bodies, multipart uploads, headers and query strings all reach the
@@ -16,6 +18,7 @@
 #include <cstdlib>
 #include <httplib.h>
 #include <memory>
+#include "api/request_relay.h"
 #include "api/routes.h"
 #include "api/stream_support.h"
 #include "fuzz_support.h"
@@ -146,7 +149,10 @@ std::string withFixtureId(std::string text, const std::string& id) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Harness& h = harness();
     h.ensureFixtureJob();
-    BufferStream stream(withFixtureId(std::string(reinterpret_cast<const char*>(data), size), h.fixtureId));
+    std::string forwarded;
+    photon::api::RequestRelay relay({}, "127.0.0.1");
+    relay.feed(withFixtureId(std::string(reinterpret_cast<const char*>(data), size), h.fixtureId), forwarded);
+    BufferStream stream(std::move(forwarded));
     for (int i = 0; i < kMaxRequestsPerInput && !stream.atEnd(); ++i)
         if (!h.server.serveOne(stream)) break;
     h.removeCreatedJobs();

@@ -91,22 +91,40 @@ Image decodeImage(const std::string& bytes, const std::string& extension) {
     return image;
 }
 
-std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds) {
+int connectTo(int port) {
     int fd = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in addr{};
     addr.sin_family = AF_INET;
     addr.sin_port = htons(uint16_t(port));
     addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (fd >= 0 && ::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0) return fd;
+    if (fd >= 0) ::close(fd);
+    return -1;
+}
+
+std::string readUntilClosed(int fd, int timeoutSeconds) {
+    timeval timeout{timeoutSeconds, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
     std::string answer;
-    if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0 &&
-        ::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) == ssize_t(bytes.size())) {
-        timeval timeout{timeoutSeconds, 0};
-        ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-        char buffer[4096];
-        for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, size_t(n));
-    }
-    ::close(fd);
+    char buffer[4096];
+    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, size_t(n));
     return answer;
+}
+
+std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds) {
+    int fd = connectTo(port);
+    std::string answer;
+    if (fd >= 0 && ::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) == ssize_t(bytes.size()))
+        answer = readUntilClosed(fd, timeoutSeconds);
+    if (fd >= 0) ::close(fd);
+    return answer;
+}
+
+int64_t ServerTest::serverMemoryBytes() const {
+    std::ifstream status("/proc/" + std::to_string(server_.pid()) + "/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("VmRSS:", 0) == 0) return std::stoll(line.substr(6)) * 1024;  // in kB
+    return -1;
 }
 
 void ServerTest::SetUp() { dataDir_ = makeTempDir("photon-server-test-"); }

@@ -42,6 +42,10 @@ Image decodeImage(const std::string& bytes, const std::string& extension);
 // Sends `bytes` to the server on a new connection and returns all it answers until it closes
 // the connection (or `timeoutSeconds` pass without a byte).
 std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds = 20);
+// A new connection to the server on 127.0.0.1 (blocking), or -1.
+int connectTo(int port);
+// Reads until the peer closes or `timeoutSeconds` pass without a byte.
+std::string readUntilClosed(int fd, int timeoutSeconds = 20);
 
 class ServerTest : public ::testing::Test {
 protected:
@@ -73,6 +77,8 @@ protected:
 
     const std::filesystem::path& dataDir() const { return dataDir_; }
     int port() const { return server_.port(); }
+    // The server process's resident memory (VmRSS), in bytes.
+    int64_t serverMemoryBytes() const;
 
 private:
     std::filesystem::path dataDir_;

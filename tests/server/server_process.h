@@ -23,6 +23,7 @@ public:
     // SIGKILL and wait: a crash, with no chance to save anything.
     void kill();
     int port() const { return port_; }
+    pid_t pid() const { return pid_; }
     bool running() const { return pid_ > 0; }
 
 private:

@@ -1,0 +1,559 @@
+#include "api/connection_guard.h"
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netdb.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <spdlog/spdlog.h>
+#include <sys/epoll.h>
+#include <sys/eventfd.h>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <unordered_map>
+#include "api/errors.h"
+#include "api/request_relay.h"
+
+namespace photon::api {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr size_t kReadChunk = 16 << 10;
+// Bytes held for either direction of a connection before reading from the other side pauses.
+constexpr size_t kMaxBuffered = 256 << 10;
+// A client that takes none of a response for this long is gone (httplib's own write timeout
+// is 5 s; a client on a slow link still takes something every few seconds).
+constexpr double kStalledWriteSeconds = 30;
+// After a last response, unread client bytes are read and dropped for this long before the
+// socket closes: closing with unread bytes sends a reset that can destroy the response.
+constexpr double kLingerSeconds = 2;
+// Retry of a connection to the HTTP server whose accept backlog is full.
+constexpr int kRetryMilliseconds = 10;
+constexpr int kTimerMilliseconds = 250;
+constexpr uint64_t kListenTag = 0;
+constexpr uint64_t kWakeTag = 1;
+
+double secondsBetween(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
+
+const char* statusText(int status) {
+    switch (status) {
+        case 400: return "Bad Request";
+        case 408: return "Request Timeout";
+        case 413: return "Payload Too Large";
+        case 414: return "URI Too Long";
+        case 431: return "Request Header Fields Too Large";
+        case 503: return "Service Unavailable";
+        default: return "Error";
+    }
+}
+
+std::string refusalResponse(const Refusal& refusal) {
+    std::string body = errorBody(refusal.message);
+    std::string head = "HTTP/1.1 " + std::to_string(refusal.status) + " " + statusText(refusal.status) +
+                       "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+                       "\r\nConnection: close\r\n";
+    if (refusal.status == 503) head += "Retry-After: " + std::to_string(kRetryAfterSeconds) + "\r\n";
+    return head + "\r\n" + body;
+}
+
+std::string peerAddress(const sockaddr_storage& peer) {
+    char text[INET6_ADDRSTRLEN] = "";
+    if (peer.ss_family == AF_INET)
+        inet_ntop(AF_INET, &reinterpret_cast<const sockaddr_in&>(peer).sin_addr, text, sizeof text);
+    else if (peer.ss_family == AF_INET6)
+        inet_ntop(AF_INET6, &reinterpret_cast<const sockaddr_in6&>(peer).sin6_addr, text, sizeof text);
+    return text;
+}
+
+// Two descriptors a connection: enough of them for maxConnections.
+void raiseDescriptorLimit(int64_t connections) {
+    rlimit limit{};
+    if (getrlimit(RLIMIT_NOFILE, &limit) != 0) return;
+    rlim_t wanted = rlim_t(2 * connections + 1024);
+    if (limit.rlim_cur >= wanted) return;
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+    setrlimit(RLIMIT_NOFILE, &limit);
+}
+
+struct Connection {
+    Connection(uint64_t id, int client, const std::string& address, const HeadLimits& limits)
+        : id(id), client(client), address(address), requests(limits, address) {}
+
+    uint64_t id;
+    int client;
+    int upstream = -1;
+    std::string address;
+    RequestRelay requests;
+    bool closing = false;  // no more requests: what is on its way is delivered, then it closes
+    Clock::time_point accepted;
+
+    bool headTimed = true;  // a head is due: from connecting, then from a next head's first byte
+    Clock::time_point headStart;
+    Clock::time_point bodyStart;
+
+    std::string toUpstream, toClient;
+    Clock::time_point clientWriteProgress;  // last time toClient shrank or began to fill
+    bool connectPending = false;
+    Clock::time_point connectSince;
+    bool clientEof = false;
+    bool upstreamWriteShut = false;
+    std::string refusalAfterUpstream;  // a refusal waiting for an answer in flight to end
+    bool lingering = false;
+    Clock::time_point lingerSince;
+    uint32_t clientEvents = 0, upstreamEvents = 0;
+    bool closed = false;
+
+    bool waitingForFirstHead() const { return !closing && requests.requestsForwarded() == 0; }
+    bool betweenRequests() const { return !requests.midHead() && !requests.inBody(); }
+};
+
+}  // namespace
+
+class ConnectionGuard::Loop {
+public:
+    Loop(const GuardLimits& limits, std::string upstreamSocket)
+        : limits_(limits), upstreamSocket_(std::move(upstreamSocket)) {
+        epoll_ = epoll_create1(EPOLL_CLOEXEC);
+        wake_ = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+        add(wake_, EPOLLIN, kWakeTag);
+        raiseDescriptorLimit(limits.maxConnections);
+    }
+    ~Loop() {
+        for (auto& [id, c] : connections_) closeDescriptors(*c);
+        if (listen_ >= 0) close(listen_);
+        close(wake_);
+        close(epoll_);
+    }
+
+    int bind(const std::string& host, int port) {
+        addrinfo hints{};
+        hints.ai_family = AF_UNSPEC;
+        hints.ai_socktype = SOCK_STREAM;
+        hints.ai_flags = AI_PASSIVE | AI_NUMERICSERV;
+        addrinfo* found = nullptr;
+        if (getaddrinfo(host.c_str(), std::to_string(port).c_str(), &hints, &found) != 0) return -1;
+        int bound = -1;
+        for (addrinfo* a = found; a && bound < 0; a = a->ai_next) {
+            int fd = socket(a->ai_family, a->ai_socktype | SOCK_NONBLOCK | SOCK_CLOEXEC, a->ai_protocol);
+            if (fd < 0) continue;
+            int one = 1;
+            setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+            if (::bind(fd, a->ai_addr, a->ai_addrlen) == 0 && listen(fd, SOMAXCONN) == 0) {
+                sockaddr_storage local{};
+                socklen_t length = sizeof local;
+                getsockname(fd, reinterpret_cast<sockaddr*>(&local), &length);
+                bound = ntohs(local.ss_family == AF_INET6 ? reinterpret_cast<sockaddr_in6&>(local).sin6_port
+                                                          : reinterpret_cast<sockaddr_in&>(local).sin_port);
+                listen_ = fd;
+            } else {
+                close(fd);
+            }
+        }
+        freeaddrinfo(found);
+        if (listen_ >= 0) add(listen_, EPOLLIN, kListenTag);
+        return bound;
+    }
+
+    void run() {
+        epoll_event events[256];
+        Clock::time_point nextTimers = Clock::now();
+        Clock::time_point drainUntil{};
+        while (true) {
+            if (stopping_ && drainUntil == Clock::time_point{}) beginDrain(drainUntil);
+            if (stopping_ && (connections_.empty() || Clock::now() > drainUntil)) break;
+            int timeout = anyConnectPending() ? kRetryMilliseconds : kTimerMilliseconds;
+            int n = epoll_wait(epoll_, events, 256, timeout);
+            for (int i = 0; i < n; ++i) dispatch(events[i]);
+            if (Clock::now() >= nextTimers || anyConnectPending()) {
+                checkTimers();
+                nextTimers = Clock::now() + std::chrono::milliseconds(kTimerMilliseconds);
+            }
+        }
+    }
+
+    void stop() {
+        stopping_ = true;
+        uint64_t one = 1;
+        [[maybe_unused]] ssize_t w = write(wake_, &one, sizeof one);
+    }
+
+private:
+    void add(int fd, uint32_t events, uint64_t tag) {
+        epoll_event e{};
+        e.events = events;
+        e.data.u64 = tag;
+        epoll_ctl(epoll_, EPOLL_CTL_ADD, fd, &e);
+    }
+    void modify(int fd, uint32_t events, uint64_t tag) {
+        epoll_event e{};
+        e.events = events;
+        e.data.u64 = tag;
+        epoll_ctl(epoll_, EPOLL_CTL_MOD, fd, &e);
+    }
+    static uint64_t tagOf(const Connection& c, bool upstream) { return (c.id << 1) | (upstream ? 1 : 0); }
+
+    // Stop taking connections and requests; answers in flight are relayed for a while.
+    void beginDrain(Clock::time_point& until) {
+        until = Clock::now() + std::chrono::seconds(2);
+        if (listen_ >= 0) {
+            close(listen_);
+            listen_ = -1;
+        }
+        for (auto& [id, c] : connections_)
+            if (c->upstream < 0) c->closed = true;
+        sweep();
+    }
+
+    bool anyConnectPending() const { return pendingConnects_ > 0; }
+
+    void dispatch(const epoll_event& e) {
+        if (e.data.u64 == kListenTag) return acceptAll();
+        if (e.data.u64 == kWakeTag) {
+            uint64_t value;
+            [[maybe_unused]] ssize_t r = read(wake_, &value, sizeof value);
+            return;
+        }
+        auto it = connections_.find(e.data.u64 >> 1);
+        if (it == connections_.end()) return;
+        Connection& c = *it->second;
+        if (e.data.u64 & 1) {
+            if (e.events & (EPOLLHUP | EPOLLERR)) {
+                // The server closed: what it wrote is bounded by its socket buffer; take it all.
+                while (c.upstream >= 0 && readUpstream(c)) {
+                }
+            } else if (e.events & EPOLLIN) {
+                readUpstream(c);
+            }
+            if (!c.closed && c.upstream >= 0 && (e.events & EPOLLOUT)) writeUpstream(c);
+        } else {
+            // Hang-up: both directions are shut (or reset); nothing can reach the client.
+            if (e.events & (EPOLLERR | EPOLLHUP)) c.closed = true;
+            if (!c.closed && (e.events & EPOLLIN)) readClient(c);
+            if (!c.closed && (e.events & EPOLLOUT)) writeClient(c);
+        }
+        settle(c);
+        sweep();
+    }
+
+    void acceptAll() {
+        while (true) {
+            sockaddr_storage peer{};
+            socklen_t length = sizeof peer;
+            int fd = accept4(listen_, reinterpret_cast<sockaddr*>(&peer), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
+            if (fd < 0) {
+                if (errno == EMFILE || errno == ENFILE) {
+                    // Out of descriptors: make room from the oldest connection still sending its
+                    // first head, or wait for one to end.
+                    bool evicted = evictOldestWaiting("");
+                    sweep();
+                    if (evicted) continue;
+                    modify(listen_, 0, kListenTag);
+                    listenPaused_ = true;
+                    return;
+                }
+                return;
+            }
+            admit(fd, peerAddress(peer));
+        }
+    }
+
+    void admit(int fd, const std::string& address) {
+        auto known = perClient_.find(address);
+        bool room = true;
+        if (known != perClient_.end() && known->second >= limits_.maxConnectionsPerClient)
+            room = evictOldestWaiting(address);
+        if (room && int64_t(connections_.size()) >= limits_.maxConnections) room = evictOldestWaiting("");
+        sweep();
+        if (!room) {
+            std::string answer = refusalResponse({503, "too many connections; try again later"});
+            [[maybe_unused]] ssize_t w = send(fd, answer.data(), answer.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+            close(fd);
+            return;
+        }
+        int one = 1;
+        setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
+        auto c = std::make_unique<Connection>(nextId_++, fd, address, limits_.head);
+        c->accepted = c->headStart = Clock::now();
+        ++perClient_[address];
+        c->clientEvents = EPOLLIN;
+        add(fd, EPOLLIN, tagOf(*c, false));
+        connections_.emplace(c->id, std::move(c));
+    }
+
+    // Closes the connection of `address` (any, if empty) that has waited longest for its first
+    // head. False if there is none.
+    bool evictOldestWaiting(const std::string& address) {
+        Connection* oldest = nullptr;
+        for (auto& [id, c] : connections_)
+            if (!c->closed && c->waitingForFirstHead() && (address.empty() || c->address == address) &&
+                (!oldest || c->accepted < oldest->accepted))
+                oldest = c.get();
+        if (!oldest) return false;
+        spdlog::debug("connection from {} closed to make room ({} s without a request)", oldest->address,
+                      secondsBetween(oldest->accepted, Clock::now()));
+        oldest->closed = true;
+        return true;
+    }
+
+    void readClient(Connection& c) {
+        char buffer[kReadChunk];
+        ssize_t n = recv(c.client, buffer, sizeof buffer, 0);
+        if (n < 0) {
+            if (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) c.closed = true;
+            return;
+        }
+        if (n == 0) {
+            c.clientEof = true;
+            return;
+        }
+        if (!c.closing) feed(c, std::string_view(buffer, size_t(n)));
+    }
+
+    // Client bytes: requests go on to the server as the relay frames them.
+    void feed(Connection& c, std::string_view data) {
+        if (!c.headTimed && !c.requests.inBody()) {  // the first byte of a next head
+            c.headTimed = true;
+            c.headStart = Clock::now();
+        }
+        int64_t before = c.requests.requestsForwarded();
+        std::optional<Refusal> refusal = c.requests.feed(data, c.toUpstream);
+        if (c.requests.requestsForwarded() > before) {
+            c.bodyStart = Clock::now();
+            c.headTimed = c.requests.midHead();
+            if (c.headTimed) c.headStart = Clock::now();
+            if (c.upstream < 0 && !c.connectPending && !connectUpstream(c)) return;
+        }
+        if (refusal) refuse(c, *refusal);
+    }
+
+    bool connectUpstream(Connection& c) {
+        int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+        sockaddr_un address{};
+        address.sun_family = AF_UNIX;
+        std::strncpy(address.sun_path, upstreamSocket_.c_str(), sizeof address.sun_path - 1);
+        if (fd >= 0 && connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+            if (c.connectPending) --pendingConnects_;
+            c.connectPending = false;
+            c.upstream = fd;
+            c.upstreamEvents = 0;
+            add(fd, 0, tagOf(c, true));
+            return true;
+        }
+        int error = errno;
+        if (fd >= 0) close(fd);
+        if (error == EAGAIN) {  // the server's accept backlog is full: retried shortly
+            if (!c.connectPending) {
+                c.connectPending = true;
+                c.connectSince = Clock::now();
+                ++pendingConnects_;
+            }
+            return true;
+        }
+        spdlog::error("cannot reach the HTTP server at {}: {}", upstreamSocket_, std::strerror(error));
+        refuse(c, {503, "server busy"});
+        return false;
+    }
+
+    // Answers `refusal` and closes; an answer in flight from the server is relayed first.
+    void refuse(Connection& c, const Refusal& refusal) {
+        if (c.connectPending) --pendingConnects_;
+        c.connectPending = false;
+        c.closing = true;
+        c.toUpstream.clear();
+        std::string answer = refusalResponse(refusal);
+        if (c.upstream >= 0) {
+            // The server finishes what it was asked and then sees the end of requests.
+            shutdown(c.upstream, SHUT_WR);
+            c.upstreamWriteShut = true;
+            c.refusalAfterUpstream = std::move(answer);
+        } else {
+            queueToClient(c, answer);
+        }
+    }
+
+    void queueToClient(Connection& c, std::string_view bytes) {
+        if (c.toClient.empty()) c.clientWriteProgress = Clock::now();
+        c.toClient.append(bytes);
+    }
+
+    // True if it read something.
+    bool readUpstream(Connection& c) {
+        char buffer[kReadChunk];
+        ssize_t n = recv(c.upstream, buffer, sizeof buffer, 0);
+        if (n > 0) {
+            queueToClient(c, std::string_view(buffer, size_t(n)));
+            return true;
+        }
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return false;
+        upstreamEnded(c);
+        return false;
+    }
+
+    // The server closed its side (after a response with Connection: close, at its keep-alive
+    // limit, or on stopping): the client's connection closes after what is already on its way.
+    void upstreamEnded(Connection& c) {
+        epoll_ctl(epoll_, EPOLL_CTL_DEL, c.upstream, nullptr);
+        close(c.upstream);
+        c.upstream = -1;
+        c.closing = true;
+        if (!c.refusalAfterUpstream.empty()) queueToClient(c, c.refusalAfterUpstream);
+        c.refusalAfterUpstream.clear();
+        c.toUpstream.clear();
+    }
+
+    void writeClient(Connection& c) {
+        if (c.toClient.empty()) return;
+        ssize_t n = send(c.client, c.toClient.data(), c.toClient.size(), MSG_NOSIGNAL);
+        if (n > 0) {
+            c.toClient.erase(0, size_t(n));
+            c.clientWriteProgress = Clock::now();
+        } else if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+            c.closed = true;
+        }
+    }
+
+    void writeUpstream(Connection& c) {
+        if (c.connectPending || c.toUpstream.empty()) return;
+        ssize_t n = send(c.upstream, c.toUpstream.data(), c.toUpstream.size(), MSG_NOSIGNAL);
+        if (n > 0) c.toUpstream.erase(0, size_t(n));
+        else if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) upstreamEnded(c);
+    }
+
+    // What a connection does next, after any event: finish, half-close, and which events to
+    // wait for.
+    void settle(Connection& c) {
+        if (c.closed) return;
+        if (c.clientEof && !c.closing) {
+            if (!c.betweenRequests() || (c.upstream < 0 && !c.connectPending)) {
+                c.closed = true;  // gone mid-request, or before any
+                return;
+            }
+            // A client that sent its last request and half-closed: the server answers it, then
+            // sees the end.
+            if (c.upstream >= 0 && c.toUpstream.empty() && !c.upstreamWriteShut) {
+                shutdown(c.upstream, SHUT_WR);
+                c.upstreamWriteShut = true;
+            }
+        }
+        if (c.closing && c.upstream < 0 && c.toClient.empty()) {
+            if (c.clientEof || stopping_) {
+                c.closed = true;
+                return;
+            }
+            if (!c.lingering) {
+                shutdown(c.client, SHUT_WR);
+                c.lingering = true;
+                c.lingerSince = Clock::now();
+            }
+        }
+        uint32_t clientEvents = 0;
+        if (!c.clientEof && !stopping_ && (c.closing || c.toUpstream.size() < kMaxBuffered))
+            clientEvents |= EPOLLIN;
+        if (!c.toClient.empty()) clientEvents |= EPOLLOUT;
+        if (clientEvents != c.clientEvents) {
+            modify(c.client, clientEvents, tagOf(c, false));
+            c.clientEvents = clientEvents;
+        }
+        if (c.upstream >= 0) {
+            uint32_t upstreamEvents = c.toClient.size() < kMaxBuffered ? uint32_t(EPOLLIN) : 0u;
+            if (!c.toUpstream.empty()) upstreamEvents |= EPOLLOUT;
+            if (upstreamEvents != c.upstreamEvents) {
+                modify(c.upstream, upstreamEvents, tagOf(c, true));
+                c.upstreamEvents = upstreamEvents;
+            }
+        }
+    }
+
+    void checkTimers() {
+        Clock::time_point now = Clock::now();
+        for (auto& [id, cp] : connections_) {
+            Connection& c = *cp;
+            if (c.closed) continue;
+            if (c.connectPending) {
+                if (secondsBetween(c.connectSince, now) > limits_.headSeconds) refuse(c, {503, "server busy"});
+                else connectUpstream(c);
+                if (c.upstream >= 0) writeUpstream(c);
+            }
+            if (c.closing) {
+                // delivering what is on its way
+            } else if (!c.requests.inBody() && c.headTimed && secondsBetween(c.headStart, now) > limits_.headSeconds) {
+                spdlog::info("{}: no whole request head within {} s", c.address, limits_.headSeconds);
+                refuse(c, {408, "the request's head did not arrive within " +
+                                    std::to_string(int(limits_.headSeconds)) + " s"});
+            } else if (c.requests.inBody()) {
+                double late = secondsBetween(c.bodyStart, now) - limits_.headSeconds;
+                if (late > 0 && c.toUpstream.size() < kMaxBuffered &&
+                    double(c.requests.bodyBytes()) < double(limits_.minBodyBytesPerSecond) * late) {
+                    spdlog::info("{}: request body slower than {} bytes/s", c.address, limits_.minBodyBytesPerSecond);
+                    c.closed = true;
+                }
+            }
+            if (!c.toClient.empty() && secondsBetween(c.clientWriteProgress, now) > kStalledWriteSeconds)
+                c.closed = true;
+            if (c.lingering && secondsBetween(c.lingerSince, now) > kLingerSeconds) c.closed = true;
+            settle(c);
+        }
+        if (listenPaused_ && listen_ >= 0) {
+            modify(listen_, EPOLLIN, kListenTag);
+            listenPaused_ = false;
+        }
+        sweep();
+    }
+
+    void closeDescriptors(Connection& c) {
+        if (c.upstream >= 0) close(c.upstream);
+        if (c.client >= 0) close(c.client);
+        c.upstream = c.client = -1;
+    }
+
+    // Removes the connections marked closed.
+    void sweep() {
+        for (auto it = connections_.begin(); it != connections_.end();) {
+            Connection& c = *it->second;
+            if (!c.closed) {
+                ++it;
+                continue;
+            }
+            if (c.connectPending) --pendingConnects_;
+            closeDescriptors(c);  // closing a descriptor also removes it from the epoll set
+            if (--perClient_[c.address] <= 0) perClient_.erase(c.address);
+            it = connections_.erase(it);
+        }
+    }
+
+    GuardLimits limits_;
+    std::string upstreamSocket_;
+    int epoll_ = -1, wake_ = -1, listen_ = -1;
+    bool listenPaused_ = false;
+    std::atomic<bool> stopping_{false};
+    std::unordered_map<uint64_t, std::unique_ptr<Connection>> connections_;
+    std::unordered_map<std::string, int> perClient_;
+    uint64_t nextId_ = 2;
+    int pendingConnects_ = 0;
+};
+
+ConnectionGuard::ConnectionGuard(const GuardLimits& limits, std::string upstreamSocket)
+    : loop_(std::make_unique<Loop>(limits, std::move(upstreamSocket))) {}
+
+ConnectionGuard::~ConnectionGuard() = default;
+
+int ConnectionGuard::bind(const std::string& host, int port) { return loop_->bind(host, port); }
+
+void ConnectionGuard::run() {
+    running_ = true;
+    loop_->run();
+    running_ = false;
+}
+
+void ConnectionGuard::stop() { loop_->stop(); }
+
+}  // namespace photon::api

@@ -1,0 +1,118 @@
+// The connection guard's parsers on their own: where a head ends and what it says, and where
+// a chunked body ends, fed in pieces as bytes arrive.
+#include <gtest/gtest.h>
+#include <variant>
+#include "api/chunked_body.h"
+#include "api/request_framing.h"
+#include "api/request_head.h"
+#include "api/request_relay.h"
+
+namespace photon::api {
+namespace {
+
+TEST(RequestHead, AWholeHeadIsParsedAndItsLengthCounted) {
+    std::string bytes = "\r\nPOST /api/v1/jobs?x=1 HTTP/1.1\r\nHost: a\r\nContent-Length:  12 \r\n\r\nbody";
+    HeadScan scan = scanRequestHead(bytes, {});
+    ASSERT_EQ(scan.state, HeadScan::State::Complete);
+    EXPECT_EQ(scan.length, bytes.size() - 4);  // the leading empty line counted, the body not
+    EXPECT_EQ(scan.head.method, "POST");
+    EXPECT_EQ(scan.head.target, "/api/v1/jobs?x=1");
+    EXPECT_EQ(scan.head.values("content-length"), std::vector<std::string>{"12"});
+    EXPECT_EQ(forwardedHead(scan.head, "X-Client", "10.0.0.1"),
+              "POST /api/v1/jobs?x=1 HTTP/1.1\r\nHost: a\r\nContent-Length: 12\r\nX-Client: 10.0.0.1\r\n\r\n");
+}
+
+TEST(RequestHead, EveryPrefixOfAHeadIsIncomplete) {
+    std::string bytes = "GET / HTTP/1.1\r\nHost: a\r\n\r\n";
+    for (size_t n = 0; n < bytes.size(); ++n)
+        EXPECT_EQ(scanRequestHead(bytes.substr(0, n), {}).state, HeadScan::State::Incomplete) << n;
+}
+
+TEST(RequestHead, BoundsAreCheckedBeforeTheHeadEnds) {
+    HeadLimits limits{100, 2};
+    HeadScan line = scanRequestHead("GET /" + std::string(200, 'a'), limits);
+    EXPECT_EQ(line.refusal.status, 414);
+    HeadScan fields = scanRequestHead("GET / HTTP/1.1\r\na: 1\r\nb: 2\r\nc: 3\r\n", limits);
+    EXPECT_EQ(fields.refusal.status, 431);
+    EXPECT_EQ(scanRequestHead("GET / HTTP/1.1\r\na: 1\r\nb: 2\r\n\r\n", limits).state, HeadScan::State::Complete);
+    HeadScan bytes = scanRequestHead("GET / HTTP/1.1\r\na: " + std::string(100, 'x'), limits);
+    EXPECT_EQ(bytes.refusal.status, 431);
+}
+
+TEST(RequestHead, ForwardingDropsTheClientsOwnAddressField) {
+    HeadScan scan = scanRequestHead("GET / HTTP/1.1\r\nx-client: 1.2.3.4\r\n\r\n", {});
+    EXPECT_EQ(forwardedHead(scan.head, "X-Client", "::1"), "GET / HTTP/1.1\r\nX-Client: ::1\r\n\r\n");
+}
+
+TEST(BodyFraming, LengthsAndCodings) {
+    auto framing = [](const std::string& fields) {
+        return bodyFramingOf(scanRequestHead("POST / HTTP/1.1\r\n" + fields + "\r\n", {}).head);
+    };
+    EXPECT_EQ(std::get<BodyFraming>(framing("")).length, 0u);
+    EXPECT_EQ(std::get<BodyFraming>(framing("Content-Length: 7\r\ncontent-length: 7\r\n")).length, 7u);
+    EXPECT_EQ(std::get<BodyFraming>(framing("Transfer-Encoding: Chunked\r\n")).kind, BodyFraming::Kind::Chunked);
+    EXPECT_EQ(std::get<Refusal>(framing("Content-Length: 7\r\nContent-Length: 8\r\n")).status, 400);
+    EXPECT_EQ(std::get<Refusal>(framing("Content-Length: 99999999999999999999999\r\n")).status, 413);
+    EXPECT_EQ(std::get<Refusal>(framing("Transfer-Encoding: chunked\r\nTransfer-Encoding: chunked\r\n")).status, 400);
+}
+
+TEST(ChunkedBody, TheEndIsFoundWhateverThePieces) {
+    const std::string body = "5;name=value\r\nhello\r\n1A\r\n" + std::string(26, 'z') + "\r\n0\r\nTrailer: 1\r\n\r\n";
+    const std::string next = "GET / HTTP/1.1\r\n";
+    for (size_t piece : {1, 2, 3, 7, 64}) {
+        ChunkedBodyScanner scanner;
+        std::string all = body + next;
+        size_t consumed = 0;
+        std::string forward;
+        for (size_t i = 0; i < all.size() && !scanner.done(); i += piece)
+            consumed += scanner.consume(std::string_view(all).substr(i, piece), forward);
+        EXPECT_TRUE(scanner.done()) << piece;
+        EXPECT_EQ(consumed, body.size()) << piece;
+        // Re-framed: plain sizes, no extension, no trailer.
+        EXPECT_EQ(forward, "5\r\nhello\r\n1a\r\n" + std::string(26, 'z') + "\r\n0\r\n\r\n") << piece;
+        EXPECT_FALSE(scanner.error());
+    }
+}
+
+TEST(ChunkedBody, MalformedBodiesAreRefused) {
+    for (const std::string& bad : std::vector<std::string>{"zz\r\n", "5\r\nhello!\r\n", "5\nhello\r\n", std::string(70000, '1')}) {
+        ChunkedBodyScanner scanner;
+        std::string forward;
+        scanner.consume(bad, forward);
+        ASSERT_TRUE(scanner.error()) << bad.substr(0, 20);
+        EXPECT_EQ(scanner.error()->status, 400);
+        EXPECT_FALSE(scanner.done());
+    }
+}
+
+TEST(RequestRelay, RequestsGoOnWithTheClientsAddressAndTheirBodiesExactly) {
+    const std::string in = "POST /a HTTP/1.1\r\nX-Photon-Client-Address: forged\r\nContent-Length: 3\r\n\r\nabc"
+                           "POST /b HTTP/1.1\r\nTransfer-Encoding: chunked\r\n\r\n2;x\r\nde\r\n0\r\nT: 1\r\n\r\n"
+                           "GET /c HTTP/1.1\r\n";
+    const std::string out = "POST /a HTTP/1.1\r\nContent-Length: 3\r\nX-Photon-Client-Address: ::1\r\n\r\nabc"
+                            "POST /b HTTP/1.1\r\nTransfer-Encoding: chunked\r\nX-Photon-Client-Address: ::1\r\n\r\n"
+                            "2\r\nde\r\n0\r\n\r\n";
+    for (size_t piece : {1, 5, 1000}) {
+        RequestRelay relay({}, "::1");
+        std::string forward;
+        for (size_t i = 0; i < in.size(); i += piece) EXPECT_FALSE(relay.feed(std::string_view(in).substr(i, piece), forward));
+        EXPECT_EQ(forward, out) << piece;
+        EXPECT_EQ(relay.requestsForwarded(), 2);
+        EXPECT_TRUE(relay.midHead());
+    }
+}
+
+TEST(RequestRelay, ARefusalEndsTheStream) {
+    RequestRelay relay({}, "::1");
+    std::string forward;
+    std::optional<Refusal> refusal =
+        relay.feed("GET /a HTTP/1.1\r\n\r\nPOST /b HTTP/1.1\r\nContent-Length: x\r\n\r\nGET /c HTTP/1.1\r\n\r\n", forward);
+    ASSERT_TRUE(refusal);
+    EXPECT_EQ(refusal->status, 400);
+    EXPECT_EQ(forward, "GET /a HTTP/1.1\r\nX-Photon-Client-Address: ::1\r\n\r\n");
+    EXPECT_TRUE(relay.feed("GET /d HTTP/1.1\r\n\r\n", forward));
+    EXPECT_EQ(relay.requestsForwarded(), 1);
+}
+
+}  // namespace
+}  // namespace photon::api
