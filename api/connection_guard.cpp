@@ -18,6 +18,7 @@
 #include <unordered_map>
 #include "api/errors.h"
 #include "api/request_relay.h"
+#include "api/response_stream.h"
 
 namespace photon::api {
 
@@ -90,30 +91,31 @@ struct Connection {
 
     uint64_t id;
     int client;
-    int upstream = -1;
+    int upstream = -1;  // open while the server is answering a request of this connection
     std::string address;
     RequestRelay requests;
+    ResponseStream responses;
     bool closing = false;  // no more requests: what is on its way is delivered, then it closes
     Clock::time_point accepted;
-
-    bool headTimed = true;  // a head is due: from connecting, then from a next head's first byte
-    Clock::time_point headStart;
+    Clock::time_point idleSince;  // since when a next request is due (see headDue)
     Clock::time_point bodyStart;
 
+    std::string fromClient;  // client bytes the relay has not taken yet (a next request)
     std::string toUpstream, toClient;
     Clock::time_point clientWriteProgress;  // last time toClient shrank or began to fill
     bool connectPending = false;
     Clock::time_point connectSince;
     bool clientEof = false;
-    bool upstreamWriteShut = false;
-    std::string refusalAfterUpstream;  // a refusal waiting for an answer in flight to end
     bool lingering = false;
     Clock::time_point lingerSince;
     uint32_t clientEvents = 0, upstreamEvents = 0;
     bool closed = false;
 
-    bool waitingForFirstHead() const { return !closing && requests.requestsForwarded() == 0; }
-    bool betweenRequests() const { return !requests.midHead() && !requests.inBody(); }
+    // Everything asked is answered and no body is on its way: the next request's head is due
+    // within headSeconds (the first from connecting, a next one from the last answer).
+    bool headDue() const { return !closing && responses.outstanding() == 0 && !requests.inBody(); }
+    // Holds no server connection: may be closed to make room for another client.
+    bool idle() const { return headDue() && upstream < 0 && !connectPending && toClient.empty(); }
 };
 
 }  // namespace
@@ -251,9 +253,9 @@ private:
             int fd = accept4(listen_, reinterpret_cast<sockaddr*>(&peer), &length, SOCK_NONBLOCK | SOCK_CLOEXEC);
             if (fd < 0) {
                 if (errno == EMFILE || errno == ENFILE) {
-                    // Out of descriptors: make room from the oldest connection still sending its
-                    // first head, or wait for one to end.
-                    bool evicted = evictOldestWaiting("");
+                    // Out of descriptors: make room from the oldest idle connection, or wait
+                    // for one to end.
+                    bool evicted = evictOldestIdle("");
                     sweep();
                     if (evicted) continue;
                     modify(listen_, 0, kListenTag);
@@ -270,8 +272,8 @@ private:
         auto known = perClient_.find(address);
         bool room = true;
         if (known != perClient_.end() && known->second >= limits_.maxConnectionsPerClient)
-            room = evictOldestWaiting(address);
-        if (room && int64_t(connections_.size()) >= limits_.maxConnections) room = evictOldestWaiting("");
+            room = evictOldestIdle(address);
+        if (room && int64_t(connections_.size()) >= limits_.maxConnections) room = evictOldestIdle("");
         sweep();
         if (!room) {
             std::string answer = refusalResponse({503, "too many connections; try again later"});
@@ -282,24 +284,23 @@ private:
         int one = 1;
         setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
         auto c = std::make_unique<Connection>(nextId_++, fd, address, limits_.head);
-        c->accepted = c->headStart = Clock::now();
+        c->accepted = c->idleSince = Clock::now();
         ++perClient_[address];
         c->clientEvents = EPOLLIN;
         add(fd, EPOLLIN, tagOf(*c, false));
         connections_.emplace(c->id, std::move(c));
     }
 
-    // Closes the connection of `address` (any, if empty) that has waited longest for its first
-    // head. False if there is none.
-    bool evictOldestWaiting(const std::string& address) {
+    // Closes the idle connection (no request in the server's hands) of `address` (any, if
+    // empty) that connected first. False if there is none.
+    bool evictOldestIdle(const std::string& address) {
         Connection* oldest = nullptr;
         for (auto& [id, c] : connections_)
-            if (!c->closed && c->waitingForFirstHead() && (address.empty() || c->address == address) &&
+            if (!c->closed && c->idle() && (address.empty() || c->address == address) &&
                 (!oldest || c->accepted < oldest->accepted))
                 oldest = c.get();
         if (!oldest) return false;
-        spdlog::debug("connection from {} closed to make room ({} s without a request)", oldest->address,
-                      secondsBetween(oldest->accepted, Clock::now()));
+        spdlog::debug("idle connection from {} closed to make room", oldest->address);
         oldest->closed = true;
         return true;
     }
@@ -315,24 +316,29 @@ private:
             c.clientEof = true;
             return;
         }
-        if (!c.closing) feed(c, std::string_view(buffer, size_t(n)));
+        if (c.closing) return;  // read and dropped (see kLingerSeconds)
+        c.fromClient.append(buffer, size_t(n));
+        pump(c);
     }
 
-    // Client bytes: requests go on to the server as the relay frames them.
-    void feed(Connection& c, std::string_view data) {
-        if (!c.headTimed && !c.requests.inBody()) {  // the first byte of a next head
-            c.headTimed = true;
-            c.headStart = Clock::now();
+    // Hands the server the client's bytes as the relay frames them: the body of the request in
+    // flight, or the next request once the last is answered (httplib answers one request at a
+    // time and drops bytes that come early).
+    void pump(Connection& c) {
+        while (!c.closing && !c.fromClient.empty() && c.toUpstream.size() < kMaxBuffered) {
+            bool betweenRequests = !c.requests.midHead() && !c.requests.inBody();
+            if (betweenRequests && c.responses.outstanding() > 0) return;
+            int64_t before = c.requests.requestsForwarded();
+            size_t taken = c.requests.feed(c.fromClient, c.toUpstream);
+            c.fromClient.erase(0, taken);
+            if (c.requests.refusal()) return refuse(c, *c.requests.refusal());
+            if (c.requests.requestsForwarded() > before) {
+                c.responses.expect(c.requests.lastMethod(), c.requests.lastEndsConnection());
+                c.bodyStart = Clock::now();
+                if (c.upstream < 0 && !c.connectPending && !connectUpstream(c)) return;
+            }
+            if (taken == 0) return;
         }
-        int64_t before = c.requests.requestsForwarded();
-        std::optional<Refusal> refusal = c.requests.feed(data, c.toUpstream);
-        if (c.requests.requestsForwarded() > before) {
-            c.bodyStart = Clock::now();
-            c.headTimed = c.requests.midHead();
-            if (c.headTimed) c.headStart = Clock::now();
-            if (c.upstream < 0 && !c.connectPending && !connectUpstream(c)) return;
-        }
-        if (refusal) refuse(c, *refusal);
     }
 
     bool connectUpstream(Connection& c) {
@@ -363,21 +369,23 @@ private:
         return false;
     }
 
-    // Answers `refusal` and closes; an answer in flight from the server is relayed first.
+    // Answers `refusal` and closes. Requests go on one at a time, so a refusal is for the
+    // request in flight, if any: the server's connection is dropped with it.
     void refuse(Connection& c, const Refusal& refusal) {
         if (c.connectPending) --pendingConnects_;
         c.connectPending = false;
+        releaseUpstream(c);
         c.closing = true;
         c.toUpstream.clear();
-        std::string answer = refusalResponse(refusal);
-        if (c.upstream >= 0) {
-            // The server finishes what it was asked and then sees the end of requests.
-            shutdown(c.upstream, SHUT_WR);
-            c.upstreamWriteShut = true;
-            c.refusalAfterUpstream = std::move(answer);
-        } else {
-            queueToClient(c, answer);
-        }
+        c.fromClient.clear();
+        queueToClient(c, refusalResponse(refusal));
+    }
+
+    void releaseUpstream(Connection& c) {
+        if (c.upstream < 0) return;
+        epoll_ctl(epoll_, EPOLL_CTL_DEL, c.upstream, nullptr);
+        close(c.upstream);
+        c.upstream = -1;
     }
 
     void queueToClient(Connection& c, std::string_view bytes) {
@@ -389,25 +397,43 @@ private:
     bool readUpstream(Connection& c) {
         char buffer[kReadChunk];
         ssize_t n = recv(c.upstream, buffer, sizeof buffer, 0);
-        if (n > 0) {
-            queueToClient(c, std::string_view(buffer, size_t(n)));
-            return true;
-        }
         if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) return false;
-        upstreamEnded(c);
-        return false;
+        if (n <= 0) {
+            upstreamEnded(c);
+            return false;
+        }
+        std::string_view bytes(buffer, size_t(n));
+        queueToClient(c, bytes);
+        if (!c.responses.consume(bytes)) {
+            spdlog::error("the HTTP server's answer to {} is not HTTP/1.1; connection closed", c.address);
+            c.closing = true;
+            releaseUpstream(c);
+            return false;
+        }
+        if (c.responses.outstanding() == 0 && !c.requests.inBody()) answered(c);
+        return true;
     }
 
-    // The server closed its side (after a response with Connection: close, at its keep-alive
-    // limit, or on stopping): the client's connection closes after what is already on its way.
+    // Everything asked is answered: the server's connection (and its thread) goes, and the
+    // client's next request, if it sent one already, goes on.
+    void answered(Connection& c) {
+        releaseUpstream(c);
+        if (c.responses.closesConnection()) {
+            c.closing = true;
+            return;
+        }
+        c.idleSince = Clock::now();
+        pump(c);
+    }
+
+    // The server closed its side: the end of a response without a length, a response it
+    // ended early, or its stopping.
     void upstreamEnded(Connection& c) {
-        epoll_ctl(epoll_, EPOLL_CTL_DEL, c.upstream, nullptr);
-        close(c.upstream);
-        c.upstream = -1;
-        c.closing = true;
-        if (!c.refusalAfterUpstream.empty()) queueToClient(c, c.refusalAfterUpstream);
-        c.refusalAfterUpstream.clear();
+        releaseUpstream(c);
+        c.responses.serverClosed();
         c.toUpstream.clear();
+        if (c.responses.outstanding() > 0 || c.requests.inBody() || c.responses.closesConnection()) c.closing = true;
+        else answered(c);
     }
 
     void writeClient(Connection& c) {
@@ -424,24 +450,26 @@ private:
     void writeUpstream(Connection& c) {
         if (c.connectPending || c.toUpstream.empty()) return;
         ssize_t n = send(c.upstream, c.toUpstream.data(), c.toUpstream.size(), MSG_NOSIGNAL);
-        if (n > 0) c.toUpstream.erase(0, size_t(n));
-        else if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) upstreamEnded(c);
+        if (n > 0) {
+            c.toUpstream.erase(0, size_t(n));
+            pump(c);  // room for more of a body
+        } else if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+            upstreamEnded(c);
+        }
     }
 
-    // What a connection does next, after any event: finish, half-close, and which events to
-    // wait for.
+    // What a connection does next, after any event: finish, linger, and which events to wait
+    // for.
     void settle(Connection& c) {
         if (c.closed) return;
         if (c.clientEof && !c.closing) {
-            if (!c.betweenRequests() || (c.upstream < 0 && !c.connectPending)) {
-                c.closed = true;  // gone mid-request, or before any
-                return;
-            }
-            // A client that sent its last request and half-closed: the server answers it, then
-            // sees the end.
-            if (c.upstream >= 0 && c.toUpstream.empty() && !c.upstreamWriteShut) {
-                shutdown(c.upstream, SHUT_WR);
-                c.upstreamWriteShut = true;
+            // A client that sent its last request and half-closed is answered, then closed; one
+            // gone mid-request cannot be.
+            bool incomplete = c.requests.midHead() || c.requests.inBody();
+            if (c.fromClient.empty() && (incomplete || c.responses.outstanding() == 0)) {
+                if (incomplete) c.closed = true;
+                else c.closing = true;
+                if (c.closed) return;
             }
         }
         if (c.closing && c.upstream < 0 && c.toClient.empty()) {
@@ -456,8 +484,7 @@ private:
             }
         }
         uint32_t clientEvents = 0;
-        if (!c.clientEof && !stopping_ && (c.closing || c.toUpstream.size() < kMaxBuffered))
-            clientEvents |= EPOLLIN;
+        if (!c.clientEof && !stopping_ && (c.closing || c.fromClient.size() < kMaxBuffered)) clientEvents |= EPOLLIN;
         if (!c.toClient.empty()) clientEvents |= EPOLLOUT;
         if (clientEvents != c.clientEvents) {
             modify(c.client, clientEvents, tagOf(c, false));
@@ -483,12 +510,17 @@ private:
                 else connectUpstream(c);
                 if (c.upstream >= 0) writeUpstream(c);
             }
-            if (c.closing) {
-                // delivering what is on its way
-            } else if (!c.requests.inBody() && c.headTimed && secondsBetween(c.headStart, now) > limits_.headSeconds) {
-                spdlog::info("{}: no whole request head within {} s", c.address, limits_.headSeconds);
-                refuse(c, {408, "the request's head did not arrive within " +
-                                    std::to_string(int(limits_.headSeconds)) + " s"});
+            if (c.headDue() && !c.toClient.empty()) c.idleSince = now;  // an answer is still on its way
+            if (c.headDue() && secondsBetween(c.idleSince, now) > limits_.headSeconds) {
+                // Part of a head came: say why it ends. An idle kept-alive connection just closes
+                // (an answer now could be taken for that of a request crossing it).
+                if (c.requests.midHead() || !c.fromClient.empty()) {
+                    spdlog::info("{}: no whole request head within {} s", c.address, limits_.headSeconds);
+                    refuse(c, {408, "the request's head did not arrive within " +
+                                        std::to_string(int(limits_.headSeconds)) + " s"});
+                } else {
+                    c.closed = true;
+                }
             } else if (c.requests.inBody()) {
                 double late = secondsBetween(c.bodyStart, now) - limits_.headSeconds;
                 if (late > 0 && c.toUpstream.size() < kMaxBuffered &&

@@ -8,14 +8,17 @@
 // sending a byte every few seconds on a few hundred connections held every thread, and one
 // sending endless header lines grew the server's memory by gigabytes, before any token was
 // checked. Here a slow or idle connection costs a socket and a few kilobytes, not a thread:
-//  - a head must be whole within `headSeconds` of its first byte (of connecting, for the
-//    first), and hold at most `head.maxBytes` bytes and `head.maxFields` fields (408, 431);
+//  - a head must be whole within `headSeconds` of connecting or of the last answer (an idle
+//    connection is closed then), and hold at most `head.maxBytes` bytes and `head.maxFields` fields (408, 431);
 //  - a body must arrive at `minBodyBytesPerSecond` on average once `headSeconds` have passed;
 //  - a client address may hold `maxConnectionsPerClient` connections and all clients
-//    `maxConnections`: beyond either, the oldest connection still sending its first head is
-//    closed to make room, so a flood of slow connections never locks out a prompt client;
+//    `maxConnections`: beyond either, the oldest idle connection (none of its requests with
+//    the server, nothing on its way to the client) is closed to make room, so a flood of slow connections never locks out a prompt client;
 //    when no such connection exists the new one is answered 503.
-// Buffers are bounded both ways; a reader slower than the server holds back the server.
+// Requests go to the server one at a time, each once the last is answered (httplib drops
+// pipelined bytes), on a connection closed as soon as everything asked is answered: httplib
+// keeps a thread on every connection it keeps alive, so a client between requests must not
+// hold one. Buffers are bounded both ways; a reader slower than the server holds it back.
 #pragma once
 #include <atomic>
 #include <cstdint>

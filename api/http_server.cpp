@@ -16,9 +16,9 @@ namespace photon::api {
 
 namespace {
 
-// httplib serves a connection on one thread for as long as it is kept alive, and long-lived
-// event and image streams each hold one too: a hundred polling clients need more than a
-// hundred threads. Idle threads cost address space, not memory.
+// httplib serves a connection on one thread; the guard hands it one request at a time and
+// closes its connection once answered, so a thread is held per request being answered, and
+// per open event or image stream for as long as it lasts.
 constexpr size_t kHttpThreads = 256;
 static_assert(server::kMaxStreamsCap + 64 <= int(kHttpThreads), "streams must leave threads for requests");
 // Request threads run at this nice value: when they compete with a render for the cores,

@@ -19,12 +19,19 @@ public:
     RequestRelay(const HeadLimits& limits, std::string clientAddress)
         : limits_(limits), clientAddress_(std::move(clientAddress)), chunks_(limits.maxBytes) {}
 
-    // Takes the client's next bytes and appends what the server is to get to `forward`. A
-    // refusal ends the stream: nothing more is taken.
-    std::optional<Refusal> feed(std::string_view bytes, std::string& forward);
+    // Takes the client's next bytes, up to the end of the request they are in, and appends
+    // what the server is to get to `forward`; returns how many it took (the rest belong to
+    // the next request: feed them again when it may go on). A refusal ends the stream:
+    // nothing more is taken.
+    size_t feed(std::string_view bytes, std::string& forward);
+    const std::optional<Refusal>& refusal() const { return refused_; }
 
-    // Requests whose heads have gone on, so far.
+    // Requests whose heads have gone on, so far, and the method of the last one.
     int64_t requestsForwarded() const { return requests_; }
+    const std::string& lastMethod() const { return method_; }
+    // The last request asked for its connection to end with its answer: "Connection: close",
+    // or HTTP/1.0 without "Connection: keep-alive" (RFC 9112 section 9.3).
+    bool lastEndsConnection() const { return endsConnection_; }
     // Bytes of a head are waiting for the rest of it.
     bool midHead() const { return phase_ == Phase::Head && !head_.empty(); }
     // A body is being relayed; its bytes so far.
@@ -42,6 +49,8 @@ private:
     uint64_t bodyBytes_ = 0;
     ChunkedBodyScanner chunks_;
     int64_t requests_ = 0;
+    std::string method_;
+    bool endsConnection_ = false;
     std::optional<Refusal> refused_;
 };
 

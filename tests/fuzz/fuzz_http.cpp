@@ -151,7 +151,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     h.ensureFixtureJob();
     std::string forwarded;
     photon::api::RequestRelay relay({}, "127.0.0.1");
-    relay.feed(withFixtureId(std::string(reinterpret_cast<const char*>(data), size), h.fixtureId), forwarded);
+    std::string input = withFixtureId(std::string(reinterpret_cast<const char*>(data), size), h.fixtureId);
+    for (size_t at = 0, taken = 1; at < input.size() && taken > 0 && !relay.refusal(); at += taken)
+        taken = relay.feed(std::string_view(input).substr(at), forwarded);
     BufferStream stream(std::move(forwarded));
     for (int i = 0; i < kMaxRequestsPerInput && !stream.atEnd(); ++i)
         if (!h.server.serveOne(stream)) break;

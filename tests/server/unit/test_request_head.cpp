@@ -1,11 +1,13 @@
 // The connection guard's parsers on their own: where a head ends and what it says, and where
 // a chunked body ends, fed in pieces as bytes arrive.
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <variant>
 #include "api/chunked_body.h"
 #include "api/request_framing.h"
 #include "api/request_head.h"
 #include "api/request_relay.h"
+#include "api/response_stream.h"
 
 namespace photon::api {
 namespace {
@@ -85,6 +87,16 @@ TEST(ChunkedBody, MalformedBodiesAreRefused) {
     }
 }
 
+// Feeds `in` in pieces of `piece` bytes, each piece again until the relay takes no more.
+std::string relayed(RequestRelay& relay, const std::string& in, size_t piece) {
+    std::string forward, pending;
+    for (size_t i = 0; i < in.size(); i += piece) {
+        pending += in.substr(i, piece);
+        for (size_t taken; !pending.empty() && (taken = relay.feed(pending, forward)) > 0;) pending.erase(0, taken);
+    }
+    return forward;
+}
+
 TEST(RequestRelay, RequestsGoOnWithTheClientsAddressAndTheirBodiesExactly) {
     const std::string in = "POST /a HTTP/1.1\r\nX-Photon-Client-Address: forged\r\nContent-Length: 3\r\n\r\nabc"
                            "POST /b HTTP/1.1\r\nTransfer-Encoding: chunked\r\n\r\n2;x\r\nde\r\n0\r\nT: 1\r\n\r\n"
@@ -94,24 +106,70 @@ TEST(RequestRelay, RequestsGoOnWithTheClientsAddressAndTheirBodiesExactly) {
                             "2\r\nde\r\n0\r\n\r\n";
     for (size_t piece : {1, 5, 1000}) {
         RequestRelay relay({}, "::1");
-        std::string forward;
-        for (size_t i = 0; i < in.size(); i += piece) EXPECT_FALSE(relay.feed(std::string_view(in).substr(i, piece), forward));
-        EXPECT_EQ(forward, out) << piece;
+        EXPECT_EQ(relayed(relay, in, piece), out) << piece;
+        EXPECT_FALSE(relay.refusal());
         EXPECT_EQ(relay.requestsForwarded(), 2);
         EXPECT_TRUE(relay.midHead());
     }
 }
 
-TEST(RequestRelay, ARefusalEndsTheStream) {
+TEST(RequestRelay, OneRequestAtATime) {
     RequestRelay relay({}, "::1");
     std::string forward;
-    std::optional<Refusal> refusal =
-        relay.feed("GET /a HTTP/1.1\r\n\r\nPOST /b HTTP/1.1\r\nContent-Length: x\r\n\r\nGET /c HTTP/1.1\r\n\r\n", forward);
-    ASSERT_TRUE(refusal);
-    EXPECT_EQ(refusal->status, 400);
+    const std::string two = "GET /a HTTP/1.1\r\n\r\nPOST /b HTTP/1.1\r\nContent-Length: 1\r\n\r\nxGET";
+    size_t first = relay.feed(two, forward);
+    EXPECT_EQ(first, std::string("GET /a HTTP/1.1\r\n\r\n").size());
+    EXPECT_EQ(relay.lastMethod(), "GET");
+    size_t second = relay.feed(std::string_view(two).substr(first), forward);
+    EXPECT_EQ(first + second, two.size() - 3);  // "GET" is the next request's
+    EXPECT_EQ(relay.lastMethod(), "POST");
+}
+
+TEST(RequestRelay, ARefusalEndsTheStream) {
+    RequestRelay relay({}, "::1");
+    std::string forward = relayed(relay, "GET /a HTTP/1.1\r\n\r\nPOST /b HTTP/1.1\r\nContent-Length: x\r\n\r\nGET /c HTTP/1.1\r\n\r\n", 1000);
+    ASSERT_TRUE(relay.refusal());
+    EXPECT_EQ(relay.refusal()->status, 400);
     EXPECT_EQ(forward, "GET /a HTTP/1.1\r\nX-Photon-Client-Address: ::1\r\n\r\n");
-    EXPECT_TRUE(relay.feed("GET /d HTTP/1.1\r\n\r\n", forward));
     EXPECT_EQ(relay.requestsForwarded(), 1);
+}
+
+TEST(ResponseStream, EachResponseEndsWhereItsFramingSays) {
+    ResponseStream responses;
+    for (const char* method : {"GET", "HEAD", "POST", "GET"}) responses.expect(method);
+    const std::string bytes =
+        "HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello"
+        "HTTP/1.1 200 OK\r\nContent-Length: 99\r\n\r\n"                 // HEAD: no body
+        "HTTP/1.1 100 Continue\r\n\r\nHTTP/1.1 201 Created\r\nTransfer-Encoding: chunked\r\n\r\n3\r\nabc\r\n0\r\n\r\n"
+        "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nTransfer-Encoding: chunked\r\n\r\n4\r\ndata\r\n";
+    std::vector<size_t> outstandingAfter;
+    for (char c : bytes) {
+        ASSERT_TRUE(responses.consume(std::string_view(&c, 1)));
+        outstandingAfter.push_back(responses.outstanding());
+    }
+    EXPECT_EQ(responses.outstanding(), 1u);  // the stream goes on
+    EXPECT_EQ(std::count(outstandingAfter.begin(), outstandingAfter.end(), 3u) > 0, true);
+    EXPECT_FALSE(responses.closesConnection());
+    ASSERT_TRUE(responses.consume("0\r\n\r\n"));
+    EXPECT_EQ(responses.outstanding(), 0u);
+}
+
+TEST(ResponseStream, ConnectionCloseAndUnframedBodies) {
+    ResponseStream refused;
+    refused.expect("POST");
+    ASSERT_TRUE(refused.consume("HTTP/1.1 401 Unauthorized\r\nConnection: close\r\nContent-Length: 2\r\n\r\n{}"));
+    EXPECT_EQ(refused.outstanding(), 0u);
+    EXPECT_TRUE(refused.closesConnection());
+    ResponseStream unframed;
+    unframed.expect("GET");
+    ASSERT_TRUE(unframed.consume("HTTP/1.1 200 OK\r\n\r\nuntil the end"));
+    EXPECT_EQ(unframed.outstanding(), 1u);
+    unframed.serverClosed();
+    EXPECT_EQ(unframed.outstanding(), 0u);
+    EXPECT_TRUE(unframed.closesConnection());
+    ResponseStream garbage;
+    garbage.expect("GET");
+    EXPECT_FALSE(garbage.consume("SSH-2.0-OpenSSH\r\n\r\n"));
 }
 
 }  // namespace
