@@ -24,7 +24,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include "api/client_address.h"
+#include "api/guard_fields.h"
 #include "api/request_head.h"
 
 namespace photon::api {

@@ -7,7 +7,7 @@
 #include <thread>
 #include <cctype>
 #include <filesystem>
-#include "api/client_address.h"
+#include "api/guard_fields.h"
 #include "api/errors.h"
 #include "api/request_framing.h"
 #include "api/request_ranges.h"

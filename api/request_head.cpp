@@ -1,6 +1,7 @@
 #include "api/request_head.h"
 #include <algorithm>
 #include <cctype>
+#include "api/guard_fields.h"
 
 namespace photon::api {
 
@@ -106,12 +107,17 @@ HeadScan scanRequestHead(std::string_view buffered, const HeadLimits& limits) {
     return scan;
 }
 
-std::string forwardedHead(const RequestHead& head, std::string_view clientField, const std::string& clientAddress) {
+std::string forwardedHead(const RequestHead& head, const std::string& clientAddress) {
     std::string out = head.method + ' ' + head.target + ' ' + head.version + "\r\n";
-    for (const auto& [name, value] : head.fields)
-        if (!equalsIgnoringCase(name, clientField)) out += name + ": " + value + "\r\n";
-    out += std::string(clientField) + ": " + clientAddress + "\r\n\r\n";
-    return out;
+    std::string empty;
+    for (const auto& [name, value] : head.fields) {
+        if (equalsIgnoringCase(name, kClientAddressField) || equalsIgnoringCase(name, kEmptyFieldsField)) continue;
+        if (value.empty()) empty += (empty.empty() ? "" : ", ") + name;
+        else out += name + ": " + value + "\r\n";
+    }
+    out += std::string(kClientAddressField) + ": " + clientAddress + "\r\n";
+    if (!empty.empty()) out += std::string(kEmptyFieldsField) + ": " + empty + "\r\n";
+    return out + "\r\n";
 }
 
 }  // namespace photon::api

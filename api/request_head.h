@@ -43,10 +43,9 @@ struct HeadScan {
 // skipped (RFC 9112 section 2.2) and counted in `length`.
 HeadScan scanRequestHead(std::string_view buffered, const HeadLimits& limits);
 
-// The head as sent to the HTTP server: the same request line and fields, each field named
-// `clientField` dropped and one with `clientAddress` added (the server sees the guard as its
-// peer; this says who the client is).
-std::string forwardedHead(const RequestHead& head, std::string_view clientField, const std::string& clientAddress);
+// The head as sent to the HTTP server: the same request line and fields, with the guard's
+// own fields (guard_fields.h) in place of any the client sent under their names.
+std::string forwardedHead(const RequestHead& head, const std::string& clientAddress);
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b);
 

@@ -1,7 +1,7 @@
 #include "api/request_relay.h"
 #include <algorithm>
 #include <variant>
-#include "api/client_address.h"
+#include "api/guard_fields.h"
 #include "api/request_framing.h"
 
 namespace photon::api {
@@ -52,7 +52,7 @@ size_t RequestRelay::feed(std::string_view bytes, std::string& forward) {
                 refused_ = *refusal;
                 break;
             }
-            forward += forwardedHead(scan.head, kClientAddressField, clientAddress_);
+            forward += forwardedHead(scan.head, clientAddress_);
             ++requests_;
             method_ = scan.head.method;
             endsConnection_ = endsConnection(scan.head);

@@ -1,7 +1,7 @@
 // /api/v1/jobs: submit, list, inspect, cancel, delete.
 #include <httplib.h>
 #include <climits>
-#include "api/client_address.h"
+#include "api/guard_fields.h"
 #include "api/errors.h"
 #include "api/handlers.h"
 #include "api/job_json.h"
@@ -37,7 +37,7 @@ void addQuery(const httplib::Request& req, server::RequestDigest& digest) {
 }
 
 std::optional<std::string> idempotencyKey(const httplib::Request& req) {
-    if (!req.has_header("Idempotency-Key")) return std::nullopt;
+    if (!req.has_header("Idempotency-Key") && !sentEmpty(req, "Idempotency-Key")) return std::nullopt;
     std::string key = req.get_header_value("Idempotency-Key");
     if (auto problem = server::idempotencyKeyProblem(key)) throwBadRequest(*problem);
     return key;

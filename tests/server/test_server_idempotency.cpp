@@ -96,6 +96,13 @@ TEST_F(IdempotencyTest, MalformedKeysAre400) {
         EXPECT_EQ(r->status, 400) << key;
         EXPECT_EQ(json::parse(r->body)["error"], message) << key;
     }
+    // An empty key (which httplib's parser drops: the guard names it) is no key at all.
+    const std::string scene = smallScene().dump();
+    std::string empty = rawExchange(port(), "POST /api/v1/jobs HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port()) +
+                                                "\r\nContent-Type: application/json\r\nIdempotency-Key: \r\nContent-Length: " +
+                                                std::to_string(scene.size()) + "\r\nConnection: close\r\n\r\n" + scene);
+    EXPECT_EQ(empty.rfind("HTTP/1.1 400 Bad Request\r\n", 0), 0u) << empty;
+    EXPECT_NE(empty.find(R"({"error":"Idempotency-Key: must be 1 to 255 characters, got 0"})"), std::string::npos) << empty;
     EXPECT_EQ(post(smallScene(), std::string(255, '~'))->status, 201);
     EXPECT_EQ(jobCount(), 1u);
 }

@@ -20,8 +20,8 @@ TEST(RequestHead, AWholeHeadIsParsedAndItsLengthCounted) {
     EXPECT_EQ(scan.head.method, "POST");
     EXPECT_EQ(scan.head.target, "/api/v1/jobs?x=1");
     EXPECT_EQ(scan.head.values("content-length"), std::vector<std::string>{"12"});
-    EXPECT_EQ(forwardedHead(scan.head, "X-Client", "10.0.0.1"),
-              "POST /api/v1/jobs?x=1 HTTP/1.1\r\nHost: a\r\nContent-Length: 12\r\nX-Client: 10.0.0.1\r\n\r\n");
+    EXPECT_EQ(forwardedHead(scan.head, "10.0.0.1"),
+              "POST /api/v1/jobs?x=1 HTTP/1.1\r\nHost: a\r\nContent-Length: 12\r\nX-Photon-Client-Address: 10.0.0.1\r\n\r\n");
 }
 
 TEST(RequestHead, EveryPrefixOfAHeadIsIncomplete) {
@@ -41,9 +41,11 @@ TEST(RequestHead, BoundsAreCheckedBeforeTheHeadEnds) {
     EXPECT_EQ(bytes.refusal.status, 431);
 }
 
-TEST(RequestHead, ForwardingDropsTheClientsOwnAddressField) {
-    HeadScan scan = scanRequestHead("GET / HTTP/1.1\r\nx-client: 1.2.3.4\r\n\r\n", {});
-    EXPECT_EQ(forwardedHead(scan.head, "X-Client", "::1"), "GET / HTTP/1.1\r\nX-Client: ::1\r\n\r\n");
+TEST(RequestHead, TheGuardsOwnFieldsReplaceTheClients) {
+    HeadScan scan = scanRequestHead("GET / HTTP/1.1\r\nx-photon-client-address: 1.2.3.4\r\nX-Photon-Empty-Fields: A\r\n"
+                                    "Idempotency-Key:\r\nB: 1\r\nC:  \r\n\r\n", {});
+    EXPECT_EQ(forwardedHead(scan.head, "::1"),
+              "GET / HTTP/1.1\r\nB: 1\r\nX-Photon-Client-Address: ::1\r\nX-Photon-Empty-Fields: Idempotency-Key, C\r\n\r\n");
 }
 
 TEST(BodyFraming, LengthsAndCodings) {
