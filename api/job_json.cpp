@@ -32,6 +32,7 @@ nlohmann::json toJson(const server::JobRecord& job) {
         {"elapsed_seconds", p.elapsedSeconds},
         {"eta_seconds", p.etaSeconds},
         {"error", job.error.empty() ? nlohmann::json() : nlohmann::json(job.error)},
+        {"warnings", job.warnings},
     };
 }
 

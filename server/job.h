@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace photon::server {
 
@@ -42,6 +43,8 @@ struct JobRecord {
     JobProgress progress;
     std::string error;  // why it failed; empty otherwise
     std::string client; // the submitter's remote address (per-client limits); not served
+    int64_t uploadBytes = 0;            // of its scene and assets: the client's disk (not served)
+    std::vector<std::string> warnings;  // what was accepted with a change, in plain words
 };
 
 }  // namespace photon::server

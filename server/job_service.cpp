@@ -50,7 +50,15 @@ std::optional<JobRecord> JobService::replay(const std::string& key, const std::s
     return table_.find(earlier->jobId);  // deleting a job forgets its key: normally found
 }
 
-void JobService::checkAdmission(const std::string& client) const {
+void JobService::checkAdmission(const std::string& client, int64_t uploadBytes) const {
+    int64_t stored = table_.activeBytesOf(client);
+    if (stored + uploadBytes > limits_.maxClientBytes)
+        throw ServiceError(ErrorKind::TooManyRequests,
+                           "client " + client + " has " + std::to_string(stored) +
+                               " bytes of scenes and assets in jobs queued or running; with this job's " +
+                               std::to_string(uploadBytes) + " that exceeds the server limit per client of " +
+                               std::to_string(limits_.maxClientBytes) + " (" + optionOf(&Limits::maxClientBytes) +
+                               "); retry when one has finished");
     int64_t active = table_.activeJobsOf(client);
     if (active >= limits_.maxJobsPerClient)
         throw ServiceError(ErrorKind::TooManyRequests,
@@ -83,17 +91,22 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
             return {*earlier, false};
         key = IdempotencyEntry{*request.idempotencyKey, request.digest, "", unixNowSeconds()};
     }
-    checkAdmission(request.client);  // early, before the costly validation
+    checkAdmission(request.client, 0);  // early, before the costly validation
     upload.endAsset();
     checkTextureSizes(upload.dir(), limits_);
     JobRecord job;
-    job.settings = validateScene(upload.sceneText(), upload.dir(), request.options, limits_);
+    AcceptedScene scene = validateScene(upload.sceneText(), upload.dir(), request.options, limits_);
+    job.settings = scene.settings;
+    // Files the scene does not name are not kept: they would only take the client's disk.
+    for (const std::string& name : upload.keepOnly(scene.files))
+        job.warnings.push_back("asset \"" + name + "\" is not used by the scene and was not stored");
+    job.uploadBytes = upload.storedBytes();
     guardStorage("storing the scene", [&] { writeFileAtomically(upload.dir() / "scene.json", upload.sceneText()); });
     job.priority = request.options.priority;
     job.client = request.client;
 
     std::lock_guard admit(admission_);
-    checkAdmission(request.client);
+    checkAdmission(request.client, job.uploadBytes);
     job.id = unusedId();
     job.createdAt = utcNowIso8601();
     guardStorage("storing the job", [&] { folders_.commit(upload.dir(), job.id); });

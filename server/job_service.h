@@ -84,7 +84,7 @@ private:
     void restore();
     std::string unusedId() const;
     std::optional<JobRecord> replay(const std::string& key, const std::string& digest);
-    void checkAdmission(const std::string& client) const;
+    void checkAdmission(const std::string& client, int64_t uploadBytes) const;
 
     Limits limits_;
     JobFolders folders_;

@@ -1,4 +1,5 @@
 #include "job_store.h"
+#include <algorithm>
 #include <stdexcept>
 
 namespace photon::server {
@@ -44,11 +45,20 @@ CREATE INDEX IF NOT EXISTS idempotency_keys_by_age ON idempotency_keys (created_
 PRAGMA user_version = 2;
 COMMIT;
 )sql";
-constexpr int64_t kSchemaVersion = 2;
+// Version 3: each job's upload size (the per-client disk limit) and its warnings, one a line.
+// Older jobs count 0 bytes and have none.
+const char* kMigrateTo3 = R"sql(
+BEGIN IMMEDIATE;
+ALTER TABLE jobs ADD COLUMN upload_bytes INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE jobs ADD COLUMN warnings TEXT;
+PRAGMA user_version = 3;
+COMMIT;
+)sql";
+constexpr int64_t kSchemaVersion = 3;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)";
+    " client, upload_bytes, warnings) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
@@ -64,12 +74,40 @@ const char* kFindKey =
 
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
-    " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client"
-    " FROM jobs ORDER BY seq";
+    " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
+    " upload_bytes, warnings FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
     return version.step() ? version.integer(0) : 0;
+}
+
+void migrate(sql::Database& db, const char* script) {
+    try {
+        db.exec(script);
+    } catch (...) {
+        try {
+            db.exec("ROLLBACK");
+        } catch (...) {  // the transaction never began
+        }
+        throw;
+    }
+}
+
+std::string joinLines(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+    return text;
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    for (size_t start = 0; start < text.size();) {
+        size_t end = std::min(text.find('\n', start), text.size());
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return lines;
 }
 
 // Opening creates or migrates the schema, so it must run before the statements are prepared.
@@ -79,17 +117,8 @@ sql::Database& withSchema(sql::Database& db) {
     if (version > kSchemaVersion)
         throw std::runtime_error("the job database is of a newer version (" + std::to_string(version) +
                                  ") than this server knows (" + std::to_string(kSchemaVersion) + ")");
-    if (version < 2) {
-        try {
-            db.exec(kMigrateTo2);
-        } catch (...) {
-            try {
-                db.exec("ROLLBACK");
-            } catch (...) {  // the transaction never began
-            }
-            throw;
-        }
-    }
+    if (version < 2) migrate(db, kMigrateTo2);
+    if (version < 3) migrate(db, kMigrateTo3);
     return db;
 }
 
@@ -132,6 +161,8 @@ JobRecord readRow(const sql::Statement& s) {
     job.progress.etaSeconds = s.real(17);
     job.error = s.text(18);
     job.client = s.text(19);
+    job.uploadBytes = s.integer(20);
+    job.warnings = splitLines(s.text(21));
     return job;
 }
 
@@ -157,7 +188,7 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bind(4, job.createdAt).bind(5, int64_t(job.settings.passes)).bind(6, job.settings.photonsPerPass);
         insert_.bind(7, int64_t(job.settings.seed)).bind(8, job.settings.integrator);
         insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
-        insert_.bindTextOrNull(11, job.client);
+        insert_.bindTextOrNull(11, job.client).bind(12, job.uploadBytes).bindTextOrNull(13, joinLines(job.warnings));
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;

@@ -51,11 +51,11 @@ std::map<JobStatus, int> JobTable::countByStatus() const {
 }
 
 int64_t JobTable::activeJobsOf(const std::string& client) const {
-    std::lock_guard lock(mutex_);
-    int64_t active = 0;
-    for (const auto& [id, entry] : entries_)
-        if (entry.job.client == client && !isFinished(entry.job.status)) ++active;
-    return active;
+    return sumOverActive(client, [](const JobRecord&) { return int64_t(1); });
+}
+
+int64_t JobTable::activeBytesOf(const std::string& client) const {
+    return sumOverActive(client, [](const JobRecord& job) { return job.uploadBytes; });
 }
 
 std::optional<JobTable::Started> JobTable::start(const std::string& id, const std::string& now) {

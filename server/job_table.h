@@ -29,6 +29,8 @@ public:
     std::map<JobStatus, int> countByStatus() const;
     // Queued and running jobs submitted from `client`.
     int64_t activeJobsOf(const std::string& client) const;
+    // Bytes of the scenes and assets of those jobs.
+    int64_t activeBytesOf(const std::string& client) const;
 
     struct Started {
         JobRecord job;
@@ -58,6 +60,15 @@ private:
         bool cancelRequested = false;         // by a client, as opposed to shutdown
     };
     Entry& at(const std::string& id);
+    // Sum of `value(job)` over the queued and running jobs of `client`.
+    template <typename Value>
+    int64_t sumOverActive(const std::string& client, Value value) const {
+        std::lock_guard lock(mutex_);
+        int64_t total = 0;
+        for (const auto& [id, entry] : entries_)
+            if (entry.job.client == client && !isFinished(entry.job.status)) total += value(entry.job);
+        return total;
+    }
 
     mutable std::mutex mutex_;
     std::unordered_map<std::string, Entry> entries_;

@@ -16,7 +16,7 @@ void checkOverride(const char* name, const std::optional<int64_t>& value) {
 
 }  // namespace
 
-JobSettings validateScene(const std::string& sceneText, const std::filesystem::path& folder,
+AcceptedScene validateScene(const std::string& sceneText, const std::filesystem::path& folder,
                           const SubmitOptions& options, const Limits& limits) {
     std::optional<SceneFile> scene;
     try {
@@ -45,7 +45,7 @@ JobSettings validateScene(const std::string& sceneText, const std::filesystem::p
     s.integrator = std::string(integratorName(render.integrator));
     s.width = scene->width();
     s.height = scene->height();
-    return s;
+    return {s, scene->files()};
 }
 
 void applySettings(const JobSettings& settings, RenderSettings& render) {

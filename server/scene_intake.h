@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 #include <photon/render_settings.h>
 #include "job.h"
 #include "service_limits.h"
@@ -20,9 +21,14 @@ struct SubmitOptions {
     int priority = 0;
 };
 
+struct AcceptedScene {
+    JobSettings settings;            // the effective settings
+    std::vector<std::string> files;  // the files it names, relative to its folder (SceneFile::files)
+};
+
 // Throws ServiceError: BadRequest (with the scene path) for scene errors, LimitExceeded for
-// requests beyond `limits`. Returns the effective settings.
-JobSettings validateScene(const std::string& sceneText, const std::filesystem::path& folder,
+// requests beyond `limits`.
+AcceptedScene validateScene(const std::string& sceneText, const std::filesystem::path& folder,
                           const SubmitOptions& options, const Limits& limits);
 
 // Puts a job's stored settings into a freshly loaded scene's render block, so the render

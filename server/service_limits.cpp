@@ -19,6 +19,8 @@ const std::vector<LimitOption>& limitOptions() {
         {&Limits::maxStreams, "--max-streams", "open event and image streams, all clients (503)", kMaxStreamsCap},
         {&Limits::maxJobsPerClient, "--max-jobs-per-client", "queued and running jobs of one remote address (429)",
          kBig},
+        {&Limits::maxClientBytes, "--max-client-bytes",
+         "bytes of the scenes and assets of one remote address's queued and running jobs (429)", kBig},
         {&Limits::maxQueuedJobs, "--max-queued-jobs", "queued jobs, all clients (503)", kBig},
         {&Limits::maxHeaderBytes, "--max-header-bytes", "bytes of a request's line and header fields (414, 431)",
          16 << 20},

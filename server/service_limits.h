@@ -23,6 +23,7 @@ struct Limits {
     int64_t maxTexturePixels = 64LL << 20;
     int64_t maxStreams = 128;
     int64_t maxJobsPerClient = 100;
+    int64_t maxClientBytes = 2LL << 30;
     int64_t maxQueuedJobs = 1000;
     // Of connections, before a request reaches a route (api/connection_guard.h).
     int64_t maxHeaderBytes = 64 << 10;

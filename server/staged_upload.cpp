@@ -1,4 +1,5 @@
 #include "staged_upload.h"
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include "errors.h"
@@ -24,11 +25,11 @@ bool hasDriveLetter(const std::string& name) {
 }
 
 // "a" and "a/b" cannot both be files: the second would fail to be created.
-bool clashesWithFolder(const std::set<std::string>& names, const std::string& normal) {
+bool clashesWithFolder(const std::map<std::string, int64_t>& names, const std::string& normal) {
     for (fs::path folder = fs::path(normal).parent_path(); !folder.empty(); folder = folder.parent_path())
         if (names.count(folder.generic_string())) return true;
-    auto inside = names.lower_bound(normal + "/");
-    return inside != names.end() && inside->rfind(normal + "/", 0) == 0;
+    auto inside = names.lower_bound(normal + "/");  // the first name that could be inside
+    return inside != names.end() && inside->first.rfind(normal + "/", 0) == 0;
 }
 
 }  // namespace
@@ -78,11 +79,12 @@ void StagedUpload::beginAsset(const std::string& part, const std::string& name) 
     std::string normal = fs::path(name).lexically_normal().generic_string();
     if (clashesWithFolder(names_, normal))
         throw ServiceError(ErrorKind::BadRequest, "asset name is both a file and a folder: " + where);
-    if (!names_.insert(normal).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + where);
+    if (!names_.emplace(normal, 0).second) throw ServiceError(ErrorKind::BadRequest, "asset uploaded twice: " + where);
     // Created relative to the staging folder, one component at a time, never through a
     // symlink and never over an existing file.
     asset_ = std::make_unique<NewFile>(dir_, normal);
     assetName_ = name;
+    assetNormal_ = normal;
     assetBytes_ = 0;
 }
 
@@ -100,6 +102,29 @@ void StagedUpload::endAsset() {
     if (!asset_) return;
     std::unique_ptr<NewFile> done = std::move(asset_);
     done->close();
+    names_[assetNormal_] = int64_t(assetBytes_);
+}
+
+std::vector<std::string> StagedUpload::keepOnly(const std::vector<std::string>& used) {
+    endAsset();
+    std::vector<std::string> dropped;
+    for (auto it = names_.begin(); it != names_.end();) {
+        if (std::binary_search(used.begin(), used.end(), it->first)) {
+            ++it;
+            continue;
+        }
+        dropped.push_back(it->first);
+        std::error_code ec;
+        fs::remove(dir_ / it->first, ec);
+        it = names_.erase(it);
+    }
+    return dropped;
+}
+
+int64_t StagedUpload::storedBytes() const {
+    int64_t total = int64_t(sceneText_.size());
+    for (const auto& [name, bytes] : names_) total += bytes;
+    return total;
 }
 
 }  // namespace photon::server

@@ -6,8 +6,9 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <set>
+#include <map>
 #include <string>
+#include <vector>
 #include "safe_files.h"
 
 namespace photon::server {
@@ -33,6 +34,12 @@ public:
     void appendAsset(const char* data, size_t size);
     void endAsset();
 
+    // Removes the assets whose names (in normal form) are not in `used` (sorted); returns
+    // their names.
+    std::vector<std::string> keepOnly(const std::vector<std::string>& used);
+    // Bytes of the scene and the assets kept.
+    int64_t storedBytes() const;
+
     std::string& sceneText() { return sceneText_; }
     const std::filesystem::path& dir() const { return dir_; }
     // The folder was renamed into place: do not remove it.
@@ -42,9 +49,9 @@ private:
     std::filesystem::path dir_;
     size_t maxAssetBytes_;
     std::unique_ptr<NewFile> asset_;
-    std::string assetName_;
+    std::string assetName_, assetNormal_;
     size_t assetBytes_ = 0;
-    std::set<std::string> names_;
+    std::map<std::string, int64_t> names_;  // assets by name in normal form: their bytes
     std::string sceneText_;
     bool committed_ = false;
 };

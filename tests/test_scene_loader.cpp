@@ -267,6 +267,12 @@ TEST(SceneLoader, TexturesAreShared) {
     EXPECT_EQ(s.materials[1]->tint().texture, s.materials[5]->tint().texture);
 }
 
+TEST(SceneLoader, TheFilesASceneNamesAreListedOnceInNormalForm) {
+    Json doc = fullScene();
+    doc["materials"]["gloss"]["albedo"] = Json::parse(R"({"texture": "./textures//wood.png"})");
+    EXPECT_EQ(load(doc).files, (std::vector<std::string>{"meshes/tri.obj", "textures/wood.png"}));
+}
+
 TEST(SceneLoader, LoadSceneFileResolvesAgainstItsFolder) {
     const fs::path file = fixture().scene / "scene.json";
     writeText(file, kFullScene);

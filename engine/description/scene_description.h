@@ -71,6 +71,8 @@ struct SceneDescription {
     std::vector<ShapeDescription> shapes;
     std::vector<LightDescription> lights;
     RenderSettings render;
+    // Files the scene named (meshes, textures), relative to its folder in normal form, sorted.
+    std::vector<std::string> files;
 };
 
 }  // namespace photon

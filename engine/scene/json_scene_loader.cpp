@@ -23,6 +23,7 @@ fs::path resolveFile(const JsonValue& value, const LoadContext& ctx) {
     // The lexical checks above cannot see a symlink that leads out of the folder.
     if (!isInsideFolder(full, ctx.baseDir)) value.fail("must be a relative path inside the scene folder");
     if (!fs::is_regular_file(full, ec)) value.fail("not a regular file: " + relative);
+    ctx.files.insert(fs::path(relative).lexically_normal().generic_string());
     return full;
 }
 
@@ -82,6 +83,7 @@ SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
     if (auto render = top.optional("render")) scene.render = readRender(*render);
     top.finish();
     checkHasLight(scene);
+    scene.files.assign(ctx.files.begin(), ctx.files.end());
     return scene;
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -23,6 +24,9 @@ struct LoadContext {
     std::map<std::filesystem::path, std::shared_ptr<const Texture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
+    // Every file resolveFile was asked for, relative and in normal form: a record of what was
+    // read, kept as the context is passed along read-only.
+    mutable std::set<std::string> files;
 };
 
 // A file named by the string `value`: relative, without "..", inside the scene folder

@@ -29,4 +29,6 @@ int64_t SceneFile::triangleCount() const {
     return total;
 }
 
+const std::vector<std::string>& SceneFile::files() const { return description_->files; }
+
 }  // namespace photon

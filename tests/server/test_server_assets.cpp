@@ -57,6 +57,50 @@ TEST_F(AssetsTest, UnsafeNamesAre400NamingThePart) {
     EXPECT_EQ(upload(repeat("d/", 15) + repeat("n", 255))->status, 201);
 }
 
+// Files the scene does not name are not kept (they would only take the client's disk); the
+// job's warnings name each, and what is kept counts toward the client's bytes.
+TEST_F(AssetsTest, AssetsTheSceneDoesNotNameAreNotStored) {
+    startServer({"--workers", "0"});
+    json scene = smallScene();
+    scene["shapes"].push_back({{"type", "mesh"}, {"file", "meshes/tri.obj"}, {"material", scene["shapes"][0]["material"]}});
+    httplib::MultipartFormDataItems items{{"scene", scene.dump(), "", "application/json"},
+                                          {"mesh", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "meshes/tri.obj", "text/plain"},
+                                          {"notes", "not a scene file", "notes/readme.txt", "text/plain"},
+                                          {"extra", "v 0 0 0\n", "unused.obj", "text/plain"}};
+    httplib::Result r = client().Post("/api/v1/jobs", items);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    json job = json::parse(r->body);
+    EXPECT_EQ(job["warnings"], json({"asset \"notes/readme.txt\" is not used by the scene and was not stored",
+                                     "asset \"unused.obj\" is not used by the scene and was not stored"}));
+    const fs::path folder = dataDir() / "jobs" / job["id"].get<std::string>();
+    EXPECT_TRUE(fs::is_regular_file(folder / "meshes" / "tri.obj"));
+    EXPECT_FALSE(fs::exists(folder / "unused.obj"));
+    EXPECT_FALSE(fs::exists(folder / "notes" / "readme.txt"));
+    EXPECT_EQ(getJob(job["id"])["warnings"], job["warnings"]);  // kept with the job
+    EXPECT_EQ(json::parse(submit(smallScene())->body)["warnings"], json::array());
+}
+
+TEST_F(AssetsTest, OneClientsBytesAreBounded) {
+    const std::string scene = smallScene().dump();
+    const int64_t bytes = int64_t(scene.size());
+    startServer({"--workers", "0", "--max-client-bytes", std::to_string(2 * bytes - 1)});
+    EXPECT_EQ(submit(smallScene())->status, 201);
+    httplib::Result second = submit(smallScene());
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->status, 429);
+    EXPECT_EQ(second->get_header_value("Retry-After"), "5");
+    EXPECT_EQ(json::parse(second->body)["error"],
+              "client 127.0.0.1 has " + std::to_string(bytes) +
+                  " bytes of scenes and assets in jobs queued or running; with this job's " + std::to_string(bytes) +
+                  " that exceeds the server limit per client of " + std::to_string(2 * bytes - 1) +
+                  " (--max-client-bytes); retry when one has finished");
+    // A finished job's bytes no longer count.
+    std::string first = json::parse(client().Get("/api/v1/jobs")->body)["jobs"][0]["id"];
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + first + "/cancel")->status, 200);
+    EXPECT_EQ(submit(smallScene())->status, 201);
+}
+
 // The staging folder is fresh, so these are planted by hand: creation must neither follow
 // a symlink nor replace a file, wherever on the path it sits.
 class StagedUploadTest : public ::testing::Test {

@@ -208,7 +208,7 @@ TEST_F(LimitsTest, InfoListsEveryLimitWithItsValueHere) {
     EXPECT_EQ(info["limits"]["max_pixels"], 1234);
     EXPECT_EQ(info["limits"]["max_upload_parts"], 7);
     EXPECT_EQ(info["limits"]["max_passes"], 100000);  // a default
-    EXPECT_EQ(info["limits"].size(), 18u);            // every limit photon-server --help lists
+    EXPECT_EQ(info["limits"].size(), 19u);            // every limit photon-server --help lists
 }
 
 TEST_F(LimitsTest, OptionsAreChecked) {

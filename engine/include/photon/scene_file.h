@@ -42,6 +42,9 @@ public:
     int height() const;
     // Triangles of all meshes together (spheres are not meshed).
     int64_t triangleCount() const;
+    // The files the scene named (meshes, textures), relative to its folder in normal form
+    // ("meshes/a.obj"), sorted.
+    const std::vector<std::string>& files() const;
 
     // The description itself, for the engine.
     SceneDescription& description() { return *description_; }

@@ -64,6 +64,8 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.progress.etaSeconds, expected.progress.etaSeconds);
     EXPECT_EQ(actual.error, expected.error);
     EXPECT_EQ(actual.client, expected.client);
+    EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
+    EXPECT_EQ(actual.warnings, expected.warnings);
 }
 
 std::vector<std::string> ids(const std::vector<JobRecord>& jobs) {
@@ -92,6 +94,8 @@ TEST_F(JobStoreTest, InsertStoresTheSubmissionFields) {
     job.priority = -3;
     job.settings = JobSettings{100000, 10'000'000'000LL, 0xFEDCBA9876543210ULL, "path", 4096, 2160};
     job.client = "2001:db8::1";
+    job.uploadBytes = 5'000'000'000LL;
+    job.warnings = {"asset \"a.obj\" is not used by the scene and was not stored", "second warning"};
     int64_t seq;
     {
         JobStore store(dbFile());
@@ -369,13 +373,13 @@ TEST_F(JobStoreTest, RefusesADatabaseOfANewerSchemaVersion) {
     { JobStore store(dbFile()); }
     {
         sql::Database db(dbFile());
-        db.exec("PRAGMA user_version = 3");
+        db.exec("PRAGMA user_version = 4");
     }
     try {
         JobStore store(dbFile());
-        FAIL() << "opened a version 3 database";
+        FAIL() << "opened a version 4 database";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("newer version (3)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("newer version (4)"), std::string::npos) << e.what();
     }
 }
 
@@ -418,6 +422,8 @@ VALUES ('old', 'queued', 1, '2023-01-01T00:00:00.000Z', 4, 1000, 7, 'path', 64, 
     EXPECT_EQ(jobs[0].priority, 1);
     EXPECT_EQ(jobs[0].settings.integrator, "path");
     EXPECT_EQ(jobs[0].client, "");  // version 1 did not record it
+    EXPECT_EQ(jobs[0].uploadBytes, 0);  // nor versions before 3 these
+    EXPECT_TRUE(jobs[0].warnings.empty());
 
     JobRecord fresh = newJob("new");
     EXPECT_EQ(store.insert(fresh, IdempotencyEntry{"k", "0123456789abcdef", "", 1000}), 2);
