@@ -20,5 +20,8 @@ void health(RouteContext&, const httplib::Request&, httplib::Response&);
 void info(RouteContext&, const httplib::Request&, httplib::Response&);
 void metrics(RouteContext&, const httplib::Request&, httplib::Response&);
 void homePage(RouteContext&, const httplib::Request&, httplib::Response&);
+// routes_session.cpp
+void startSession(RouteContext&, const httplib::Request&, httplib::Response&);
+void endSession(RouteContext&, const httplib::Request&, httplib::Response&);
 
 }  // namespace photon::api

@@ -94,17 +94,9 @@ std::string makeSocketFolder() {
 
 }  // namespace
 
-bool constantTimeEquals(const std::string& given, const std::string& expected) {
-    if (expected.empty()) return false;
-    unsigned char diff = given.size() == expected.size() ? 0 : 1;
-    for (size_t i = 0; i < given.size(); ++i)
-        diff |= static_cast<unsigned char>(given[i] ^ expected[i % expected.size()]);
-    return diff == 0;
-}
-
 HttpServer::HttpServer(server::JobService& service, const HttpConfig& config)
     : streams_(config.maxStreams),
-      context_{service, streams_},
+      context_{service, streams_, sessions_, !config.token.empty()},
       origin_{"", 0, config.allowedHosts, config.allowedOrigins},
       token_(config.token),
       socketFolder_(makeSocketFolder()),
@@ -135,6 +127,10 @@ bool HttpServer::authorized(const httplib::Request& req) const {
     // them; the page then asks for the token before it calls the API.
     bool isApi = req.path.rfind("/api/", 0) == 0 || req.path == "/metrics";
     if (token_.empty() || req.path == "/api/v1/health" || !isApi) return true;
+    // What a browser fetches by itself (streams, images, links) carries the session cookie
+    // the page got for its token (sessions.h).
+    if (std::optional<std::string> session = SessionStore::idInCookies(req.get_header_value("Cookie")))
+        if (sessions_.valid(*session)) return true;
     const std::string header = req.get_header_value("Authorization");
     const std::string scheme = "bearer ";
     if (header.size() < scheme.size()) return false;

@@ -10,6 +10,7 @@
 #include "api/connection_guard.h"
 #include "api/request_origin.h"
 #include "api/routes.h"
+#include "api/sessions.h"
 #include "api/stream_support.h"
 
 namespace photon::api {
@@ -46,13 +47,10 @@ private:
     RouteContext context_;
     OriginPolicy origin_;  // the bound address and port are filled in by bind()
     std::string token_;
+    mutable SessionStore sessions_;  // valid() drops expired sessions
     std::string socketFolder_;  // private (0700), holds httplib's Unix socket
     httplib::Server server_;
     ConnectionGuard guard_;
 };
-
-// Compares without an early exit, so response time says nothing about how much of a
-// guessed token was right.
-bool constantTimeEquals(const std::string& given, const std::string& expected);
 
 }  // namespace photon::api

@@ -9,11 +9,13 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 12> kRoutes{{
+constexpr std::array<Route, 14> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
     {"GET", "/api/v1/info", info, nullptr},
+    {"POST", "/api/v1/session", startSession, nullptr},
+    {"DELETE", "/api/v1/session", endSession, nullptr},
     {"GET", "/api/v1/jobs", listJobs, nullptr},
     {"POST", "/api/v1/jobs", nullptr, createJob},
     {"GET", "/api/v1/jobs/{id}", getJob, nullptr},

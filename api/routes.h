@@ -16,10 +16,13 @@ struct Response;
 namespace photon::api {
 
 class StreamSlots;
+class SessionStore;
 
 struct RouteContext {
     server::JobService& service;
-    StreamSlots& streams;  // caps the long-lived event and image streams
+    StreamSlots& streams;     // caps the long-lived event and image streams
+    SessionStore& sessions;   // browser sessions (sessions.h)
+    bool tokenRequired;       // the server runs with a token
 };
 
 using Handler = void (*)(RouteContext&, const httplib::Request&, httplib::Response&);

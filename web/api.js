@@ -61,15 +61,41 @@ function authHeaders() {
 async function tokenAfter401() {
   if (!askForToken || declined) return null;
   if (!pendingAsk) {
-    pendingAsk = Promise.resolve(askForToken(hasToken())).then((token) => {
-      if (token) setToken(token);
-      else declined = true;
+    pendingAsk = Promise.resolve(askForToken(hasToken())).then(async (token) => {
+      if (token) {
+        setToken(token);
+        sessionStarted = null;
+        await ensureSession();
+      } else {
+        declined = true;
+      }
       return token;
     }).finally(() => {
       pendingAsk = null;
     });
   }
   return pendingAsk;
+}
+
+// With a token, the page trades it for a session cookie (HttpOnly, so no script here sees
+// it): an EventSource stream cannot send the token, the cookie goes with it by itself.
+// Resolves to whether a session was started; one attempt per token.
+let sessionStarted = null;
+
+export function ensureSession() {
+  if (!hasToken()) return Promise.resolve(false);
+  if (!sessionStarted) {
+    sessionStarted = fetch(BASE + '/session', { method: 'POST', headers: authHeaders() })
+      .then((res) => res.ok)
+      .catch(() => false);
+  }
+  return sessionStarted;
+}
+
+// A stream was refused: the session may have ended (a server restart); the next
+// ensureSession() asks for a new one.
+export function sessionLost() {
+  sessionStarted = null;
 }
 
 // ---- Requests ------------------------------------------------------------------------

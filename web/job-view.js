@@ -1,10 +1,12 @@
 // The job view: latest image, progress numbers, the radius/photons plot, Cancel, Delete and
-// downloads. Follows the job with Server-Sent Events; when a token is in use (EventSource
-// cannot send headers) or the stream fails for good, it polls GET /jobs/{id} every second.
+// downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
+// cookie the token was traded for: EventSource cannot send headers); when the stream fails
+// for good, it polls GET /jobs/{id} every second.
 
 import {
   cancelJob,
   deleteJob,
+  ensureSession,
   eventsUrl,
   fetchImage,
   getJob,
@@ -12,6 +14,7 @@ import {
   imageUrl,
   isFinished,
   normalizeJob,
+  sessionLost,
 } from './api.js';
 import { formatCount, formatDuration, formatPasses, formatRadius, formatRate, formatTime, progressFraction } from './format.js';
 import { RadiusPlot } from './radius-plot.js';
@@ -160,8 +163,11 @@ export function createJobView({ onChanged, onDeleted }) {
     }, POLL_MS);
   }
 
-  function follow(s) {
-    if (hasToken() || typeof EventSource !== 'function') return poll(s);
+  async function follow(s) {
+    if (typeof EventSource !== 'function') return poll(s);
+    // With a token the stream is authorised by the session cookie; without one, polling.
+    if (hasToken() && !(await ensureSession())) return poll(s);
+    if (session !== s) return;
     const source = new EventSource(eventsUrl(s.id));
     s.source = source;
     for (const type of EVENT_TYPES) {
@@ -179,6 +185,7 @@ export function createJobView({ onChanged, onDeleted }) {
       // as 401 or 404), so fall back to polling, which reports the reason.
       if (session === s && source.readyState === EventSource.CLOSED && !(s.job && isFinished(s.job))) {
         s.source = null;
+        sessionLost();
         poll(s);
       }
     });

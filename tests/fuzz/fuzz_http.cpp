@@ -20,6 +20,7 @@
 #include <memory>
 #include "api/request_relay.h"
 #include "api/routes.h"
+#include "api/sessions.h"
 #include "api/stream_support.h"
 #include "fuzz_support.h"
 #include "server/errors.h"
@@ -85,7 +86,8 @@ private:
 struct Harness {
     photon::server::JobService service;
     photon::api::StreamSlots streams{48};
-    photon::api::RouteContext context{service, streams};
+    photon::api::SessionStore sessions;
+    photon::api::RouteContext context{service, streams, sessions, true};
     InProcessServer server;
     std::string fixtureId;
 

@@ -120,6 +120,40 @@ TEST_F(ErrorsTest, TokenIsRequiredExceptForHealthAndThePage) {
     EXPECT_EQ(submit(smallScene())->status, 201);
 }
 
+// The page trades its token for a session cookie, which then authorises what a browser
+// fetches by itself: an EventSource stream above all.
+TEST_F(ErrorsTest, ASessionCookieStandsInForTheToken) {
+    startServer({"--workers", "0", "--token", "s3cret-token"});
+    httplib::Client c = client();
+    EXPECT_EQ(c.Post("/api/v1/session")->status, 401);
+    httplib::Result started = c.Post("/api/v1/session", {{"Authorization", "Bearer s3cret-token"}}, "", "application/json");
+    ASSERT_TRUE(started);
+    EXPECT_EQ(started->status, 204);
+    const std::string cookie = started->get_header_value("Set-Cookie");
+    ASSERT_EQ(cookie.rfind("photon_session=", 0), 0u) << cookie;
+    const std::string id = cookie.substr(15, cookie.find(';') - 15);
+    EXPECT_EQ(id.size(), 64u);
+    EXPECT_EQ(cookie.substr(cookie.find(';')), "; Path=/; Max-Age=86400; HttpOnly; SameSite=Strict");
+    httplib::Headers withCookie{{"Cookie", "theme=dark; photon_session=" + id}};
+    EXPECT_EQ(c.Get("/api/v1/jobs", withCookie)->status, 200);
+    EXPECT_EQ(c.Post("/api/v1/jobs", withCookie, smallScene().dump(), "application/json")->status, 201);
+    EXPECT_EQ(c.Get("/api/v1/jobs", {{"Cookie", "photon_session=" + std::string(64, '0')}})->status, 401);
+    // Ending it: the cookie is cleared and the id refused from then on.
+    httplib::Result ended = c.Delete("/api/v1/session", withCookie);
+    ASSERT_TRUE(ended);
+    EXPECT_EQ(ended->status, 204);
+    EXPECT_EQ(ended->get_header_value("Set-Cookie"), "photon_session=; Path=/; Max-Age=0; HttpOnly; SameSite=Strict");
+    EXPECT_EQ(c.Get("/api/v1/jobs", withCookie)->status, 401);
+}
+
+TEST_F(ErrorsTest, WithoutATokenASessionSetsNoCookie) {
+    startServer({"--workers", "0"});
+    httplib::Result started = client().Post("/api/v1/session");
+    ASSERT_TRUE(started);
+    EXPECT_EQ(started->status, 204);
+    EXPECT_FALSE(started->has_header("Set-Cookie"));
+}
+
 TEST_F(ErrorsTest, AKnownRouteWithAnotherMethodIs405WithAllow) {
     startServer({"--workers", "0"});
     httplib::Client c = client();
