@@ -45,22 +45,10 @@ double secondsBetween(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
 }
 
-const char* statusText(int status) {
-    switch (status) {
-        case 400: return "Bad Request";
-        case 408: return "Request Timeout";
-        case 413: return "Payload Too Large";
-        case 414: return "URI Too Long";
-        case 431: return "Request Header Fields Too Large";
-        case 503: return "Service Unavailable";
-        default: return "Error";
-    }
-}
-
 std::string refusalResponse(const Refusal& refusal) {
-    std::string body = errorBody(refusal.message);
-    std::string head = "HTTP/1.1 " + std::to_string(refusal.status) + " " + statusText(refusal.status) +
-                       "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+    std::string body = problemBody({refusal.status, refusal.message});
+    std::string head = "HTTP/1.1 " + std::to_string(refusal.status) + " " + reasonPhrase(refusal.status) +
+                       "\r\nContent-Type: " + kProblemJson + "\r\nContent-Length: " + std::to_string(body.size()) +
                        "\r\nConnection: close\r\n";
     if (refusal.status == 503) head += "Retry-After: " + std::to_string(kRetryAfterSeconds) + "\r\n";
     return head + "\r\n" + body;
@@ -210,8 +198,13 @@ private:
             close(listen_);
             listen_ = -1;
         }
-        for (auto& [id, c] : connections_)
-            if (c->upstream < 0) c->closed = true;
+        // Connections with nothing in the server's hands close once what is on its way to
+        // them is sent (a stream's last chunk, say); the others when the server ends theirs.
+        for (auto& [id, c] : connections_) {
+            if (c->upstream >= 0 || c->connectPending) continue;
+            c->closing = true;
+            settle(*c);
+        }
         sweep();
     }
 

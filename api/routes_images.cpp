@@ -82,7 +82,7 @@ void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     std::string id = pathId(req);
     server::ImageFormat format = formatParam(req);
     std::optional<server::EncodedImage> image = ctx.service.image(id, format);
-    if (!image) throw server::ServiceError(server::ErrorKind::NotFound, "job " + id + " has no image yet");
+    if (!image) throw server::ServiceError(server::ErrorKind::NotReady, "job " + id + " has no image yet");
     std::string etag = "\"" + id + "-" + std::to_string(image->pass) + "-" + server::toString(format) + "\"";
     res.set_header("ETag", etag);
     res.set_header("X-Photon-Pass", std::to_string(image->pass));

@@ -10,6 +10,7 @@ namespace photon::server {
 enum class ErrorKind {
     BadRequest,       // malformed input, bad scene, unsafe asset name
     NotFound,         // no such job
+    NotReady,         // the job exists but has nothing of that kind yet (no image); retry later
     Conflict,         // the job is in the wrong state for the operation
     PayloadTooLarge,  // the upload exceeds the body limit
     LimitExceeded,    // a well-formed request asks for more than the server allows

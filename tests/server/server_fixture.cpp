@@ -91,6 +91,41 @@ Image decodeImage(const std::string& bytes, const std::string& extension) {
     return image;
 }
 
+namespace {
+
+json checkedProblem(int status, const std::string& contentType, const std::string& body) {
+    EXPECT_EQ(contentType, "application/problem+json") << body;
+    json problem = json::parse(body, nullptr, false);
+    EXPECT_TRUE(problem.is_object()) << body;
+    if (!problem.is_object()) return json::object();
+    EXPECT_TRUE(problem["type"].is_string()) << body;
+    EXPECT_TRUE(problem["title"].is_string()) << body;
+    EXPECT_EQ(problem["status"], status) << body;
+    EXPECT_TRUE(problem["detail"].is_string()) << body;
+    EXPECT_EQ(problem["error"], problem["detail"]) << body;
+    return problem;
+}
+
+}  // namespace
+
+json problemOf(const std::string& answer) {
+    size_t headEnd = answer.find("\r\n\r\n");
+    EXPECT_NE(headEnd, std::string::npos) << answer;
+    if (headEnd == std::string::npos) return json::object();
+    int status = std::atoi(answer.substr(9, 3).c_str());
+    std::string contentType;
+    const std::string field = "\r\nContent-Type: ";
+    if (size_t at = answer.find(field); at < headEnd)
+        contentType = answer.substr(at + field.size(), answer.find("\r\n", at + field.size()) - at - field.size());
+    return checkedProblem(status, contentType, answer.substr(headEnd + 4));
+}
+
+json problemOf(const httplib::Result& r) {
+    EXPECT_TRUE(r);
+    if (!r) return json::object();
+    return checkedProblem(r->status, r->get_header_value("Content-Type"), r->body);
+}
+
 int connectTo(int port) {
     int fd = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in addr{};

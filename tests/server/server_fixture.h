@@ -42,6 +42,12 @@ Image decodeImage(const std::string& bytes, const std::string& extension);
 // Sends `bytes` to the server on a new connection and returns all it answers until it closes
 // the connection (or `timeoutSeconds` pass without a byte).
 std::string rawExchange(int port, const std::string& bytes, int timeoutSeconds = 20);
+// The RFC 9457 problem an error answer carries, checked for what every one must have:
+// Content-Type application/problem+json, a type, a title, the answer's status, and a detail
+// (also under "error", as earlier clients read it). From a whole raw HTTP answer, or a result.
+json problemOf(const std::string& rawAnswer);
+json problemOf(const httplib::Result& r);
+
 // A new connection to the server on 127.0.0.1 (blocking), or -1.
 int connectTo(int port);
 // Reads until the peer closes or `timeoutSeconds` pass without a byte.

@@ -47,13 +47,13 @@ TEST_F(ConnectionsTest, OversizedHeadsAreRefusedAndTheirMemoryReturned) {
                                            eightMegabytes);
         ASSERT_EQ(statusLine(answer), "HTTP/1.1 431 Request Header Fields Too Large") << i;
         EXPECT_NE(answer.find("\r\nConnection: close\r\n"), std::string::npos);
-        EXPECT_EQ(body(answer), i % 2 ? R"({"error":"the request's header fields are longer than 65536 bytes in all"})"
-                                      : R"({"error":"the request has more than 100 header fields"})");
+        EXPECT_EQ(problemOf(answer)["detail"], i % 2 ? "the request's header fields are longer than 65536 bytes in all"
+                                                     : "the request has more than 100 header fields");
     }
     // A request line without end.
     std::string answer = sendEndlessly("GET /", std::string(4096, 'a'), eightMegabytes);
     EXPECT_EQ(statusLine(answer), "HTTP/1.1 414 URI Too Long");
-    EXPECT_EQ(body(answer), R"({"error":"the request line is longer than 65536 bytes"})");
+    EXPECT_EQ(problemOf(answer)["detail"], "the request line is longer than 65536 bytes");
     // 160 MB of header bytes went in; the server holds none of them (httplib alone grew by
     // twice what it was sent, and kept it).
     int64_t after = serverMemoryBytes();
@@ -69,9 +69,9 @@ TEST_F(ConnectionsTest, TheLimitsAreOptions) {
                                                 "Connection: close\r\n\r\n");
     EXPECT_EQ(statusLine(three), "HTTP/1.1 200 OK");
     std::string four = rawExchange(port(), "GET /api/v1/health HTTP/1.1\r\n" + hostLine() + fields + "\r\n");
-    EXPECT_EQ(body(four), R"({"error":"the request has more than 3 header fields"})");
+    EXPECT_EQ(problemOf(four)["detail"], "the request has more than 3 header fields");
     std::string big = rawExchange(port(), "GET /api/v1/health HTTP/1.1\r\nX-Big: " + std::string(2000, 'x') + "\r\n\r\n");
-    EXPECT_EQ(body(big), R"({"error":"the request's header fields are longer than 2000 bytes in all"})");
+    EXPECT_EQ(problemOf(big)["detail"], "the request's header fields are longer than 2000 bytes in all");
 }
 
 TEST_F(ConnectionsTest, MalformedHeadsAreRefused) {
@@ -79,13 +79,13 @@ TEST_F(ConnectionsTest, MalformedHeadsAreRefused) {
     auto refusedWith = [&](const std::string& head, const std::string& message) {
         std::string answer = rawExchange(port(), head);
         EXPECT_EQ(statusLine(answer), "HTTP/1.1 400 Bad Request") << head;
-        EXPECT_EQ(body(answer), "{\"error\":\"" + message + "\"}") << head;
+        EXPECT_EQ(problemOf(answer)["detail"], message) << head;
     };
     refusedWith("GET /api/v1/health HTTP/1.1\nHost: x\r\n\r\n",
                 "the request's head holds a bare CR, LF or NUL (lines end in CRLF)");
     refusedWith("GET /api/v1/health HTTP/1.1\r\n" + hostLine() + " folded\r\n\r\n", "obsolete line folding in a header field");
     refusedWith("GET /api/v1/health HTTP/1.1\r\n" + hostLine() + "Bad Name: 1\r\n\r\n",
-                "malformed header field \\\"Bad Name: 1\\\"");
+                "malformed header field \"Bad Name: 1\"");
     refusedWith("GET  /api/v1/health HTTP/1.1\r\n\r\n", "malformed request line (expected METHOD TARGET HTTP/1.1)");
     refusedWith("GET /api/v1/health HTTP/2.0\r\n\r\n", "malformed request line (expected METHOD TARGET HTTP/1.1)");
 }

@@ -1,4 +1,5 @@
-// Every client error maps to its status code with a JSON body, and none harms the server.
+// Every client error maps to its status code with an RFC 9457 problem body, and none harms
+// the server.
 #include <unistd.h>
 #include <fstream>
 #include "server_fixture.h"
@@ -8,12 +9,7 @@ namespace {
 
 class ErrorsTest : public ServerTest {};
 
-json errorBody(const httplib::Result& r) {
-    EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
-    json body = json::parse(r->body);
-    EXPECT_TRUE(body["error"].is_string()) << r->body;
-    return body;
-}
+json errorBody(const httplib::Result& r) { return problemOf(r); }
 
 TEST_F(ErrorsTest, MalformedJsonIs400) {
     startServer({"--workers", "0"});
@@ -35,7 +31,10 @@ TEST_F(ErrorsTest, SceneErrorIs400WithItsJsonPath) {
     ASSERT_TRUE(r);
     EXPECT_EQ(r->status, 400);
     json body = errorBody(r);
+    EXPECT_EQ(body["type"], "urn:photon:problem:scene-invalid");
+    EXPECT_EQ(body["title"], "Invalid scene");
     EXPECT_EQ(body["path"], "shapes[8].radius");
+    EXPECT_EQ(body["pointer"], "/shapes/8/radius");
     // A rejected upload leaves nothing behind.
     EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "jobs"));
     EXPECT_TRUE(std::filesystem::is_empty(dataDir() / "tmp"));
@@ -58,10 +57,25 @@ TEST_F(ErrorsTest, UnknownJobsAndRoutesAre404) {
         httplib::Result r = c.Get(path.c_str());
         ASSERT_TRUE(r) << path;
         EXPECT_EQ(r->status, 404) << path;
-        errorBody(r);
+        EXPECT_EQ(errorBody(r)["type"], path == "/api/v1/nothing-here" ? "about:blank" : "urn:photon:problem:not-found");
     }
     EXPECT_EQ(c.Post("/api/v1/jobs/0123456789abcdef/cancel")->status, 404);
     EXPECT_EQ(c.Delete("/api/v1/jobs/0123456789abcdef")->status, 404);
+}
+
+// A job that exists but has no image yet is told apart from no job at all, and says when to
+// look again.
+TEST_F(ErrorsTest, NoImageYetIsItsOwnProblemWithRetryAfter) {
+    startServer({"--workers", "0"});
+    std::string id = submitOk(smallScene());
+    httplib::Result r = client().Get(("/api/v1/jobs/" + id + "/image").c_str());
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 404);
+    EXPECT_EQ(r->get_header_value("Retry-After"), "5");
+    json problem = errorBody(r);
+    EXPECT_EQ(problem["type"], "urn:photon:problem:not-ready");
+    EXPECT_EQ(problem["title"], "Not ready yet");
+    EXPECT_EQ(problem["detail"], "job " + id + " has no image yet");
 }
 
 TEST_F(ErrorsTest, WrongStateIs409) {

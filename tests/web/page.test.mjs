@@ -9,28 +9,26 @@
 // client-side JSON error, a scene error with its JSON path from the server, renders the
 // Cornell box example (4 passes of 20000 photons) and watches the image follow the passes
 // until the job completes, saves a screenshot, then cancels and deletes jobs from the page.
-// The server and the browser are stopped at the end, also when a check fails.
+// The server and the browser are stopped at the end, also when a check fails. Starting and
+// stopping them, and the helpers that talk to the server from Node, are in harness.mjs.
 
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
-import { createInterface } from 'node:readline';
 import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
+import {
+  assertPrerequisites,
+  countEventStreams,
+  launchBrowser,
+  occupyWorker,
+  releaseWorker,
+  startServer,
+  stopServer,
+  textOf as textIn,
+  waitForStatus,
+} from './harness.mjs';
 
-let chromium;
-try {
-  ({ chromium } = await import('playwright-core'));
-} catch (error) {
-  throw new Error(`playwright-core is not installed: run \`npm ci --prefix tests/web\` first (${error.message})`);
-}
-
-const REPO = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const WEB_ROOT = join(REPO, 'web');
-const CHROMIUM = '/usr/bin/chromium';
-const SERVER_BIN = process.env.PHOTON_SERVER_BIN ? resolve(process.env.PHOTON_SERVER_BIN) : '';
 const SCREENSHOT = resolve(process.env.PHOTON_WEB_SCREENSHOT || join(tmpdir(), 'photon-web.png'));
 const RENDER_TIMEOUT_MS = 120_000;
 
@@ -41,88 +39,13 @@ let scratch = null; // temp folder: server data + browser profile
 let screenshotTaken = false;
 const pageErrors = [];
 
-// ---- Server ------------------------------------------------------------------------
-
-function serverArgs(dataDir) {
-  // The server serves its --web-root at "/": this checkout's web/.
-  return ['--host', '127.0.0.1', '--port', '0', '--data', dataDir, '--web-root', WEB_ROOT];
-}
-
-function startServer(dataDir) {
-  return new Promise((resolvePromise, reject) => {
-    const proc = spawn(SERVER_BIN, serverArgs(dataDir), { cwd: REPO, stdio: ['ignore', 'pipe', 'pipe'] });
-    const state = { proc, baseUrl: null, stderr: '' };
-    server = state;
-    proc.stderr.on('data', (chunk) => {
-      state.stderr += chunk;
-    });
-    const timer = setTimeout(() => reject(new Error(`photon-server did not print its address within 30 s\n${state.stderr}`)), 30_000);
-    const lines = createInterface({ input: proc.stdout });
-    lines.once('line', (line) => {
-      clearTimeout(timer);
-      const match = /^photon-server listening on (http:\/\/127\.0\.0\.1:\d+\/)$/.exec(line.trim());
-      if (!match) return reject(new Error(`unexpected first line from photon-server: ${JSON.stringify(line)}`));
-      state.baseUrl = match[1];
-      lines.on('line', () => {}); // keep draining stdout
-      resolvePromise(state);
-    });
-    proc.once('error', (error) => {
-      clearTimeout(timer);
-      reject(error);
-    });
-    proc.once('exit', (code, signal) => {
-      clearTimeout(timer);
-      if (!state.baseUrl) reject(new Error(`photon-server exited (${code ?? signal}) before listening\n${state.stderr}`));
-    });
-  });
-}
-
-async function stopServer() {
-  if (!server || server.proc.exitCode !== null || server.proc.signalCode !== null) return;
-  const { proc } = server;
-  const exited = new Promise((r) => proc.once('exit', r));
-  proc.kill('SIGTERM');
-  let timer;
-  const timeout = new Promise((r) => {
-    timer = setTimeout(() => r('timeout'), 10_000);
-  });
-  const outcome = await Promise.race([exited, timeout]);
-  clearTimeout(timer);
-  if (outcome === 'timeout') {
-    proc.kill('SIGKILL');
-    await exited;
-  }
-}
-
-// If the test process itself is killed, do not leave the server behind.
-process.on('exit', () => {
-  if (server && server.proc.exitCode === null && server.proc.signalCode === null) server.proc.kill('SIGKILL');
-});
-
 // ---- Setup -------------------------------------------------------------------------
 
 before(async () => {
-  assert.ok(SERVER_BIN, 'set PHOTON_SERVER_BIN to the photon-server binary');
-  assert.ok(existsSync(SERVER_BIN), `PHOTON_SERVER_BIN does not exist: ${SERVER_BIN}`);
-  assert.ok(existsSync(CHROMIUM), `${CHROMIUM} is missing: apt-get install -y chromium`);
+  assertPrerequisites();
   scratch = mkdtempSync(join(tmpdir(), 'photon-web-test-'));
-  await startServer(join(scratch, 'data'));
-
-  context = await chromium.launchPersistentContext(join(scratch, 'profile'), {
-    executablePath: CHROMIUM,
-    headless: true,
-    args: [
-      '--headless',
-      '--no-sandbox',
-      '--disable-gpu',
-      '--disable-quic',
-      '--no-first-run',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-    ],
-    viewport: { width: 1440, height: 1000 },
-  });
+  server = await startServer(join(scratch, 'data'));
+  context = await launchBrowser(join(scratch, 'profile'));
   page = context.pages()[0] || (await context.newPage());
   page.on('pageerror', (error) => pageErrors.push(String(error)));
   const response = await page.goto(server.baseUrl);
@@ -138,7 +61,7 @@ after(async () => {
     }
     if (context) await context.close().catch(() => {});
   } finally {
-    await stopServer();
+    await stopServer(server);
     if (scratch) rmSync(scratch, { recursive: true, force: true });
   }
 });
@@ -146,7 +69,7 @@ after(async () => {
 // ---- Helpers -----------------------------------------------------------------------
 
 async function textOf(selector) {
-  return (await page.locator(selector).textContent()).trim();
+  return textIn(page, selector);
 }
 
 async function chooseExample(name) {
@@ -156,52 +79,6 @@ async function chooseExample(name) {
 
 async function clearOverrides() {
   for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
-}
-
-// Waits for the job view to show `status`; on a timeout the error says what the page, the
-// server's record of the job and the server's log showed instead.
-async function waitForStatus(id, status, timeout) {
-  try {
-    await page.waitForFunction((want) => document.querySelector('#job-status').textContent === want, status, {
-      timeout,
-    });
-  } catch (error) {
-    const record = await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl)).then((r) => r.text(), (e) => String(e));
-    throw new Error(
-      `job ${id} did not show "${status}" within ${timeout} ms: the page shows "${await textOf('#job-status')}" ` +
-        `(action error "${await textOf('#job-action-error')}"), the server has ${record}; server log:\n` +
-        server.stderr.slice(-2000),
-      { cause: error },
-    );
-  }
-}
-
-// Occupies the server's one render worker with a job that would run for hours, so that a job
-// submitted next waits in the queue until releaseWorker() cancels it: a test can then watch
-// that job from its first pass on, however fast the machine renders.
-async function occupyWorker() {
-  const scene = JSON.parse(readFileSync(join(REPO, 'scenes', 'cornell-box.json'), 'utf8'));
-  scene.camera.resolution = [16, 16];
-  scene.render = { ...scene.render, passes: 100000, photons_per_pass: 100000 };
-  const response = await fetch(new URL('api/v1/jobs', server.baseUrl), {
-    method: 'POST',
-    headers: { 'Content-Type': 'application/json' },
-    body: JSON.stringify(scene),
-  });
-  const text = await response.text();
-  assert.equal(response.status, 201, text);
-  const { id } = JSON.parse(text);
-  for (let waited = 0; ; waited += 50) {
-    const job = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
-    if (job.status === 'running') return id;
-    assert.ok(waited < 30_000, `the blocking job did not start: ${JSON.stringify(job)}`);
-    await new Promise((r) => setTimeout(r, 50));
-  }
-}
-
-async function releaseWorker(id) {
-  const response = await fetch(new URL(`api/v1/jobs/${id}/cancel`, server.baseUrl), { method: 'POST' });
-  assert.ok(response.ok, `cancel of the blocking job: ${response.status}`);
 }
 
 async function submittedJobId() {
@@ -287,17 +164,8 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
 
   // The event streams the page has open: the job view must be following the job before
   // its first pass, or a fast machine finishes it before the page connects.
-  await page.evaluate(() => {
-    window.__openEventStreams = 0;
-    const Native = window.EventSource;
-    window.EventSource = class extends Native {
-      constructor(...args) {
-        super(...args);
-        this.addEventListener('open', () => window.__openEventStreams++);
-      }
-    };
-  });
-  const blocker = await occupyWorker();
+  await countEventStreams(page);
+  const blocker = await occupyWorker(server);
 
   await chooseExample('cornell-box');
   await page.fill('#passes', '4');
@@ -309,7 +177,7 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await page.waitForFunction(
     () => document.querySelector('#job-status').textContent === 'queued' && window.__openEventStreams >= 1,
   );
-  await releaseWorker(blocker);
+  await releaseWorker(server, blocker);
 
   await page.waitForFunction(
     () => document.querySelector('#job-status').textContent === 'completed' && window.__imagePasses.length >= 2,
@@ -384,9 +252,9 @@ test('a running job can be cancelled and a finished one deleted', async () => {
   await page.fill('#photons-per-pass', '20000');
   await page.click('#submit-button');
   const id = await submittedJobId();
-  await waitForStatus(id, 'running', 30_000);
+  await waitForStatus(page, server, id, 'running', 30_000);
   await page.click('#cancel-button');
-  await waitForStatus(id, 'cancelled', 30_000);
+  await waitForStatus(page, server, id, 'cancelled', 30_000);
   await page.waitForFunction(() => !document.querySelector('#delete-button').disabled);
   await page.click('#delete-button');
   await page.waitForFunction(
