@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <thread>
 #include <photon/image_io.h>
@@ -176,10 +177,57 @@ void ServerTest::startServer(const std::vector<std::string>& args) {
     server_.start(all);
 }
 
+namespace {
+
+// Every answer the tests' HTTP clients get, one JSON line each, when PHOTON_API_RESPONSE_LOG
+// names a folder: tests/web/openapi.test.mjs then checks each against api/openapi.yaml (its
+// route, status, content type and body schema). One file per test, rewritten when it runs.
+class ResponseLog {
+public:
+    static ResponseLog& instance() {
+        static ResponseLog log;
+        return log;
+    }
+    void record(const httplib::Request& req, const httplib::Response& res) {
+        if (!enabled_) return;
+        std::string contentType = res.get_header_value("Content-Type");
+        json line{{"method", req.method},
+                  {"path", req.path.substr(0, req.path.find('?'))},
+                  {"status", res.status},
+                  {"content_type", contentType}};
+        // Bodies the schemas describe: JSON. Streams arrive in pieces and are not kept.
+        if (contentType.find("json") != std::string::npos && !res.body.empty()) line["body"] = res.body;
+        std::lock_guard lock(mutex_);
+        if (!out_.is_open()) {
+            const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+            std::string name = test ? std::string(test->test_suite_name()) + "." + test->name() : "outside-tests";
+            fs::create_directories(folder_);
+            out_.open(folder_ / (name + ".jsonl"), std::ios::trunc);
+        }
+        out_ << line.dump(-1, ' ', false, json::error_handler_t::replace) << "\n" << std::flush;
+    }
+
+private:
+    ResponseLog() {
+        const char* folder = std::getenv("PHOTON_API_RESPONSE_LOG");
+        enabled_ = folder && *folder;
+        if (enabled_) folder_ = folder;
+    }
+    bool enabled_ = false;
+    fs::path folder_;
+    std::mutex mutex_;
+    std::ofstream out_;
+};
+
+}  // namespace
+
 httplib::Client ServerTest::client() const {
     httplib::Client c("127.0.0.1", server_.port());
     c.set_read_timeout(std::chrono::seconds(30));
     c.set_default_headers(auth());
+    c.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+        ResponseLog::instance().record(req, res);
+    });
     return c;
 }
 
