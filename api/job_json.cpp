@@ -33,6 +33,9 @@ nlohmann::json toJson(const server::JobRecord& job) {
         {"eta_seconds", p.etaSeconds},
         {"error", job.error.empty() ? nlohmann::json() : nlohmann::json(job.error)},
         {"warnings", job.warnings},
+        {"name", job.name},
+        {"labels", job.labels},
+        {"updated_at", timestamp(job.updatedAt)},
     };
 }
 

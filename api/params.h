@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace httplib {
 struct Request;
@@ -23,7 +24,12 @@ std::optional<T> parseWhole(const std::string& text) {
 
 std::optional<int64_t> integerParam(const httplib::Request& req, const std::string& name, int64_t lo, int64_t hi);
 std::optional<uint64_t> unsignedParam(const httplib::Request& req, const std::string& name);
+// A finite decimal number (e.g. "1.5", "-2", "2e-1") in [lo, hi].
+std::optional<double> numberParam(const httplib::Request& req, const std::string& name, double lo, double hi);
 std::optional<std::string> stringParam(const httplib::Request& req, const std::string& name);
+// Every value of a parameter that may be repeated ("label=a&label=b"), in order; a value
+// holding commas counts as that many ("status=queued,running").
+std::vector<std::string> stringParams(const httplib::Request& req, const std::string& name);
 // The {id} of a /api/v1/jobs/{id}... route (its single capture group).
 std::string pathId(const httplib::Request& req);
 

@@ -1,5 +1,6 @@
 // /api/v1/jobs: submit, list, inspect, cancel, delete.
 #include <httplib.h>
+#include <charconv>
 #include <climits>
 #include "api/guard_fields.h"
 #include "api/errors.h"
@@ -7,6 +8,7 @@
 #include "api/job_json.h"
 #include "api/params.h"
 #include "api/upload_reader.h"
+#include "server/job_labels.h"
 
 namespace photon::api {
 
@@ -22,7 +24,15 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
     o.photonsPerPass = integerParam(req, "photons_per_pass", 1, INT64_MAX);
     o.seed = unsignedParam(req, "seed");
     o.priority = int(integerParam(req, "priority", INT_MIN, INT_MAX).value_or(0));
+    o.name = stringParam(req, "name").value_or("");
+    o.labels = stringParams(req, "label");
     return o;
+}
+
+// Query parameters first, then the form's fields; the name defaults to the scene file's.
+void addFormFields(server::SubmitOptions& options, const httplib::Request& req, const UploadFields& fields) {
+    if (!req.has_param("name")) options.name = fields.name.value_or(server::nameFromSceneFile(fields.sceneFileName));
+    options.labels.insert(options.labels.end(), fields.labels.begin(), fields.labels.end());
 }
 
 // The query takes part in the request digest: the same body with other overrides is a
@@ -43,12 +53,35 @@ std::optional<std::string> idempotencyKey(const httplib::Request& req) {
     return key;
 }
 
-std::optional<server::JobStatus> statusFilter(const httplib::Request& req) {
-    std::optional<std::string> text = stringParam(req, "status");
-    if (!text) return std::nullopt;
-    std::optional<server::JobStatus> status = server::parseJobStatus(*text);
-    if (!status) throwBadRequest("query parameter status: expected queued, running, completed, failed or cancelled");
-    return status;
+// status=queued,running (or status repeated), name= (a part of the name, any case),
+// label= (each one the job must have), cursor= (from the last page's next_cursor).
+server::JobFilter jobFilter(const httplib::Request& req) {
+    server::JobFilter filter;
+    for (const std::string& text : stringParams(req, "status")) {
+        std::optional<server::JobStatus> status = server::parseJobStatus(text);
+        if (!status)
+            throwBadRequest("query parameter status: expected queued, running, completed, failed or cancelled, got \"" +
+                            text + "\"");
+        filter.statuses.push_back(*status);
+    }
+    filter.nameContains = stringParam(req, "name").value_or("");
+    filter.labels = stringParams(req, "label");
+    if (std::optional<std::string> cursor = stringParam(req, "cursor")) {
+        int64_t seq = 0;
+        auto [end, ec] = std::from_chars(cursor->data(), cursor->data() + cursor->size(), seq);
+        if (ec != std::errc() || end != cursor->data() + cursor->size() || seq < 1)
+            throwBadRequest("query parameter cursor: not a cursor this server gave (next_cursor of a page)");
+        filter.afterSeq = seq;
+    }
+    return filter;
+}
+
+// The request's own query with the cursor replaced, for the Link header (RFC 8288).
+std::string nextPageLink(const httplib::Request& req, int64_t cursor) {
+    std::string query;
+    for (const auto& [key, value] : req.params)
+        if (key != "cursor" && key != "offset") query += httplib::detail::encode_query_param(key) + "=" + httplib::detail::encode_query_param(value) + "&";
+    return "<" + req.path + "?" + query + "cursor=" + std::to_string(cursor) + ">; rel=\"next\"";
 }
 
 }  // namespace
@@ -60,9 +93,13 @@ void createJob(RouteContext& ctx, const httplib::Request& req, httplib::Response
     // leave the rest of the upload in the connection.
     const server::Limits& limits = ctx.service.limits();
     server::RequestDigest digest;
-    readUpload(req, res, reader, *upload, {size_t(limits.maxBodyBytes), size_t(limits.maxSceneBytes), size_t(limits.maxUploadParts)}, digest);
+    UploadFields fields = readUpload(
+        req, res, reader, *upload,
+        {size_t(limits.maxBodyBytes), size_t(limits.maxSceneBytes), size_t(limits.maxUploadParts)}, digest);
     addQuery(req, digest);
-    server::SubmitRequest request{submitOptions(req), clientAddress(req), idempotencyKey(req), digest.hex()};
+    server::SubmitOptions options = submitOptions(req);
+    addFormFields(options, req, fields);
+    server::SubmitRequest request{options, clientAddress(req), idempotencyKey(req), digest.hex()};
     server::SubmitResult result = ctx.service.submit(*upload, request);
     res.set_header("Location", "/api/v1/jobs/" + result.job.id);
     // 200 for a retry: the job exists already and is what the first attempt created.
@@ -70,13 +107,19 @@ void createJob(RouteContext& ctx, const httplib::Request& req, httplib::Response
 }
 
 void listJobs(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
-    std::optional<server::JobStatus> status = statusFilter(req);
+    server::JobFilter filter = jobFilter(req);
     int64_t limit = integerParam(req, "limit", 1, kMaxPageSize).value_or(kDefaultPageSize);
     int64_t offset = integerParam(req, "offset", 0, INT64_MAX).value_or(0);
-    server::JobTable::Page page = ctx.service.list(status, size_t(limit), size_t(offset));
+    if (filter.afterSeq && offset != 0) throwBadRequest("query parameters cursor and offset: give one or the other");
+    server::JobTable::Page page = ctx.service.list(filter, size_t(limit), size_t(offset));
     nlohmann::json jobs = nlohmann::json::array();
     for (const server::JobRecord& job : page.jobs) jobs.push_back(toJson(job));
-    sendJson(res, 200, {{"jobs", std::move(jobs)}, {"total", page.total}});
+    nlohmann::json next;
+    if (page.nextAfterSeq) {
+        next = std::to_string(*page.nextAfterSeq);
+        res.set_header("Link", nextPageLink(req, *page.nextAfterSeq));
+    }
+    sendJson(res, 200, {{"jobs", std::move(jobs)}, {"total", page.total}, {"next_cursor", next}});
 }
 
 void getJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {

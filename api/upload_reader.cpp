@@ -1,5 +1,6 @@
 #include "api/upload_reader.h"
 #include <httplib.h>
+#include <algorithm>
 #include <exception>
 #include "api/errors.h"
 #include "server/service_limits.h"
@@ -36,16 +37,21 @@ public:
         }
         return guard([&] {
             upload_.endAsset();
+            endField();
             if (part.name == "scene") {
                 if (sawScene_) throw ServiceError(ErrorKind::BadRequest, "more than one scene part");
                 sawScene_ = true;
                 target_ = Target::Scene;
+                fields_.sceneFileName = part.filename;
+            } else if (part.filename.empty() && (part.name == "name" || part.name == "label")) {
+                target_ = Target::Field;
+                fieldName_ = part.name;
             } else if (!part.filename.empty()) {
                 upload_.beginAsset(part.name, part.filename);
                 target_ = Target::Asset;
             } else {
-                throw ServiceError(ErrorKind::BadRequest,
-                                   "form field \"" + part.name + "\" is neither the scene nor a file");
+                throw ServiceError(ErrorKind::BadRequest, "form field \"" + part.name +
+                                                              "\" is neither the scene, a file, \"name\" nor \"label\"");
             }
         });
     }
@@ -61,6 +67,7 @@ public:
         return guard([&] {
             if (target_ == Target::Scene) appendScene(data, size);
             else if (target_ == Target::Asset) upload_.appendAsset(data, size);
+            else if (target_ == Target::Field) appendField(data, size);
         });
     }
 
@@ -73,14 +80,29 @@ public:
         if (!readOk && httplibStatus == 413) throw ServiceError(ErrorKind::PayloadTooLarge, bodyTooLarge());
         if (!readOk) throw ServiceError(ErrorKind::BadRequest, "could not read the request body");
         upload_.endAsset();
+        endField();
         if (multipart && !sawScene_)
             throw ServiceError(ErrorKind::BadRequest, "multipart upload has no \"scene\" part");
     }
 
     void scenePlain() { target_ = Target::Scene; }
+    UploadFields& fields() { return fields_; }
 
 private:
-    enum class Target { None, Scene, Asset };
+    enum class Target { None, Scene, Asset, Field };
+
+    // A name or label is short; past this it is cut, and found too long when checked.
+    static constexpr size_t kMaxFieldBytes = 1024;
+    void appendField(const char* data, size_t size) {
+        field_.append(data, std::min(size, kMaxFieldBytes + 1 - std::min(field_.size(), kMaxFieldBytes + 1)));
+    }
+    void endField() {
+        if (target_ != Target::Field) return;
+        if (fieldName_ == "name") fields_.name = field_;
+        else fields_.labels.push_back(field_);
+        field_.clear();
+        target_ = Target::None;
+    }
 
     // Past the limit the scene is no longer kept, only counted: finish() reports its size.
     void appendScene(const char* data, size_t size) {
@@ -115,13 +137,15 @@ private:
     size_t sceneBytes_ = 0;
     Target target_ = Target::None;
     bool sawScene_ = false;
+    std::string fieldName_, field_;
+    UploadFields fields_;
     std::exception_ptr failure_;
 };
 
 }  // namespace
 
-void readUpload(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
-                server::StagedUpload& upload, const UploadLimits& limits, server::RequestDigest& digest) {
+UploadFields readUpload(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
+                        server::StagedUpload& upload, const UploadLimits& limits, server::RequestDigest& digest) {
     BodySink sink(upload, limits, digest);
     bool multipart = req.is_multipart_form_data();
     bool ok = false;
@@ -133,6 +157,7 @@ void readUpload(const httplib::Request& req, httplib::Response& res, const httpl
         ok = reader([&](const char* data, size_t size) { return sink.onData(data, size); });
     }
     sink.finish(ok, res.status, multipart);
+    return std::move(sink.fields());
 }
 
 }  // namespace photon::api

@@ -39,6 +39,9 @@ struct JobRecord {
     JobStatus status = JobStatus::Queued;
     int priority = 0;  // higher runs first
     std::string createdAt, startedAt, finishedAt;  // ISO 8601 UTC; empty when not yet
+    std::string updatedAt;                         // the last change of any field
+    std::string name;                              // see job_labels.h
+    std::vector<std::string> labels;
     JobSettings settings;
     JobProgress progress;
     std::string error;  // why it failed; empty otherwise

@@ -1,4 +1,5 @@
 #include "job_service.h"
+#include "job_labels.h"
 #include "clock.h"
 #include "errors.h"
 #include "safe_files.h"
@@ -91,6 +92,8 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
             return {*earlier, false};
         key = IdempotencyEntry{*request.idempotencyKey, request.digest, "", unixNowSeconds()};
     }
+    if (auto problem = jobNameProblem(request.options.name)) throw ServiceError(ErrorKind::BadRequest, *problem);
+    if (auto problem = jobLabelsProblem(request.options.labels)) throw ServiceError(ErrorKind::BadRequest, *problem);
     checkAdmission(request.client, 0);  // early, before the costly validation
     upload.endAsset();
     checkTextureSizes(upload.dir(), limits_);
@@ -103,12 +106,14 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
     job.uploadBytes = upload.storedBytes();
     guardStorage("storing the scene", [&] { writeFileAtomically(upload.dir() / "scene.json", upload.sceneText()); });
     job.priority = request.options.priority;
+    job.name = request.options.name;
+    job.labels = request.options.labels;
     job.client = request.client;
 
     std::lock_guard admit(admission_);
     checkAdmission(request.client, job.uploadBytes);
     job.id = unusedId();
-    job.createdAt = utcNowIso8601();
+    job.createdAt = job.updatedAt = utcNowIso8601();
     guardStorage("storing the job", [&] { folders_.commit(upload.dir(), job.id); });
     upload.markCommitted();
     try {
@@ -129,8 +134,8 @@ JobRecord JobService::get(const std::string& id) const {
     return *job;
 }
 
-JobTable::Page JobService::list(std::optional<JobStatus> status, size_t limit, size_t offset) const {
-    return table_.list(status, limit, offset);
+JobTable::Page JobService::list(const JobFilter& filter, size_t limit, size_t offset) const {
+    return table_.list(filter, limit, offset);
 }
 
 JobService::CancelResult JobService::cancel(const std::string& id) {

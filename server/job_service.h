@@ -61,7 +61,7 @@ public:
     SubmitResult submit(StagedUpload& upload, const SubmitRequest& request);
 
     JobRecord get(const std::string& id) const;
-    JobTable::Page list(std::optional<JobStatus> status, size_t limit, size_t offset) const;
+    JobTable::Page list(const JobFilter& filter, size_t limit, size_t offset) const;
     struct CancelResult {
         JobRecord job;
         bool pending = false;  // running: the render stops at its next check

@@ -45,12 +45,17 @@ CREATE INDEX IF NOT EXISTS idempotency_keys_by_age ON idempotency_keys (created_
 PRAGMA user_version = 2;
 COMMIT;
 )sql";
-// Version 3: each job's upload size (the per-client disk limit) and its warnings, one a line.
-// Older jobs count 0 bytes and have none.
+// Version 3: each job's upload size (the per-client disk limit), its warnings and labels
+// (one a line), its name and the time of its last change. Older jobs count 0 bytes, have no
+// warnings, labels or name, and were last changed when they were created.
 const char* kMigrateTo3 = R"sql(
 BEGIN IMMEDIATE;
 ALTER TABLE jobs ADD COLUMN upload_bytes INTEGER NOT NULL DEFAULT 0;
 ALTER TABLE jobs ADD COLUMN warnings TEXT;
+ALTER TABLE jobs ADD COLUMN name TEXT;
+ALTER TABLE jobs ADD COLUMN labels TEXT;
+ALTER TABLE jobs ADD COLUMN updated_at TEXT;
+UPDATE jobs SET updated_at = COALESCE(finished_at, started_at, created_at);
 PRAGMA user_version = 3;
 COMMIT;
 )sql";
@@ -58,11 +63,12 @@ constexpr int64_t kSchemaVersion = 3;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client, upload_bytes, warnings) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)";
+    " client, upload_bytes, warnings, name, labels, updated_at)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
-    " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10 WHERE id = ?1";
+    " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10, updated_at = ?11 WHERE id = ?1";
 
 const char* kRemove = "DELETE FROM jobs WHERE id = ?1";
 const char* kRemoveKeysOf = "DELETE FROM idempotency_keys WHERE job_id = ?1";
@@ -75,7 +81,7 @@ const char* kFindKey =
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
     " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
-    " upload_bytes, warnings FROM jobs ORDER BY seq";
+    " upload_bytes, warnings, name, labels, updated_at FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
@@ -163,6 +169,9 @@ JobRecord readRow(const sql::Statement& s) {
     job.client = s.text(19);
     job.uploadBytes = s.integer(20);
     job.warnings = splitLines(s.text(21));
+    job.name = s.text(22);
+    job.labels = splitLines(s.text(23));
+    job.updatedAt = s.text(24);
     return job;
 }
 
@@ -189,6 +198,8 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bind(7, int64_t(job.settings.seed)).bind(8, job.settings.integrator);
         insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
         insert_.bindTextOrNull(11, job.client).bind(12, job.uploadBytes).bindTextOrNull(13, joinLines(job.warnings));
+        insert_.bindTextOrNull(14, job.name).bindTextOrNull(15, joinLines(job.labels));
+        insert_.bindTextOrNull(16, job.updatedAt);
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;
@@ -218,7 +229,7 @@ void JobStore::update(const JobRecord& job) {
     update_.bindTextOrNull(3, job.startedAt).bindTextOrNull(4, job.finishedAt);
     update_.bind(5, int64_t(job.progress.pass)).bind(6, job.progress.photonsTraced);
     update_.bind(7, job.progress.meanRadius).bind(8, job.progress.elapsedSeconds);
-    update_.bind(9, job.progress.etaSeconds).bindTextOrNull(10, job.error);
+    update_.bind(9, job.progress.etaSeconds).bindTextOrNull(10, job.error).bindTextOrNull(11, job.updatedAt);
     update_.run();
 }
 

@@ -1,6 +1,8 @@
 #include "job_table.h"
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
+#include "clock.h"
 
 namespace photon::server {
 
@@ -28,15 +30,36 @@ std::optional<JobRecord> JobTable::find(const std::string& id) const {
     return it->second.job;
 }
 
-JobTable::Page JobTable::list(std::optional<JobStatus> status, size_t limit, size_t offset) const {
+bool JobFilter::matches(const JobRecord& job) const {
+    if (!statuses.empty() && std::find(statuses.begin(), statuses.end(), job.status) == statuses.end()) return false;
+    if (!nameContains.empty()) {
+        auto lower = [](unsigned char c) { return std::tolower(c); };
+        auto at = std::search(job.name.begin(), job.name.end(), nameContains.begin(), nameContains.end(),
+                              [&](char a, char b) { return lower(a) == lower(b); });
+        if (at == job.name.end()) return false;
+    }
+    for (const std::string& label : labels)
+        if (std::find(job.labels.begin(), job.labels.end(), label) == job.labels.end()) return false;
+    return true;
+}
+
+JobTable::Page JobTable::list(const JobFilter& filter, size_t limit, size_t offset) const {
     std::vector<const JobRecord*> matching;
     Page page;
     std::lock_guard lock(mutex_);
     for (const auto& [id, entry] : entries_)
-        if (!status || entry.job.status == *status) matching.push_back(&entry.job);
+        if (filter.matches(entry.job)) matching.push_back(&entry.job);
     std::sort(matching.begin(), matching.end(), [](auto* a, auto* b) { return a->seq > b->seq; });
     page.total = matching.size();
-    for (size_t i = offset; i < matching.size() && page.jobs.size() < limit; ++i) page.jobs.push_back(*matching[i]);
+    // A cursor starts after the job it names, wherever that now is (offsets shift when jobs
+    // are submitted or deleted between pages; a submission order does not).
+    size_t first = offset;
+    if (filter.afterSeq)
+        first = size_t(std::find_if(matching.begin(), matching.end(), [&](auto* j) { return j->seq < *filter.afterSeq; }) -
+                       matching.begin());
+    size_t i = first;
+    for (; i < matching.size() && page.jobs.size() < limit; ++i) page.jobs.push_back(*matching[i]);
+    if (i < matching.size() && !page.jobs.empty()) page.nextAfterSeq = page.jobs.back().seq;
     return page;
 }
 
@@ -64,7 +87,7 @@ std::optional<JobTable::Started> JobTable::start(const std::string& id, const st
     if (it == entries_.end() || it->second.job.status != JobStatus::Queued) return std::nullopt;
     Entry& e = it->second;
     e.job.status = JobStatus::Running;
-    e.job.startedAt = now;
+    e.job.startedAt = e.job.updatedAt = now;
     e.job.progress = JobProgress{};  // until its first pass reports, resumed from its checkpoint if any
     e.cancel = std::make_shared<CancelToken>();
     return Started{e.job, e.cancel};
@@ -74,6 +97,7 @@ JobRecord JobTable::setProgress(const std::string& id, const JobProgress& progre
     std::lock_guard lock(mutex_);
     Entry& e = at(id);
     e.job.progress = progress;
+    e.job.updatedAt = utcNowIso8601();
     return e.job;
 }
 
@@ -82,7 +106,7 @@ JobRecord JobTable::finish(const std::string& id, JobStatus status, const std::s
     Entry& e = at(id);
     e.job.status = status;
     e.job.error = error;
-    e.job.finishedAt = now;
+    e.job.finishedAt = e.job.updatedAt = now;
     e.job.progress.etaSeconds = 0;
     e.cancel.reset();
     return e.job;
@@ -96,7 +120,7 @@ JobTable::CancelResult JobTable::cancel(const std::string& id, const std::string
     CancelResult result = CancelResult::AlreadyFinished;
     if (e.job.status == JobStatus::Queued) {
         e.job.status = JobStatus::Cancelled;
-        e.job.finishedAt = now;
+        e.job.finishedAt = e.job.updatedAt = now;
         result = CancelResult::CancelledNow;
     } else if (e.job.status == JobStatus::Running) {
         e.cancelRequested = true;

@@ -15,6 +15,15 @@
 
 namespace photon::server {
 
+// Which jobs a list shows: all of the conditions given.
+struct JobFilter {
+    std::vector<JobStatus> statuses;   // any of these; empty: any status
+    std::string nameContains;          // in the name, ignoring case; empty: any name
+    std::vector<std::string> labels;   // every one of these
+    std::optional<int64_t> afterSeq;   // a cursor: jobs submitted before this one
+    bool matches(const JobRecord& job) const;
+};
+
 class JobTable {
 public:
     void insert(JobRecord job);
@@ -22,10 +31,12 @@ public:
     std::optional<JobRecord> find(const std::string& id) const;
 
     struct Page {
-        std::vector<JobRecord> jobs;  // newest first
-        size_t total = 0;             // matching jobs before limit/offset
+        std::vector<JobRecord> jobs;           // newest first
+        size_t total = 0;                      // matching jobs before the cursor, limit and offset
+        std::optional<int64_t> nextAfterSeq;   // the next page's cursor, when there is one
     };
-    Page list(std::optional<JobStatus> status, size_t limit, size_t offset) const;
+    // `offset` applies when the filter has no cursor.
+    Page list(const JobFilter& filter, size_t limit, size_t offset) const;
     std::map<JobStatus, int> countByStatus() const;
     // Queued and running jobs submitted from `client`.
     int64_t activeJobsOf(const std::string& client) const;

@@ -19,6 +19,8 @@ struct SubmitOptions {
     std::optional<int64_t> photonsPerPass;
     std::optional<uint64_t> seed;
     int priority = 0;
+    std::string name;                 // see job_labels.h
+    std::vector<std::string> labels;
 };
 
 struct AcceptedScene {

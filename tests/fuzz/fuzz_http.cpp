@@ -119,7 +119,7 @@ struct Harness {
 
     // Deletes every job but the fixture (inputs create queued jobs; cancel first).
     void removeCreatedJobs() {
-        for (const photon::server::JobRecord& job : service.list(std::nullopt, 1000, 0).jobs) {
+        for (const photon::server::JobRecord& job : service.list({}, 1000, 0).jobs) {
             if (job.id == fixtureId) continue;
             try {
                 service.cancel(job.id);

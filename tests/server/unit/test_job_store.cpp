@@ -66,6 +66,9 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.client, expected.client);
     EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
     EXPECT_EQ(actual.warnings, expected.warnings);
+    EXPECT_EQ(actual.name, expected.name);
+    EXPECT_EQ(actual.labels, expected.labels);
+    EXPECT_EQ(actual.updatedAt, expected.updatedAt);
 }
 
 std::vector<std::string> ids(const std::vector<JobRecord>& jobs) {
@@ -96,6 +99,9 @@ TEST_F(JobStoreTest, InsertStoresTheSubmissionFields) {
     job.client = "2001:db8::1";
     job.uploadBytes = 5'000'000'000LL;
     job.warnings = {"asset \"a.obj\" is not used by the scene and was not stored", "second warning"};
+    job.name = "Atrium, final (\xc3\xa9t\xc3\xa9)";
+    job.labels = {"project=atrium", "final"};
+    job.updatedAt = "2026-12-01T20:00:00.000Z";
     int64_t seq;
     {
         JobStore store(dbFile());
@@ -135,7 +141,7 @@ TEST_F(JobStoreTest, EveryFieldRoundTripsThroughInsertAndUpdate) {
         job.seq = store.insert(job);
         job.status = JobStatus::Failed;
         job.startedAt = "2024-05-01T09:01:02.345Z";
-        job.finishedAt = "2024-05-01T09:31:02.999Z";
+        job.finishedAt = job.updatedAt = "2024-05-01T09:31:02.999Z";
         job.progress = JobProgress{6, 740'000'000'000LL, 0.1, 1234.5678, 1e-9};
         job.error = "it's \"broken\": naïve \xF0\x9F\x99\x82";
         store.update(job);
@@ -424,6 +430,9 @@ VALUES ('old', 'queued', 1, '2023-01-01T00:00:00.000Z', 4, 1000, 7, 'path', 64, 
     EXPECT_EQ(jobs[0].client, "");  // version 1 did not record it
     EXPECT_EQ(jobs[0].uploadBytes, 0);  // nor versions before 3 these
     EXPECT_TRUE(jobs[0].warnings.empty());
+    EXPECT_EQ(jobs[0].name, "");
+    EXPECT_TRUE(jobs[0].labels.empty());
+    EXPECT_EQ(jobs[0].updatedAt, "2023-01-01T00:00:00.000Z");  // its creation
 
     JobRecord fresh = newJob("new");
     EXPECT_EQ(store.insert(fresh, IdempotencyEntry{"k", "0123456789abcdef", "", 1000}), 2);

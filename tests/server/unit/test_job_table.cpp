@@ -282,7 +282,7 @@ TEST(JobTable, ListIsNewestFirst) {
     table.insert(queuedJob("second", 2));
     table.insert(queuedJob("third", 3));
     table.insert(queuedJob("first", 1));
-    JobTable::Page page = table.list(std::nullopt, 10, 0);
+    JobTable::Page page = table.list({}, 10, 0);
     EXPECT_EQ(page.total, 3u);
     EXPECT_EQ(ids(page), (std::vector<std::string>{"third", "second", "first"}));
 }
@@ -293,29 +293,75 @@ TEST(JobTable, ListFiltersByStatus) {
     table.insert(withStatus(queuedJob("c1", 2), JobStatus::Completed));
     table.insert(queuedJob("q2", 3));
     table.insert(withStatus(queuedJob("f1", 4), JobStatus::Failed));
-    JobTable::Page queued = table.list(JobStatus::Queued, 10, 0);
+    JobTable::Page queued = table.list({{JobStatus::Queued}}, 10, 0);
     EXPECT_EQ(queued.total, 2u);
     EXPECT_EQ(ids(queued), (std::vector<std::string>{"q2", "q1"}));
-    JobTable::Page running = table.list(JobStatus::Running, 10, 0);
+    JobTable::Page running = table.list({{JobStatus::Running}}, 10, 0);
     EXPECT_EQ(running.total, 0u);
     EXPECT_TRUE(running.jobs.empty());
+}
+
+TEST(JobTable, ListFiltersBySeveralStatusesANameAndLabels) {
+    JobTable table;
+    auto job = [](std::string id, int64_t seq, JobStatus status, std::string name, std::vector<std::string> labels) {
+        JobRecord j = withStatus(queuedJob(id, seq), status);
+        j.name = std::move(name);
+        j.labels = std::move(labels);
+        return j;
+    };
+    table.insert(job("a", 1, JobStatus::Queued, "Atrium draft", {"project=atrium", "draft"}));
+    table.insert(job("b", 2, JobStatus::Running, "atrium final", {"project=atrium"}));
+    table.insert(job("c", 3, JobStatus::Completed, "Kitchen", {"project=kitchen", "draft"}));
+    table.insert(job("d", 4, JobStatus::Failed, "ATRIUM", {}));
+    EXPECT_EQ(ids(table.list({{JobStatus::Queued, JobStatus::Running}}, 10, 0)), (std::vector<std::string>{"b", "a"}));
+    JobFilter byName;
+    byName.nameContains = "atrium";
+    EXPECT_EQ(ids(table.list(byName, 10, 0)), (std::vector<std::string>{"d", "b", "a"}));
+    JobFilter byLabels;
+    byLabels.labels = {"draft", "project=atrium"};
+    EXPECT_EQ(ids(table.list(byLabels, 10, 0)), (std::vector<std::string>{"a"}));
+    JobFilter all;
+    all.statuses = {JobStatus::Completed, JobStatus::Queued};
+    all.labels = {"draft"};
+    all.nameContains = "KITCH";
+    EXPECT_EQ(ids(table.list(all, 10, 0)), (std::vector<std::string>{"c"}));
+}
+
+TEST(JobTable, ACursorPagesOnFromTheJobItNamesEvenWhenJobsComeAndGo) {
+    JobTable table;
+    for (int seq = 1; seq <= 5; ++seq) table.insert(withStatus(queuedJob("j" + std::to_string(seq), seq), JobStatus::Completed));
+    JobTable::Page first = table.list({}, 2, 0);
+    EXPECT_EQ(ids(first), (std::vector<std::string>{"j5", "j4"}));
+    ASSERT_EQ(first.nextAfterSeq, 4);
+    // A new job and a deleted one between pages shift offsets, not the cursor.
+    table.insert(queuedJob("j6", 6));
+    EXPECT_EQ(table.remove("j5"), JobTable::RemoveResult::Removed);
+    JobFilter next;
+    next.afterSeq = first.nextAfterSeq;
+    JobTable::Page second = table.list(next, 2, 0);
+    EXPECT_EQ(ids(second), (std::vector<std::string>{"j3", "j2"}));
+    ASSERT_EQ(second.nextAfterSeq, 2);
+    next.afterSeq = second.nextAfterSeq;
+    JobTable::Page last = table.list(next, 2, 0);
+    EXPECT_EQ(ids(last), (std::vector<std::string>{"j1"}));
+    EXPECT_FALSE(last.nextAfterSeq);
 }
 
 TEST(JobTable, ListPagesWithLimitAndOffsetAndCountsAllMatches) {
     JobTable table;
     for (int seq = 1; seq <= 5; ++seq) table.insert(queuedJob("j" + std::to_string(seq), seq));
-    JobTable::Page page = table.list(std::nullopt, 2, 1);
+    JobTable::Page page = table.list({}, 2, 1);
     EXPECT_EQ(page.total, 5u);
     EXPECT_EQ(ids(page), (std::vector<std::string>{"j4", "j3"}));
 
-    JobTable::Page tail = table.list(std::nullopt, 10, 4);
+    JobTable::Page tail = table.list({}, 10, 4);
     EXPECT_EQ(ids(tail), (std::vector<std::string>{"j1"}));
 
-    JobTable::Page beyond = table.list(std::nullopt, 10, 9);
+    JobTable::Page beyond = table.list({}, 10, 9);
     EXPECT_EQ(beyond.total, 5u);
     EXPECT_TRUE(beyond.jobs.empty());
 
-    EXPECT_TRUE(table.list(std::nullopt, 0, 0).jobs.empty());
+    EXPECT_TRUE(table.list({}, 0, 0).jobs.empty());
 }
 
 TEST(JobTable, CountByStatusNamesEveryStatus) {
