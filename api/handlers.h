@@ -9,6 +9,9 @@ void createJob(RouteContext&, const httplib::Request&, httplib::Response&, const
 void listJobs(RouteContext&, const httplib::Request&, httplib::Response&);
 void getJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void cancelJob(RouteContext&, const httplib::Request&, httplib::Response&);
+void updateJob(RouteContext&, const httplib::Request&, httplib::Response&);
+void cloneJob(RouteContext&, const httplib::Request&, httplib::Response&);
+void getScene(RouteContext&, const httplib::Request&, httplib::Response&);
 void deleteJob(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_images.cpp
 void getImage(RouteContext&, const httplib::Request&, httplib::Response&);

@@ -9,7 +9,7 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 14> kRoutes{{
+constexpr std::array<Route, 17> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
@@ -20,6 +20,9 @@ constexpr std::array<Route, 14> kRoutes{{
     {"POST", "/api/v1/jobs", nullptr, createJob},
     {"GET", "/api/v1/jobs/{id}", getJob, nullptr},
     {"DELETE", "/api/v1/jobs/{id}", deleteJob, nullptr},
+    {"PATCH", "/api/v1/jobs/{id}", updateJob, nullptr},
+    {"POST", "/api/v1/jobs/{id}/clone", cloneJob, nullptr},
+    {"GET", "/api/v1/jobs/{id}/scene", getScene, nullptr},
     {"POST", "/api/v1/jobs/{id}/cancel", cancelJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/image", getImage, nullptr},
     {"GET", "/api/v1/jobs/{id}/events", jobEvents, nullptr},
@@ -71,6 +74,7 @@ void registerOne(httplib::Server& server, RouteContext& context, const Route& ro
     if (method == "GET") server.Get(pattern, plain);
     else if (method == "POST") server.Post(pattern, plain);
     else if (method == "DELETE") server.Delete(pattern, plain);
+    else if (method == "PATCH") server.Patch(pattern, plain);
 }
 
 }  // namespace

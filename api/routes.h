@@ -31,7 +31,7 @@ using BodyHandler = void (*)(RouteContext&, const httplib::Request&, httplib::Re
                              const httplib::ContentReader&);
 
 struct Route {
-    const char* method;  // "GET", "POST", "DELETE"
+    const char* method;  // "GET", "POST", "PATCH", "DELETE"
     const char* path;    // OpenAPI template, e.g. "/api/v1/jobs/{id}"; {id} is req.matches[1]
     Handler handler;          // exactly one of handler and bodyHandler is set
     BodyHandler bodyHandler;

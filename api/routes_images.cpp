@@ -1,4 +1,5 @@
-// GET /api/v1/jobs/{id}/image: the latest pass as PNG or EXR, with ETag revalidation.
+// GET /api/v1/jobs/{id}/image: the latest pass as PNG or EXR, at another exposure or size
+// if asked (api/image_query.h), with ETag revalidation.
 // GET /api/v1/jobs/{id}/stream: multipart/x-mixed-replace, one PNG frame per finished pass
 // (a browser <img> shows it as a live picture), ending when the job finishes.
 #include <httplib.h>
@@ -6,18 +7,13 @@
 #include <sstream>
 #include "api/errors.h"
 #include "api/handlers.h"
+#include "api/image_query.h"
 #include "api/params.h"
 #include "api/stream_support.h"
 
 namespace photon::api {
 
 namespace {
-
-server::ImageFormat formatParam(const httplib::Request& req) {
-    std::optional<server::ImageFormat> format = server::parseImageFormat(stringParam(req, "format").value_or("png"));
-    if (!format) throwBadRequest("query parameter format: expected png or exr");
-    return *format;
-}
 
 // If-None-Match holds "*" or a comma-separated list of (possibly weak) entity tags.
 bool etagMatches(const std::string& header, const std::string& etag) {
@@ -80,10 +76,17 @@ struct FrameStream {
 
 void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     std::string id = pathId(req);
-    server::ImageFormat format = formatParam(req);
-    std::optional<server::EncodedImage> image = ctx.service.image(id, format);
+    ImageQuery query = parseImageQuery(req);
+    server::ImageVariant variant{query.exposure, std::nullopt};
+    if (query.box) {
+        server::JobSettings settings = ctx.service.get(id).settings;
+        variant = server::variantFor(query.exposure, query.box, {settings.width, settings.height});
+    }
+    // The plain image is served as cached; a variant is made from the same pass's EXR.
+    server::ImageFormat source = variant.isDefault() ? query.format : server::ImageFormat::Exr;
+    std::optional<server::EncodedImage> image = ctx.service.image(id, source);
     if (!image) throw server::ServiceError(server::ErrorKind::NotReady, "job " + id + " has no image yet");
-    std::string etag = "\"" + id + "-" + std::to_string(image->pass) + "-" + server::toString(format) + "\"";
+    std::string etag = imageEtag(id, image->pass, query.format, variant);
     res.set_header("ETag", etag);
     res.set_header("X-Photon-Pass", std::to_string(image->pass));
     res.set_header("Cache-Control", "no-cache");  // revalidate: the image changes every pass
@@ -91,10 +94,12 @@ void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response&
         res.status = 304;
         return;
     }
+    res.set_header("Content-Disposition", imageDisposition(id, image->pass, query.format, variant));
     // Serve the shared bytes without copying them into the response.
-    std::shared_ptr<const std::string> bytes = image->bytes;
+    std::shared_ptr<const std::string> bytes =
+        variant.isDefault() ? image->bytes : server::encodeVariant(*image->bytes, query.format, variant);
     res.status = 200;
-    res.set_content_provider(bytes->size(), server::mimeType(format),
+    res.set_content_provider(bytes->size(), server::mimeType(query.format),
                              [bytes](size_t offset, size_t length, httplib::DataSink& sink) {
                                  return sink.write(bytes->data() + offset, length);
                              });

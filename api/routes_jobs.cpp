@@ -1,5 +1,6 @@
 // /api/v1/jobs: submit, list, inspect, cancel, delete.
 #include <httplib.h>
+#include <nlohmann/json.hpp>
 #include <charconv>
 #include <climits>
 #include "api/guard_fields.h"
@@ -124,6 +125,31 @@ void listJobs(RouteContext& ctx, const httplib::Request& req, httplib::Response&
 
 void getJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     sendJson(res, 200, toJson(ctx.service.get(pathId(req))));
+}
+
+// PATCH /api/v1/jobs/{id} {"priority": N}: what may change of a job after submission.
+void updateJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    nlohmann::json body = nlohmann::json::parse(req.body);
+    if (!body.is_object()) throwBadRequest("the body must be a JSON object such as {\"priority\": 5}");
+    for (const auto& [key, value] : body.items())
+        if (key != "priority") throwBadRequest("\"" + key + "\" cannot be changed; only \"priority\" can");
+    if (!body.contains("priority")) throwBadRequest("nothing to change: give {\"priority\": N}");
+    const nlohmann::json& priority = body["priority"];
+    if (!priority.is_number_integer() || priority.get<int64_t>() < INT_MIN || priority.get<int64_t>() > INT_MAX)
+        throwBadRequest("priority: must be a 32-bit integer");
+    sendJson(res, 200, toJson(ctx.service.setPriority(pathId(req), priority.get<int>())));
+}
+
+// POST /api/v1/jobs/{id}/clone?passes=&photons_per_pass=&seed=&priority=&name=&label=
+void cloneJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    server::SubmitResult result = ctx.service.clone(pathId(req), submitOptions(req), clientAddress(req));
+    res.set_header("Location", "/api/v1/jobs/" + result.job.id);
+    sendJson(res, 201, toJson(result.job));
+}
+
+// GET /api/v1/jobs/{id}/scene: the scene JSON as submitted.
+void getScene(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    res.set_content(ctx.service.scene(pathId(req)), "application/json");
 }
 
 void cancelJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {

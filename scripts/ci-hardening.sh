@@ -52,7 +52,8 @@ unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_j
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
               test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges
-              test_server_framing test_server_connections test_server_listing)
+              test_server_framing test_server_connections test_server_listing
+              test_server_image_options)
 
 # run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
 # from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer

@@ -5,8 +5,9 @@ namespace photon::server {
 
 namespace {
 
-std::shared_ptr<const std::string> encode(const PendingImage& image, ImageFormat format) {
-    std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image) : encodeExr(image);
+std::shared_ptr<const std::string> encode(const PendingImage& image, const ImageMetadata& metadata,
+                                          ImageFormat format) {
+    std::vector<uint8_t> bytes = format == ImageFormat::Png ? encodePng(image, metadata) : encodeExr(image, metadata);
     return std::make_shared<const std::string>(bytes.begin(), bytes.end());
 }
 
@@ -18,7 +19,8 @@ std::shared_ptr<ImageCache::Slot> ImageCache::slot(const std::string& id) const 
     return it == slots_.end() ? nullptr : it->second;
 }
 
-void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image) {
+void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image,
+                       ImageMetadata metadata) {
     std::shared_ptr<Slot> s;
     {
         std::lock_guard lock(mutex_);
@@ -29,6 +31,7 @@ void ImageCache::store(const std::string& id, int pass, std::shared_ptr<const Pe
     std::lock_guard lock(s->stateMutex);
     s->pass = pass;
     s->image = std::move(image);
+    s->metadata = std::make_shared<const ImageMetadata>(std::move(metadata));
     // The last encodings stay: a request soon after may still be answered with them.
 }
 
@@ -37,6 +40,7 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
     if (!s) return std::nullopt;
     std::lock_guard encoding(s->encodeMutex);
     std::shared_ptr<const PendingImage> image;
+    std::shared_ptr<const ImageMetadata> metadata;
     EncodedImage fresh;
     {
         std::lock_guard state(s->stateMutex);
@@ -48,9 +52,10 @@ std::optional<EncodedImage> ImageCache::get(const std::string& id, ImageFormat f
             if (last.pass == s->pass || (freshness == Freshness::Throttled && recent)) return last;
         }
         image = s->image;
+        metadata = s->metadata;
         fresh.pass = s->pass;
     }
-    fresh.bytes = encode(*image, format);
+    fresh.bytes = encode(*image, *metadata, format);
     fresh.encodedAt = now_();
     std::lock_guard state(s->stateMutex);
     // Keyed by pass: if a newer pass arrived meanwhile, the lookup above will not match it.

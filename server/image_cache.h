@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <photon/image_io.h>
 #include <photon/pending_image.h>
 #include "image_format.h"
 
@@ -35,8 +36,10 @@ public:
 
     // The image after `pass` as the engine hands it out (its layers go into the EXR, the
     // PNG shows the main image; a post filter runs at the first encode, so only for passes
-    // someone fetches); replaces the previous pass's image and encodings.
-    void store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image);
+    // someone fetches), with the text its encodings carry; replaces the previous pass's
+    // image and encodings.
+    void store(const std::string& id, int pass, std::shared_ptr<const PendingImage> image,
+               ImageMetadata metadata = {});
     // The latest image in `format`, encoded now if this pass has not been encoded yet.
     // nullopt if the job has no image in memory.
     std::optional<EncodedImage> get(const std::string& id, ImageFormat format,
@@ -52,6 +55,7 @@ private:
         std::mutex stateMutex;
         int pass = 0;
         std::shared_ptr<const PendingImage> image;
+        std::shared_ptr<const ImageMetadata> metadata;  // shared with encodes in flight
         std::map<ImageFormat, EncodedImage> encoded;
     };
     std::shared_ptr<Slot> slot(const std::string& id) const;

@@ -47,6 +47,12 @@ fs::path JobFolders::imageFile(const std::string& id, ImageFormat format) const 
     return jobDir(id) / (std::string("image.") + toString(format));
 }
 
+bool JobFolders::isServiceFile(const std::string& name) {
+    for (const char* own : {"scene.json", "image.png", "image.exr", "checkpoint.bin", "job.log"})
+        if (name == own || name == std::string(own) + ".tmp") return true;
+    return false;
+}
+
 fs::path JobFolders::newStagingDir() const {
     for (;;) {
         fs::path dir = root_ / "tmp" / ("upload-" + randomJobId());

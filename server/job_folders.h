@@ -2,7 +2,9 @@
 //   DIR/lock                  held (flock) by the server using DIR
 //   DIR/jobs.db               job records (JobStore)
 //   DIR/jobs/<id>/scene.json  the scene as submitted, plus its asset files
-//   DIR/jobs/<id>/image.png   final images, written when the job finishes
+//   DIR/jobs/<id>/image.png   final images (and image.exr), written when the job finishes
+//   DIR/jobs/<id>/checkpoint.bin  the running render's state, while there is one
+//   DIR/jobs/<id>/job.log     what happened to the job, one timestamped line an event
 //   DIR/tmp/                  uploads being staged; renamed into jobs/ once accepted
 #pragma once
 #include <filesystem>
@@ -27,6 +29,10 @@ public:
     // The running render's saved state (engine checkpoint bytes), while there is one.
     std::filesystem::path checkpointFile(const std::string& id) const { return jobDir(id) / "checkpoint.bin"; }
     std::filesystem::path imageFile(const std::string& id, ImageFormat format) const;
+    std::filesystem::path logFile(const std::string& id) const { return jobDir(id) / "job.log"; }
+    // A name (relative to a job folder, in normal form) that is one of the service's own
+    // files above, or their temporary copies ("image.png.tmp"): never an asset's.
+    static bool isServiceFile(const std::string& name);
 
     // A new, empty, uniquely named folder on the same file system as jobs/, so that
     // committing it is an atomic rename.

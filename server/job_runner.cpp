@@ -5,6 +5,7 @@
 #include <sstream>
 #include <photon/render.h>
 #include "clock.h"
+#include "image_metadata.h"
 #include "scene_intake.h"
 
 namespace photon::server {
@@ -38,7 +39,7 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
-        onPass(id, renderer, p, elapsedBefore);
+        onPass(id, started.job.settings, renderer, p, elapsedBefore);
         auto now = std::chrono::steady_clock::now();
         if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
             saveCheckpoint(id, renderer);
@@ -72,13 +73,15 @@ void JobRunner::resumeFromCheckpoint(const std::string& id, Renderer& renderer) 
     }
 }
 
-void JobRunner::onPass(const std::string& id, const Renderer& renderer, const RenderProgress& p,
-                       double& elapsedBefore) {
+void JobRunner::onPass(const std::string& id, const JobSettings& settings, const Renderer& renderer,
+                       const RenderProgress& p, double& elapsedBefore) {
     // Between passes the snapshot is exactly the image after pass p.pass (denoised, with
     // its raw and guide layers, when the scene asks for it: the engine decides, and does
-    // it when the image is first encoded).
-    images_.store(id, p.pass, renderer.pendingLayers());
+    // it when the image is first encoded). Its files say how far the render had got then.
     JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
+    std::shared_ptr<const PendingImage> image = renderer.pendingLayers();
+    ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
+    images_.store(id, p.pass, std::move(image), std::move(metadata));
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);
     metrics_.addPass(p.lastPass.photons, p.elapsedSeconds - elapsedBefore);
     elapsedBefore = p.elapsedSeconds;

@@ -30,8 +30,8 @@ public:
 private:
     enum class Ending { Completed, Cancelled, Interrupted };
     Ending render(const JobTable::Started& started);
-    void onPass(const std::string& id, const Renderer& renderer, const RenderProgress& progress,
-                double& elapsedBefore);
+    void onPass(const std::string& id, const JobSettings& settings, const Renderer& renderer,
+                const RenderProgress& progress, double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
     void writeImages(const std::string& id);
     void saveCheckpoint(const std::string& id, const Renderer& renderer);

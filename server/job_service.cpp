@@ -153,6 +153,56 @@ JobService::CancelResult JobService::cancel(const std::string& id) {
     return {job, false};
 }
 
+JobRecord JobService::setPriority(const std::string& id, int priority) {
+    JobRecord job;
+    switch (table_.setPriority(id, priority, utcNowIso8601(), job)) {
+        case JobTable::ChangeResult::NotFound: notFound(id);
+        case JobTable::ChangeResult::NotQueued:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " is " + toString(job.status) +
+                                                        ": its priority can change only while it is queued");
+        case JobTable::ChangeResult::Changed: break;
+    }
+    // Taken out and put back: if a worker took it meanwhile, it is gone and stays gone.
+    if (queue_.remove(id)) queue_.push(id, job.priority, job.seq);
+    store_.update(job);
+    hub_.publish(job, std::nullopt);
+    return job;
+}
+
+std::string JobService::scene(const std::string& id) const {
+    if (!table_.contains(id)) notFound(id);
+    std::optional<std::string> text = readWholeFile(folders_.sceneFile(id));
+    if (!text) throw ServiceError(ErrorKind::NotFound, "job " + id + " has no scene file");
+    return *text;
+}
+
+SubmitResult JobService::clone(const std::string& id, const SubmitOptions& overrides, const std::string& client) {
+    JobRecord original = get(id);
+    std::unique_ptr<StagedUpload> upload = newUpload();
+    upload->sceneText() = scene(id);
+    // Every file of the job's folder but what rendering wrote: submit() keeps those the
+    // scene names, and holds them to the asset limits like an upload.
+    const std::filesystem::path folder = folders_.jobDir(id);
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(folder, ec);
+         !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file() || it->is_symlink()) continue;
+        std::string name = std::filesystem::relative(it->path(), folder).generic_string();
+        if (JobFolders::isServiceFile(name)) continue;
+        std::optional<std::string> bytes = readWholeFile(it->path());
+        if (!bytes) continue;
+        upload->beginAsset("clone of " + id, name);
+        upload->appendAsset(bytes->data(), bytes->size());
+    }
+    SubmitOptions options = overrides;
+    if (!options.passes) options.passes = original.settings.passes;
+    if (!options.photonsPerPass) options.photonsPerPass = original.settings.photonsPerPass;
+    if (!options.seed) options.seed = original.settings.seed;
+    if (options.name.empty()) options.name = original.name;
+    if (options.labels.empty()) options.labels = original.labels;
+    return submit(*upload, {options, client, std::nullopt, ""});
+}
+
 void JobService::remove(const std::string& id) {
     switch (table_.remove(id)) {
         case JobTable::RemoveResult::NotFound: notFound(id);

@@ -67,6 +67,14 @@ public:
         bool pending = false;  // running: the render stops at its next check
     };
     CancelResult cancel(const std::string& id);
+    // A queued job's place in the queue: Conflict once it has started.
+    JobRecord setPriority(const std::string& id, int priority);
+    // A new job with the scene and assets of job `id` and the given settings; options left
+    // unset keep the original's (its name and labels too). Held to the same limits as a
+    // submission.
+    SubmitResult clone(const std::string& id, const SubmitOptions& overrides, const std::string& client);
+    // The scene as submitted.
+    std::string scene(const std::string& id) const;
     void remove(const std::string& id);
     // The latest image; nullopt while no pass has finished (or none was kept).
     std::optional<EncodedImage> image(const std::string& id, ImageFormat format);

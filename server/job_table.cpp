@@ -137,6 +137,22 @@ bool JobTable::cancelRequested(const std::string& id) const {
     return it != entries_.end() && it->second.cancelRequested;
 }
 
+JobTable::ChangeResult JobTable::setPriority(const std::string& id, int priority, const std::string& now,
+                                             JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return ChangeResult::NotFound;
+    Entry& e = it->second;
+    if (e.job.status != JobStatus::Queued) {
+        job = e.job;
+        return ChangeResult::NotQueued;
+    }
+    e.job.priority = priority;
+    e.job.updatedAt = now;
+    job = e.job;
+    return ChangeResult::Changed;
+}
+
 JobTable::RemoveResult JobTable::remove(const std::string& id) {
     std::lock_guard lock(mutex_);
     auto it = entries_.find(id);

@@ -58,6 +58,10 @@ public:
     CancelResult cancel(const std::string& id, const std::string& now, JobRecord& job);
     bool cancelRequested(const std::string& id) const;
 
+    enum class ChangeResult { NotFound, NotQueued, Changed };
+    // A queued job's priority; `job` is the record after (or as it is, when not changed).
+    ChangeResult setPriority(const std::string& id, int priority, const std::string& now, JobRecord& job);
+
     enum class RemoveResult { NotFound, NotFinished, Removed };
     RemoveResult remove(const std::string& id);
 

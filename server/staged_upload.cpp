@@ -3,6 +3,7 @@
 #include <array>
 #include <cctype>
 #include "errors.h"
+#include "job_folders.h"
 #include "service_limits.h"
 
 namespace photon::server {
@@ -11,8 +12,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Files the service itself keeps in a job folder.
-constexpr std::array<const char*, 3> kReserved{"scene.json", "image.png", "image.exr"};
 constexpr size_t kMaxNameLength = 512;
 constexpr size_t kMaxComponentLength = 255;  // NAME_MAX on Linux file systems
 constexpr int kMaxComponents = 16;
@@ -58,8 +57,8 @@ std::optional<std::string> assetNameProblem(const std::string& name) {
                std::to_string(kMaxComponents);
     fs::path normal = p.lexically_normal();
     if (normal.empty() || !normal.has_filename() || normal == ".") return "asset name must name a file";
-    for (const char* reserved : kReserved)
-        if (normal == reserved) return std::string("asset name \"") + reserved + "\" is reserved";
+    if (JobFolders::isServiceFile(normal.generic_string()))
+        return "asset name \"" + normal.generic_string() + "\" is reserved";
     return std::nullopt;
 }
 

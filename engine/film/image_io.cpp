@@ -48,6 +48,12 @@ void writeImage(const std::string& name, const OIIO::ImageSpec& spec, const void
         throw std::runtime_error("cannot write " + name + ": " + out->geterror());
 }
 
+// String attributes: PNG keeps only strings, as tEXt chunks (OpenImageIO's PNG writer drops
+// other types), so every value is text in both formats.
+void addMetadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata) {
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+}
+
 OIIO::ImageSpec exrSpec(const LayeredImage& image) {
     const int channels = 3 * static_cast<int>(1 + image.layers.size());
     OIIO::ImageSpec spec(image.main.width, image.main.height, channels, OIIO::TypeDesc::FLOAT);
@@ -97,7 +103,7 @@ void writePng(const Image& image, const std::filesystem::path& file, float expos
                nullptr);
 }
 
-std::vector<uint8_t> encodePng(const Image& image, float exposure) {
+std::vector<uint8_t> encodePng(const Image& image, float exposure, const ImageMetadata& metadata) {
     std::vector<uint8_t> pixels = toneMapToSrgb8(image, exposure);
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
@@ -108,16 +114,19 @@ std::vector<uint8_t> encodePng(const Image& image, float exposure) {
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("png:compressionLevel", 1);
     spec.attribute("png:filter", 0x10);  // PNG_FILTER_SUB
+    addMetadata(spec, metadata);
     writeImage("image.png", spec, pixels.data(), &proxy);
     return {buffer.begin(), buffer.end()};
 }
 
 std::vector<uint8_t> encodeExr(const Image& image) { return encodeExr(LayeredImage{image, {}}); }
 
-std::vector<uint8_t> encodeExr(const LayeredImage& image) {
+std::vector<uint8_t> encodeExr(const LayeredImage& image, const ImageMetadata& metadata) {
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
-    writeImage("image.exr", exrSpec(image), exrPixels(image).data(), &proxy);
+    OIIO::ImageSpec spec = exrSpec(image);
+    addMetadata(spec, metadata);
+    writeImage("image.exr", spec, exrPixels(image).data(), &proxy);
     return {buffer.begin(), buffer.end()};
 }
 

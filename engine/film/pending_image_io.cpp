@@ -4,8 +4,12 @@
 
 namespace photon {
 
-std::vector<uint8_t> encodePng(const PendingImage& image) { return encodePng(image.layers().main, image.exposure()); }
-std::vector<uint8_t> encodeExr(const PendingImage& image) { return encodeExr(image.layers()); }
+std::vector<uint8_t> encodePng(const PendingImage& image, const ImageMetadata& metadata) {
+    return encodePng(image.layers().main, image.exposure(), metadata);
+}
+std::vector<uint8_t> encodeExr(const PendingImage& image, const ImageMetadata& metadata) {
+    return encodeExr(image.layers(), metadata);
+}
 void writePng(const PendingImage& image, const std::filesystem::path& file) {
     writePng(image.layers().main, file, image.exposure());
 }

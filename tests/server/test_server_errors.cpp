@@ -178,7 +178,7 @@ TEST_F(ErrorsTest, AKnownRouteWithAnotherMethodIs405WithAllow) {
     EXPECT_EQ(errorBody(health)["error"], "DELETE is not one of this route's methods: GET");
     httplib::Result job = c.Put("/api/v1/jobs/0123456789abcdef", "{}", "application/json");
     EXPECT_EQ(job->status, 405);
-    EXPECT_EQ(job->get_header_value("Allow"), "GET, DELETE");
+    EXPECT_EQ(job->get_header_value("Allow"), "GET, DELETE, PATCH");
     httplib::Result cancel = c.Get("/api/v1/jobs/0123456789abcdef/cancel");
     EXPECT_EQ(cancel->status, 405);
     EXPECT_EQ(cancel->get_header_value("Allow"), "POST");

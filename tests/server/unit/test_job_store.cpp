@@ -185,12 +185,14 @@ TEST_F(JobStoreTest, UpdateWithEmptyTextClearsIt) {
     EXPECT_EQ(loaded.error, "");
 }
 
+// What a submission fixed stays; the priority is the one submission field that may change
+// (while the job is queued), and an update stores it.
 TEST_F(JobStoreTest, UpdateDoesNotChangeSubmissionFields) {
     JobStore store(dbFile());
     JobRecord job = newJob("a");
     job.seq = store.insert(job);
     JobRecord changed = job;
-    changed.priority = 9;
+    changed.priority = job.priority = 9;
     changed.createdAt = "2030-01-01T00:00:00.000Z";
     changed.settings = JobSettings{1, 1, 1, "path", 1, 1};
     changed.client = "10.9.9.9";

@@ -1,0 +1,107 @@
+// What can be done to a job after submission: its priority changed while it waits, a copy
+// with other settings, its scene read back as it was sent.
+#include "server_fixture.h"
+
+namespace photon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ActionsTest : public ServerTest {
+protected:
+    httplib::Result patch(const std::string& id, const std::string& body) {
+        return client().Patch(("/api/v1/jobs/" + id).c_str(), body, "application/json");
+    }
+};
+
+TEST_F(ActionsTest, APriorityRaisedWhileQueuedRunsTheJobFirst) {
+    startServer({"--workers", "1"});
+    std::string blocking = submitOk(longScene());
+    waitForStatus(blocking, "running");
+    std::string first = submitOk(smallScene());
+    std::string second = submitOk(smallScene());
+    httplib::Result raised = patch(second, R"({"priority": 5})");
+    ASSERT_TRUE(raised);
+    ASSERT_EQ(raised->status, 200) << raised->body;
+    json job = json::parse(raised->body);
+    EXPECT_EQ(job["priority"], 5);
+    EXPECT_GE(job["updated_at"].get<std::string>(), job["created_at"].get<std::string>());
+    EXPECT_EQ(getJob(second)["priority"], 5);
+    // Once the worker is free, the raised job goes first though it was submitted later.
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + blocking + "/cancel")->status, 202);
+    json secondDone = waitForStatus(second, "completed");
+    json firstDone = waitForStatus(first, "completed");
+    EXPECT_GE(firstDone["started_at"].get<std::string>(), secondDone["finished_at"].get<std::string>());
+    // A job that has started keeps its priority.
+    httplib::Result late = patch(second, R"({"priority": 1})");
+    EXPECT_EQ(late->status, 409);
+    EXPECT_EQ(problemOf(late)["detail"], "job " + second + " is completed: its priority can change only while it is queued");
+}
+
+TEST_F(ActionsTest, OnlyThePriorityCanBeChanged) {
+    startServer({"--workers", "0"});
+    std::string id = submitOk(smallScene());
+    auto refused = [&](const std::string& body) {
+        httplib::Result r = patch(id, body);
+        EXPECT_EQ(r->status, 400) << body;
+        return problemOf(r)["detail"].get<std::string>();
+    };
+    EXPECT_EQ(refused(R"({"priority": 1, "passes": 9})"), "\"passes\" cannot be changed; only \"priority\" can");
+    EXPECT_EQ(refused(R"({"priority": 1.5})"), "priority: must be a 32-bit integer");
+    EXPECT_EQ(refused(R"({"priority": 3000000000})"), "priority: must be a 32-bit integer");
+    EXPECT_EQ(refused("{}"), "nothing to change: give {\"priority\": N}");
+    EXPECT_EQ(refused("[1]"), "the body must be a JSON object such as {\"priority\": 5}");
+    EXPECT_EQ(patch("0123456789abcdef", R"({"priority": 1})")->status, 404);
+    EXPECT_EQ(getJob(id)["priority"], 0);
+}
+
+TEST_F(ActionsTest, ACloneHasTheSceneAndAssetsWithNewSettings) {
+    startServer({"--workers", "0"});
+    json scene = smallScene(3, 2000);
+    scene["shapes"].push_back({{"type", "mesh"}, {"file", "meshes/tri.obj"}, {"material", scene["shapes"][0]["material"]}});
+    const std::string sceneText = scene.dump(2);
+    httplib::MultipartFormDataItems items{{"scene", sceneText, "atrium.json", "application/json"},
+                                          {"mesh", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "meshes/tri.obj", "text/plain"},
+                                          {"label", "draft", "", ""}};
+    json original = json::parse(client().Post("/api/v1/jobs", items)->body);
+    const std::string id = original["id"];
+    httplib::Result r = client().Post(("/api/v1/jobs/" + id + "/clone?passes=7&seed=99").c_str());
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    json copy = json::parse(r->body);
+    EXPECT_NE(copy["id"], id);
+    EXPECT_EQ(r->get_header_value("Location"), "/api/v1/jobs/" + copy["id"].get<std::string>());
+    EXPECT_EQ(copy["settings"]["passes"], 7);
+    EXPECT_EQ(copy["settings"]["seed"], 99);
+    EXPECT_EQ(copy["settings"]["photons_per_pass"], original["settings"]["photons_per_pass"]);
+    EXPECT_EQ(copy["name"], "atrium");
+    EXPECT_EQ(copy["labels"], json({"draft"}));
+    EXPECT_EQ(copy["warnings"], json::array());
+    EXPECT_TRUE(fs::is_regular_file(dataDir() / "jobs" / copy["id"].get<std::string>() / "meshes" / "tri.obj"));
+    // Both scenes read back exactly as sent.
+    for (const json& job : {original, copy}) {
+        httplib::Result text = client().Get(("/api/v1/jobs/" + job["id"].get<std::string>() + "/scene").c_str());
+        ASSERT_TRUE(text);
+        EXPECT_EQ(text->status, 200);
+        EXPECT_EQ(text->get_header_value("Content-Type"), "application/json");
+        EXPECT_EQ(text->body, sceneText);
+    }
+    EXPECT_EQ(client().Post("/api/v1/jobs/0123456789abcdef/clone")->status, 404);
+    EXPECT_EQ(client().Get("/api/v1/jobs/0123456789abcdef/scene")->status, 404);
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/clone?label=bad%20label").c_str())->status, 400);
+}
+
+TEST_F(ActionsTest, TheServicesOwnFileNamesAreNotAssets) {
+    startServer({"--workers", "0"});
+    for (const char* name : {"checkpoint.bin", "job.log", "image.png.tmp"}) {
+        httplib::MultipartFormDataItems items{{"scene", smallScene().dump(), "", "application/json"},
+                                              {"asset", "x", name, "application/octet-stream"}};
+        httplib::Result r = client().Post("/api/v1/jobs", items);
+        EXPECT_EQ(r->status, 400) << name;
+        EXPECT_EQ(problemOf(r)["detail"], std::string("asset name \"") + name + "\" is reserved: part \"asset\" (file name \"" +
+                                               name + "\")");
+    }
+}
+
+}  // namespace
+}  // namespace photon::test
