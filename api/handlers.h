@@ -12,6 +12,7 @@ void cancelJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void updateJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void cloneJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void getScene(RouteContext&, const httplib::Request&, httplib::Response&);
+void getLog(RouteContext&, const httplib::Request&, httplib::Response&);
 void deleteJob(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_images.cpp
 void getImage(RouteContext&, const httplib::Request&, httplib::Response&);

@@ -9,7 +9,7 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 17> kRoutes{{
+constexpr std::array<Route, 18> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
@@ -23,6 +23,7 @@ constexpr std::array<Route, 17> kRoutes{{
     {"PATCH", "/api/v1/jobs/{id}", updateJob, nullptr},
     {"POST", "/api/v1/jobs/{id}/clone", cloneJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/scene", getScene, nullptr},
+    {"GET", "/api/v1/jobs/{id}/log", getLog, nullptr},
     {"POST", "/api/v1/jobs/{id}/cancel", cancelJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/image", getImage, nullptr},
     {"GET", "/api/v1/jobs/{id}/events", jobEvents, nullptr},

@@ -152,6 +152,11 @@ void getScene(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     res.set_content(ctx.service.scene(pathId(req)), "application/json");
 }
 
+// GET /api/v1/jobs/{id}/log: the job's own log, a line an event.
+void getLog(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    res.set_content(ctx.service.log(pathId(req)), "text/plain; charset=utf-8");
+}
+
 void cancelJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     server::JobService::CancelResult result = ctx.service.cancel(pathId(req));
     // 202: a running render stops at its next check; the events stream reports the end.

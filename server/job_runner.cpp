@@ -1,11 +1,13 @@
 #include "job_runner.h"
 #include <chrono>
+#include <cstdio>
 #include <spdlog/spdlog.h>
 #include <fstream>
 #include <sstream>
 #include <photon/render.h>
 #include "clock.h"
 #include "image_metadata.h"
+#include "job_log.h"
 #include "scene_intake.h"
 
 namespace photon::server {
@@ -19,7 +21,12 @@ void JobRunner::run(const std::string& id) {
         Ending ending = render(*started);
         // A stop without a client's cancel is the server shutting down: the store still says
         // "running", so the next start queues the job again.
-        if (ending == Ending::Interrupted) return;
+        if (ending == Ending::Interrupted) {
+            appendJobLog(folders_.logFile(id), "interrupted by the server stopping after pass " +
+                                                   std::to_string(table_.find(id)->progress.pass) +
+                                                   "; it resumes from there on the next start");
+            return;
+        }
         finish(id, ending == Ending::Completed ? JobStatus::Completed : JobStatus::Cancelled, "");
     } catch (const std::exception& e) {
         try {
@@ -36,6 +43,9 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     applySettings(started.job.settings, scene.render());
     Renderer renderer(std::move(scene));
     resumeFromCheckpoint(id, renderer);
+    int resumedAt = renderer.progress().pass;
+    appendJobLog(folders_.logFile(id), resumedAt > 0 ? "resumed from its checkpoint after pass " + std::to_string(resumedAt)
+                                                     : "started");
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
@@ -68,6 +78,7 @@ void JobRunner::resumeFromCheckpoint(const std::string& id, Renderer& renderer) 
     } catch (const CheckpointError& e) {
         // Unusable (another version, a damaged file): render from the start instead.
         spdlog::warn("job {}: {}; starting over", id, e.what());
+        appendJobLog(folders_.logFile(id), "checkpoint discarded (" + std::string(e.what()) + "); starting over");
         std::error_code ec;
         std::filesystem::remove(file, ec);
     }
@@ -95,6 +106,11 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
     JobRecord job = table_.finish(id, status, error, utcNowIso8601());
     if (status == JobStatus::Failed) spdlog::warn("job {} failed: {}", id, error);
     else spdlog::info("job {} {} after {} passes", id, toString(status), job.progress.pass);
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, "%.1f", job.progress.elapsedSeconds);
+    appendJobLog(folders_.logFile(id), std::string(toString(status)) + " after " + std::to_string(job.progress.pass) +
+                                           " passes, " + elapsed + " s of rendering" +
+                                           (error.empty() ? "" : ": " + error));
     store_.update(job);
     hub_.publish(job, eventTypeFor(status));
     images_.drop(id);

@@ -1,5 +1,6 @@
 #include "job_service.h"
 #include "job_labels.h"
+#include "job_log.h"
 #include "clock.h"
 #include "errors.h"
 #include "safe_files.h"
@@ -122,10 +123,25 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
         folders_.remove(job.id);
         throw;
     }
+    logAccepted(job);
     table_.insert(job);
     hub_.publish(job, std::nullopt);
     queue_.push(job.id, job.priority, job.seq);
     return {job, true};
+}
+
+void JobService::logAccepted(const JobRecord& job) const {
+    const JobSettings& s = job.settings;
+    appendJobLog(folders_.logFile(job.id),
+                 "accepted from " + job.client + ": " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
+                     std::to_string(s.passes) + " passes of " + std::to_string(s.photonsPerPass) + " photons, seed " +
+                     std::to_string(s.seed) + ", " + s.integrator + ", priority " + std::to_string(job.priority));
+    for (const std::string& warning : job.warnings) appendJobLog(folders_.logFile(job.id), "warning: " + warning);
+}
+
+std::string JobService::log(const std::string& id) const {
+    if (!table_.contains(id)) notFound(id);
+    return readWholeFile(folders_.logFile(id)).value_or("");
 }
 
 JobRecord JobService::get(const std::string& id) const {
@@ -144,8 +160,12 @@ JobService::CancelResult JobService::cancel(const std::string& id) {
         case JobTable::CancelResult::NotFound: notFound(id);
         case JobTable::CancelResult::AlreadyFinished:
             throw ServiceError(ErrorKind::Conflict, "job " + id + " is already " + toString(job.status));
-        case JobTable::CancelResult::Requested: return {job, true};
-        case JobTable::CancelResult::CancelledNow: break;
+        case JobTable::CancelResult::Requested:
+            appendJobLog(folders_.logFile(id), "cancel requested; the render stops after its current pass");
+            return {job, true};
+        case JobTable::CancelResult::CancelledNow:
+            appendJobLog(folders_.logFile(id), "cancelled while queued");
+            break;
     }
     queue_.remove(id);
     store_.update(job);
@@ -165,6 +185,7 @@ JobRecord JobService::setPriority(const std::string& id, int priority) {
     // Taken out and put back: if a worker took it meanwhile, it is gone and stays gone.
     if (queue_.remove(id)) queue_.push(id, job.priority, job.seq);
     store_.update(job);
+    appendJobLog(folders_.logFile(id), "priority set to " + std::to_string(priority));
     hub_.publish(job, std::nullopt);
     return job;
 }
@@ -200,7 +221,9 @@ SubmitResult JobService::clone(const std::string& id, const SubmitOptions& overr
     if (!options.seed) options.seed = original.settings.seed;
     if (options.name.empty()) options.name = original.name;
     if (options.labels.empty()) options.labels = original.labels;
-    return submit(*upload, {options, client, std::nullopt, ""});
+    SubmitResult result = submit(*upload, {options, client, std::nullopt, ""});
+    appendJobLog(folders_.logFile(result.job.id), "a clone of job " + id);
+    return result;
 }
 
 void JobService::remove(const std::string& id) {

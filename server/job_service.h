@@ -75,6 +75,8 @@ public:
     SubmitResult clone(const std::string& id, const SubmitOptions& overrides, const std::string& client);
     // The scene as submitted.
     std::string scene(const std::string& id) const;
+    // The job's own log (job_log.h).
+    std::string log(const std::string& id) const;
     void remove(const std::string& id);
     // The latest image; nullopt while no pass has finished (or none was kept).
     std::optional<EncodedImage> image(const std::string& id, ImageFormat format);
@@ -93,6 +95,7 @@ private:
     std::string unusedId() const;
     std::optional<JobRecord> replay(const std::string& key, const std::string& digest);
     void checkAdmission(const std::string& client, int64_t uploadBytes) const;
+    void logAccepted(const JobRecord& job) const;
 
     Limits limits_;
     JobFolders folders_;

@@ -1,5 +1,7 @@
 // What can be done to a job after submission: its priority changed while it waits, a copy
 // with other settings, its scene read back as it was sent.
+#include <cstdio>
+#include <sstream>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -89,6 +91,58 @@ TEST_F(ActionsTest, ACloneHasTheSceneAndAssetsWithNewSettings) {
     EXPECT_EQ(client().Post("/api/v1/jobs/0123456789abcdef/clone")->status, 404);
     EXPECT_EQ(client().Get("/api/v1/jobs/0123456789abcdef/scene")->status, 404);
     EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/clone?label=bad%20label").c_str())->status, 400);
+}
+
+// The job's own log, line by line: its time, then what happened.
+std::vector<std::string> logLines(const std::string& log) {
+    std::vector<std::string> lines;
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);) {
+        // "2026-12-01T21:00:00.123Z " then the event
+        EXPECT_TRUE(line.size() > 25 && line[4] == '-' && line[10] == 'T' && line[23] == 'Z' && line[24] == ' ') << line;
+        lines.push_back(line.substr(25));
+    }
+    return lines;
+}
+
+TEST_F(ActionsTest, TheLogSaysWhatHappenedToTheJob) {
+    startServer({"--workers", "1"});
+    httplib::MultipartFormDataItems items{{"scene", smallScene(3, 2000).dump(), "", "application/json"},
+                                          {"extra", "x", "notes.txt", "text/plain"}};
+    json job = json::parse(client().Post("/api/v1/jobs?seed=7", items)->body);
+    const std::string id = job["id"];
+    json done = waitForStatus(id, "completed");
+    httplib::Result r = client().Get(("/api/v1/jobs/" + id + "/log").c_str());
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_EQ(r->get_header_value("Content-Type"), "text/plain; charset=utf-8");
+    std::vector<std::string> lines = logLines(r->body);
+    ASSERT_EQ(lines.size(), 4u) << r->body;
+    EXPECT_EQ(lines[0], "accepted from 127.0.0.1: 32x32, 3 passes of 2000 photons, seed 7, sppm, priority 0");
+    EXPECT_EQ(lines[1], "warning: asset \"notes.txt\" is not used by the scene and was not stored");
+    EXPECT_EQ(lines[2], "started");
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, "%.1f", done["elapsed_seconds"].get<double>());
+    EXPECT_EQ(lines[3], "completed after 3 passes, " + std::string(elapsed) + " s of rendering");
+    EXPECT_EQ(client().Get("/api/v1/jobs/0123456789abcdef/log")->status, 404);
+}
+
+TEST_F(ActionsTest, TheLogTellsOfAStopAndTheResumption) {
+    startServer({"--workers", "1"});
+    std::string id = submitOk(longScene());
+    waitFor(id, [](const json& j) { return j["pass"].get<int>() >= 1; });
+    ASSERT_EQ(stopServer(), 0);
+    startServer({"--workers", "1"});
+    waitFor(id, [](const json& j) { return j["status"] == "running"; });
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + id + "/cancel")->status, 202);
+    waitForStatus(id, "cancelled");
+    std::vector<std::string> lines = logLines(client().Get(("/api/v1/jobs/" + id + "/log").c_str())->body);
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[1], "started");
+    EXPECT_EQ(lines[2].rfind("interrupted by the server stopping after pass ", 0), 0u) << lines[2];
+    EXPECT_EQ(lines[3].rfind("resumed from its checkpoint after pass ", 0), 0u) << lines[3];
+    EXPECT_EQ(lines[4], "cancel requested; the render stops after its current pass");
+    EXPECT_EQ(lines[5].rfind("cancelled after ", 0), 0u) << lines[5];
 }
 
 TEST_F(ActionsTest, TheServicesOwnFileNamesAreNotAssets) {
