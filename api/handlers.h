@@ -19,6 +19,7 @@ void getImage(RouteContext&, const httplib::Request&, httplib::Response&);
 void streamImages(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_events.cpp
 void jobEvents(RouteContext&, const httplib::Request&, httplib::Response&);
+void serviceEvents(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_system.cpp
 void health(RouteContext&, const httplib::Request&, httplib::Response&);
 void info(RouteContext&, const httplib::Request&, httplib::Response&);

@@ -9,13 +9,14 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 18> kRoutes{{
+constexpr std::array<Route, 19> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
     {"GET", "/api/v1/info", info, nullptr},
     {"POST", "/api/v1/session", startSession, nullptr},
     {"DELETE", "/api/v1/session", endSession, nullptr},
+    {"GET", "/api/v1/events", serviceEvents, nullptr},
     {"GET", "/api/v1/jobs", listJobs, nullptr},
     {"POST", "/api/v1/jobs", nullptr, createJob},
     {"GET", "/api/v1/jobs/{id}", getJob, nullptr},

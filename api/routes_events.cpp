@@ -1,3 +1,10 @@
+// GET /api/v1/events: Server-Sent Events of every job's changes, for a list that stays
+// current without polling: `changed` (submitted, started, priority), the job's own events
+// (`progress`, `done`, `failed`, `cancelled`) with the job record, `deleted` with its id.
+// It starts with `ready` (connect, then list the jobs: nothing is missed between the two);
+// `reset` says changes were dropped for a client too far behind (list again). Event ids
+// number the changes, so a reconnecting EventSource resumes with Last-Event-ID.
+//
 // GET /api/v1/jobs/{id}/events: Server-Sent Events. On connect the current state (a
 // `progress` event, or the final event if the job has finished); then one `progress` per
 // finished pass and a final `done`, `failed` or `cancelled`, after which the stream ends.
@@ -5,6 +12,7 @@
 // Last-Event-ID instead of missing passes.
 #include <httplib.h>
 #include <memory>
+#include <utility>
 #include "api/errors.h"
 #include "api/handlers.h"
 #include "api/job_json.h"
@@ -66,7 +74,64 @@ struct EventStream {
     }
 };
 
+std::string formatServiceEvent(const server::ServiceEvent& e) {
+    nlohmann::json data = e.kind == server::ServiceEvent::Kind::Deleted ? nlohmann::json{{"id", e.job.id}} : toJson(e.job);
+    const char* name = e.kind == server::ServiceEvent::Kind::Deleted ? "deleted"
+                       : e.jobEvent                                   ? server::toString(*e.jobEvent)
+                                                                      : "changed";
+    return std::string("event: ") + name + "\nid: " + std::to_string(e.seq) +
+           "\ndata: " + data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n\n";
+}
+
+struct ServiceStream {
+    std::shared_ptr<StreamSlots::Slot> slot;
+    server::EventHub& hub;
+    uint64_t afterSeq = 0;
+    bool ready = true;  // "ready" is still to be sent
+    int idlePolls = 0;
+
+    bool step(httplib::DataSink& sink) {
+        if (std::exchange(ready, false))
+            return writeAll(sink, "event: ready\nid: " + std::to_string(afterSeq) + "\ndata: {}\n\n");
+        server::EventHub::ServiceWait wait = hub.waitAnyAfter(afterSeq, kStreamPoll);
+        if (wait.closed) {
+            endStream(sink, slot);
+            return true;
+        }
+        if (wait.missed) {
+            afterSeq = wait.seq;
+            return writeAll(sink, "event: reset\nid: " + std::to_string(wait.seq) + "\ndata: {}\n\n");
+        }
+        if (wait.events.empty()) {
+            if (++idlePolls % kKeepAlivePolls != 0) return true;
+            return writeAll(sink, ": keep-alive\n\n");
+        }
+        idlePolls = 0;
+        for (const server::ServiceEvent& e : wait.events) {
+            if (!writeAll(sink, formatServiceEvent(e))) return false;
+            afterSeq = e.seq;
+        }
+        return true;
+    }
+};
+
 }  // namespace
+
+void serviceEvents(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    server::EventHub& hub = ctx.service.events();
+    uint64_t now = hub.serviceSeq();
+    auto stream = std::make_shared<ServiceStream>(ServiceStream{ctx.streams.acquire(), hub, now});
+    // Resuming: from the client's last change (a number from before a restart is of no use).
+    if (std::optional<uint64_t> last = lastEventId(req); last && *last <= now) {
+        stream->afterSeq = *last;
+        stream->ready = false;
+    }
+    res.set_header("Cache-Control", "no-cache");
+    res.set_header("X-Accel-Buffering", "no");
+    res.set_chunked_content_provider("text/event-stream",
+                                     guardedProvider([stream](httplib::DataSink& sink) { return stream->step(sink); }),
+                                     ctx.streams.countWriting());
+}
 
 void jobEvents(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     std::string id = pathId(req);

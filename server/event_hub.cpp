@@ -26,12 +26,39 @@ void EventHub::publish(const JobRecord& job, std::optional<EventType> emit) {
         std::lock_guard lock(mutex_);
         Channel& c = channels_[job.id];
         c.job = job;
-        if (!emit) return;
-        c.log.push_back(JobEvent{++c.seq, *emit, job});
-        if (c.log.size() > kLogLength) c.log.pop_front();
-        if (*emit != EventType::Progress) retireLogs(job.id);
+        logServiceEvent({ServiceEvent::Kind::Changed, 0, emit, job});
+        if (emit) {
+            c.log.push_back(JobEvent{++c.seq, *emit, job});
+            if (c.log.size() > kLogLength) c.log.pop_front();
+            if (*emit != EventType::Progress) retireLogs(job.id);
+        }
     }
     changed_.notify_all();
+}
+
+void EventHub::logServiceEvent(ServiceEvent event) {
+    event.seq = ++serviceSeq_;
+    serviceLog_.push_back(std::move(event));
+    if (serviceLog_.size() > kServiceLogLength) serviceLog_.pop_front();
+}
+
+uint64_t EventHub::serviceSeq() const {
+    std::lock_guard lock(mutex_);
+    return serviceSeq_;
+}
+
+EventHub::ServiceWait EventHub::waitAnyAfter(uint64_t afterSeq, std::chrono::milliseconds timeout) const {
+    ServiceWait result;
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, timeout, [&] { return shutdown_ || serviceSeq_ > afterSeq; });
+    result.closed = shutdown_;
+    result.seq = serviceSeq_;
+    if (shutdown_ || serviceSeq_ <= afterSeq) return result;
+    result.missed = serviceLog_.empty() || serviceLog_.front().seq > afterSeq + 1;
+    if (result.missed) return result;
+    for (const ServiceEvent& e : serviceLog_)
+        if (e.seq > afterSeq) result.events.push_back(e);
+    return result;
 }
 
 void EventHub::retireLogs(const std::string& finishedId) {
@@ -77,6 +104,9 @@ void EventHub::forget(const std::string& id) {
     {
         std::lock_guard lock(mutex_);
         channels_.erase(id);
+        JobRecord gone;
+        gone.id = id;
+        logServiceEvent({ServiceEvent::Kind::Deleted, 0, std::nullopt, std::move(gone)});
     }
     changed_.notify_all();
 }

@@ -28,6 +28,15 @@ struct JobEvent {
     JobRecord job;
 };
 
+// A change to any job, for the one stream of all jobs (GET /api/v1/events): every publish,
+// whether or not it is one of the job's own events, and every deletion.
+struct ServiceEvent {
+    enum class Kind { Changed, Deleted } kind = Kind::Changed;
+    uint64_t seq = 0;                    // 1, 2, ... over all jobs
+    std::optional<EventType> jobEvent;   // when the change is one of the job's own events
+    JobRecord job;                       // for Deleted, only its id
+};
+
 class EventHub {
 public:
     // Sets the job's current state. With `emit`, also appends it to the log and wakes waiters.
@@ -48,6 +57,16 @@ public:
     // events), or when the job is forgotten or the hub shut down (closed).
     Wait waitAfter(const std::string& id, uint64_t afterSeq, std::chrono::milliseconds timeout) const;
 
+    struct ServiceWait {
+        std::vector<ServiceEvent> events;  // newer than the given number, oldest first
+        bool missed = false;               // some were dropped from the log: start over from a list
+        bool closed = false;               // the server is stopping
+        uint64_t seq = 0;                  // the newest number now
+    };
+    // The same for every job's changes.
+    ServiceWait waitAnyAfter(uint64_t afterSeq, std::chrono::milliseconds timeout) const;
+    uint64_t serviceSeq() const;
+
     void forget(const std::string& id);
     // Wakes every waiter for good: stream connections end so the HTTP server can stop.
     void shutdown();
@@ -58,6 +77,9 @@ public:
     // Finished jobs keep their full log for a while (a client may still be catching up or
     // reconnecting); beyond this many, a finished job keeps only its final event.
     static constexpr size_t kFinishedLogsKept = 32;
+    // Changes kept for the stream of all jobs: a client that falls further behind is told to
+    // list the jobs again.
+    static constexpr size_t kServiceLogLength = 4096;
 
 private:
     struct Channel {
@@ -70,7 +92,11 @@ private:
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
     std::unordered_map<std::string, Channel> channels_;
+    void logServiceEvent(ServiceEvent event);
+
     std::deque<std::string> finishedWithLogs_;  // oldest first
+    std::deque<ServiceEvent> serviceLog_;
+    uint64_t serviceSeq_ = 0;
     bool shutdown_ = false;
 };
 

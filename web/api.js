@@ -245,6 +245,11 @@ export async function fetchImage(id, format = 'png') {
   return res.blob();
 }
 
+// Every job's changes (GET /api/v1/events), for the job list.
+export function serviceEventsUrl() {
+  return `${BASE}/events`;
+}
+
 export function eventsUrl(id) {
   return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
 }

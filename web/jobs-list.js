@@ -1,11 +1,18 @@
 // The job list: newest first, each job with its status and a progress bar (passes done /
-// passes). Polls GET /api/v1/jobs every 2 s, and at once when refresh() is called (after
-// a submit, cancel or delete). Rows are updated in place, so focus and clicks survive.
+// passes). Follows GET /api/v1/events (every job's changes) and lists the jobs again after
+// each burst of changes; without that stream (an old browser, the stream refused) it polls
+// GET /api/v1/jobs every 2 s. It also lists at once when refresh() is called (after a
+// submit, cancel or delete). Rows are updated in place, so focus and clicks survive.
 
-import { listJobs } from './api.js';
+import { ensureSession, hasToken, listJobs, serviceEventsUrl, sessionLost } from './api.js';
 import { formatPasses, formatTime, progressFraction } from './format.js';
 
 const POLL_MS = 2000;
+// With the event stream open, polling is only a safety net.
+const SAFETY_POLL_MS = 30_000;
+// Changes closer together than this are listed once.
+const BURST_MS = 250;
+const EVENT_TYPES = ['ready', 'changed', 'progress', 'done', 'failed', 'cancelled', 'deleted', 'reset'];
 const PAGE_SIZE = 100;
 
 export function createJobsList({ list, status, onSelect, onConnection }) {
@@ -14,6 +21,8 @@ export function createJobsList({ list, status, onSelect, onConnection }) {
   let timer = null;
   let inFlight = null;
   let again = false;
+  let streaming = false; // the event stream is open
+  let burst = null;
 
   function makeRow(id) {
     const item = document.createElement('li');
@@ -80,7 +89,35 @@ export function createJobsList({ list, status, onSelect, onConnection }) {
     } catch (error) {
       onConnection(error);
     }
-    timer = setTimeout(refresh, POLL_MS);
+    timer = setTimeout(refresh, streaming ? SAFETY_POLL_MS : POLL_MS);
+  }
+
+  function onChange() {
+    if (burst) return;
+    burst = setTimeout(() => {
+      burst = null;
+      refresh();
+    }, BURST_MS);
+  }
+
+  async function subscribe() {
+    if (typeof EventSource !== 'function') return;
+    // With a token the stream is authorised by the session cookie the token was traded for.
+    if (hasToken() && !(await ensureSession())) return;
+    const source = new EventSource(serviceEventsUrl());
+    for (const type of EVENT_TYPES) source.addEventListener(type, onChange);
+    source.addEventListener('open', () => {
+      streaming = true;
+    });
+    source.addEventListener('error', () => {
+      // CONNECTING: the browser retries by itself. CLOSED: refused (a 401, 503): poll, and
+      // try the stream again later.
+      if (source.readyState !== EventSource.CLOSED) return;
+      streaming = false;
+      sessionLost();
+      setTimeout(subscribe, SAFETY_POLL_MS);
+      refresh();
+    });
   }
 
   // Fetch now; a call during a fetch queues exactly one more.
@@ -104,5 +141,6 @@ export function createJobsList({ list, status, onSelect, onConnection }) {
     for (const [rowId, row] of rows) row.button.setAttribute('aria-current', rowId === id ? 'true' : 'false');
   }
 
+  subscribe();
   return { refresh, setSelected };
 }

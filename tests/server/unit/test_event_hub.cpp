@@ -300,3 +300,34 @@ TEST(EventHub, JobCancelledWhileQueuedHasOnlyItsFinalEvent) {
     EXPECT_EQ(wait.events[0].type, EventType::Cancelled);
     EXPECT_EQ(wait.events[0].job.status, JobStatus::Cancelled);
 }
+
+TEST(EventHub, TheStreamOfAllJobsNumbersEveryChangeAndEveryDeletion) {
+    EventHub hub;
+    hub.publish(job("a", JobStatus::Queued), std::nullopt);
+    hub.publish(job("b", JobStatus::Queued), std::nullopt);
+    hub.publish(job("a", JobStatus::Running, 1), EventType::Progress);
+    hub.forget("b");
+    EventHub::ServiceWait wait = hub.waitAnyAfter(1, 0ms);
+    EXPECT_FALSE(wait.missed);
+    EXPECT_EQ(wait.seq, 4u);
+    ASSERT_EQ(wait.events.size(), 3u);
+    EXPECT_EQ(wait.events[0].seq, 2u);
+    EXPECT_EQ(wait.events[0].job.id, "b");
+    EXPECT_FALSE(wait.events[0].jobEvent);
+    EXPECT_EQ(wait.events[1].jobEvent, EventType::Progress);
+    EXPECT_EQ(wait.events[2].kind, ServiceEvent::Kind::Deleted);
+    EXPECT_EQ(wait.events[2].job.id, "b");
+    EXPECT_TRUE(hub.waitAnyAfter(4, 0ms).events.empty());
+}
+
+TEST(EventHub, AClientTooFarBehindOnTheStreamOfAllJobsIsToldItMissedChanges) {
+    EventHub hub;
+    for (size_t i = 0; i < EventHub::kServiceLogLength + 10; ++i) hub.publish(job("a", JobStatus::Running, int(i)), std::nullopt);
+    EventHub::ServiceWait behind = hub.waitAnyAfter(5, 0ms);
+    EXPECT_TRUE(behind.missed);
+    EXPECT_TRUE(behind.events.empty());
+    EXPECT_EQ(behind.seq, EventHub::kServiceLogLength + 10);
+    EventHub::ServiceWait caughtUp = hub.waitAnyAfter(10, 0ms);  // the oldest kept is 11
+    EXPECT_FALSE(caughtUp.missed);
+    EXPECT_EQ(caughtUp.events.size(), EventHub::kServiceLogLength);
+}
