@@ -9,7 +9,7 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 19> kRoutes{{
+constexpr std::array<Route, 22> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
@@ -23,6 +23,9 @@ constexpr std::array<Route, 19> kRoutes{{
     {"DELETE", "/api/v1/jobs/{id}", deleteJob, nullptr},
     {"PATCH", "/api/v1/jobs/{id}", updateJob, nullptr},
     {"POST", "/api/v1/jobs/{id}/clone", cloneJob, nullptr},
+    {"POST", "/api/v1/jobs/{id}/pause", pauseJob, nullptr},
+    {"POST", "/api/v1/jobs/{id}/resume", resumeJob, nullptr},
+    {"POST", "/api/v1/jobs/{id}/continue", continueJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/scene", getScene, nullptr},
     {"GET", "/api/v1/jobs/{id}/log", getLog, nullptr},
     {"POST", "/api/v1/jobs/{id}/cancel", cancelJob, nullptr},

@@ -61,7 +61,7 @@ server::JobFilter jobFilter(const httplib::Request& req) {
     for (const std::string& text : stringParams(req, "status")) {
         std::optional<server::JobStatus> status = server::parseJobStatus(text);
         if (!status)
-            throwBadRequest("query parameter status: expected queued, running, completed, failed or cancelled, got \"" +
+            throwBadRequest("query parameter status: expected queued, running, paused, completed, failed or cancelled, got \"" +
                             text + "\"");
         filter.statuses.push_back(*status);
     }
@@ -150,6 +150,24 @@ void cloneJob(RouteContext& ctx, const httplib::Request& req, httplib::Response&
 // GET /api/v1/jobs/{id}/scene: the scene JSON as submitted.
 void getScene(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     res.set_content(ctx.service.scene(pathId(req)), "application/json");
+}
+
+// POST /api/v1/jobs/{id}/pause: 200 when it paused at once (queued), 202 when a running
+// render stops after its current pass (its events and status then say "paused").
+void pauseJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    server::JobService::CancelResult result = ctx.service.pause(pathId(req));
+    sendJson(res, result.pending ? 202 : 200, toJson(result.job));
+}
+
+void resumeJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    sendJson(res, 200, toJson(ctx.service.resume(pathId(req))));
+}
+
+// POST /api/v1/jobs/{id}/continue?passes=N: N more passes of a completed job.
+void continueJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    std::optional<int64_t> passes = integerParam(req, "passes", 1, INT32_MAX);
+    if (!passes) throwBadRequest("query parameter passes: give how many more passes to render");
+    sendJson(res, 200, toJson(ctx.service.continueJob(pathId(req), *passes)));
 }
 
 // GET /api/v1/jobs/{id}/log: the job's own log, a line an event.

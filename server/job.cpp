@@ -5,9 +5,10 @@ namespace photon::server {
 
 namespace {
 
-constexpr std::array<std::pair<JobStatus, const char*>, 5> kNames{{
+constexpr std::array<std::pair<JobStatus, const char*>, 6> kNames{{
     {JobStatus::Queued, "queued"},
     {JobStatus::Running, "running"},
+    {JobStatus::Paused, "paused"},
     {JobStatus::Completed, "completed"},
     {JobStatus::Failed, "failed"},
     {JobStatus::Cancelled, "cancelled"},

@@ -8,7 +8,8 @@
 
 namespace photon::server {
 
-enum class JobStatus { Queued, Running, Completed, Failed, Cancelled };
+// Paused: stopped by a client after a pass, its checkpoint kept; it waits for a resume.
+enum class JobStatus { Queued, Running, Paused, Completed, Failed, Cancelled };
 
 const char* toString(JobStatus status);
 std::optional<JobStatus> parseJobStatus(const std::string& text);

@@ -27,6 +27,7 @@ void JobRunner::run(const std::string& id) {
                                                    "; it resumes from there on the next start");
             return;
         }
+        if (ending == Ending::Paused) return pause(id);
         finish(id, ending == Ending::Completed ? JobStatus::Completed : JobStatus::Cancelled, "");
     } catch (const std::exception& e) {
         try {
@@ -58,9 +59,9 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     });
     if (outcome != RenderOutcome::Cancelled) return Ending::Completed;  // pass count or time limit reached
     if (table_.cancelRequested(id)) return Ending::Cancelled;
-    // The server is stopping: keep the state after the last finished pass for the next start.
+    // Paused, or the server is stopping: keep the state after the last finished pass.
     saveCheckpoint(id, renderer);
-    return Ending::Interrupted;
+    return table_.pauseRequested(id) ? Ending::Paused : Ending::Interrupted;
 }
 
 void JobRunner::saveCheckpoint(const std::string& id, const Renderer& renderer) {
@@ -101,8 +102,9 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, const
 void JobRunner::finish(const std::string& id, JobStatus status, const std::string& error) {
     // Files first, then the status: whoever sees the job finished finds its images on disk.
     if (status != JobStatus::Failed) writeImages(id);
+    // A completed job keeps its checkpoint: it can render more passes from it.
     std::error_code ec;
-    std::filesystem::remove(folders_.checkpointFile(id), ec);
+    if (status != JobStatus::Completed) std::filesystem::remove(folders_.checkpointFile(id), ec);
     JobRecord job = table_.finish(id, status, error, utcNowIso8601());
     if (status == JobStatus::Failed) spdlog::warn("job {} failed: {}", id, error);
     else spdlog::info("job {} {} after {} passes", id, toString(status), job.progress.pass);
@@ -114,6 +116,15 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
     store_.update(job);
     hub_.publish(job, eventTypeFor(status));
     images_.drop(id);
+}
+
+void JobRunner::pause(const std::string& id) {
+    writeImages(id);  // served from disk while paused
+    JobRecord job = table_.markPaused(id, utcNowIso8601());
+    store_.update(job);
+    hub_.publish(job, std::nullopt);
+    images_.drop(id);
+    appendJobLog(folders_.logFile(id), "paused after pass " + std::to_string(job.progress.pass));
 }
 
 void JobRunner::writeImages(const std::string& id) {

@@ -28,11 +28,12 @@ public:
     void run(const std::string& id);
 
 private:
-    enum class Ending { Completed, Cancelled, Interrupted };
+    enum class Ending { Completed, Cancelled, Paused, Interrupted };
     Ending render(const JobTable::Started& started);
     void onPass(const std::string& id, const JobSettings& settings, const Renderer& renderer,
                 const RenderProgress& progress, double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
+    void pause(const std::string& id);
     void writeImages(const std::string& id);
     void saveCheckpoint(const std::string& id, const Renderer& renderer);
     void resumeFromCheckpoint(const std::string& id, Renderer& renderer);

@@ -173,6 +173,63 @@ JobService::CancelResult JobService::cancel(const std::string& id) {
     return {job, false};
 }
 
+JobService::CancelResult JobService::pause(const std::string& id) {
+    JobRecord job;
+    switch (table_.pause(id, utcNowIso8601(), job)) {
+        case JobTable::PauseResult::NotFound: notFound(id);
+        case JobTable::PauseResult::NotPausable:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " is " + toString(job.status) +
+                                                        ": only a queued or running job can be paused");
+        case JobTable::PauseResult::Requested:
+            appendJobLog(folders_.logFile(id), "pause requested; the render stops after its current pass");
+            return {job, true};
+        case JobTable::PauseResult::PausedNow: break;
+    }
+    queue_.remove(id);
+    store_.update(job);
+    hub_.publish(job, std::nullopt);
+    appendJobLog(folders_.logFile(id), "paused while queued");
+    return {job, false};
+}
+
+JobRecord JobService::resume(const std::string& id) {
+    JobRecord job;
+    switch (table_.resume(id, utcNowIso8601(), job)) {
+        case JobTable::ResumeResult::NotFound: notFound(id);
+        case JobTable::ResumeResult::NotPaused:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " is " + toString(job.status) + ", not paused");
+        case JobTable::ResumeResult::Resumed: break;
+    }
+    store_.update(job);
+    queue_.push(id, job.priority, job.seq);
+    hub_.publish(job, std::nullopt);
+    appendJobLog(folders_.logFile(id), "resumed: queued again");
+    return job;
+}
+
+JobRecord JobService::continueJob(const std::string& id, int64_t morePasses) {
+    JobRecord before = get(id);
+    if (morePasses < 1) throw ServiceError(ErrorKind::BadRequest, "passes: must be an integer >= 1");
+    checkLimit(ErrorKind::LimitExceeded, "passes", before.settings.passes + morePasses, limits_, &Limits::maxPasses);
+    std::error_code ec;
+    if (before.status == JobStatus::Completed && !std::filesystem::exists(folders_.checkpointFile(id), ec))
+        throw ServiceError(ErrorKind::Conflict, "job " + id + " kept no checkpoint to render on from");
+    JobRecord job;
+    switch (table_.continueWith(id, int(morePasses), utcNowIso8601(), job)) {
+        case JobTable::ContinueResult::NotFound: notFound(id);
+        case JobTable::ContinueResult::NotCompleted:
+            throw ServiceError(ErrorKind::Conflict, "job " + id + " is " + toString(job.status) +
+                                                        ": only a completed job can render more passes");
+        case JobTable::ContinueResult::Continued: break;
+    }
+    store_.update(job);
+    queue_.push(id, job.priority, job.seq);
+    hub_.publish(job, std::nullopt);
+    appendJobLog(folders_.logFile(id), std::to_string(morePasses) + " more passes asked: on to pass " +
+                                           std::to_string(job.settings.passes));
+    return job;
+}
+
 JobRecord JobService::setPriority(const std::string& id, int priority) {
     JobRecord job;
     switch (table_.setPriority(id, priority, utcNowIso8601(), job)) {
@@ -245,7 +302,7 @@ std::optional<EncodedImage> JobService::image(const std::string& id, ImageFormat
     if (std::optional<EncodedImage> latest = images_.get(id, format)) return latest;
     std::optional<JobRecord> job = table_.find(id);
     if (!job) notFound(id);
-    if (!isFinished(job->status)) return std::nullopt;
+    // On disk: a finished or paused job's, or the last of one rendering on (none before).
     std::optional<std::string> bytes = readWholeFile(folders_.imageFile(id, format));
     if (!bytes) return std::nullopt;
     return EncodedImage{job->progress.pass, std::make_shared<const std::string>(std::move(*bytes)), {}};

@@ -67,6 +67,12 @@ public:
         bool pending = false;  // running: the render stops at its next check
     };
     CancelResult cancel(const std::string& id);
+    // Pause: a queued job at once, a running one after its current pass (pending), keeping
+    // its checkpoint and image. Resume: back in the queue, to go on from that pass.
+    CancelResult pause(const std::string& id);
+    JobRecord resume(const std::string& id);
+    // A completed job rendered on for `morePasses` more passes from its checkpoint.
+    JobRecord continueJob(const std::string& id, int64_t morePasses);
     // A queued job's place in the queue: Conflict once it has started.
     JobRecord setPriority(const std::string& id, int priority);
     // A new job with the scene and assets of job `id` and the given settings; options left

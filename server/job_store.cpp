@@ -69,7 +69,7 @@ const char* kInsert =
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
     " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10, updated_at = ?11,"
-    " priority = ?12 WHERE id = ?1";
+    " priority = ?12, passes = ?13 WHERE id = ?1";
 
 const char* kRemove = "DELETE FROM jobs WHERE id = ?1";
 const char* kRemoveKeysOf = "DELETE FROM idempotency_keys WHERE job_id = ?1";
@@ -231,7 +231,7 @@ void JobStore::update(const JobRecord& job) {
     update_.bind(5, int64_t(job.progress.pass)).bind(6, job.progress.photonsTraced);
     update_.bind(7, job.progress.meanRadius).bind(8, job.progress.elapsedSeconds);
     update_.bind(9, job.progress.etaSeconds).bindTextOrNull(10, job.error).bindTextOrNull(11, job.updatedAt);
-    update_.bind(12, int64_t(job.priority));
+    update_.bind(12, int64_t(job.priority)).bind(13, int64_t(job.settings.passes));
     update_.run();
 }
 

@@ -65,8 +65,8 @@ JobTable::Page JobTable::list(const JobFilter& filter, size_t limit, size_t offs
 
 std::map<JobStatus, int> JobTable::countByStatus() const {
     std::map<JobStatus, int> counts;
-    for (JobStatus s : {JobStatus::Queued, JobStatus::Running, JobStatus::Completed, JobStatus::Failed,
-                        JobStatus::Cancelled})
+    for (JobStatus s : {JobStatus::Queued, JobStatus::Running, JobStatus::Paused, JobStatus::Completed,
+                        JobStatus::Failed, JobStatus::Cancelled})
         counts[s] = 0;
     std::lock_guard lock(mutex_);
     for (const auto& [id, entry] : entries_) ++counts[entry.job.status];
@@ -90,6 +90,7 @@ std::optional<JobTable::Started> JobTable::start(const std::string& id, const st
     e.job.startedAt = e.job.updatedAt = now;
     e.job.progress = JobProgress{};  // until its first pass reports, resumed from its checkpoint if any
     e.cancel = std::make_shared<CancelToken>();
+    e.pauseRequested = false;
     return Started{e.job, e.cancel};
 }
 
@@ -118,7 +119,7 @@ JobTable::CancelResult JobTable::cancel(const std::string& id, const std::string
     if (it == entries_.end()) return CancelResult::NotFound;
     Entry& e = it->second;
     CancelResult result = CancelResult::AlreadyFinished;
-    if (e.job.status == JobStatus::Queued) {
+    if (e.job.status == JobStatus::Queued || e.job.status == JobStatus::Paused) {
         e.job.status = JobStatus::Cancelled;
         e.job.finishedAt = e.job.updatedAt = now;
         result = CancelResult::CancelledNow;
@@ -135,6 +136,72 @@ bool JobTable::cancelRequested(const std::string& id) const {
     std::lock_guard lock(mutex_);
     auto it = entries_.find(id);
     return it != entries_.end() && it->second.cancelRequested;
+}
+
+JobTable::PauseResult JobTable::pause(const std::string& id, const std::string& now, JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return PauseResult::NotFound;
+    Entry& e = it->second;
+    PauseResult result = PauseResult::NotPausable;
+    if (e.job.status == JobStatus::Queued) {
+        e.job.status = JobStatus::Paused;
+        e.job.updatedAt = now;
+        result = PauseResult::PausedNow;
+    } else if (e.job.status == JobStatus::Running && !e.cancelRequested) {
+        e.pauseRequested = true;
+        if (e.cancel) e.cancel->cancel();
+        result = PauseResult::Requested;
+    }
+    job = e.job;
+    return result;
+}
+
+bool JobTable::pauseRequested(const std::string& id) const {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    return it != entries_.end() && it->second.pauseRequested;
+}
+
+JobRecord JobTable::markPaused(const std::string& id, const std::string& now) {
+    std::lock_guard lock(mutex_);
+    Entry& e = at(id);
+    e.job.status = JobStatus::Paused;
+    e.job.updatedAt = now;
+    e.job.progress.etaSeconds = 0;
+    e.pauseRequested = false;
+    e.cancel.reset();
+    return e.job;
+}
+
+JobTable::ResumeResult JobTable::resume(const std::string& id, const std::string& now, JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return ResumeResult::NotFound;
+    Entry& e = it->second;
+    job = e.job;
+    if (e.job.status != JobStatus::Paused) return ResumeResult::NotPaused;
+    e.job.status = JobStatus::Queued;
+    e.job.updatedAt = now;
+    job = e.job;
+    return ResumeResult::Resumed;
+}
+
+JobTable::ContinueResult JobTable::continueWith(const std::string& id, int morePasses, const std::string& now,
+                                                JobRecord& job) {
+    std::lock_guard lock(mutex_);
+    auto it = entries_.find(id);
+    if (it == entries_.end()) return ContinueResult::NotFound;
+    Entry& e = it->second;
+    job = e.job;
+    if (e.job.status != JobStatus::Completed) return ContinueResult::NotCompleted;
+    e.job.status = JobStatus::Queued;
+    e.job.settings.passes += morePasses;
+    e.job.finishedAt.clear();
+    e.job.updatedAt = now;
+    e.cancelRequested = false;
+    job = e.job;
+    return ContinueResult::Continued;
 }
 
 JobTable::ChangeResult JobTable::setPriority(const std::string& id, int priority, const std::string& now,

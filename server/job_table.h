@@ -58,6 +58,19 @@ public:
     CancelResult cancel(const std::string& id, const std::string& now, JobRecord& job);
     bool cancelRequested(const std::string& id) const;
 
+    // Queued -> paused at once; running -> paused after its current pass (the runner asks
+    // pauseRequested and calls markPaused).
+    enum class PauseResult { NotFound, NotPausable, PausedNow, Requested };
+    PauseResult pause(const std::string& id, const std::string& now, JobRecord& job);
+    bool pauseRequested(const std::string& id) const;
+    JobRecord markPaused(const std::string& id, const std::string& now);
+    // Paused -> queued.
+    enum class ResumeResult { NotFound, NotPaused, Resumed };
+    ResumeResult resume(const std::string& id, const std::string& now, JobRecord& job);
+    // Completed -> queued with `morePasses` more passes to render.
+    enum class ContinueResult { NotFound, NotCompleted, Continued };
+    ContinueResult continueWith(const std::string& id, int morePasses, const std::string& now, JobRecord& job);
+
     enum class ChangeResult { NotFound, NotQueued, Changed };
     // A queued job's priority; `job` is the record after (or as it is, when not changed).
     ChangeResult setPriority(const std::string& id, int priority, const std::string& now, JobRecord& job);
@@ -73,6 +86,7 @@ private:
         JobRecord job;
         std::shared_ptr<CancelToken> cancel;  // set while running
         bool cancelRequested = false;         // by a client, as opposed to shutdown
+        bool pauseRequested = false;          // by a client: stop after the pass, keep the state
     };
     Entry& at(const std::string& id);
     // Sum of `value(job)` over the queued and running jobs of `client`.

@@ -2,6 +2,7 @@
 // with other settings, its scene read back as it was sent.
 #include <cstdio>
 #include <sstream>
+#include <thread>
 #include "server_fixture.h"
 
 namespace photon::test {
@@ -143,6 +144,75 @@ TEST_F(ActionsTest, TheLogTellsOfAStopAndTheResumption) {
     EXPECT_EQ(lines[3].rfind("resumed from its checkpoint after pass ", 0), 0u) << lines[3];
     EXPECT_EQ(lines[4], "cancel requested; the render stops after its current pass");
     EXPECT_EQ(lines[5].rfind("cancelled after ", 0), 0u) << lines[5];
+}
+
+// Pausing keeps the render's state: paused after a pass (its image still served), nothing
+// rendered while paused, and resumed from that pass; a queued job pauses at once and stays
+// out of the queue until resumed.
+TEST_F(ActionsTest, APausedJobGoesOnFromItsPassWhenResumed) {
+    startServer({"--workers", "1"});
+    std::string id = submitOk(longScene());
+    waitFor(id, [](const json& j) { return j["pass"].get<int>() >= 1; });
+    std::string waiting = submitOk(smallScene(2, 2000));
+    httplib::Result queuedPause = client().Post("/api/v1/jobs/" + waiting + "/pause");
+    ASSERT_EQ(queuedPause->status, 200);
+    EXPECT_EQ(json::parse(queuedPause->body)["status"], "paused");
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + id + "/pause")->status, 202);
+    json paused = waitForStatus(id, "paused");
+    const int at = paused["pass"];
+    EXPECT_GE(at, 1);
+    httplib::Result image = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
+    ASSERT_EQ(image->status, 200);
+    EXPECT_EQ(image->get_header_value("X-Photon-Pass"), std::to_string(at));
+    // The worker is free, yet the paused queued job does not start.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    EXPECT_EQ(getJob(id)["pass"], at);
+    EXPECT_EQ(getJob(waiting)["status"], "paused");
+    httplib::Result resumed = client().Post("/api/v1/jobs/" + id + "/resume");
+    ASSERT_EQ(resumed->status, 200);
+    EXPECT_EQ(json::parse(resumed->body)["status"], "queued");
+    waitFor(id, [&](const json& j) { return j["status"] == "running" && j["pass"].get<int>() > at; });
+    EXPECT_EQ(client().Post("/api/v1/jobs/" + id + "/resume")->status, 409);
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + id + "/cancel")->status, 202);
+    waitForStatus(id, "cancelled");
+    EXPECT_EQ(client().Post("/api/v1/jobs/" + id + "/pause")->status, 409);
+    ASSERT_EQ(client().Post("/api/v1/jobs/" + waiting + "/resume")->status, 200);
+    waitForStatus(waiting, "completed");
+    std::vector<std::string> lines = logLines(client().Get(("/api/v1/jobs/" + id + "/log").c_str())->body);
+    ASSERT_GE(lines.size(), 7u);
+    EXPECT_EQ(lines[2], "pause requested; the render stops after its current pass");
+    EXPECT_EQ(lines[3], "paused after pass " + std::to_string(at));
+    EXPECT_EQ(lines[4], "resumed: queued again");
+    EXPECT_EQ(lines[5], "resumed from its checkpoint after pass " + std::to_string(at));
+}
+
+// More passes of a completed job render on from its checkpoint: the result is the render
+// of that many passes from the start, value for value.
+TEST_F(ActionsTest, MorePassesOfACompletedJobEqualALongerRender) {
+    startServer({"--workers", "1"});
+    std::string id = submitOk(smallScene(2, 2000));
+    waitForStatus(id, "completed");
+    httplib::Result more = client().Post(("/api/v1/jobs/" + id + "/continue?passes=2").c_str());
+    ASSERT_EQ(more->status, 200) << more->body;
+    json queued = json::parse(more->body);
+    EXPECT_EQ(queued["status"], "queued");
+    EXPECT_EQ(queued["settings"]["passes"], 4);
+    EXPECT_EQ(queued["finished_at"], nullptr);
+    json done = waitFor(id, [](const json& j) { return j["status"] == "completed"; });
+    EXPECT_EQ(done["pass"], 4);
+    Image served = decodeImage(client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str())->body, "exr");
+    Image direct = renderInProcess(smallScene(4, 2000));
+    ASSERT_EQ(served.rgb.size(), direct.rgb.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < direct.rgb.size(); ++i) differing += served.rgb[i] != direct.rgb[i];
+    EXPECT_EQ(differing, 0u) << "of " << direct.rgb.size() << " channel values";
+    EXPECT_EQ(getJob(id)["settings"]["passes"], 4);  // stored
+    // Only a completed job, and at least one pass.
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + id + "/continue").c_str())->status, 400);
+    std::string cancelled = submitOk(longScene());
+    waitForStatus(cancelled, "running");
+    EXPECT_EQ(client().Post(("/api/v1/jobs/" + cancelled + "/continue?passes=1").c_str())->status, 409);
+    client().Post("/api/v1/jobs/" + cancelled + "/cancel");
 }
 
 TEST_F(ActionsTest, TheServicesOwnFileNamesAreNotAssets) {
