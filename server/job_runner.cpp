@@ -57,7 +57,10 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
             lastCheckpoint = now;
         }
     });
-    if (outcome != RenderOutcome::Cancelled) return Ending::Completed;  // pass count or time limit reached
+    if (outcome != RenderOutcome::Cancelled) {  // pass count or time limit reached
+        saveCheckpoint(id, renderer);            // kept: more passes can follow
+        return Ending::Completed;
+    }
     if (table_.cancelRequested(id)) return Ending::Cancelled;
     // Paused, or the server is stopping: keep the state after the last finished pass.
     saveCheckpoint(id, renderer);

@@ -76,10 +76,10 @@ TEST_F(ListingTest, TheListFiltersBySeveralStatusesANameAndLabels) {
     json none = list("?status=queued&name=final");
     EXPECT_EQ(none["total"], 0);
     EXPECT_EQ(none["next_cursor"], nullptr);
-    httplib::Result bad = client().Get("/api/v1/jobs?status=queued,paused");
+    httplib::Result bad = client().Get("/api/v1/jobs?status=queued,stalled");
     EXPECT_EQ(bad->status, 400);
     EXPECT_EQ(problemOf(bad)["detail"],
-              "query parameter status: expected queued, running, completed, failed or cancelled, got \"paused\"");
+              "query parameter status: expected queued, running, paused, completed, failed or cancelled, got \"stalled\"");
 }
 
 TEST_F(ListingTest, ACursorPagesThroughEveryJobOnceWhileJobsComeAndGo) {

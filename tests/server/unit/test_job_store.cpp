@@ -185,8 +185,8 @@ TEST_F(JobStoreTest, UpdateWithEmptyTextClearsIt) {
     EXPECT_EQ(loaded.error, "");
 }
 
-// What a submission fixed stays; the priority is the one submission field that may change
-// (while the job is queued), and an update stores it.
+// What a submission fixed stays; the priority (while queued) and the pass count (more passes
+// of a completed job) may change later, and an update stores them.
 TEST_F(JobStoreTest, UpdateDoesNotChangeSubmissionFields) {
     JobStore store(dbFile());
     JobRecord job = newJob("a");
@@ -195,6 +195,7 @@ TEST_F(JobStoreTest, UpdateDoesNotChangeSubmissionFields) {
     changed.priority = job.priority = 9;
     changed.createdAt = "2030-01-01T00:00:00.000Z";
     changed.settings = JobSettings{1, 1, 1, "path", 1, 1};
+    job.settings.passes = 1;  // the one setting that changes later: more passes of a completed job
     changed.client = "10.9.9.9";
     store.update(changed);
     expectSameJob(store.loadAll().at(0), job);
@@ -371,7 +372,7 @@ TEST_F(JobStoreTest, UnknownStatusFromANewerServerLoadsAsFailed) {
     }
     {
         sql::Database db(dbFile());
-        db.exec("UPDATE jobs SET status = 'paused'");
+        db.exec("UPDATE jobs SET status = 'hibernating'");
     }
     JobStore store(dbFile());
     EXPECT_EQ(store.loadAll().at(0).status, JobStatus::Failed);

@@ -368,7 +368,7 @@ TEST(JobTable, CountByStatusNamesEveryStatus) {
     JobTable table;
     std::map<JobStatus, int> empty = table.countByStatus();
     EXPECT_EQ(empty, (std::map<JobStatus, int>{{JobStatus::Queued, 0},
-                                               {JobStatus::Running, 0},
+                                               {JobStatus::Running, 0}, {JobStatus::Paused, 0},
                                                {JobStatus::Completed, 0},
                                                {JobStatus::Failed, 0},
                                                {JobStatus::Cancelled, 0}}));
@@ -380,7 +380,7 @@ TEST(JobTable, CountByStatusNamesEveryStatus) {
     table.insert(withStatus(queuedJob("c", 4), JobStatus::Completed));
     table.insert(withStatus(queuedJob("x", 5), JobStatus::Cancelled));
     EXPECT_EQ(table.countByStatus(), (std::map<JobStatus, int>{{JobStatus::Queued, 2},
-                                                               {JobStatus::Running, 1},
+                                                               {JobStatus::Running, 1}, {JobStatus::Paused, 0},
                                                                {JobStatus::Completed, 1},
                                                                {JobStatus::Failed, 0},
                                                                {JobStatus::Cancelled, 1}}));
