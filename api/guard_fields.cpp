@@ -10,7 +10,8 @@ std::string clientAddress(const httplib::Request& req) {
 }
 
 bool sentEmpty(const httplib::Request& req, std::string_view name) {
-    std::string_view names = req.get_header_value(kEmptyFieldsField);
+    const std::string field = req.get_header_value(kEmptyFieldsField);  // a copy: the view below reads it
+    std::string_view names = field;
     while (!names.empty()) {
         size_t comma = names.find(", ");
         if (equalsIgnoringCase(names.substr(0, comma), name)) return true;
