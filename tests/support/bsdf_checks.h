@@ -1,0 +1,95 @@
+// Checks shared by the material tests: directions at a given angle, albedo estimates from
+// sample(), and a quadrature of the upper hemisphere independent of sample().
+#pragma once
+#include <array>
+#include <cmath>
+#include "materials/material.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+
+namespace photon::bsdf_checks {
+
+constexpr int kSamples = 200000;
+constexpr float kCosines[] = {0.1f, 0.5f, 0.95f};  // near-grazing, oblique, near-normal
+
+using Channels = std::array<double, 3>;
+
+// Unit direction with the given cos(theta); a non-zero azimuth avoids axis-aligned luck.
+inline Vec3 direction(float cosTheta, float phi = 0.7f) {
+    float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    return {s * std::cos(phi), s * std::sin(phi), cosTheta};
+}
+
+// Allowed difference between two albedo estimates: 1% relative or 0.005 absolute.
+inline double tolerance(double reference) { return std::max(0.005, 0.01 * std::abs(reference)); }
+
+// Monte Carlo estimate of the directional albedo from sample(): the mean weight.
+struct SampleEstimate {
+    Channels mean{}, stdError{};
+    double nonDeltaFraction = 0;  // share of all draws that returned a non-delta wi
+};
+
+inline SampleEstimate estimateBySampling(const Material& m, Vec3 wo, const MaterialInputs& in, TransportMode mode,
+                                         uint64_t seed) {
+    Rng rng(seed, 0, 0, StreamPurpose::Test);
+    Channels sum{}, sumSq{};
+    int nonDelta = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        auto s = m.sample(wo, uLobe, u, in, mode);
+        if (!s) continue;
+        if (!s->delta) ++nonDelta;
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += s->weight[c];
+            sumSq[c] += double(s->weight[c]) * s->weight[c];
+        }
+    }
+    SampleEstimate e;
+    for (int c = 0; c < 3; ++c) {
+        e.mean[c] = sum[c] / kSamples;
+        double var = std::max(0.0, sumSq[c] / kSamples - e.mean[c] * e.mean[c]);
+        e.stdError[c] = std::sqrt(var / kSamples);
+    }
+    e.nonDeltaFraction = double(nonDelta) / kSamples;
+    return e;
+}
+
+// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
+// wi = reflect(wo, h) over half vectors h, with d(omega_i) = 4 (wo.h) d(omega_h)
+// (Walter et al. 2007, eq. 14). theta_h uses the warp tan(theta_h) = a tan(u pi/2) up
+// to tan(theta_h) = 30 a, so a lobe of GGX width a is resolved, then a uniform grid up
+// to pi/2 for the broad (diffuse) remainder. Midpoint rule in both, periodic in phi.
+template <class G>
+Channels integrateHemisphere(Vec3 wo, float a, G g) {
+    constexpr int kTheta = 400, kPhi = 512;
+    constexpr float kHalfPi = 0.5f * kPi;
+    double uMax = std::atan(30.0) / kHalfPi;  // tan(uMax pi/2) = 30
+    double thetaSplit = std::atan(30.0 * a);
+    Channels total{};
+    auto ring = [&](double theta, double dTheta) {
+        double dPhi = 2.0 * kPi / kPhi, sinTheta = std::sin(theta);
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 h(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(std::cos(theta)));
+            float woDotH = dot(wo, h);
+            if (woDotH <= 0) continue;
+            Vec3 wi = normalize(reflect(wo, h));
+            if (wi.z <= 0) continue;
+            Color v = g(wi);
+            double jacobian = 4.0 * woDotH * sinTheta * dTheta * dPhi;
+            for (int c = 0; c < 3; ++c) total[c] += v[c] * jacobian;
+        }
+    };
+    double du = uMax / kTheta;
+    for (int i = 0; i < kTheta; ++i) {
+        double t = std::tan((i + 0.5) * du * kHalfPi);
+        double dThetaDu = a * kHalfPi * (1 + t * t) / (1 + a * a * t * t);
+        ring(std::atan(a * t), dThetaDu * du);
+    }
+    double dTheta = (kHalfPi - thetaSplit) / kTheta;
+    for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
+    return total;
+}
+
+}  // namespace photon::bsdf_checks
