@@ -10,32 +10,9 @@ namespace {
 // energy and photon tracing would not converge.
 const Range kFraction = Range::closed(0, 1);
 
-std::shared_ptr<const Texture> loadTexture(const JsonValue& value, LoadContext& ctx) {
-    std::filesystem::path file = resolveFile(value, ctx);
-    auto cached = ctx.textures.find(file);
-    if (cached != ctx.textures.end()) return cached->second;
-    try {
-        return ctx.textures[file] = Texture::load(file);
-    } catch (const std::exception& e) {
-        failWithLibraryError(value, e, ctx);
-    }
-}
-
-// [r, g, b] or {"texture": "relative/path.png"}.
-ColorParam readColorParam(const JsonValue& value, LoadContext& ctx) {
-    if (value.json().is_object()) {
-        JsonObject obj = value.object();
-        auto texture = loadTexture(obj.required("texture"), ctx);
-        obj.finish();
-        return ColorParam(texture);
-    }
-    if (!value.json().is_array()) value.fail("must be an array of 3 numbers or {\"texture\": \"path\"}");
-    return ColorParam(value.vec3(kFraction));
-}
-
 ColorParam colorField(JsonObject& obj, std::string_view key, Color fallback, LoadContext& ctx) {
     auto value = obj.optional(key);
-    return value ? readColorParam(*value, ctx) : ColorParam(fallback);
+    return value ? readColorParam(*value, ctx, kFraction) : ColorParam(fallback);
 }
 
 // Roughness is the perceptual GGX parameter (alpha = roughness^2), meaningful in [0, 1].
