@@ -40,6 +40,30 @@ TEST(SceneLoader, FullSceneMaterials) {
     EXPECT_VEC3_NEAR(s.materials[4]->tint().value, Vec3(0.9f, 0.6f, 0.3f), 0);
 }
 
+TEST(SceneLoader, MixOfNamedAndInlineMaterials) {
+    Json doc = fullScene();
+    doc["materials"]["blend"] = Json::parse(
+        R"({"type": "mix", "materials": ["white", {"type": "conductor", "roughness": 0.3}], "amount": 0.25})");
+    SceneDescription s = load(doc);
+    const photon::Material& blend = *s.materials.back();
+    EXPECT_EQ(blend.lobes(), unsigned(photon::kDiffuseLobe | photon::kGlossyLobe));
+    // A mirror pair of directions: three quarters of the white diffuse, a quarter of the metal.
+    const Vec3 wo(0.6f, 0, 0.8f), wi(-0.6f, 0, 0.8f);
+    const auto radiance = photon::TransportMode::Radiance;
+    auto metal = photon::makeConductor(Color(0.9f), 0.3f);
+    Color expected = s.materials[0]->eval(wo, wi, s.materials[0]->inputsAt({0, 0}), radiance) * 0.75f +
+                     metal->eval(wo, wi, metal->inputsAt({0, 0}), radiance) * 0.25f;
+    EXPECT_VEC3_NEAR(blend.eval(wo, wi, blend.inputsAt({0, 0}), radiance), expected, 1e-5);
+
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["later", "white"]})"); },
+                "materials.blend.materials[0]", "names no material defined before this one: \"later\"");
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["white"]})"); },
+                "materials.blend.materials", "must name exactly 2 materials");
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["white", "glass"]})"); },
+                "materials.blend.materials",
+                "a mix cannot join a one-sided material (a dielectric) with a two-sided one");
+}
+
 TEST(SceneLoader, FullSceneQuads) {
     SceneDescription s = load(fullScene());
     ASSERT_EQ(s.shapes.size(), 6u);

@@ -20,10 +20,37 @@ float roughnessField(JsonObject& obj, float fallback) { return obj.number("rough
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
 
-MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
+MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
+
+// A part of a mix: the name of a material defined before it, or a material object.
+MaterialPtr readMixPart(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
+    if (!value.json().is_string()) return readMaterial(value, ctx, defined);
+    auto found = ctx.materialIndex.find(value.string());
+    if (found == ctx.materialIndex.end() || found->second >= defined.size())
+        value.fail("names no material defined before this one: \"" + value.string() + "\"");
+    return defined[found->second];
+}
+
+// {"type": "mix", "materials": [a, b], "amount": t}: (1 - t) a + t b.
+MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
+    JsonValue parts = obj.required("materials");
+    std::vector<JsonValue> two = parts.elements();
+    if (two.size() != 2) parts.fail("must name exactly 2 materials");
+    MaterialPtr a = readMixPart(two[0], ctx, defined), b = readMixPart(two[1], ctx, defined);
+    auto amount = obj.optional("amount");
+    FloatParam t = amount ? readFloatParam(*amount, ctx, kFraction) : FloatParam(0.5f);
+    try {
+        return makeMix(std::move(a), std::move(b), std::move(t));
+    } catch (const std::invalid_argument& e) {
+        parts.fail(e.what());
+    }
+}
+
+MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic };
-    auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic"}, "type"));
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, Mix };
+    auto type = Type(
+        obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic", "mix"}, "type"));
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
@@ -40,6 +67,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
             m = makePlastic(albedo, ior, roughnessField(obj, 0.0f));
             break;
         }
+        case Mix: m = readMix(obj, ctx, defined); break;
     }
     obj.finish();
     return m;
@@ -51,7 +79,7 @@ void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& s
     JsonObject obj = value.object();
     for (auto& [name, material] : obj.members()) {
         ctx.materialIndex[name] = uint32_t(scene.materials.size());
-        scene.materials.push_back(readMaterial(material, ctx));
+        scene.materials.push_back(readMaterial(material, ctx, scene.materials));
         scene.materialNames.push_back(name);
     }
 }
