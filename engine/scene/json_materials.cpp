@@ -43,10 +43,23 @@ float roughnessField(JsonObject& obj, float fallback) { return obj.number("rough
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
 
+// A sheet passes on at most what arrives: reflectance + transmittance <= 1 per channel,
+// checked where both are constant (a texture is checked texel by texel nowhere).
+MaterialPtr readDiffuseTransmission(JsonObject& obj, LoadContext& ctx) {
+    ColorParam reflectance = colorField(obj, "reflectance", Color(0.25f), ctx);
+    ColorParam transmittance = colorField(obj, "transmittance", Color(0.25f), ctx);
+    if (!reflectance.textured() && !transmittance.textured() &&
+        maxComponent(reflectance.value + transmittance.value) > 1.0f + 1e-6f)
+        obj.fail("reflectance + transmittance must not exceed 1 in any channel (a sheet cannot pass on more light than "
+                 "arrives)");
+    return makeDiffuseTransmission(reflectance, transmittance);
+}
+
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic };
-    auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic"}, "type"));
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, DiffuseTransmission };
+    auto type = Type(obj.required("type").choice(
+        {"diffuse", "dielectric", "mirror", "conductor", "plastic", "coated_diffuse", "diffuse_transmission"}, "type"));
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
@@ -63,6 +76,13 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
             m = makePlastic(albedo, ior, roughnessField(obj, 0.0f));
             break;
         }
+        case CoatedDiffuse: {
+            ColorParam albedo = colorField(obj, "albedo", Color(0.5f), ctx);
+            float ior = iorField(obj);
+            m = makeCoatedDiffuse(albedo, ior, roughnessField(obj, 0.0f));
+            break;
+        }
+        case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
     }
     obj.finish();
     return m;

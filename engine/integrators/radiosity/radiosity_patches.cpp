@@ -86,6 +86,20 @@ Color diffuseFactor(const Material& m) {
     return sum / float(n * n * n * n);
 }
 
+// A patch holds the light leaving one side of a surface; a sheet that transmits would need
+// both sides coupled, which the solver does not model. Rather than drop the transmitted
+// light in silence, the render fails naming the material.
+void rejectTransmission(const Scene& scene) {
+    const SceneDescription& d = scene.description();
+    for (const ShapeDescription& s : d.shapes) {
+        if (!scene.materialAt(s.material).transmits()) continue;
+        std::string name = s.material < d.materialNames.size() ? d.materialNames[s.material] : std::to_string(s.material);
+        throw std::runtime_error("radiosity: material \"" + name +
+                                 "\" transmits light (diffuse_transmission), which radiosity does not model; render "
+                                 "the scene with sppm, path or photonmap");
+    }
+}
+
 // The texture coordinate the scene gives a hit on triangle `prim` at Embree's (u, v).
 Vec2 triangleUv(const TriangleMesh& m, size_t prim, float u, float v) {
     if (m.uvs.empty()) return {u, v};
@@ -276,6 +290,7 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
         size *= std::max(1.05f, std::sqrt(float(count) / float(limit)));
     patchSize_ = size;
     for (const MaterialPtr& m : scene.description().materials) diffuseFactors_.push_back(diffuseFactor(*m));
+    rejectTransmission(scene);
     shapes_.resize(scene.description().shapes.size());
     Builder builder(*this, scene, size);
     for (uint32_t i = 0; i < shapes_.size(); ++i) builder.addShape(i);
