@@ -147,15 +147,15 @@ TEST(CoatedDiffuse, SmoothCoatAlbedoIsTheClosedForm) {
 
 // Against the layered random walk (tests/support/layered_random_walk.h: smooth coats by
 // Fresnel's choice, rough ones by walking the microsurface, which keeps all the flux),
-// 400000 paths and 400000 material samples per case, exit directions in 32 bins (4 rings
+// 250000 paths and 250000 material samples per case, exit directions in 32 bins (4 rings
 // of equal projected solid angle x 8 azimuth sectors); L1 = sum over the bins of
 // |model - walk| / walk albedo. Measured at eta 1.5 and cos(theta_i) 0.2, 0.5, 0.9:
-//   white base, every roughness: albedo within 0.05% (both 1), L1 <= 0.017 (the noise
-//     of the two estimates is about 0.01).
-//   base (0.8, 0.3, 0.05): smooth within 0.0017 absolute (0.5%), L1 <= 0.010;
-//     roughness 0.2: within 0.0055 (1.7%, the darkest channel at grazing), L1 <= 0.018;
-//     roughness 0.5: within 0.0087 (5.4%), L1 <= 0.054; roughness 0.8: within 0.0073
-//     (8%), L1 <= 0.080.
+//   white base, every roughness: albedo within 0.04% (both 1), L1 <= 0.018 (the noise
+//     of the two estimates alone gives about 0.012).
+//   base (0.8, 0.3, 0.05): smooth within 0.0024 absolute (0.7%, noise), L1 <= 0.013;
+//     roughness 0.2: within 0.0047 (1.4%, the darkest channel at grazing), L1 <= 0.019;
+//     roughness 0.5: within 0.0088 (5.4%), L1 <= 0.056; roughness 0.8: within 0.0070
+//     (7.7%), L1 <= 0.077.
 // The rough differences are in the darkest channel, where the coat's reflection is most
 // of the albedo: the model's specular lobe is single-scattering GGX, and what the coat's
 // facets reflect into one another (kept by the walk) the model sends through to the base
@@ -170,11 +170,11 @@ struct WalkCase {
 };
 
 TEST(CoatedDiffuse, AgreesWithLayeredRandomWalk) {
-    constexpr int kPaths = 400000;
+    constexpr int kPaths = 250000;
     std::vector<WalkCase> cases;
     for (float cosO : {0.2f, 0.5f, 0.9f}) {
         for (float r : {0.0f, 0.2f, 0.5f, 0.8f}) cases.push_back({r, cosO, kWhite, 0.002, 0.025});
-        cases.push_back({0.0f, cosO, kColour, 0.003, 0.02});
+        cases.push_back({0.0f, cosO, kColour, 0.004, 0.02});
         cases.push_back({0.2f, cosO, kColour, 0.007, 0.025});
         cases.push_back({0.5f, cosO, kColour, 0.011, 0.07});
         cases.push_back({0.8f, cosO, kColour, 0.011, 0.1});
@@ -209,7 +209,7 @@ TEST(CoatedDiffuse, AgreesWithLayeredRandomWalk) {
 }
 
 // SPPM against the path tracer on scenes/coated.json (two coated spheres, smooth and
-// rough, in the Cornell box): image means within 2%.
+// rough, in the Cornell box): image means within 2% (measured 0.7%).
 TEST(CoatedDiffuse, SppmAgreesWithPathTracer) {
     auto render = [](IntegratorKind kind, int passes, int64_t photons) {
         SceneDescription d = test::exampleScene("coated", 32, passes, photons, 5);

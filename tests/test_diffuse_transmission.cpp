@@ -96,10 +96,35 @@ TEST(DiffuseTransmission, EvalIsReciprocalAndSampleAgreesWithPdf) {
     }
 }
 
+// Any direction (grazing, exactly on the surface, either side) and any random numbers
+// (0 included) give finite, non-negative values and unit directions.
+TEST(DiffuseTransmission, FiniteForAllInputs) {
+    MaterialPtr m = makeDiffuseTransmission(Color(0.0f), Color(0.5f));  // an all-transmitting one too
+    Sheet sheet;
+    Rng rng(13, 0, 0, StreamPurpose::Test);
+    auto draw = [&] { return rng.uniform() < 0.05f ? 0.0f : rng.uniform(); };
+    for (const Material* mat : {sheet.material.get(), m.get()})
+        for (int i = 0; i < 20000; ++i) {
+            float cosO = i % 7 == 0 ? 1e-4f * (rng.uniform() - 0.5f) : 2 * rng.uniform() - 1;
+            Vec3 wo = i % 11 == 0 ? Vec3(0, 0, i % 2 ? 1.0f : -1.0f) : direction(cosO, 2 * kPi * rng.uniform());
+            Vec3 wi = sampleUniformSphere({rng.uniform(), rng.uniform()});
+            MaterialInputs in{Vec2{}, mat->tint().value};
+            Color f = mat->eval(wo, wi, in, TransportMode::Radiance);
+            float p = mat->pdf(wo, wi, in);
+            ASSERT_TRUE(isFinite(f) && minComponent(f) >= 0 && std::isfinite(p) && p >= 0) << "wo.z " << wo.z;
+            auto s = mat->sample(wo, draw(), {draw(), draw()}, in, TransportMode::Importance);
+            if (!s) continue;
+            ASSERT_TRUE(isFinite(s->weight) && minComponent(s->weight) >= 0 && std::isfinite(s->pdf) && s->pdf > 0);
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+        }
+}
+
 // scenes/translucent-sheet.json at 32 x 32: the front of the box gets light only through
 // the sheet. SPPM (photons gathered on the sheet from behind) and the photon mapper against
 // the path tracer: image means within 2% (SPPM) and 3% (the photon mapper's density
-// estimates are biased by their fixed-k radius).
+// estimates are biased by their fixed-k radius). Measured: SPPM 0.6%, photon map 1.3%;
+// SPPM gathering only photons from the viewer's side (as before it knew of transmission)
+// comes out 44% dark.
 Image renderSheet(IntegratorKind kind, int passes, int64_t photons, int gatherRays = 0) {
     SceneDescription d = test::exampleScene("translucent-sheet", 32, passes, photons, 3);
     d.render.integrator = kind;
@@ -108,29 +133,19 @@ Image renderSheet(IntegratorKind kind, int passes, int64_t photons, int gatherRa
     return test::renderImage(std::move(d));
 }
 
-// The path tracer's image, rendered once for both comparisons.
-const Image& pathTracedSheet() {
-    static const Image image = renderSheet(IntegratorKind::Path, 1024, 0);
-    return image;
-}
-
-TEST(DiffuseTransmission, SppmAgreesWithPathTracerThroughTheSheet) {
-    const Image& path = pathTracedSheet();
+TEST(DiffuseTransmission, PhotonMappersAgreeWithPathTracerThroughTheSheet) {
+    Image path = renderSheet(IntegratorKind::Path, 512, 0);
     Image sppm = renderSheet(IntegratorKind::Sppm, 100, 50000);
+    Image mapped = renderSheet(IntegratorKind::PhotonMap, 16, 0, 16);
     Color p = test::meanOver(path, 0, 0, 32, 32), s = test::meanOver(sppm, 0, 0, 32, 32);
-    std::printf("  translucent-sheet.json mean: path %.4f %.4f %.4f  sppm %.4f %.4f %.4f\n", p.x, p.y, p.z, s.x, s.y,
-                s.z);
+    Color m = test::meanOver(mapped, 0, 0, 32, 32);
+    std::printf("  translucent-sheet.json mean: path %.4f %.4f %.4f  sppm %.4f %.4f %.4f  photon map %.4f %.4f %.4f\n",
+                p.x, p.y, p.z, s.x, s.y, s.z, m.x, m.y, m.z);
     ASSERT_GT(luminance(p), 0.05f);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s[c], p[c], 0.02f * p[c]) << "channel " << c;
-}
-
-TEST(DiffuseTransmission, PhotonMapperAgreesWithPathTracerThroughTheSheet) {
-    const Image& path = pathTracedSheet();
-    Image mapped = renderSheet(IntegratorKind::PhotonMap, 32, 0, 16);
-    Color p = test::meanOver(path, 0, 0, 32, 32), s = test::meanOver(mapped, 0, 0, 32, 32);
-    std::printf("  translucent-sheet.json mean: path %.4f %.4f %.4f  photon map %.4f %.4f %.4f\n", p.x, p.y, p.z, s.x,
-                s.y, s.z);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s[c], p[c], 0.03f * p[c]) << "channel " << c;
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(s[c], p[c], 0.02f * p[c]) << "SPPM, channel " << c;
+        EXPECT_NEAR(m[c], p[c], 0.03f * p[c]) << "photon map, channel " << c;
+    }
 }
 
 TEST(DiffuseTransmission, RadiosityRefusesATransmittingSheet) {

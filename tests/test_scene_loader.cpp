@@ -177,7 +177,7 @@ TEST(SceneLoader, Defaults) {
     EXPECT_VEC3_NEAR(s.materials[3]->tint().value, Color(0.9f), 0);
     EXPECT_VEC3_NEAR(s.materials[4]->tint().value, Color(0.5f), 0);
     EXPECT_VEC3_NEAR(s.materials[5]->tint().value, Color(0.5f), 0);
-    EXPECT_EQ(s.materials[5]->lobes(), unsigned(kDiffuseLobe | kDeltaLobe));  // smooth coat
+    EXPECT_EQ(s.materials[5]->lobes(), unsigned(photon::kDiffuseLobe | photon::kDeltaLobe));  // smooth coat
     EXPECT_VEC3_NEAR(s.materials[6]->tint().value, Color(0.25f), 0);          // reflectance
     EXPECT_TRUE(s.materials[6]->transmits());
     EXPECT_FALSE(s.shapes[0].flipNormals);

