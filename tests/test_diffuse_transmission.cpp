@@ -10,6 +10,7 @@
 #include "bsdf_checks.h"
 #include "materials/material.h"
 #include "test_support.h"
+#include "texture/texture.h"
 
 namespace photon {
 namespace {
@@ -93,6 +94,21 @@ TEST(DiffuseTransmission, EvalIsReciprocalAndSampleAgreesWithPdf) {
         ASSERT_NEAR(s->pdf, p, 1e-5f * p);
         Color expected = m.eval(a, s->wi, sheet.in, TransportMode::Radiance) * (std::abs(s->wi.z) / p);
         for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c]);
+    }
+}
+
+// A textured transmittance is looked up at the hit's uv (MaterialInputs::uv), and makes
+// the material textured (so hits on it carry uv) even with a constant reflectance.
+TEST(DiffuseTransmission, TexturedTransmittanceIsLookedUpAtUv) {
+    const Color left(0.6f, 0.1f, 0.2f), right(0.1f, 0.5f, 0.3f);
+    auto texture = std::make_shared<const Texture>(2, 2, std::vector<Color>{left, right, left, right});
+    MaterialPtr m = makeDiffuseTransmission(Color(0.2f), ColorParam(texture));
+    EXPECT_TRUE(m->textured());
+    Vec3 wo = direction(0.5f), across = direction(-0.7f, 2.0f);
+    for (auto [u, expected] : {std::pair{0.25f, left}, std::pair{0.75f, right}}) {
+        MaterialInputs in = m->inputsAt({u, 0.25f});
+        Color f = m->eval(wo, across, in, TransportMode::Radiance);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[c], expected[c] * kInvPi, 1e-6f) << "u " << u << " channel " << c;
     }
 }
 
