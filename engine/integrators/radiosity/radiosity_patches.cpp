@@ -87,6 +87,20 @@ Color diffuseFactor(const Material& m) {
     return sum / float(n * n * n * n);
 }
 
+// A patch holds the light leaving one side of a surface; a sheet that transmits would need
+// both sides coupled, which the solver does not model. Rather than drop the transmitted
+// light in silence, the render fails naming the material.
+void rejectTransmission(const Scene& scene) {
+    const SceneDescription& d = scene.description();
+    for (const ShapeDescription& s : d.shapes) {
+        if (!scene.materialAt(s.material).transmits()) continue;
+        std::string name = s.material < d.materialNames.size() ? d.materialNames[s.material] : std::to_string(s.material);
+        throw std::runtime_error("radiosity: material \"" + name +
+                                 "\" transmits light (diffuse_transmission), which radiosity does not model; render "
+                                 "the scene with sppm, path or photonmap");
+    }
+}
+
 Vec3 spherePoint(float y, float phi) {
     float s = std::sqrt(std::max(0.0f, 1 - y * y));
     return {s * std::cos(phi), y, s * std::sin(phi)};
@@ -282,6 +296,7 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
     for (const ShapeDescription& shape : d.shapes)
         if (hasCutout(shape))
             throw std::runtime_error("radiosity: " + shape.name + " has an alpha cutout; render it with sppm or path");
+    rejectTransmission(scene);
     shapes_.resize(scene.description().shapes.size());
     Builder builder(*this, scene, size);
     for (uint32_t i = 0; i < shapes_.size(); ++i) builder.addShape(i);
