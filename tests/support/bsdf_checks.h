@@ -1,9 +1,11 @@
 // Checks shared by the material tests: directions at a given angle, albedo estimates from
-// sample(), and a quadrature of the upper hemisphere independent of sample().
+// sample(), and quadratures of the upper hemisphere and of the whole sphere independent of
+// sample().
 #pragma once
 #include <array>
 #include <cmath>
 #include "materials/material.h"
+#include "math/frame.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 
@@ -89,6 +91,37 @@ Channels integrateHemisphere(Vec3 wo, float a, G g) {
     }
     double dTheta = (kHalfPi - thetaSplit) / kTheta;
     for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
+    return total;
+}
+
+// Deterministic quadrature of g(wi) over the whole sphere, independent of sample() and of
+// any half-vector mapping: polar coordinates about `axis`, the polar angle spaced
+// geometrically from kTheta0 to pi (theta = kTheta0 (pi / kTheta0)^u, midpoint rule in u),
+// so a peak on the axis is resolved whatever its width, from ~1e-5 up to a broad lobe,
+// with the same number of rings per octave of angle. The cap inside kTheta0 counts as
+// g(axis) times its area. For a BSDF with two narrow lobes, integrate each hemisphere's
+// part about its own peak (mask g by the side of the surface).
+template <class G>
+Channels integrateSphere(Vec3 axis, G g) {
+    constexpr int kTheta = 1200, kPhi = 512;
+    constexpr double kTheta0 = 1e-6;
+    const double logRatio = std::log(kPi / kTheta0), du = 1.0 / kTheta, dPhi = 2.0 * kPi / kPhi;
+    Frame frame = Frame::fromNormal(axis);
+    Channels total{};
+    auto add = [&](Vec3 wi, double measure) {
+        Color v = g(wi);
+        for (int c = 0; c < 3; ++c) total[c] += v[c] * measure;
+    };
+    add(axis, kPi * kTheta0 * kTheta0);
+    for (int i = 0; i < kTheta; ++i) {
+        double theta = kTheta0 * std::exp((i + 0.5) * du * logRatio);
+        double dTheta = theta * logRatio * du, sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 local(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(cosTheta));
+            add(normalize(frame.toWorld(local)), sinTheta * dTheta * dPhi);
+        }
+    }
     return total;
 }
 
