@@ -12,6 +12,7 @@
 #include "integrators/integrator.h"
 #include "materials/fresnel.h"
 #include "materials/material.h"
+#include "materials/microfacet.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "scene/scene.h"
@@ -32,12 +33,27 @@ constexpr float kIceInWater = 1.31f / 1.33f;  // relative index below 1
 float indexOn(Vec3 w, float eta) { return w.z > 0 ? 1.0f : eta; }
 
 // Where the smooth boundary would send wo: the mirror direction, and the refracted one (or,
-// under total internal reflection, straight through the surface as an axis for the
-// quadrature of the transmitted part, which is then broad).
+// under total internal reflection, where the microfacets tilted enough to let light through
+// send it: along the surface, onward and just past the horizon).
 Vec3 mirrorOf(Vec3 wo) { return {-wo.x, -wo.y, wo.z}; }
 Vec3 refractedOf(Vec3 wo, float eta) {
     auto r = refract(wo, Vec3(0, 0, 1), eta);
-    return r ? r->wt : Vec3(0, 0, wo.z > 0 ? -1.0f : 1.0f);
+    return r ? r->wt : normalize(Vec3(-wo.x, -wo.y, wo.z > 0 ? -0.01f : 0.01f));
+}
+
+// The mean direction of the material's samples on one side (reflected or transmitted), or
+// `fallback` if it sends none there: the axis about which integrateSphere is finest. A
+// rough lobe need not be centred on the smooth direction (with eta near 1 the transmitted
+// one lies near -wo); this only decides where the quadrature looks closest, not what it
+// adds up, which stays eval over the whole sphere.
+Vec3 lobeAxis(const Material& m, Vec3 wo, bool reflected, Vec3 fallback) {
+    Rng rng(3, 0, 0, StreamPurpose::Test);
+    Vec3 sum(0.0f);
+    for (int i = 0; i < 4096; ++i) {
+        auto s = m.sample(wo, rng.uniform(), {rng.uniform(), rng.uniform()}, kInputs, TransportMode::Radiance);
+        if (s && (s->wi.z * wo.z > 0) == reflected) sum += s->wi;
+    }
+    return lengthSquared(sum) > 0 ? normalize(sum) : fallback;
 }
 
 struct RoughCase {
@@ -80,8 +96,8 @@ TEST_P(RoughDielectricAgreement, SamplingMatchesQuadratureOfEval) {
                                  m->pdf(wo, wi, kInputs));
                 };
             };
-            Channels r = integrateSphere(mirrorOf(wo), integrand(true));
-            Channels t = integrateSphere(refractedOf(wo, tc.eta), integrand(false));
+            Channels r = integrateSphere(lobeAxis(*m, wo, true, mirrorOf(wo)), integrand(true));
+            Channels t = integrateSphere(lobeAxis(*m, wo, false, refractedOf(wo, tc.eta)), integrand(false));
             double quadRadiance = r[0] + t[0], quadImportance = r[1] + t[1], pdfIntegral = r[2] + t[2];
             EXPECT_NEAR(radiance.mean[0], quadRadiance, tolerance(quadRadiance)) << "se " << radiance.stdError[0];
             EXPECT_NEAR(importance.mean[0], quadImportance, tolerance(quadImportance)) << "se " << importance.stdError[0];
@@ -154,16 +170,43 @@ TEST_P(RoughDielectricAgreement, EvalObeysGeneralisedReciprocity) {
 INSTANTIATE_TEST_SUITE_P(Materials, RoughDielectricAgreement, testing::ValuesIn(roughCases()),
                          [](const testing::TestParamInfo<RoughCase>& info) { return info.param.name; });
 
-// White furnace in Importance mode (the fraction of a photon's power a bounce keeps):
-// never above 1 from either side, and what is lost is only what single scattering loses,
-// light that would hit the microsurface again (G2 / G1(wo) < 1) or leave it on the wrong
-// side. That loss grows with roughness and toward grazing incidence like the conductor's
-// with F = 1 (the reflection-only surface with the same microfacets); it stays below
-// kMaxLoss here. A nearly smooth surface keeps everything.
+// What single scattering off GGX microfacets keeps of a photon arriving along wo
+// (Importance mode), computed over microfacet normals from the microfacet model alone, not
+// from eval() or pdf(): a facet h is seen with density D_wo(h) = G1(wo) |wo.h| D(h) / |wo.z|;
+// it reflects F(wo.h) of the light, and refracts the rest unless `reflectOnly` (a mirror
+// facet, F = 1); light leaving toward wi survives masking with probability G2(wo, wi) /
+// G1(wo) and is lost if it leaves on the wrong side of the surface.
+double singleScatteringAlbedo(float roughness, float eta, Vec3 wo, bool reflectOnly) {
+    GGX ggx{roughnessToAlpha(roughness)};
+    float side = wo.z > 0 ? 1.0f : -1.0f;
+    Channels e = integrateSphere(Vec3(0, 0, 1), [&](Vec3 h) {
+        float woDotH = dot(wo, h);
+        if (h.z <= 0 || side * woDotH <= 0) return Color(0.0f);
+        float seen = std::abs(woDotH) * ggx.D(h) / std::abs(wo.z);  // D_wo(h) / G1(wo)
+        float F = reflectOnly ? 1.0f : fresnelDielectric(woDotH, eta);
+        Vec3 r = reflect(wo, h);
+        float kept = r.z * side > 0 ? F * ggx.G2(wo, r) : 0.0f;
+        auto t = refract(wo, h, eta);
+        if (F < 1 && t && t->wt.z * side < 0) kept += (1 - F) * ggx.G2(wo, t->wt);
+        return Color(seen * kept);
+    });
+    return e[0];
+}
+
+// White furnace in Importance mode (the fraction of a photon's power a bounce keeps): never
+// above 1 from either side, and the loss is only what single scattering loses, equal to
+// singleScatteringAlbedo's; the same computation with mirror facets gives the conductor's
+// albedo with F = 1 at the same roughness. The loss grows with roughness and toward
+// grazing incidence: below 3.5% for roughness <= 0.3 at |cos| >= 0.5, below 50% even at
+// roughness 0.7 and grazing ice-in-water; a nearly smooth surface keeps everything.
 TEST(RoughDielectric, WhiteFurnaceLosesOnlySingleScatteringEnergy) {
-    constexpr double kMaxLoss = 0.25;
     for (float roughness : {0.02f, 0.3f, 0.7f}) {
         MaterialPtr conductor = makeConductor(kWhite, roughness);
+        for (float cosO : kCosines) {
+            double expected = singleScatteringAlbedo(roughness, kGlass, direction(cosO), true);
+            auto c = estimateBySampling(*conductor, direction(cosO), kInputs, TransportMode::Importance, 29);
+            EXPECT_NEAR(c.mean[0], expected, tolerance(expected)) << "conductor, roughness " << roughness;
+        }
         for (float eta : {kGlass, kIceInWater})
             for (float side : {1.0f, -1.0f})
                 for (float cosO : kCosines) {
@@ -172,15 +215,19 @@ TEST(RoughDielectric, WhiteFurnaceLosesOnlySingleScatteringEnergy) {
                                  " cos(theta_o) " + std::to_string(wo.z));
                     MaterialPtr m = makeRoughDielectric(eta, roughness);
                     auto e = estimateBySampling(*m, wo, kInputs, TransportMode::Importance, 23);
-                    auto c = estimateBySampling(*conductor, direction(cosO), kInputs, TransportMode::Importance, 23);
-                    double loss = 1.0 - e.mean[0], conductorLoss = 1.0 - c.mean[0];
+                    double expected = singleScatteringAlbedo(roughness, eta, wo, false), loss = 1.0 - e.mean[0];
+                    EXPECT_NEAR(e.mean[0], expected, tolerance(expected)) << "se " << e.stdError[0];
                     EXPECT_LE(e.mean[0], 1.0 + 3 * e.stdError[0]);
-                    EXPECT_LT(loss, kMaxLoss);
+                    EXPECT_LT(loss, 0.5);
+                    if (roughness <= 0.3f && cosO >= 0.5f) {
+                        EXPECT_LT(loss, 0.035);
+                    }
                     if (roughness < 0.05f) {
                         EXPECT_NEAR(e.mean[0], 1.0, 0.005);
                     }
-                    std::printf("  roughness %.2f eta %.3f cos %+.2f  albedo %.4f (se %.4f)  loss %.4f  conductor F=1 loss %.4f\n",
-                                roughness, eta, wo.z, e.mean[0], e.stdError[0], loss, conductorLoss);
+                    std::printf("  roughness %.2f eta %.3f cos %+.2f  albedo %.4f (se %.4f)  single scattering %.4f"
+                                "  loss %.4f\n",
+                                roughness, eta, wo.z, e.mean[0], e.stdError[0], expected, loss);
                 }
     }
 }
@@ -206,7 +253,7 @@ TEST(RoughDielectric, SmoothLimitMatchesSmoothDielectricFresnelSplit) {
                 float nO = indexOn(wo, eta), nI = indexOn(-wo, eta);
                 Vec3 mirror = mirrorOf(wo), refracted = refractedOf(wo, eta);
                 Rng rng(5, 0, 0, StreamPurpose::Test);
-                int reflected = 0, returned = 0;
+                int reflected = 0, returned = 0, offPeak = 0;
                 double radianceSum = 0, importanceSum = 0;
                 for (int i = 0; i < kSamples; ++i) {
                     float uLobe = rng.uniform();
@@ -219,8 +266,9 @@ TEST(RoughDielectric, SmoothLimitMatchesSmoothDielectricFresnelSplit) {
                     reflected += isReflection;
                     radianceSum += rad->weight.x;
                     importanceSum += imp->weight.x;
-                    ASSERT_GT(dot(rad->wi, isReflection ? mirror : refracted), 0.999f);
+                    offPeak += dot(rad->wi, isReflection ? mirror : refracted) < 0.9999f;  // 0.8 degrees
                 }
+                EXPECT_LT(offPeak, returned / 100);  // GGX's long tails, nothing more
                 double share = double(reflected) / returned, stdErr = std::sqrt(F * (1 - F) / kSamples);
                 EXPECT_NEAR(share, F, 4 * stdErr + 0.002);
                 double expectedRadiance = F + (1 - F) * (nO * nO) / (nI * nI);
