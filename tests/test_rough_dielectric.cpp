@@ -83,8 +83,9 @@ TEST_P(RoughDielectricAgreement, SamplingMatchesQuadratureOfEval) {
         for (float cosO : kCosines) {
             Vec3 wo = direction(side * cosO);
             SCOPED_TRACE("cos(theta_o) = " + std::to_string(wo.z));
-            auto radiance = estimateBySampling(*m, wo, kInputs, TransportMode::Radiance, uint64_t(cosO * 1000) + 17);
-            auto importance = estimateBySampling(*m, wo, kInputs, TransportMode::Importance, uint64_t(cosO * 1000) + 17);
+            const uint64_t seed = uint64_t(cosO * 1000) + 17;  // the same draws in both modes
+            auto radiance = estimateBySampling(*m, wo, kInputs, TransportMode::Radiance, seed);
+            auto importance = estimateBySampling(*m, wo, kInputs, TransportMode::Importance, seed);
             // Channels: eval |cos| in Radiance mode, in Importance mode, and pdf; each
             // hemisphere about its own peak.
             auto integrand = [&](bool reflected) {
@@ -100,7 +101,8 @@ TEST_P(RoughDielectricAgreement, SamplingMatchesQuadratureOfEval) {
             Channels t = integrateSphere(lobeAxis(*m, wo, false, refractedOf(wo, tc.eta)), integrand(false));
             double quadRadiance = r[0] + t[0], quadImportance = r[1] + t[1], pdfIntegral = r[2] + t[2];
             EXPECT_NEAR(radiance.mean[0], quadRadiance, tolerance(quadRadiance)) << "se " << radiance.stdError[0];
-            EXPECT_NEAR(importance.mean[0], quadImportance, tolerance(quadImportance)) << "se " << importance.stdError[0];
+            EXPECT_NEAR(importance.mean[0], quadImportance, tolerance(quadImportance))
+                << "se " << importance.stdError[0];
             EXPECT_LE(importance.mean[0], 1.0 + tolerance(1.0));
             EXPECT_LE(pdfIntegral, 1.0 + 0.005);
             EXPECT_NEAR(pdfIntegral, radiance.nonDeltaFraction, 0.005);
@@ -274,7 +276,8 @@ TEST(RoughDielectric, SmoothLimitMatchesSmoothDielectricFresnelSplit) {
                 double expectedRadiance = F + (1 - F) * (nO * nO) / (nI * nI);
                 EXPECT_NEAR(radianceSum / kSamples, expectedRadiance, 0.005 * expectedRadiance);
                 EXPECT_NEAR(importanceSum / kSamples, 1.0, 0.005);
-                std::printf("  eta %.3f cos %+.2f  F %.4f reflected share %.4f  radiance %.4f vs %.4f  importance %.4f\n",
+                std::printf("  eta %.3f cos %+.2f  F %.4f reflected share %.4f  radiance %.4f vs %.4f"
+                            "  importance %.4f\n",
                             eta, wo.z, F, share, radianceSum / kSamples, expectedRadiance, importanceSum / kSamples);
             }
     }

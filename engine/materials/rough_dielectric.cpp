@@ -21,9 +21,10 @@ public:
     //   f = (1 - F) D G |wi.h| |wo.h| / (|cos_i cos_o| |wo + etap wi|^2),
     // the radiance form, which carries the (n_o / n_i)^2 compression of radiance across the
     // boundary (Veach 1997, sec. 5.2). Importance is its adjoint f*(wo, wi) = f(wi, wo),
-    // which is etap^2 times as large. F is the microfacet's reflectance; G is the height-correlated
-    // Smith G2 of microfacet.h, symmetric in wo and wi (for transmission the exact
-    // height-correlated form differs, Heitz 2014 sec. 6; pbrt-v4 uses this one too).
+    // which is etap^2 times as large. F is the microfacet's reflectance (microfacetFresnel);
+    // G is the height-correlated Smith G2 of microfacet.h, symmetric in wo and wi (for
+    // transmission the exact height-correlated form differs, Heitz 2014 sec. 6; pbrt-v4
+    // uses this one too).
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes) const override {
         if (!(lobes & kGlossyLobe)) return Color(0.0f);
         auto p = microfacetPair(wo, wi, eta_);
@@ -37,7 +38,7 @@ public:
         return in.tint * f;
     }
 
-    // Visible normals, then reflection with probability F(wo.h) and refraction otherwise:
+    // Visible normals, then reflection with probability F and refraction otherwise:
     // the density of wi is D_wo(h) times F or 1 - F times d(omega_h)/d(omega_i).
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
         if (!(lobes & kGlossyLobe)) return 0;
