@@ -10,6 +10,8 @@ namespace {
 // energy and photon tracing would not converge.
 const Range kFraction = Range::closed(0, 1);
 
+}  // namespace
+
 std::shared_ptr<const Texture> loadTexture(const JsonValue& value, LoadContext& ctx) {
     std::filesystem::path file = resolveFile(value, ctx);
     auto cached = ctx.textures.find(file);
@@ -20,6 +22,8 @@ std::shared_ptr<const Texture> loadTexture(const JsonValue& value, LoadContext& 
         failWithLibraryError(value, e, ctx);
     }
 }
+
+namespace {
 
 // [r, g, b] or {"texture": "relative/path.png"}.
 ColorParam readColorParam(const JsonValue& value, LoadContext& ctx) {

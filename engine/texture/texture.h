@@ -28,9 +28,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     Color average() const { return average_; }
+    // The stored value of texel (x, y), row 0 at the top, unfiltered.
+    Color texel(int x, int y) const;
 
 private:
-    Color texel(int x, int y) const;
     int width_, height_;
     std::vector<Color> texels_;
     Color average_;

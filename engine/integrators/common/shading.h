@@ -1,6 +1,7 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
 #include "math/frame.h"
+#include "math/sampling.h"
 #include "scene/scene.h"
 
 namespace photon {
@@ -42,6 +43,42 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool 
         return false;
     }
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
+    return true;
+}
+
+}  // namespace photon
+
+namespace photon {
+
+// How a camera path chose its current ray, for weighting the environment light the ray may
+// find against the light sample taken at the vertex it left (multiple importance sampling,
+// Veach 1997 ch. 9).
+struct BounceSampling {
+    bool delta = true;  // the camera ray or a delta bounce: no light sample could find that light
+    float pdf = 0;      // the solid-angle density the direction was drawn with, lobe choices included
+    Vec3 p, n;          // the vertex left, and the normal its light sample was given
+};
+
+// The power-heuristic weight of environment light arriving along d after `bounce`: 1 after
+// delta bounces; otherwise against the density with which the light sample at the vertex,
+// picking the environment among the lights, would have chosen d.
+inline float environmentBounceWeight(const Scene& scene, const BounceSampling& bounce, Vec3 d) {
+    if (bounce.delta || !scene.environmentLight()) return 1.0f;
+    const float pLight = scene.environmentPickProbability() * scene.environmentLight()->pdfIncident(bounce.p, bounce.n, d);
+    return powerHeuristic(bounce.pdf, pLight);
+}
+
+// traceCameraRay for integrators that sample lights at every non-delta vertex with
+// sampleDirectLight's BSDF continuation (direct_lighting.h): emission where the ray lands
+// counts after delta bounces only (area lights are found by light samples alone), the
+// environment after every bounce, weighted against its light samples.
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
+                           SurfaceHit& hit, Color& L) {
+    if (!scene.intersect(ray, hit)) {
+        if (scene.environmentLight()) L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
+        return false;
+    }
+    if (bounce.delta) L += beta * scene.emitted(hit, -ray.d);
     return true;
 }
 
