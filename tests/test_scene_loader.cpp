@@ -308,7 +308,8 @@ TEST(SceneLoader, Denoise) {
 // ---- the example scenes ----
 
 TEST(ExampleScenes, AllLoad) {
-    for (const char* name : {"cornell-box.json", "cornell-glass.json", "point-light-plane.json", "textured-mesh.json"}) {
+    for (const char* name :
+         {"cornell-box.json", "cornell-glass.json", "envmap.json", "point-light-plane.json", "textured-mesh.json"}) {
         SCOPED_TRACE(name);
         SceneDescription s = photon::loadSceneFile(photon::test::sourcePath(std::string("scenes/") + name));
         EXPECT_EQ(s.camera.width, 512);
