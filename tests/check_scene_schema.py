@@ -105,7 +105,8 @@ INVALID = [
     ("environment image with radiance", set_path("lights", 3, "image", "sky.exr")),
     ("environment scale without image", set_path("lights", 3, "scale", 2)),
     ("environment without radiance or image", delete("lights", 3, "radiance")),
-    ("unknown environment layout", set_path("lights", 3, {"type": "environment", "image": "sky.exr", "layout": "cube"})),
+    ("unknown environment layout",
+     set_path("lights", 3, {"type": "environment", "image": "sky.exr", "layout": "cube"})),
     ("negative environment scale", set_path("lights", 3, {"type": "environment", "image": "sky.exr", "scale": -1})),
     ("zero scale", set_path("shapes", 2, "transform", "scale", 0)),
 ]

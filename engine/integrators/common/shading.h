@@ -34,8 +34,9 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
 
 // Casts a camera path's ray; returns whether it hit. Light the ray reaches directly (the
 // environment when it leaves, emission where it lands) is added to L with weight beta when
-// `countEmitted`: integrators that sample lights count it only after delta bounces, where
-// no shadow ray could have found it.
+// `countEmitted`: all of it on camera paths that no light sample could have served (the
+// photon mapper's delta-only paths, radiosity's). Integrators that sample lights at
+// non-delta vertices use the form with a BounceSampling below.
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool countEmitted, SurfaceHit& hit,
                            Color& L) {
     if (!scene.intersect(ray, hit)) {
@@ -45,10 +46,6 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool 
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
     return true;
 }
-
-}  // namespace photon
-
-namespace photon {
 
 // How a camera path chose its current ray, for weighting the environment light the ray may
 // find against the light sample taken at the vertex it left (multiple importance sampling,
@@ -64,7 +61,8 @@ struct BounceSampling {
 // picking the environment among the lights, would have chosen d.
 inline float environmentBounceWeight(const Scene& scene, const BounceSampling& bounce, Vec3 d) {
     if (bounce.delta || !scene.environmentLight()) return 1.0f;
-    const float pLight = scene.environmentPickProbability() * scene.environmentLight()->pdfIncident(bounce.p, bounce.n, d);
+    const float pLight =
+        scene.environmentPickProbability() * scene.environmentLight()->pdfIncident(bounce.p, bounce.n, d);
     return powerHeuristic(bounce.pdf, pLight);
 }
 
@@ -75,7 +73,8 @@ inline float environmentBounceWeight(const Scene& scene, const BounceSampling& b
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
                            SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
-        if (scene.environmentLight()) L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
+        if (scene.environmentLight())
+            L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
         return false;
     }
     if (bounce.delta) L += beta * scene.emitted(hit, -ray.d);
