@@ -351,6 +351,17 @@ TEST(EnvironmentMapRender, LatLongOrientationAndRotation) {
     EXPECT_EQ(rotated->radianceFromDirection(Vec3(1, 0, 0)).x, 0.0f);
 }
 
+// SPPM's mean, with either way of finding direct light, within `tolerance` (relative) of
+// the path tracer's, per channel; render(kind, direct) gives a mean.
+void expectSppmMatchesPath(const std::function<Color(IntegratorKind, DirectLighting)>& render, float tolerance) {
+    const Color path = render(IntegratorKind::Path, DirectLighting::LightSampling);
+    for (DirectLighting direct : {DirectLighting::LightSampling, DirectLighting::Photons}) {
+        const Color sppm = render(IntegratorKind::Sppm, direct);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(sppm[k], path[k], tolerance * path[k]) << "direct " << int(direct) << ", channel " << k;
+    }
+}
+
 // A sky with a sun over a rough plastic sphere on a diffuse plane: SPPM (both ways of
 // finding direct light) agrees with the path tracer. On the plastic SPPM's camera path
 // stops on the diffuse lobe or follows the coat, whose rays reaching the sky are weighted
@@ -373,11 +384,7 @@ TEST(EnvironmentMapRender, SppmMatchesPathTracer) {
         setIntegrator(d, kind, kind == IntegratorKind::Path ? 128 : 24, 100000);
         return renderMean(d, 0, 0, 24, 24);
     };
-    const Color path = render(IntegratorKind::Path, DirectLighting::LightSampling);
-    for (DirectLighting direct : {DirectLighting::LightSampling, DirectLighting::Photons}) {
-        const Color sppm = render(IntegratorKind::Sppm, direct);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(sppm[k], path[k], 0.02f * path[k]) << int(direct) << " " << k;
-    }
+    expectSppmMatchesPath(render, 0.02f);
 }
 
 // A dark rough plastic sphere filling the view under a sky without a sun: where SPPM's
@@ -396,11 +403,7 @@ TEST(EnvironmentMapRender, SppmMatchesPathTracerThroughPlasticCoat) {
         setIntegrator(d, kind, kind == IntegratorKind::Path ? 256 : 32, 20000);
         return renderMean(d, 4, 4, 12, 12);
     };
-    const Color path = render(IntegratorKind::Path, DirectLighting::LightSampling);
-    for (DirectLighting direct : {DirectLighting::LightSampling, DirectLighting::Photons}) {
-        const Color sppm = render(IntegratorKind::Sppm, direct);
-        for (int k = 0; k < 3; ++k) EXPECT_NEAR(sppm[k], path[k], 0.03f * path[k]) << int(direct) << " " << k;
-    }
+    expectSppmMatchesPath(render, 0.03f);
 }
 
 // ---- the scene file ----
