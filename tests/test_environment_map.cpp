@@ -142,7 +142,11 @@ TEST_P(EnvironmentMapLayouts, BlackMapIsNeverSampled) {
     EXPECT_TRUE(isBlack(map.integral()));
 }
 
-INSTANTIATE_TEST_SUITE_P(Layouts, EnvironmentMapLayouts, ::testing::Values(Layout::LatLong, Layout::EqualArea));
+std::string layoutName(const ::testing::TestParamInfo<Layout>& info) {
+    return info.param == Layout::LatLong ? "LatLong" : "EqualArea";
+}
+INSTANTIATE_TEST_SUITE_P(Layouts, EnvironmentMapLayouts, ::testing::Values(Layout::LatLong, Layout::EqualArea),
+                         layoutName);
 
 // ---- the layouts' conventions ----
 
