@@ -1,6 +1,7 @@
-// Piecewise-constant densities on [0,1) and [0,1)^2, sampled by inverting their CDFs
-// (pbrt-v4 A.1 and A.5.5): the 2D one as a marginal density over rows times a conditional
-// density within each row. What environment maps sample their texels with.
+// Piecewise-constant densities on [0,1) and [0,1)^2, sampled by inverting their CDFs (as
+// pbrt-v4's PiecewiseConstant1D and PiecewiseConstant2D, appendix A): the 2D one as a
+// marginal density over rows times a conditional density within each row. What
+// environment maps sample their texels with.
 #pragma once
 #include <algorithm>
 #include <cstddef>
