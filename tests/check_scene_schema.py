@@ -110,6 +110,12 @@ INVALID = [
     ("matrix and scale", set_path("shapes", 3, "transform", {"matrix": [1] * 16, "scale": 2})),
     ("no shapes", set_path("shapes", [])),
     ("cone angle above 90", set_path("lights", 1, "cone_angle", 95)),
+    ("environment image with radiance", set_path("lights", 3, "image", "sky.exr")),
+    ("environment scale without image", set_path("lights", 3, "scale", 2)),
+    ("environment without radiance or image", delete("lights", 3, "radiance")),
+    ("unknown environment layout",
+     set_path("lights", 3, {"type": "environment", "image": "sky.exr", "layout": "cube"})),
+    ("negative environment scale", set_path("lights", 3, {"type": "environment", "image": "sky.exr", "scale": -1})),
     ("zero scale", set_path("shapes", 2, "transform", "scale", 0)),
 ]
 
