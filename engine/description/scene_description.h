@@ -70,12 +70,26 @@ struct ShapeDescription {
     Vec3 center;              // Kind::Sphere
     float radius = 0;         // Kind::Sphere
     uint32_t material = 0;    // index into SceneDescription::materials
-    Color emission{0.0f};     // W/(m^2 sr), emitted on the side the normal faces
+    Color emission{0.0f};     // W/(m^2 sr), emitted on the side the normal faces (times the texture)
+    std::shared_ptr<const Texture> emissionTexture;  // if set, multiplies emission at the point's uv
+    bool twoSidedEmission = false;  // emit on both sides alike
     bool flipNormals = false; // turn the surface inside out (e.g. a sphere lit from inside)
     // Coverage: where it is below 1 the surface lets that share of every ray through
     // (leaves, fences); 1 everywhere is an ordinary surface.
     FloatParam alpha{1.0f};
     std::string name;         // for messages: the JSON path it came from
+
+    float surfaceArea() const {
+        if (kind == Kind::Sphere) return 4.0f * kPi * radius * radius;
+        double sum = 0;
+        for (size_t t = 0; t < mesh.triangleCount(); ++t) sum += mesh.area(t);
+        return static_cast<float>(sum);
+    }
+    // Radiance leaving a point with texture coordinates uv, on an emitting side.
+    Color emissionAt(Vec2 uv) const { return emissionTexture ? emission * emissionTexture->lookup(uv) : emission; }
+    // The mean emitted radiance over the texture's unit square (its surface mean when the
+    // uvs cover the surface evenly): what the light's power and its choice use.
+    Color meanEmission() const { return emissionTexture ? emission * emissionTexture->average() : emission; }
 };
 
 // How an environment image covers the sphere of directions, in the light's own frame

@@ -1,6 +1,8 @@
-// Diffuse area lights on emissive shapes: radiance Le leaves the side the normal faces.
-// Points are sampled uniformly by area (a triangle picked in proportion to its area),
-// photons leave cosine-distributed, so each carries Le pi A (Jensen 2001, 5.1.3).
+// Diffuse area lights on emissive shapes: radiance Le(uv) (a colour, times a texture if any)
+// leaves the side the normal faces, or both sides of a two-sided light. Points are sampled
+// uniformly by area (a triangle picked in proportion to its area), photons leave
+// cosine-distributed from a side picked with probability 1 / sides, so each carries
+// Le(uv) pi A sides (Jensen 2001, 5.1.3).
 #include <algorithm>
 #include <vector>
 #include "math/frame.h"
@@ -13,12 +15,15 @@ namespace {
 
 struct SurfacePoint {
     Vec3 p, n;
+    Vec2 uv;  // only where the emission is textured
 };
 
 // Shared by every area light: direct-light samples and photons from uniform area samples.
 class AreaLight : public Light {
 public:
-    AreaLight(Color emission, float area) : emission_(emission), area_(area), power_(emission * (kPi * area)) {}
+    AreaLight(const ShapeDescription& shape, float area)
+        : shape_(shape), sides_(shape.twoSidedEmission ? 2.0f : 1.0f), area_(area),
+          power_(shape.meanEmission() * (kPi * area * sides_)) {}
     Color power() const override { return power_; }
 
     std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2 u) const override {
@@ -29,31 +34,41 @@ public:
         float dist = std::sqrt(dist2);
         Vec3 wi = toLight / dist;
         float cosLight = -dot(s.n, wi);
+        if (sides_ > 1) cosLight = std::abs(cosLight);
         if (cosLight <= 0) return std::nullopt;
         // Area density 1/A converted to solid angle: pdf = d^2 / (cos A).
-        return LightSample{wi, dist, emission_ * (cosLight * area_ / dist2)};
+        return LightSample{wi, dist, shape_.emissionAt(s.uv) * (cosLight * area_ / dist2), dist2 / (cosLight * area_)};
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         SurfacePoint s = samplePoint(uPosition);
-        return emitFrom(s.p, Frame::fromNormal(s.n), uDirection);
+        Frame frame = Frame::fromNormal(s.n);
+        if (sides_ > 1) {  // the back with probability 1/2, u.x reused for the direction
+            const bool back = uDirection.x >= 0.5f;
+            uDirection.x = std::min(back ? 2.0f * uDirection.x - 1.0f : 2.0f * uDirection.x, 0.99999994f);
+            if (back) frame = Frame::fromNormal(-s.n);
+        }
+        // A photon leaving p cosine-distributed about frame.n carries Le pi A sides: the
+        // light's whole power where the emission is uniform.
+        Color flux = shape_.emissionTexture ? shape_.emissionAt(s.uv) * (kPi * area_ * sides_) : power_;
+        return PhotonEmission{s.p, frame.toWorld(sampleCosineHemisphere(uDirection)), flux, frame.n};
     }
 
 protected:
+    // Uniform by area; n faces the (front) emitting side.
     virtual SurfacePoint samplePoint(Vec2 u) const = 0;
-    // A photon leaving p cosine-distributed about frame.n carries the light's whole power.
-    PhotonEmission emitFrom(Vec3 p, const Frame& frame, Vec2 uDirection) const {
-        return PhotonEmission{p, frame.toWorld(sampleCosineHemisphere(uDirection)), power_, frame.n};
-    }
-    Color emission_;
-    float area_;
+    // Photons of uniform emission from one side: what the photon walk emits in lanes.
+    bool uniformOneSided() const { return !shape_.emissionTexture && sides_ == 1; }
+
+    const ShapeDescription& shape_;
+    float sides_, area_;
     Color power_;
 };
 
 class MeshAreaLight final : public AreaLight {
 public:
     MeshAreaLight(const ShapeDescription& shape, const std::vector<double>& areas, double total)
-        : AreaLight(shape.emission, static_cast<float>(total)), triangles_(shape, areas, total) {}
+        : AreaLight(shape, static_cast<float>(total)), triangles_(shape, areas, total) {}
 
     static std::unique_ptr<Light> make(const ShapeDescription& shape) {
         std::vector<double> areas;
@@ -65,18 +80,17 @@ public:
         return std::make_unique<MeshAreaLight>(shape, areas, sum);
     }
 
-    std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
-        Vec3 p;
-        const EmissionTriangles::Triangle& tri = triangles_.samplePoint(uPosition, p);
-        return emitFrom(p, tri.frame, uDirection);
-    }
-    const EmissionTriangles* emissionTriangles() const override { return &triangles_; }
+    const EmissionTriangles* emissionTriangles() const override { return uniformOneSided() ? &triangles_ : nullptr; }
 
 private:
     SurfacePoint samplePoint(Vec2 u) const override {
-        Vec3 p;
-        const EmissionTriangles::Triangle& tri = triangles_.samplePoint(u, p);
-        return {p, tri.frame.n};
+        SurfacePoint s;
+        Vec2 barycentric;
+        size_t index;
+        const EmissionTriangles::Triangle& tri = triangles_.samplePoint(u, s.p, barycentric, index);
+        s.n = tri.frame.n;
+        if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(index, barycentric.x, barycentric.y);
+        return s;
     }
 
     EmissionTriangles triangles_;
@@ -85,16 +99,14 @@ private:
 class SphereAreaLight final : public AreaLight {
 public:
     explicit SphereAreaLight(const ShapeDescription& shape)
-        : AreaLight(shape.emission, 4.0f * kPi * shape.radius * shape.radius), center_(shape.center),
-          radius_(shape.radius), sign_(shape.flipNormals ? -1.0f : 1.0f) {}
+        : AreaLight(shape, 4.0f * kPi * shape.radius * shape.radius), sign_(shape.flipNormals ? -1.0f : 1.0f) {}
 
 private:
     SurfacePoint samplePoint(Vec2 u) const override {
         Vec3 n = sampleUniformSphere(u);
-        return {center_ + n * radius_, n * sign_};
+        return {shape_.center + n * shape_.radius, n * sign_, shape_.emissionTexture ? sphereUv(n) : Vec2{}};
     }
-    Vec3 center_;
-    float radius_, sign_;
+    float sign_;
 };
 
 }  // namespace

@@ -50,10 +50,19 @@ public:
 
     // A point uniform by area: u.x picks the triangle and, reused, with u.y the point.
     const Triangle& samplePoint(Vec2 u, Vec3& p) const {
-        const Triangle& tri = triangleAt(u.x);
+        Vec2 barycentric;
+        size_t index;
+        return samplePoint(u, p, barycentric, index);
+    }
+    // The same, also telling which triangle (its index in the mesh) and where on it, as
+    // Embree's barycentrics (u, v) of the second and third vertex (TriangleMesh::uvAt).
+    const Triangle& samplePoint(Vec2 u, Vec3& p, Vec2& barycentric, size_t& index) const {
+        index = std::min(indexAt(u.x), triangles_.size() - 1);
+        const Triangle& tri = triangles_[index];
         Vec2 b = sampleUniformTriangle({reuse(u.x, tri.cdfLow, tri.inverseWidth), u.y});
         // Barycentric b.x on the first vertex, b.y on the second.
-        p = tri.p0 + tri.e1 * b.y + tri.e2 * (1.0f - b.x - b.y);
+        barycentric = {b.y, 1.0f - b.x - b.y};
+        p = tri.p0 + tri.e1 * barycentric.x + tri.e2 * barycentric.y;
         return tri;
     }
 

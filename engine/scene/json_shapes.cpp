@@ -102,6 +102,29 @@ void checkFinite(const JsonObject& obj, const ShapeDescription& shape) {
     if (!ok) obj.fail("coordinates are too large (not finite after the transform)");
 }
 
+// "emission" (a colour or a texture of W/(m^2 sr)), times "emission_scale", on one side or
+// with "two_sided" on both.
+void readEmission(JsonObject& obj, LoadContext& ctx, ShapeDescription& shape) {
+    if (auto e = obj.optional("emission")) {
+        ColorParam p = readColorParam(*e, ctx, Range::nonNegative());
+        shape.emission = p.textured() ? Color(1.0f) : p.value;
+        shape.emissionTexture = p.texture;
+    }
+    shape.emission *= obj.number("emission_scale", 1.0f, Range::nonNegative());
+    shape.twoSidedEmission = obj.boolean("two_sided", false);
+}
+
+// "emission_power": P scales the emission so the light sends out P watts of luminance,
+// P = Y(mean emission) pi A sides (Y: Rec. 709 luminance), whatever its size: resizing a
+// lamp keeps the light it gives.
+void normaliseEmission(const JsonValue& value, ShapeDescription& shape) {
+    const float target = value.number(Range::nonNegative());
+    const float sides = shape.twoSidedEmission ? 2.0f : 1.0f;
+    const float current = luminance(shape.meanEmission()) * kPi * shape.surfaceArea() * sides;
+    if (!(current > 0)) value.fail("needs an emission that is not black on a shape with area");
+    shape.emission *= target / current;
+}
+
 ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     ShapeDescription shape;
@@ -111,7 +134,7 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     shape.kind = type == Sphere ? ShapeDescription::Kind::Sphere : ShapeDescription::Kind::Mesh;
     // The cheap fields first: a misspelt name should not wait for a mesh file to load.
     shape.material = readMaterialRef(obj.required("material"), ctx);
-    shape.emission = obj.vec3("emission", Color(0.0f), Range::nonNegative());
+    readEmission(obj, ctx, shape);
     shape.flipNormals = obj.boolean("flip_normals", false);
     if (auto alpha = obj.optional("alpha")) {
         shape.alpha = readFloatParam(*alpha, ctx, Range::closed(0, 1), ImageChannels::Alpha);
@@ -132,6 +155,7 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     if (transform && type == Sphere) transformSphere(*transform, *transformValue, shape);
     if (transform && type != Sphere) applyTransform(*transform, shape.mesh);
     checkFinite(obj, shape);
+    if (auto power = obj.optional("emission_power")) normaliseEmission(*power, shape);
     obj.finish();
     return shape;
 }

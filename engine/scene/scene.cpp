@@ -121,7 +121,7 @@ void Scene::prepareHitData() {
         const ShapeDescription& shape = shapes_[i];
         ShapeHitData& d = hitData_[i];
         d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
-        d.needsUv = materials_[shape.material]->textured();
+        d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture;
         if (shape.kind == ShapeDescription::Kind::Sphere) continue;
         const TriangleMesh& m = shape.mesh;
         d.faceNormals.reserve(m.triangleCount());
@@ -231,7 +231,7 @@ bool Scene::occluded(const Ray& ray) const {
 
 Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
     const ShapeDescription& s = shapes_[hit.shape];
-    return dot(hit.ng, w) > 0 ? s.emission : Color(0.0f);
+    return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt(hit.uv) : Color(0.0f);
 }
 
 Color Scene::environment(Vec3 d) const {

@@ -247,7 +247,7 @@ private:
             p.normal = side ? -c.normal : c.normal;
             p.area = area;
             p.albedo = albedo;
-            p.exitance = side ? Color(0.0f) : s.emission * kPi;
+            p.exitance = side && !s.twoSidedEmission ? Color(0.0f) : s.emissionAt(uv) * kPi;
             mesh_.patches_.push_back(p);
         }
     }

@@ -1,0 +1,126 @@
+// Area lights beyond a uniform one-sided surface: two-sided emission, textured emission
+// and the emission_power normalisation, against their definitions and against the path
+// tracer (SPPM on a scene lit by both kinds).
+#include <gtest/gtest.h>
+#include "math/rng.h"
+#include "materials/material.h"
+#include "scene/scene.h"
+#include "scene_builders.h"
+#include "scene_loader_fixture.h"
+#include "test_support.h"
+#include "texture/textures.h"
+
+namespace photon {
+namespace {
+
+// A 1 x 1 quad in the plane y = 1 facing down (-y), emitting Le; u along +x, v along +z.
+ShapeDescription panel(Color le) {
+    ShapeDescription s = test::quad({-0.5f, 1, -0.5f}, {1, 0, 0}, {0, 0, 1}, 0, le);
+    return s;
+}
+
+std::shared_ptr<const Scene> sceneWith(ShapeDescription light) {
+    SceneDescription d;
+    d.camera = test::camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
+    d.materials.push_back(makeDiffuse(Color(0.5f)));
+    d.shapes.push_back(std::move(light));
+    return Scene::build(std::move(d));
+}
+
+TEST(AreaLightKinds, TwoSidedEmitsAlikeOnBothSides) {
+    ShapeDescription s = panel(Color(2.0f));
+    s.twoSidedEmission = true;
+    auto scene = sceneWith(s);
+    const Light& light = scene->lights().light(0);
+    EXPECT_NEAR(light.power().x, 2.0f * kPi * 1.0f * 2.0f, 1e-5);  // Le pi A sides
+    // Radiance seen from above and below.
+    SurfaceHit hit;
+    ASSERT_TRUE(scene->intersect(Ray{{0, 3, 0}, {0, -1, 0}}, hit));
+    EXPECT_EQ(scene->emitted(hit, {0, 1, 0}), Color(2.0f));
+    ASSERT_TRUE(scene->intersect(Ray{{0, -3, 0}, {0, 1, 0}}, hit));
+    EXPECT_EQ(scene->emitted(hit, {0, -1, 0}), Color(2.0f));
+    // Light samples reach points on either side; photons leave half up, half down, each
+    // with the whole power.
+    EXPECT_TRUE(light.sampleIncident({0, 3, 0}, {0, -1, 0}, {0.3f, 0.6f}).has_value());
+    EXPECT_TRUE(light.sampleIncident({0, -3, 0}, {0, 1, 0}, {0.3f, 0.6f}).has_value());
+    Rng rng(1, 0, 0, StreamPurpose::Test);
+    int up = 0, n = 100000;
+    for (int i = 0; i < n; ++i) {
+        auto e = light.emitPhoton({rng.uniform(), rng.uniform()}, {rng.uniform(), rng.uniform()});
+        ASSERT_TRUE(e);
+        EXPECT_EQ(e->flux, light.power());
+        EXPECT_GT(dot(e->direction, e->normal), 0.0f);
+        up += e->direction.y > 0;
+    }
+    EXPECT_NEAR(double(up) / n, 0.5, 0.005);
+    EXPECT_EQ(light.emissionTriangles(), nullptr);  // not the one-sided lanes' kind
+}
+
+TEST(AreaLightKinds, TexturedEmissionFollowsTheTexture) {
+    ShapeDescription s = panel(Color(3.0f));
+    // Cells of a 2 x 1 checkerboard in u: x < 0 even (black), x > 0 odd.
+    s.emissionTexture = makeCheckerboardTexture(Color(0.0f), Color(1.0f, 0.5f, 0.25f), UvMapping{{2, 1}, {0, 0}});
+    auto scene = sceneWith(s);
+    const Light& light = scene->lights().light(0);
+    // Mean emission 3 x (0.5, 0.25, 0.125) over the unit area, one side.
+    EXPECT_NEAR(light.power().x, 1.5f * kPi, 1e-3);
+    EXPECT_NEAR(light.power().z, 0.375f * kPi, 1e-3);
+    SurfaceHit hit;
+    ASSERT_TRUE(scene->intersect(Ray{{-0.25f, -3, 0}, {0, 1, 0}}, hit));  // u = 0.25: even cell
+    EXPECT_EQ(scene->emitted(hit, {0, -1, 0}), Color(0.0f));
+    ASSERT_TRUE(scene->intersect(Ray{{0.25f, -3, 0}, {0, 1, 0}}, hit));  // u = 0.75: odd cell
+    EXPECT_VEC3_NEAR(scene->emitted(hit, {0, -1, 0}), Color(3.0f, 1.5f, 0.75f), 1e-6);
+    // Photons only from the odd half, and their mean flux is the power.
+    Rng rng(2, 0, 0, StreamPurpose::Test);
+    double sum = 0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        auto e = light.emitPhoton({rng.uniform(), rng.uniform()}, {rng.uniform(), rng.uniform()});
+        ASSERT_TRUE(e);
+        if (e->flux.x > 0) EXPECT_GT(e->origin.x, -1e-4f);
+        sum += e->flux.x;
+    }
+    EXPECT_NEAR(sum / n, light.power().x, 0.01 * light.power().x);
+}
+
+// SPPM against the path tracer with a two-sided, textured light hanging in the Cornell box
+// (lowered from the ceiling: in a gap narrower than the gather radius, SPPM would blur the
+// bright light trapped above the panel onto the panel's face).
+TEST(AreaLightKinds, SppmAgreesWithThePathTracer) {
+    SceneDescription d = test::cornellBoxWith(makeDiffuse(Color(0.6f)), 32);
+    for (ShapeDescription& s : d.shapes) {
+        if (isBlack(s.emission)) continue;
+        s.emissionTexture = makeCheckerboardTexture(Color(0.2f), Color(1.0f), UvMapping{{4, 4}, {0, 0}});
+        s.twoSidedEmission = true;
+        for (Vec3& p : s.mesh.positions) p.y -= 0.4f;
+    }
+    test::PathAndSppmMeans m = test::renderPathAndSppm(d, 1024, 128, 100000);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(m.sppm[c], m.path[c], 0.02f * m.path[c]) << "channel " << c;
+    std::printf("  path %.5f %.5f %.5f  sppm %.5f %.5f %.5f\n", m.path.x, m.path.y, m.path.z, m.sppm.x, m.sppm.y, m.sppm.z);
+}
+
+TEST(AreaLightKinds, SceneJsonEmissionFields) {
+    using namespace test;
+    Json doc = fullScene();
+    Json& lamp = doc["shapes"][5];  // a 0.5 x 0.5 quad
+    lamp["emission"] = Json::parse(R"({"type": "checkerboard", "even": [1, 1, 1], "odd": [3, 3, 3]})");
+    lamp["two_sided"] = true;
+    lamp["emission_power"] = 10;
+    SceneDescription s = load(doc);
+    const ShapeDescription& shape = s.shapes[5];
+    EXPECT_TRUE(shape.twoSidedEmission);
+    ASSERT_TRUE(shape.emissionTexture);
+    // P = Y(mean) pi A sides = 10 W with A = 0.25, two sides.
+    EXPECT_NEAR(luminance(shape.meanEmission()) * kPi * 0.25f * 2, 10.0f, 1e-3);
+    doc["shapes"][5]["emission"] = Json::parse("[2, 2, 2]");
+    doc["shapes"][5].erase("emission_power");
+    doc["shapes"][5]["emission_scale"] = 4;
+    EXPECT_EQ(load(doc).shapes[5].emission, Color(8.0f));
+    expectError([](Json& d) { d["shapes"][0]["emission_power"] = 5; }, "shapes[0].emission_power",
+                "needs an emission that is not black on a shape with area");
+    expectError([](Json& d) { d["shapes"][5]["emission"] = Json::parse("[-1, 0, 0]"); }, "shapes[5].emission[0]",
+                "must be >= 0");
+}
+
+}  // namespace
+}  // namespace photon
