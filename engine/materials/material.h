@@ -75,6 +75,8 @@ public:
     // True if the non-delta lobes also scatter light to the far side of the surface
     // (diffuse transmission): light arriving from behind then counts where it is gathered.
     virtual bool transmits() const { return false; }
+    // A tangent-space normal map (materials/normal_map.h) that bends the shading normal, or none.
+    virtual const Texture* normalMap() const { return nullptr; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 
@@ -119,6 +121,9 @@ MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
 // (1 - amount) a + amount b. Throws std::invalid_argument if one part is one-sided (a
 // dielectric) and the other two-sided.
 MaterialPtr makeMix(MaterialPtr a, MaterialPtr b, FloatParam amount);
+// `base` with its shading normal bent by a tangent-space normal map (RGB = (n + 1) / 2 in the
+// frame x = dp/du, y = n x (dp/du), z = n; read without the sRGB curve).
+MaterialPtr makeNormalMapped(MaterialPtr base, std::shared_ptr<const Texture> normalMap);
 // Diffuse base under a dielectric coat with internal reflections summed and the rough
 // coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
 MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);

@@ -99,6 +99,8 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
     }
+    // Any material may bend its shading normal by a tangent-space map, read as stored.
+    if (auto map = obj.optional("normal_map")) m = makeNormalMapped(m, loadImage(*map, ImageChannels::Data, ctx));
     obj.finish();
     return m;
 }

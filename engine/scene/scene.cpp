@@ -229,6 +229,25 @@ bool Scene::occluded(const Ray& ray) const {
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
 }
 
+Vec3 Scene::tangentAt(const SurfaceHit& hit) const {
+    const ShapeDescription& s = shapes_[hit.shape];
+    if (s.kind == ShapeDescription::Kind::Sphere) {
+        // u = 0.5 + atan2(n.z, n.x) / 2 pi (sphereUv): p moves along (-n.z, 0, n.x) as u grows.
+        Vec3 n = normalize(hit.p - s.center);
+        return {-n.z, 0, n.x};
+    }
+    const TriangleMesh& m = s.mesh;
+    if (m.uvs.empty()) return {};
+    const uint32_t* v = &m.indices[3 * hit.primitive];
+    // Solve e1 = du1 dpdu + dv1 dpdv, e2 = du2 dpdu + dv2 dpdv for dpdu (pbrt-v4 sec. 6.5.3).
+    Vec3 e1 = m.positions[v[1]] - m.positions[v[0]], e2 = m.positions[v[2]] - m.positions[v[0]];
+    Vec2 d1 = {m.uvs[v[1]].x - m.uvs[v[0]].x, m.uvs[v[1]].y - m.uvs[v[0]].y};
+    Vec2 d2 = {m.uvs[v[2]].x - m.uvs[v[0]].x, m.uvs[v[2]].y - m.uvs[v[0]].y};
+    float det = d1.x * d2.y - d1.y * d2.x;
+    if (!(std::abs(det) > 1e-12f)) return {};
+    return (e1 * d2.y - e2 * d1.y) / det;
+}
+
 Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
     const ShapeDescription& s = shapes_[hit.shape];
     return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt(hit.uv) : Color(0.0f);

@@ -118,6 +118,10 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
         // Coverage is stored linearly in every format.
         texels = toColors(readPixels<float>(*in, first, 1, OIIO::TypeDesc::FLOAT), 1,
                           [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f; });
+    } else if (which == ImageChannels::Data) {
+        // Vectors, not colours: integer formats arrive normalised to [0, 1], undecoded.
+        texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
+                          [](float v) { return std::isfinite(v) ? v : 0.0f; });
     } else if (spec.format == OIIO::TypeDesc::UINT8) {
         const auto& table = srgb8Table();
         texels = toColors(readPixels<uint8_t>(*in, first, channels, OIIO::TypeDesc::UINT8), channels,

@@ -19,6 +19,7 @@ std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file)
 enum class ImageChannels {
     Color,  // RGB (a grey image replicated); alpha ignored
     Alpha,  // the alpha channel in all three (cutouts); an image without one reads its grey/RGB mean
+    Data,   // RGB as stored, integers scaled to [0, 1] without the sRGB curve (normal maps)
 };
 
 class ImageTexture final : public Texture {

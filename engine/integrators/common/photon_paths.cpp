@@ -303,8 +303,14 @@ private:
             return kSpecularWaits;
         }
         ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
-        if (!sp.material->isDeltaOnly() && depth >= settings_.firstArrivalDepth)
-            sink_.arrive({sp.hit.p, sp.hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+        if (!sp.material->isDeltaOnly() && depth >= settings_.firstArrivalDepth) {
+            // Photons measure flux through the geometric surface, |wi.ng|; a bent shading
+            // normal reflects in proportion to |wi.ns| instead (what the camera side's light
+            // samples weigh by), so the arrival carries their ratio (Veach 1997, sec. 5.3).
+            Color beta = L.beta(i);
+            if (sp.material->normalMap()) beta *= shadingCosineRatio(sp.hit, wi);
+            sink_.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, L.onlySpecular[i] != 0});
+        }
         if (!last) bounce(i, sp, wi);
         return 0;
     }

@@ -1,5 +1,6 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
+#include "materials/normal_map.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "scene/scene.h"
@@ -28,8 +29,17 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
     const Material& m = scene.material(hit);
     ShadingPoint sp{hit, &m, {}, m.inputsAt(hit.uv)};
     turnTowardViewer(m, sp.hit, wo);
+    if (const Texture* map = m.normalMap())
+        sp.hit.ns = mappedNormal(*map, hit.uv, sp.hit.ns, sp.hit.ng, scene.tangentAt(hit));
     sp.frame = Frame::fromNormal(sp.hit.ns);
     return sp;
+}
+
+// |w.ns| / |w.ng|: how much more a bent shading normal sees of light along w than the
+// surface does; 0 for grazing light, where the ratio would explode.
+inline float shadingCosineRatio(const SurfaceHit& hit, Vec3 w) {
+    float cosG = std::abs(dot(w, hit.ng));
+    return cosG > 1e-3f ? std::abs(dot(w, hit.ns)) / cosG : 0.0f;
 }
 
 // Casts a camera path's ray; returns whether it hit. Light the ray reaches directly (the
