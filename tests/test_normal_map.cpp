@@ -81,10 +81,47 @@ TEST(NormalMap, SceneJsonReadsTheMapAsStored) {
     Json doc = fullScene();
     doc["materials"]["white"]["normal_map"] = "textures/bumps.png";
     SceneDescription s = load(doc);
-    const Texture* map = s.materials[0]->normalMap();
-    ASSERT_NE(map, nullptr);
-    EXPECT_VEC3_NEAR(map->lookup({0.5f, 0.5f}), Color(128 / 255.0f, 128 / 255.0f, 1.0f), 1e-6);  // not sRGB-decoded
+    ASSERT_TRUE(s.materials[0]->bendsNormal());
+    // 128/255 read as stored is 0.502 (-> 0.004), not the sRGB-decoded 0.216 (-> -0.57).
+    const Vec3 n(0, 1, 0);
+    Vec3 bent = s.materials[0]->bentNormal({0.5f, 0.5f}, n, n, SurfaceTangents{{1, 0, 0}, {0, 0, -1}});
+    EXPECT_VEC3_NEAR(bent, n, 0.01f);
     EXPECT_VEC3_NEAR(s.materials[0]->tint().value, Vec3(0.725f, 0.71f, 0.68f), 0);
+}
+
+}  // namespace
+}  // namespace photon
+
+namespace photon {
+namespace {
+
+// A height field rising by s per unit of u on a plane whose u runs along +x at 2 scene
+// units per unit of u: the bumped normal is that of a slope rising s/2 per unit of x.
+TEST(BumpMap, SlopeOfTheHeightFieldTiltsTheNormal) {
+    const float s = 0.6f;
+    // h(u, v) = s u, within the texture's unit square (a 2-texel ramp, bilinear between
+    // the texel centres at u = 1/4 and 3/4: h = s/4 + (u - 1/4) s).
+    auto ramp = std::make_shared<ImageTexture>(2, 1, std::vector<Color>{Color(s * 0.25f), Color(s * 0.75f)});
+    SurfaceTangents t{{2, 0, 0}, {0, 0, -2}};
+    const Vec3 n(0, 1, 0);
+    Vec3 bumped = bumpedNormal(FloatParam(ramp), {0.5f, 0.5f}, n, n, t);
+    EXPECT_VEC3_NEAR(bumped, normalize(Vec3(-s / 2, 1, 0)), 1e-4);
+    // A constant height changes nothing; without tangents nothing can be said.
+    EXPECT_VEC3_NEAR(bumpedNormal(FloatParam(0.3f), {0.5f, 0.5f}, n, n, t), n, 0);
+    EXPECT_VEC3_NEAR(bumpedNormal(FloatParam(ramp), {0.5f, 0.5f}, n, n, SurfaceTangents{}), n, 0);
+}
+
+TEST(BumpMap, SceneJson) {
+    using namespace test;
+    writeImage<uint8_t>(fixture().scene / "textures/bumps.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 255});
+    Json doc = fullScene();
+    doc["materials"]["white"]["bump"] = Json::parse(R"({"type": "checkerboard", "even": 0, "odd": 0.01})");
+    SceneDescription s = load(doc);
+    EXPECT_TRUE(s.materials[0]->bendsNormal());
+    expectError([](Json& d) {
+        d["materials"]["white"]["bump"] = 0.1;
+        d["materials"]["white"]["normal_map"] = "textures/bumps.png";
+    }, "materials.white.bump", "cannot be given with \"normal_map\"");
 }
 
 }  // namespace

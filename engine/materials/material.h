@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include "materials/normal_map.h"
 #include "math/frame.h"
 #include <photon/vec.h>
 #include "texture/color_param.h"
@@ -75,8 +76,10 @@ public:
     // True if the non-delta lobes also scatter light to the far side of the surface
     // (diffuse transmission): light arriving from behind then counts where it is gathered.
     virtual bool transmits() const { return false; }
-    // A tangent-space normal map (materials/normal_map.h) that bends the shading normal, or none.
-    virtual const Texture* normalMap() const { return nullptr; }
+    // True if the material bends its shading normal by a normal or bump map
+    // (materials/normal_map.h); bentNormal then gives it at uv for the unbent n.
+    virtual bool bendsNormal() const { return false; }
+    virtual Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const { return n; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 
@@ -124,6 +127,9 @@ MaterialPtr makeMix(MaterialPtr a, MaterialPtr b, FloatParam amount);
 // `base` with its shading normal bent by a tangent-space normal map (RGB = (n + 1) / 2 in the
 // frame x = dp/du, y = n x (dp/du), z = n; read without the sRGB curve).
 MaterialPtr makeNormalMapped(MaterialPtr base, std::shared_ptr<const Texture> normalMap);
+// `base` with its shading normal bent by the height field `height` (scene units) along the
+// normal: a bump map.
+MaterialPtr makeBumpMapped(MaterialPtr base, FloatParam height);
 // Diffuse base under a dielectric coat with internal reflections summed and the rough
 // coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
 MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);

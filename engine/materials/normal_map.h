@@ -1,9 +1,43 @@
-// Tangent-space normal maps: the shading normal a map's texel stands for.
+// Normal and bump maps: the shading normal a map's texel, or a height field's slope, stands
+// for.
 #pragma once
 #include "math/frame.h"
+#include "texture/float_param.h"
 #include "texture/texture.h"
 
 namespace photon {
+
+// How the surface point moves with its texture coordinates, dp/du and dp/dv (zero where the
+// surface has no uv parameterisation that says, e.g. a mesh without uvs).
+struct SurfaceTangents {
+    Vec3 dpdu, dpdv;
+};
+
+// The step in uv over which a height field's slope is measured (pbrt-v4 sec. 10.5.2 uses
+// the same when a ray carries no differentials).
+constexpr float kBumpStep = 0.0005f;
+
+// A normal on the geometric side of the surface, or n where it is not (it would let light
+// through the surface).
+inline Vec3 keptAbove(Vec3 bent, Vec3 n, Vec3 ng) {
+    float len2 = lengthSquared(bent);
+    if (!(len2 > 0)) return n;
+    bent = bent / std::sqrt(len2);
+    return dot(bent, ng) > 1e-3f ? bent : n;
+}
+
+// The normal of the surface displaced by height(uv) along n (Blinn 1978; pbrt-v4 sec. 10.5.2,
+// without the terms in dn/du, which are zero on flat triangles): dp/du' = dp/du + dh/du n,
+// likewise in v, and n' = dp/du' x dp/dv', on n's side. Heights are in scene units.
+inline Vec3 bumpedNormal(const FloatParam& height, Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& t) {
+    if (lengthSquared(t.dpdu) == 0 || lengthSquared(t.dpdv) == 0) return n;
+    const float h = height.eval(uv);
+    const float dhdu = (height.eval({uv.x + kBumpStep, uv.y}) - h) / kBumpStep;
+    const float dhdv = (height.eval({uv.x, uv.y + kBumpStep}) - h) / kBumpStep;
+    Vec3 bent = cross(t.dpdu + n * dhdu, t.dpdv + n * dhdv);
+    if (dot(bent, n) < 0) bent = -bent;
+    return keptAbove(bent, n, ng);
+}
 
 // The map's value at uv, RGB = (t + 1) / 2 for a unit vector t in the frame x = dp/du made
 // perpendicular to n, y = n x x, z = n (the common "OpenGL" convention; pbrt-v4 sec. 10.5.3
@@ -16,11 +50,7 @@ inline Vec3 mappedNormal(const Texture& map, Vec2 uv, Vec3 n, Vec3 ng, Vec3 dpdu
     Vec3 x = dpdu - n * dot(n, dpdu);
     float len2 = lengthSquared(x);
     x = len2 > 1e-20f ? x / std::sqrt(len2) : Frame::fromNormal(n).s;
-    Vec3 bent = x * t.x + cross(n, x) * t.y + n * t.z;
-    float bentLen2 = lengthSquared(bent);
-    if (!(bentLen2 > 0)) return n;
-    bent = bent / std::sqrt(bentLen2);
-    return dot(bent, ng) > 1e-3f ? bent : n;
+    return keptAbove(x * t.x + cross(n, x) * t.y + n * t.z, n, ng);
 }
 
 }  // namespace photon

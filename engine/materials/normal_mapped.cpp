@@ -1,5 +1,5 @@
-// A material seen through a normal map: its BSDF unchanged, evaluated in the frame of the
-// bent shading normal (integrators/common/shading.h applies the map). It reports no
+// A material seen through a normal or bump map: its BSDF unchanged, evaluated in the frame
+// of the bent shading normal (integrators/common/shading.h asks for it). It reports no
 // Lambertian or smooth-specular shortcut, so that photons, too, meet it one by one through
 // the bent frame rather than in the photon walk's lanes, which use the unbent normal.
 #include "materials/material.h"
@@ -9,8 +9,9 @@ namespace {
 
 class NormalMapped final : public Material {
 public:
-    NormalMapped(MaterialPtr base, std::shared_ptr<const Texture> map)
-        : Material(base->tint()), base_(std::move(base)), map_(std::move(map)) {}
+    // One of the two: a tangent-space normal map, or a height field.
+    NormalMapped(MaterialPtr base, std::shared_ptr<const Texture> map, FloatParam height)
+        : Material(base->tint()), base_(std::move(base)), map_(std::move(map)), height_(std::move(height)) {}
 
     unsigned lobes() const override { return base_->lobes(); }
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes) const override {
@@ -27,17 +28,25 @@ public:
     bool textured() const override { return true; }
     bool twoSided() const override { return base_->twoSided(); }
     bool transmits() const override { return base_->transmits(); }
-    const Texture* normalMap() const override { return map_.get(); }
+    bool bendsNormal() const override { return true; }
+    Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
+        return map_ ? mappedNormal(*map_, uv, n, ng, t.dpdu) : bumpedNormal(height_, uv, n, ng, t);
+    }
 
 private:
     MaterialPtr base_;
     std::shared_ptr<const Texture> map_;
+    FloatParam height_;
 };
 
 }  // namespace
 
 MaterialPtr makeNormalMapped(MaterialPtr base, std::shared_ptr<const Texture> normalMap) {
-    return std::make_shared<NormalMapped>(std::move(base), std::move(normalMap));
+    return std::make_shared<NormalMapped>(std::move(base), std::move(normalMap), FloatParam());
+}
+
+MaterialPtr makeBumpMapped(MaterialPtr base, FloatParam height) {
+    return std::make_shared<NormalMapped>(std::move(base), nullptr, std::move(height));
 }
 
 }  // namespace photon

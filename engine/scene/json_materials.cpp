@@ -99,8 +99,14 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
     }
-    // Any material may bend its shading normal by a tangent-space map, read as stored.
-    if (auto map = obj.optional("normal_map")) m = makeNormalMapped(m, loadImage(*map, ImageChannels::Data, ctx));
+    // Any material may bend its shading normal by a tangent-space map, read as stored, or
+    // by a bump map's heights (scene units).
+    auto map = obj.optional("normal_map");
+    if (map) m = makeNormalMapped(m, loadImage(*map, ImageChannels::Data, ctx));
+    if (auto bump = obj.optional("bump")) {
+        if (map) bump->fail("cannot be given with \"normal_map\"");
+        m = makeBumpMapped(m, readFloatParam(*bump, ctx, Range::any()));
+    }
     obj.finish();
     return m;
 }

@@ -229,23 +229,28 @@ bool Scene::occluded(const Ray& ray) const {
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
 }
 
-Vec3 Scene::tangentAt(const SurfaceHit& hit) const {
+SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
     const ShapeDescription& s = shapes_[hit.shape];
     if (s.kind == ShapeDescription::Kind::Sphere) {
-        // u = 0.5 + atan2(n.z, n.x) / 2 pi (sphereUv): p moves along (-n.z, 0, n.x) as u grows.
+        // p = c + r (cos l cos f, sin l, cos l sin f) with u = 0.5 + f / 2 pi and
+        // v = 0.5 + l / pi (sphereUv); degenerate at the poles.
         Vec3 n = normalize(hit.p - s.center);
-        return {-n.z, 0, n.x};
+        float cosLat = std::sqrt(std::max(0.0f, 1.0f - n.y * n.y));
+        if (cosLat < 1e-4f) return {};
+        const float r = s.radius;
+        return {Vec3(-n.z, 0, n.x) * (2.0f * kPi * r),
+                Vec3(-n.y * n.x / cosLat, cosLat, -n.y * n.z / cosLat) * (kPi * r)};
     }
     const TriangleMesh& m = s.mesh;
     if (m.uvs.empty()) return {};
     const uint32_t* v = &m.indices[3 * hit.primitive];
-    // Solve e1 = du1 dpdu + dv1 dpdv, e2 = du2 dpdu + dv2 dpdv for dpdu (pbrt-v4 sec. 6.5.3).
+    // Solve e1 = du1 dpdu + dv1 dpdv, e2 = du2 dpdu + dv2 dpdv (pbrt-v4 sec. 6.5.3).
     Vec3 e1 = m.positions[v[1]] - m.positions[v[0]], e2 = m.positions[v[2]] - m.positions[v[0]];
     Vec2 d1 = {m.uvs[v[1]].x - m.uvs[v[0]].x, m.uvs[v[1]].y - m.uvs[v[0]].y};
     Vec2 d2 = {m.uvs[v[2]].x - m.uvs[v[0]].x, m.uvs[v[2]].y - m.uvs[v[0]].y};
     float det = d1.x * d2.y - d1.y * d2.x;
     if (!(std::abs(det) > 1e-12f)) return {};
-    return (e1 * d2.y - e2 * d1.y) / det;
+    return {(e1 * d2.y - e2 * d1.y) / det, (e2 * d1.x - e1 * d2.x) / det};
 }
 
 Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {

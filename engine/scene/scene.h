@@ -114,10 +114,8 @@ public:
     const Material& material(const SurfaceHit& hit) const { return *materials_[shapes_[hit.shape].material]; }
     uint32_t materialIndex(const SurfaceHit& hit) const { return shapes_[hit.shape].material; }
     const Material& materialAt(uint32_t index) const { return *materials_[index]; }
-    // The direction in which u grows at the hit, dp/du (not normalised; zero where the
-    // surface has no uv parameterisation that says, e.g. a mesh without uvs): the tangent
-    // frame of normal maps.
-    Vec3 tangentAt(const SurfaceHit& hit) const;
+    // dp/du and dp/dv at the hit: the tangent frame of normal and bump maps.
+    SurfaceTangents tangentsAt(const SurfaceHit& hit) const;
     // Radiance emitted from the hit toward direction w (zero on the back side).
     Color emitted(const SurfaceHit& hit, Vec3 w) const;
     // Radiance arriving along a ray that leaves the scene in direction d.

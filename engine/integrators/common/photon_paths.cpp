@@ -308,7 +308,7 @@ private:
             // normal reflects in proportion to |wi.ns| instead (what the camera side's light
             // samples weigh by), so the arrival carries their ratio (Veach 1997, sec. 5.3).
             Color beta = L.beta(i);
-            if (sp.material->normalMap()) beta *= shadingCosineRatio(sp.hit, wi);
+            if (sp.material->bendsNormal()) beta *= shadingCosineRatio(sp.hit, wi);
             sink_.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, L.onlySpecular[i] != 0});
         }
         if (!last) bounce(i, sp, wi);

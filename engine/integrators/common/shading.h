@@ -1,6 +1,5 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
-#include "materials/normal_map.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "scene/scene.h"
@@ -29,8 +28,7 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
     const Material& m = scene.material(hit);
     ShadingPoint sp{hit, &m, {}, m.inputsAt(hit.uv)};
     turnTowardViewer(m, sp.hit, wo);
-    if (const Texture* map = m.normalMap())
-        sp.hit.ns = mappedNormal(*map, hit.uv, sp.hit.ns, sp.hit.ng, scene.tangentAt(hit));
+    if (m.bendsNormal()) sp.hit.ns = m.bentNormal(hit.uv, sp.hit.ns, sp.hit.ng, scene.tangentsAt(hit));
     sp.frame = Frame::fromNormal(sp.hit.ns);
     return sp;
 }
