@@ -1,5 +1,7 @@
-// Rough metal: GGX microfacet reflection (Walter et al. 2007) with Schlick's Fresnel
-// from the tint F0; roughness 0 becomes an ideal mirror with the same Fresnel.
+// Rough metal: GGX microfacet reflection (Walter et al. 2007), isotropic or anisotropic, with
+// either Schlick's Fresnel from the tint F0 or the exact Fresnel of a complex index of
+// refraction eta + i k (pbrt-v4's ConductorBxDF). Smooth enough in both directions, it
+// becomes an ideal mirror with the same Fresnel.
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/microfacet.h"
@@ -7,24 +9,33 @@
 namespace photon {
 namespace {
 
+// The lobe's GGX distribution. A lobe that is not smooth keeps each alpha at kSmoothAlpha or
+// more, so that a very narrow direction of an anisotropic lobe stays within float range
+// (pbrt-v4's TrowbridgeReitzDistribution does the same).
+GGX microfacetDistribution(GgxAlpha alpha) {
+    GGX ggx(alpha.x, alpha.y);
+    if (ggx.smooth()) return ggx;
+    return GGX(std::max(alpha.x, kSmoothAlpha), std::max(alpha.y, kSmoothAlpha));
+}
+
 class Conductor final : public Material {
 public:
-    Conductor(ColorParam reflectance, float roughness)
-        : Material(std::move(reflectance)), ggx_{roughnessToAlpha(roughness)} {}
+    Conductor(ColorParam reflectance, std::optional<ComplexIor> ior, GgxAlpha alpha)
+        : Material(std::move(reflectance)), ior_(ior), ggx_(microfacetDistribution(alpha)) {}
 
-    unsigned lobes() const override { return smooth() ? kDeltaLobe : kGlossyLobe; }
+    unsigned lobes() const override { return ggx_.smooth() ? kDeltaLobe : kGlossyLobe; }
 
     // f = F(wo.h) D G2 / (4 cos_o cos_i), Torrance-Sparrow with the height-correlated
     // Smith G2 (see microfacet.h). Zero unless wo and wi are both above the surface.
     Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
-        if (smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
+        if (ggx_.smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnelSchlick(tint, dot(wo, *h)) * ggx_.reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), tint) * ggx_.reflectionNoFresnel(wo, wi, *h);
     }
 
     float pdf(Vec3 wo, Vec3 wi, Color, unsigned lobes) const override {
-        if (smooth() || !(lobes & kGlossyLobe)) return 0;
+        if (ggx_.smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
         return h ? ggx_.reflectionPdf(wo, *h) : 0.0f;
     }
@@ -32,7 +43,7 @@ public:
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, Color tint, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
-        if (smooth()) return sampleMirror(wo, tint);
+        if (ggx_.smooth()) return sampleMirror(wo, tint);
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
         Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
@@ -42,26 +53,39 @@ public:
     }
 
 private:
-    bool smooth() const { return ggx_.alpha < kSmoothAlpha; }
+    // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h.
+    Color fresnel(float cosTheta, Color tint) const {
+        return ior_ ? fresnelConductor(cosTheta, ior_->eta, ior_->k) : fresnelSchlick(tint, cosTheta);
+    }
 
     // The alpha -> 0 limit of the microfacet lobe: all microfacets face n, so h = n,
-    // G = 1 and the reflectance is the Schlick Fresnel at the incidence angle.
-    static BSDFSample sampleMirror(Vec3 wo, Color tint) {
+    // G = 1 and the reflectance is the Fresnel term at the incidence angle.
+    BSDFSample sampleMirror(Vec3 wo, Color tint) const {
         BSDFSample s;
         s.wi = Vec3(-wo.x, -wo.y, wo.z);
-        s.weight = fresnelSchlick(tint, wo.z);
+        s.weight = fresnel(wo.z, tint);
         s.pdf = 1;
         s.delta = true;
         return s;
     }
 
+    std::optional<ComplexIor> ior_;  // none: Schlick's Fresnel from the tint
     GGX ggx_;
 };
 
 }  // namespace
 
 MaterialPtr makeConductor(ColorParam reflectance, float roughness) {
-    return std::make_shared<Conductor>(std::move(reflectance), roughness);
+    float alpha = roughnessToAlpha(roughness);
+    return makeConductor(std::move(reflectance), GgxAlpha{alpha, alpha});
+}
+
+MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha) {
+    return std::make_shared<Conductor>(std::move(reflectance), std::nullopt, alpha);
+}
+
+MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha) {
+    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), ior, alpha);
 }
 
 }  // namespace photon

@@ -89,6 +89,20 @@ MaterialPtr makeDielectric(float ior);
 // GGX microfacet conductor with Schlick's Fresnel from `reflectance` (F0);
 // alpha = roughness^2 (Burley 2012). roughness 0 is a perfect mirror.
 MaterialPtr makeConductor(ColorParam reflectance, float roughness);
+// GGX alphas of an anisotropic lobe: x along the shading frame's s axis, y along its t axis
+// (math/frame.h). Both below kSmoothAlpha (materials/microfacet.h) make a perfect mirror.
+struct GgxAlpha {
+    float x, y;
+};
+// The same conductor with anisotropic roughness.
+MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha);
+// Complex index of refraction eta + i k per colour channel; k is the extinction coefficient.
+struct ComplexIor {
+    Color eta, k;
+};
+// GGX microfacet conductor with the exact Fresnel of the complex index `ior` (the outside
+// has index 1); its tint is white and unused.
+MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
 

@@ -63,7 +63,7 @@ public:
     float diffuseShare(Vec3 wo, Color tint) const override { return 1.0f - specularProbability(wo, tint, kAllLobes); }
 
 private:
-    bool smooth() const { return ggx_.alpha < kSmoothAlpha; }
+    bool smooth() const { return ggx_.smooth(); }
     float fresnel(float cosTheta) const { return fresnelDielectric(cosTheta, ior_); }
 
     Color diffuse(Vec3 wo, Vec3 wi, Color albedo) const {

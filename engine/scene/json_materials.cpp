@@ -1,5 +1,7 @@
 // The "materials" section: a name → material map, built with the factories of
 // materials/material.h.
+#include "materials/microfacet.h"
+#include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
@@ -43,6 +45,52 @@ float roughnessField(JsonObject& obj, float fallback) { return obj.number("rough
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
 
+// A conductor's eta or k: [r, g, b] inside `range`, or the name of a pbrt-v4 conductor
+// spectrum ("metal-Au-eta"), taken as its RGB projection (materials/metal_table.h).
+Color complexIorPart(const JsonValue& value, const Range& range) {
+    if (!value.json().is_string()) return value.vec3(range);
+    auto color = findPbrtMetalSpectrum(value.string());
+    if (!color) value.fail("unknown named spectrum \"" + value.string() + "\" (expected [r, g, b] or one of " +
+                           pbrtMetalSpectrumNames() + ")");
+    return *color;
+}
+
+// The complex index of a conductor: "metal" (a symbol of materials/metal_table.h) or "eta"
+// and "k" together; nullopt if none of them is given (the Schlick form). Both forms, or
+// either beside "reflectance", are refused.
+std::optional<ComplexIor> complexIorFields(JsonObject& obj) {
+    auto metal = obj.optional("metal");
+    auto eta = obj.optional("eta");
+    auto k = obj.optional("k");
+    if (!metal && !eta && !k) return std::nullopt;
+    if (obj.has("reflectance")) {
+        obj.optional("reflectance")->fail("gives Schlick's F0; the complex index (metal, eta, k) is another way to "
+                                          "give the Fresnel term: use one");
+    }
+    if (metal) {
+        if (eta || k) (eta ? *eta : *k).fail("a named metal gives eta and k already: use either metal or eta and k");
+        auto ior = findMetal(metal->string());
+        if (!ior) metal->fail("unknown metal \"" + metal->string() + "\" (expected one of " + metalSymbols() + ")");
+        return ior;
+    }
+    if (!eta || !k) obj.required(eta ? "k" : "eta");  // throws: missing required field
+    return ComplexIor{complexIorPart(*eta, Range::positive()), complexIorPart(*k, Range::nonNegative())};
+}
+
+// GGX alphas from "roughness" or, for an anisotropic lobe, "uroughness" (along the shading
+// frame's s axis) and "vroughness" (along t), each defaulting to "roughness". photon's
+// roughness is perceptual, alpha = roughness^2; "remap_roughness" switches to pbrt-v4's
+// meaning: true, alpha = sqrt(roughness) (its remaproughness); false, alpha = roughness.
+GgxAlpha conductorAlphaFields(JsonObject& obj) {
+    float roughness = roughnessField(obj, 0.2f);
+    float u = obj.number("uroughness", roughness, kFraction);
+    float v = obj.number("vroughness", roughness, kFraction);
+    auto remap = obj.optional("remap_roughness");
+    if (!remap) return {roughnessToAlpha(u), roughnessToAlpha(v)};
+    if (remap->boolean()) return {pbrtRoughnessToAlpha(u), pbrtRoughnessToAlpha(v)};
+    return {u, v};
+}
+
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic };
@@ -53,8 +101,9 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
         case Dielectric: m = makeDielectric(iorField(obj)); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
-            ColorParam reflectance = colorField(obj, "reflectance", Color(0.9f), ctx);
-            m = makeConductor(reflectance, roughnessField(obj, 0.2f));
+            std::optional<ComplexIor> ior = complexIorFields(obj);
+            GgxAlpha alpha = conductorAlphaFields(obj);
+            m = ior ? makeConductor(*ior, alpha) : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), alpha);
             break;
         }
         case Plastic: {

@@ -1,0 +1,508 @@
+// The conductor with a complex index of refraction and anisotropic GGX roughness: the exact
+// conductor Fresnel against closed forms, the anisotropic distribution's normalisations,
+// sample() against eval()/pdf() by independent quadrature, reciprocity, the white furnace,
+// the named metals and their scene-file fields, and SPPM against the path tracer on a scene
+// with rough gold.
+#include <gtest/gtest.h>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+#include "integrators/integrator.h"
+#include "materials/fresnel.h"
+#include "materials/material.h"
+#include "materials/metal_table.h"
+#include "materials/microfacet.h"
+#include "materials/named_metals.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+#include "scene/scene.h"
+#include "scene_loader_fixture.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+constexpr int kSamples = 200000;
+constexpr float kCosines[] = {0.1f, 0.5f, 0.95f};  // near-grazing, oblique, near-normal
+constexpr float kAzimuths[] = {0.3f, 1.9f};         // anisotropic lobes differ with phi
+const Color kWhite(1.0f);
+
+using Channels = std::array<double, 3>;
+
+Vec3 direction(float cosTheta, float phi) {
+    float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    return {s * std::cos(phi), s * std::sin(phi), cosTheta};
+}
+
+// Allowed difference between two albedo estimates: 1% relative or 0.005 absolute.
+double tolerance(double reference) { return std::max(0.005, 0.01 * std::abs(reference)); }
+
+ComplexIor metal(std::string_view symbol) {
+    auto ior = findMetal(symbol);
+    EXPECT_TRUE(ior) << symbol;
+    return ior.value_or(ComplexIor{kWhite, kWhite});
+}
+
+// ---- Fresnel ----
+
+// Reflectance of a conductor in the real closed form of Born & Wolf ("Principles of Optics",
+// sec. 14.2, eqs. 20-21 with a^2 + b^2 and a as there), as pbrt-v3's FrConductor writes it;
+// in double, independent of the complex arithmetic of fresnelConductor.
+double closedFormConductorFresnel(double cosI, double eta, double k) {
+    double cos2 = cosI * cosI, sin2 = 1 - cos2;
+    double t0 = eta * eta - k * k - sin2;
+    double a2PlusB2 = std::sqrt(t0 * t0 + 4 * eta * eta * k * k);
+    double a = std::sqrt(0.5 * (a2PlusB2 + t0));
+    double t1 = a2PlusB2 + cos2, t2 = 2 * cosI * a;
+    double rs = (t1 - t2) / (t1 + t2);
+    double t3 = cos2 * a2PlusB2 + sin2 * sin2, t4 = t2 * sin2;
+    double rp = rs * (t3 - t4) / (t3 + t4);
+    return 0.5 * (rs + rp);
+}
+
+TEST(ConductorFresnel, MatchesTheRealClosedForm) {
+    for (float eta : {0.12f, 0.4f, 1.5f, 3.2f})
+        for (float k : {0.5f, 2.5f, 7.6f})
+            for (float cosI : {0.02f, 0.2f, 0.5f, 0.8f, 1.0f}) {
+                double expected = closedFormConductorFresnel(cosI, eta, k);
+                EXPECT_NEAR(fresnelConductor(cosI, eta, k), expected, 2e-5 + 1e-5 * expected)
+                    << "eta " << eta << " k " << k << " cos " << cosI;
+            }
+}
+
+TEST(ConductorFresnel, WithoutExtinctionIsTheDielectricFresnel) {
+    // From outside, including eta < 1 where light is totally reflected beyond the critical angle.
+    for (float eta : {0.7f, 1.33f, 1.5f, 2.4f})
+        for (float cosI : {0.05f, 0.3f, 0.6f, 0.9f, 1.0f})
+            EXPECT_NEAR(fresnelConductor(cosI, eta, 0.0f), fresnelDielectric(cosI, eta), 2e-6f)
+                << "eta " << eta << " cos " << cosI;
+}
+
+TEST(ConductorFresnel, NormalAndGrazingIncidence) {
+    for (const MetalIor& m : kMetalIors) {
+        Color f0 = fresnelConductor(1.0f, m.eta, m.k);
+        for (int c = 0; c < 3; ++c) {
+            float n = m.eta[c], k = m.k[c];
+            EXPECT_NEAR(f0[c], ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k), 1e-6f) << m.name;
+            EXPECT_NEAR(fresnelConductor(0.0f, n, k), 1.0f, 1e-6f) << m.name;  // grazing: a perfect mirror
+            // and rising to it monotonically past the dip near the principal angle
+            EXPECT_GT(fresnelConductor(1e-3f, n, k), 0.98f) << m.name;
+            EXPECT_GT(fresnelConductor(1e-3f, n, k), fresnelConductor(0.05f, n, k)) << m.name;
+        }
+    }
+}
+
+TEST(ConductorFresnel, GoldSilverAluminiumHaveTheirKnownColours) {
+    // Well-known normal-incidence reflectances (linear sRGB) within the scatter of measurements
+    // and projections; scripts/metal_rgb.py checks the same when it writes the table.
+    auto f0 = [](std::string_view s) { return fresnelConductor(1.0f, metal(s).eta, metal(s).k); };
+    EXPECT_VEC3_NEAR(f0("Au"), Color(1.0f, 0.766f, 0.336f), 0.06f);
+    EXPECT_VEC3_NEAR(f0("Ag"), Color(0.972f, 0.960f, 0.915f), 0.05f);
+    EXPECT_VEC3_NEAR(f0("Al"), Color(0.913f, 0.921f, 0.925f), 0.03f);
+}
+
+// ---- the anisotropic GGX distribution ----
+
+// Midpoint quadrature of g(h) over the hemisphere of normals: theta uses the warp
+// tan(theta) = a tan(u pi/2) up to tan(theta) = 30 a, which resolves a lobe of width a (the
+// smaller alpha), then a uniform grid up to pi/2 for the broad remainder (an anisotropic
+// lobe's wide direction). g returns a number or an array of them.
+template <class G>
+auto integrateNormals(float a, G g) {
+    constexpr int kTheta = 300, kPhi = 512;
+    constexpr double kHalfPi = 0.5 * kPi;
+    using Value = decltype(g(Vec3()));
+    std::conditional_t<std::is_arithmetic_v<Value>, double, Value> total{};
+    auto ring = [&](double theta, double dTheta) {
+        double dPhi = 2 * kPi / kPhi, weight = std::sin(theta) * dTheta * dPhi;
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 h(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
+            auto v = g(h);
+            if constexpr (std::is_arithmetic_v<Value>) {
+                total += v * weight;
+            } else {
+                for (size_t c = 0; c < v.size(); ++c) total[c] += v[c] * weight;
+            }
+        }
+    };
+    double du = std::atan(30.0) / kHalfPi / kTheta;  // tan(u pi/2) runs up to 30
+    for (int i = 0; i < kTheta; ++i) {
+        double t = std::tan((i + 0.5) * du * kHalfPi);
+        ring(std::atan(a * t), a * kHalfPi * (1 + t * t) / (1 + a * a * t * t) * du);
+    }
+    double thetaSplit = std::atan(30.0 * a), dTheta = (kHalfPi - thetaSplit) / kTheta;
+    for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
+    return total;
+}
+
+TEST(AnisotropicGgx, ProjectedAreaAndVisibleNormalsAreNormalised) {
+    for (auto [ax, ay] : {std::pair{0.05f, 0.3f}, std::pair{0.4f, 0.1f}, std::pair{0.2f, 0.2f}}) {
+        GGX ggx(ax, ay);
+        float a = std::min(ax, ay);
+        // The microfacets' projected area is the macro surface's: int D(h) h.z dh = 1 (Heitz 2014, eq. 4).
+        EXPECT_NEAR(integrateNormals(a, [&](Vec3 h) { return ggx.D(h) * h.z; }), 1.0, 2e-3) << ax << " " << ay;
+        // The visible normals' distribution integrates to one for every wo (eq. 2 there), which ties
+        // Lambda to D: int G1(wo) max(0, wo.h) D(h) / wo.z dh = 1.
+        for (float cosO : kCosines)
+            for (float phi : kAzimuths) {
+                Vec3 wo = direction(cosO, phi);
+                double visible = integrateNormals(a, [&](Vec3 h) { return ggx.G1(wo) * std::max(0.0f, dot(wo, h)) * ggx.D(h) / wo.z; });
+                EXPECT_NEAR(visible, 1.0, 3e-3) << ax << " " << ay << " cos " << cosO << " phi " << phi;
+            }
+    }
+}
+
+TEST(AnisotropicGgx, SwappingAlphasTurnsTheLobeByAQuarter) {
+    GGX a(0.08f, 0.35f), b(0.35f, 0.08f);
+    Rng rng(5, 0, 0, StreamPurpose::Test);
+    for (int i = 0; i < 1000; ++i) {
+        Vec3 w = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        w.z = std::abs(w.z);
+        Vec3 turned(-w.y, w.x, w.z);
+        EXPECT_NEAR(a.D(w), b.D(turned), 1e-4f * a.D(w));
+        EXPECT_NEAR(a.lambda(w), b.lambda(turned), 1e-5f * (1 + a.lambda(w)));
+    }
+}
+
+TEST(AnisotropicGgx, IsotropicCaseIsTheOneAlphaDistribution) {
+    // One alpha or two equal ones: the same numbers to the bit (existing scenes render as before).
+    Rng rng(9, 0, 0, StreamPurpose::Test);
+    for (float alpha : {0.01f, 0.2f, 0.8f}) {
+        GGX one(alpha), two(alpha, alpha);
+        for (int i = 0; i < 1000; ++i) {
+            Vec3 w = sampleUniformSphere({rng.uniform(), rng.uniform()});
+            w.z = std::abs(w.z);
+            float isotropicD = alpha * alpha / (kPi * std::pow(w.x * w.x + w.y * w.y + alpha * alpha * w.z * w.z, 2.0f));
+            EXPECT_NEAR(two.D(w), isotropicD, 1e-5f * isotropicD);
+            EXPECT_EQ(one.D(w), two.D(w));
+            EXPECT_EQ(one.lambda(w), two.lambda(w));
+        }
+    }
+}
+
+TEST(AnisotropicGgx, RoughnessRemaps) {
+    EXPECT_FLOAT_EQ(roughnessToAlpha(0.5f), 0.25f);      // photon: alpha = roughness^2
+    EXPECT_FLOAT_EQ(pbrtRoughnessToAlpha(0.25f), 0.5f);  // pbrt-v4 remaproughness: sqrt
+}
+
+// ---- the material: sampling against quadrature, pdf, reciprocity ----
+
+struct SampleEstimate {
+    Channels mean{}, stdError{};
+    double nonDeltaFraction = 0;
+};
+
+SampleEstimate estimateBySampling(const Material& m, Vec3 wo, Color tint, uint64_t seed) {
+    Rng rng(seed, 0, 0, StreamPurpose::Test);
+    Channels sum{}, sumSq{};
+    int nonDelta = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        auto s = m.sample(wo, rng.uniform(), {rng.uniform(), rng.uniform()}, tint, TransportMode::Radiance);
+        if (!s) continue;
+        if (!s->delta) ++nonDelta;
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += s->weight[c];
+            sumSq[c] += double(s->weight[c]) * s->weight[c];
+        }
+    }
+    SampleEstimate e;
+    for (int c = 0; c < 3; ++c) {
+        e.mean[c] = sum[c] / kSamples;
+        e.stdError[c] = std::sqrt(std::max(0.0, sumSq[c] / kSamples - e.mean[c] * e.mean[c]) / kSamples);
+    }
+    e.nonDeltaFraction = double(nonDelta) / kSamples;
+    return e;
+}
+
+// Quadrature of g(wi) over the reflected directions wi = reflect(wo, h), d(omega_i) =
+// 4 (wo.h) d(omega_h) (Walter et al. 2007, eq. 14), independent of sample(). The fourth
+// channel is g's pdf part.
+template <class G>
+std::array<double, 4> integrateReflections(Vec3 wo, float a, G g) {
+    return integrateNormals(a, [&](Vec3 h) {
+        std::array<double, 4> v{};
+        float woDotH = dot(wo, h);
+        if (woDotH <= 0) return v;
+        Vec3 wi = normalize(reflect(wo, h));
+        if (wi.z <= 0) return v;
+        auto [color, density] = g(wi);
+        for (int c = 0; c < 3; ++c) v[c] = double(color[c]) * 4.0 * woDotH;
+        v[3] = double(density) * 4.0 * woDotH;
+        return v;
+    });
+}
+
+struct Case {
+    std::string name;
+    MaterialPtr material;
+    Color tint;
+    float width;  // the smaller GGX alpha, which the quadrature resolves
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+std::vector<Case> cases() {
+    Color f0(0.9f, 0.6f, 0.3f);
+    return {
+        {"GoldIsotropic", makeConductor(metal("Au"), GgxAlpha{0.09f, 0.09f}), kWhite, 0.09f},
+        {"GoldAnisotropic", makeConductor(metal("Au"), GgxAlpha{0.05f, 0.3f}), kWhite, 0.05f},
+        {"CopperAnisotropicTurned", makeConductor(metal("Cu"), GgxAlpha{0.4f, 0.1f}), kWhite, 0.1f},
+        {"TitaniumRough", makeConductor(metal("Ti"), GgxAlpha{0.6f, 0.6f}), kWhite, 0.6f},
+        {"SchlickAnisotropic", makeConductor(ColorParam(f0), GgxAlpha{0.1f, 0.4f}), f0, 0.1f},
+    };
+}
+
+class ConductorAgreement : public testing::TestWithParam<Case> {};
+
+// The mean sample weight equals the quadrature of eval |cos| (the albedo, within 1%), pdf()
+// integrates to the share of draws that return a direction, and neither exceeds one.
+TEST_P(ConductorAgreement, SamplingMatchesQuadratureOfEval) {
+    const Case& tc = GetParam();
+    for (float cosO : kCosines)
+        for (float phi : kAzimuths) {
+            SCOPED_TRACE("cos(theta_o) = " + std::to_string(cosO) + ", phi = " + std::to_string(phi));
+            Vec3 wo = direction(cosO, phi);
+            auto mc = estimateBySampling(*tc.material, wo, tc.tint, uint64_t(cosO * 1000 + phi * 10));
+            auto quad = integrateReflections(wo, tc.width, [&](Vec3 wi) {
+                return std::pair{tc.material->eval(wo, wi, tc.tint, TransportMode::Radiance) * wi.z,
+                                 tc.material->pdf(wo, wi, tc.tint)};
+            });
+            double pdfIntegral = quad[3];
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(mc.mean[c], quad[c], tolerance(quad[c])) << "channel " << c << ", MC se " << mc.stdError[c];
+                EXPECT_LE(mc.mean[c], 1.0 + tolerance(1.0));
+            }
+            EXPECT_LE(pdfIntegral, 1.0 + 0.005);
+            EXPECT_NEAR(pdfIntegral, mc.nonDeltaFraction, 0.005);
+            std::printf("  %-24s cos %.2f phi %.1f  MC %.4f %.4f %.4f  quad %.4f %.4f %.4f  int pdf %.4f\n",
+                        tc.name.c_str(), cosO, phi, mc.mean[0], mc.mean[1], mc.mean[2], quad[0], quad[1], quad[2],
+                        pdfIntegral);
+        }
+}
+
+// f(wo, wi) == f(wi, wo), and nothing below the surface.
+TEST_P(ConductorAgreement, EvalIsReciprocal) {
+    const Case& tc = GetParam();
+    Rng rng(7, 0, 0, StreamPurpose::Test);
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Color fab = tc.material->eval(a, b, tc.tint, TransportMode::Radiance);
+        Color fba = tc.material->eval(b, a, tc.tint, TransportMode::Radiance);
+        if (a.z <= 0 || b.z <= 0) {
+            ASSERT_TRUE(fab == Color(0.0f) && fba == Color(0.0f));
+            continue;
+        }
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
+    }
+}
+
+// A sample's pdf is pdf(wo, wi) and its weight eval |cos| / pdf.
+TEST_P(ConductorAgreement, SampleAgreesWithPdfAndEval) {
+    const Case& tc = GetParam();
+    Rng rng(11, 0, 0, StreamPurpose::Test);
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO, 2.1f);
+        for (int i = 0; i < 20000; ++i) {
+            auto s = tc.material->sample(wo, rng.uniform(), {rng.uniform(), rng.uniform()}, tc.tint, TransportMode::Radiance);
+            if (!s) continue;
+            ASSERT_FALSE(s->delta);
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+            float p = tc.material->pdf(wo, s->wi, tc.tint);
+            ASSERT_GT(p, 0.0f);
+            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
+            Color expected = tc.material->eval(wo, s->wi, tc.tint, TransportMode::Radiance) * (s->wi.z / p);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Conductors, ConductorAgreement, testing::ValuesIn(cases()),
+                         [](const testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// ---- white furnace ----
+
+// With F = 1 (k -> infinity) the albedo is what single scattering on GGX keeps, in closed form
+// over normals: int G2(wo, wi) max(0, wo.h) D(h) / wo.z dh with wi = reflect(wo, h) above the
+// surface (Heitz 2014; the energy a single-scattering model loses, Kulla & Conty 2017). The
+// material's sampling (through its own Fresnel, eval and pdf) must keep exactly that; and
+// every real metal keeps less.
+TEST(ConductorFurnace, PerfectConductorKeepsTheSingleScatteringAlbedo) {
+    const ComplexIor perfect{Color(1.0f), Color(1e4f)};  // F = 1 - 4/k^2 to float precision
+    for (GgxAlpha alpha : {GgxAlpha{0.5f, 0.5f}, GgxAlpha{1.0f, 1.0f}, GgxAlpha{0.1f, 0.7f}}) {
+        auto material = makeConductor(perfect, alpha);
+        auto gold = makeConductor(metal("Au"), alpha);
+        GGX ggx(alpha.x, alpha.y);
+        for (float cosO : kCosines)
+            for (float phi : kAzimuths) {
+                Vec3 wo = direction(cosO, phi);
+                double expected = integrateNormals(std::min(alpha.x, alpha.y), [&](Vec3 h) {
+                    float woDotH = dot(wo, h);
+                    Vec3 wi = reflect(wo, h);
+                    if (woDotH <= 0 || wi.z <= 0) return 0.0;
+                    return double(ggx.G2(wo, wi)) * woDotH * ggx.D(h) / wo.z;
+                });
+                auto mc = estimateBySampling(*material, wo, kWhite, 17);
+                auto goldMc = estimateBySampling(*gold, wo, kWhite, 19);
+                EXPECT_LE(expected, 1.0);
+                for (int c = 0; c < 3; ++c) {
+                    EXPECT_NEAR(mc.mean[c], expected, tolerance(expected)) << "alpha " << alpha.x << " " << alpha.y;
+                    EXPECT_LT(goldMc.mean[c], mc.mean[c] + 3 * goldMc.stdError[c]);
+                }
+                std::printf("  furnace alpha (%.1f, %.1f) cos %.2f phi %.1f  MC %.4f  single-scattering %.4f\n", alpha.x,
+                            alpha.y, cosO, phi, mc.mean[0], expected);
+            }
+    }
+}
+
+// The smooth limit is a delta mirror weighted by the exact Fresnel at the incidence angle.
+TEST(ConductorFurnace, SmoothLimitIsTheExactFresnelMirror) {
+    ComplexIor gold = metal("Au");
+    auto smooth = makeConductor(gold, GgxAlpha{0.0f, 0.0f});
+    EXPECT_EQ(smooth->lobes(), unsigned(kDeltaLobe));
+    EXPECT_EQ(makeConductor(gold, GgxAlpha{0.0f, 0.2f})->lobes(), unsigned(kGlossyLobe));
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO, 0.4f);
+        auto s = smooth->sample(wo, 0.5f, {0.3f, 0.6f}, kWhite, TransportMode::Radiance);
+        ASSERT_TRUE(s && s->delta);
+        EXPECT_EQ(s->wi, Vec3(-wo.x, -wo.y, wo.z));
+        EXPECT_EQ(s->weight, fresnelConductor(cosO, gold.eta, gold.k));
+        EXPECT_EQ(smooth->eval(wo, s->wi, kWhite, TransportMode::Radiance), Color(0.0f));
+    }
+}
+
+// ---- named metals and the scene file ----
+
+TEST(NamedMetals, SymbolsAndPbrtSpectra) {
+    for (std::string_view s : {"Ag", "Al", "Au", "Cr", "Cu", "Fe", "Ni", "Pt", "Ti", "W", "CuZn", "MgO", "TiO2"})
+        EXPECT_TRUE(findMetal(s)) << s;
+    EXPECT_FALSE(findMetal("Unobtainium"));
+    for (std::string_view s : {"Ag", "Al", "Au", "Cu", "CuZn", "MgO", "TiO2"}) {
+        EXPECT_EQ(findPbrtMetalSpectrum("metal-" + std::string(s) + "-eta"), findMetal(s)->eta) << s;
+        EXPECT_EQ(findPbrtMetalSpectrum("metal-" + std::string(s) + "-k"), findMetal(s)->k) << s;
+    }
+    EXPECT_FALSE(findPbrtMetalSpectrum("metal-Fe-eta"));  // not one of pbrt-v4's named spectra
+    // The brass entry must not be mistaken for copper (a prefix of its name).
+    EXPECT_NE(findPbrtMetalSpectrum("metal-CuZn-eta"), findPbrtMetalSpectrum("metal-Cu-eta"));
+}
+
+using test::expectError;
+using test::load;
+
+const Material& loadedMetal(const Json& fields) {
+    static std::vector<SceneDescription> kept;  // keeps the materials alive for the caller
+    Json doc = test::fullScene();
+    doc["materials"]["metal"] = fields;
+    kept.push_back(load(doc));
+    const SceneDescription& d = kept.back();
+    for (size_t i = 0; i < d.materialNames.size(); ++i)
+        if (d.materialNames[i] == "metal") return *d.materials[i];
+    ADD_FAILURE() << "no material \"metal\"";
+    return *d.materials[0];
+}
+
+// The normal-incidence reflectance seen through a material's smooth mirror (with the
+// material's own constant tint, as integrators pass it).
+Color smoothReflectance(const Material& m) {
+    auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.tint().value, TransportMode::Radiance);
+    EXPECT_TRUE(s && s->delta);
+    return s ? s->weight : Color(0.0f);
+}
+
+TEST(ConductorScene, ComplexIndexFields) {
+    Color goldF0 = fresnelConductor(1.0f, metal("Au").eta, metal("Au").k);
+    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0}})), goldF0);
+    EXPECT_EQ(smoothReflectance(loadedMetal(
+                  {{"type", "conductor"}, {"eta", "metal-Au-eta"}, {"k", "metal-Au-k"}, {"roughness", 0}})),
+              goldF0);
+    Color n(0.2f, 0.9f, 1.1f), k(3.6f, 2.6f, 2.3f);
+    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"},
+                                             {"eta", {n.x, n.y, n.z}},
+                                             {"k", {k.x, k.y, k.z}},
+                                             {"roughness", 0}})),
+              fresnelConductor(1.0f, n, k));
+    // Anisotropic and remapped roughness load as glossy lobes; uroughness 0 alone is not smooth.
+    EXPECT_EQ(loadedMetal({{"type", "conductor"}, {"metal", "Cu"}, {"uroughness", 0}, {"vroughness", 0.3}}).lobes(),
+              unsigned(kGlossyLobe));
+    EXPECT_EQ(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.01}, {"remap_roughness", true}})
+                  .lobes(),
+              unsigned(kGlossyLobe));
+    // The Schlick form is unchanged.
+    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"}, {"reflectance", {0.9, 0.6, 0.3}}, {"roughness", 0}})),
+              fresnelSchlick(Color(0.9f, 0.6f, 0.3f), 1.0f));
+}
+
+TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
+    // pbrt's remap: alpha = sqrt(0.04) = 0.2; unremapped: alpha = 0.04; photon's: 0.2^2 = 0.04.
+    auto albedoAt = [](const Material& m) {
+        return estimateBySampling(m, direction(0.5f, 0.3f), kWhite, 23).mean[0];
+    };
+    double remapped = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", true}}));
+    double direct = albedoAt(*makeConductor(metal("Ag"), GgxAlpha{0.2f, 0.2f}));
+    EXPECT_NEAR(remapped, direct, 1e-6);
+    double unremapped = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", false}}));
+    double photonMapping = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.2}}));
+    EXPECT_NEAR(unremapped, photonMapping, 1e-6);  // 0.2^2 in float is not quite 0.04
+}
+
+TEST(ConductorScene, Errors) {
+    const std::string path = "materials.metal.";
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Xx"}}; }, path + "metal",
+                "unknown metal \"Xx\" (expected one of " + metalSymbols() + ")");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"eta", "metal-Fe-eta"}, {"k", {1, 1, 1}}}; },
+                path + "eta", "unknown named spectrum \"metal-Fe-eta\" (expected [r, g, b] or one of " +
+                                  pbrtMetalSpectrumNames() + ")");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"eta", {1, 1, 1}}}; }, path + "k",
+                "missing required field");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"eta", {0, 1, 1}}, {"k", {1, 1, 1}}}; },
+                path + "eta[0]", "must be > 0");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"k", {1, 1, 1}}}; },
+                path + "k", "a named metal gives eta and k already: use either metal or eta and k");
+    expectError(
+        [](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"reflectance", {1, 1, 1}}}; },
+        path + "reflectance",
+        "gives Schlick's F0; the complex index (metal, eta, k) is another way to give the Fresnel term: use one");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"vroughness", 2}}; },
+                path + "vroughness", "must be in [0, 1]");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"remap_roughness", 1}}; },
+                path + "remap_roughness", "must be true or false");
+}
+
+// ---- SPPM against the path tracer, with rough gold ----
+
+// The Cornell box with its tall block in anisotropic rough gold and the short one in rough
+// copper: glossy transport both methods must agree on.
+SceneDescription metalBox(IntegratorKind kind, int passes, int64_t photons) {
+    constexpr int kResolution = 32;
+    SceneDescription d = test::exampleScene("cornell-box", kResolution, passes, photons, 7);
+    d.render.integrator = kind;
+    d.render.maxDepth = 64;
+    d.materials.push_back(makeConductor(metal("Au"), GgxAlpha{0.15f, 0.35f}));
+    d.materials.push_back(makeConductor(metal("Cu"), GgxAlpha{0.3f, 0.3f}));
+    uint32_t gold = uint32_t(d.materials.size() - 2), copper = gold + 1;
+    // The blocks are the scene's last two shapes: the short one, then the tall one.
+    size_t n = d.shapes.size();
+    d.shapes[n - 2].material = copper;
+    d.shapes[n - 1].material = gold;
+    return d;
+}
+
+TEST(ConductorSppmVsPath, RoughGoldBoxAgreesInMean) {
+    Image path = test::renderImage(metalBox(IntegratorKind::Path, 512, 0));
+    Image sppm = test::renderImage(metalBox(IntegratorKind::Sppm, 256, 40000));
+    Color pathMean = test::meanOver(path, 0, 0, path.width, path.height);
+    Color sppmMean = test::meanOver(sppm, 0, 0, sppm.width, sppm.height);
+    std::printf("  path %.4f %.4f %.4f  sppm %.4f %.4f %.4f\n", pathMean.x, pathMean.y, pathMean.z, sppmMean.x,
+                sppmMean.y, sppmMean.z);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sppmMean[c], pathMean[c], 0.02f * pathMean[c]) << "channel " << c;
+}
+
+}  // namespace
+}  // namespace photon
