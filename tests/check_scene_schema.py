@@ -103,6 +103,14 @@ INVALID = [
     ("no shapes", set_path("shapes", [])),
     ("cone angle above 90", set_path("lights", 1, "cone_angle", 95)),
     ("zero scale", set_path("shapes", 2, "transform", "scale", 0)),
+    ("unknown metal", set_path("materials", "metal", {"type": "conductor", "metal": "Xx"})),
+    ("metal and reflectance", set_path("materials", "metal", {"type": "conductor", "metal": "Au",
+                                                               "reflectance": [1, 1, 1]})),
+    ("eta without k", set_path("materials", "metal", {"type": "conductor", "eta": [0.2, 0.9, 1.1]})),
+    ("unknown named spectrum", set_path("materials", "metal", {"type": "conductor", "eta": "metal-Fe-eta",
+                                                                "k": [1, 1, 1]})),
+    ("remap_roughness not a boolean", set_path("materials", "metal", {"type": "conductor", "metal": "Au",
+                                                                       "remap_roughness": 1})),
 ]
 
 
