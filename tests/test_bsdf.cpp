@@ -11,93 +11,16 @@
 #include "materials/material.h"
 #include "math/rng.h"
 #include "math/sampling.h"
+#include "bsdf_checks.h"
 
 namespace photon {
 namespace {
 
-constexpr int kSamples = 200000;
-constexpr float kCosines[] = {0.1f, 0.5f, 0.95f};  // near-grazing, oblique, near-normal
+using namespace bsdf_checks;
 constexpr float kIor = 1.5f;
 const Color kWhite(1.0f);
-
-using Channels = std::array<double, 3>;
-
-// Unit direction with the given cos(theta); a non-zero azimuth avoids axis-aligned luck.
-Vec3 direction(float cosTheta, float phi = 0.7f) {
-    float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-    return {s * std::cos(phi), s * std::sin(phi), cosTheta};
-}
-
-// Allowed difference between two albedo estimates: 1% relative or 0.005 absolute.
-double tolerance(double reference) { return std::max(0.005, 0.01 * std::abs(reference)); }
-
-// Monte Carlo estimate of the directional albedo from sample(): the mean weight.
-struct SampleEstimate {
-    Channels mean{}, stdError{};
-    double nonDeltaFraction = 0;  // share of all draws that returned a non-delta wi
-};
-
-SampleEstimate estimateBySampling(const Material& m, Vec3 wo, Color tint, TransportMode mode, uint64_t seed) {
-    Rng rng(seed, 0, 0, StreamPurpose::Test);
-    Channels sum{}, sumSq{};
-    int nonDelta = 0;
-    for (int i = 0; i < kSamples; ++i) {
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
-        auto s = m.sample(wo, uLobe, u, tint, mode);
-        if (!s) continue;
-        if (!s->delta) ++nonDelta;
-        for (int c = 0; c < 3; ++c) {
-            sum[c] += s->weight[c];
-            sumSq[c] += double(s->weight[c]) * s->weight[c];
-        }
-    }
-    SampleEstimate e;
-    for (int c = 0; c < 3; ++c) {
-        e.mean[c] = sum[c] / kSamples;
-        double var = std::max(0.0, sumSq[c] / kSamples - e.mean[c] * e.mean[c]);
-        e.stdError[c] = std::sqrt(var / kSamples);
-    }
-    e.nonDeltaFraction = double(nonDelta) / kSamples;
-    return e;
-}
-
-// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
-// wi = reflect(wo, h) over half vectors h, with d(omega_i) = 4 (wo.h) d(omega_h)
-// (Walter et al. 2007, eq. 14). theta_h uses the warp tan(theta_h) = a tan(u pi/2) up
-// to tan(theta_h) = 30 a, so a lobe of GGX width a is resolved, then a uniform grid up
-// to pi/2 for the broad (diffuse) remainder. Midpoint rule in both, periodic in phi.
-template <class G>
-Channels integrateHemisphere(Vec3 wo, float a, G g) {
-    constexpr int kTheta = 400, kPhi = 512;
-    constexpr float kHalfPi = 0.5f * kPi;
-    double uMax = std::atan(30.0) / kHalfPi;  // tan(uMax pi/2) = 30
-    double thetaSplit = std::atan(30.0 * a);
-    Channels total{};
-    auto ring = [&](double theta, double dTheta) {
-        double dPhi = 2.0 * kPi / kPhi, sinTheta = std::sin(theta);
-        for (int j = 0; j < kPhi; ++j) {
-            double phi = (j + 0.5) * dPhi;
-            Vec3 h(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(std::cos(theta)));
-            float woDotH = dot(wo, h);
-            if (woDotH <= 0) continue;
-            Vec3 wi = normalize(reflect(wo, h));
-            if (wi.z <= 0) continue;
-            Color v = g(wi);
-            double jacobian = 4.0 * woDotH * sinTheta * dTheta * dPhi;
-            for (int c = 0; c < 3; ++c) total[c] += v[c] * jacobian;
-        }
-    };
-    double du = uMax / kTheta;
-    for (int i = 0; i < kTheta; ++i) {
-        double t = std::tan((i + 0.5) * du * kHalfPi);
-        double dThetaDu = a * kHalfPi * (1 + t * t) / (1 + a * a * t * t);
-        ring(std::atan(a * t), dThetaDu * du);
-    }
-    double dTheta = (kHalfPi - thetaSplit) / kTheta;
-    for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
-    return total;
-}
+// Inputs with the given tint at an arbitrary uv (these materials read no texture).
+MaterialInputs tinted(Color tint) { return {Vec2{}, tint}; }
 
 // A material under test: `width` is the GGX alpha the quadrature resolves (1 if broad);
 // `deltaAlbedo` the known reflectance of its delta lobe at a given cos(theta_o), if any;
@@ -107,6 +30,7 @@ struct Case {
     MaterialPtr material;
     Color tint;
     float width;
+    MaterialInputs inputs() const { return tinted(tint); }
     float (*deltaAlbedo)(float cosO) = nullptr;
     bool lambertian = false;
 };
@@ -145,12 +69,12 @@ TEST_P(BsdfAgreement, SamplingMatchesQuadratureOfEval) {
     for (float cosO : kCosines) {
         SCOPED_TRACE("cos(theta_o) = " + std::to_string(cosO));
         Vec3 wo = direction(cosO);
-        auto mc = estimateBySampling(*tc.material, wo, tc.tint, TransportMode::Radiance, uint64_t(cosO * 1000));
+        auto mc = estimateBySampling(*tc.material, wo, tc.inputs(), TransportMode::Radiance, uint64_t(cosO * 1000));
         Channels quad = integrateHemisphere(wo, tc.width, [&](Vec3 wi) {
-            return tc.material->eval(wo, wi, tc.tint, TransportMode::Radiance) * wi.z;
+            return tc.material->eval(wo, wi, tc.inputs(), TransportMode::Radiance) * wi.z;
         });
         float pdfIntegral = float(integrateHemisphere(wo, tc.width, [&](Vec3 wi) {
-            return Color(tc.material->pdf(wo, wi, tc.tint));
+            return Color(tc.material->pdf(wo, wi, tc.inputs()));
         })[0]);
         float delta = tc.deltaAlbedo ? tc.deltaAlbedo(cosO) : 0.0f;
         for (int c = 0; c < 3; ++c) {
@@ -178,47 +102,12 @@ TEST_P(BsdfAgreement, SamplingMatchesQuadratureOfEval) {
 }
 
 // Test 3: reciprocity f(wo, wi) == f(wi, wo), and no reflection into the lower hemisphere.
-TEST_P(BsdfAgreement, EvalIsReciprocal) {
-    const Case& tc = GetParam();
-    Rng rng(7, 0, 0, StreamPurpose::Test);
-    for (int i = 0; i < 20000; ++i) {
-        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
-        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
-        Color fab = tc.material->eval(a, b, tc.tint, TransportMode::Radiance);
-        Color fba = tc.material->eval(b, a, tc.tint, TransportMode::Radiance);
-        if (a.z <= 0 || b.z <= 0) {
-            ASSERT_TRUE(isBlack(fab) && isBlack(fba)) << "a.z " << a.z << " b.z " << b.z;
-            continue;
-        }
-        for (int c = 0; c < 3; ++c)
-            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
-    }
-}
+TEST_P(BsdfAgreement, EvalIsReciprocal) { expectReciprocal(*GetParam().material, GetParam().inputs()); }
 
-// Test 5: a non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf.
+// Test 5: a non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf (only the
+// smooth coat is delta here).
 TEST_P(BsdfAgreement, SampleAgreesWithPdfAndEval) {
-    const Case& tc = GetParam();
-    Rng rng(11, 0, 0, StreamPurpose::Test);
-    for (float cosO : kCosines) {
-        Vec3 wo = direction(cosO, 2.1f);
-        for (int i = 0; i < 20000; ++i) {
-            float uLobe = rng.uniform();
-            auto s = tc.material->sample(wo, uLobe, {rng.uniform(), rng.uniform()}, tc.tint, TransportMode::Radiance);
-            if (!s) continue;
-            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
-            ASSERT_GT(s->lobeProbability, 0.0f);
-            ASSERT_LE(s->lobeProbability, 1.0f);
-            if (s->delta) {
-                ASSERT_FLOAT_EQ(s->pdf, s->lobeProbability);  // only the smooth coat is delta here
-                continue;
-            }
-            float p = tc.material->pdf(wo, s->wi, tc.tint);
-            ASSERT_GT(s->pdf, 0.0f);
-            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
-            Color expected = tc.material->eval(wo, s->wi, tc.tint, TransportMode::Radiance) * (s->wi.z / p);
-            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
-        }
-    }
+    expectSamplesAgreeWithPdfAndEval(*GetParam().material, GetParam().inputs());
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, BsdfAgreement, testing::ValuesIn(nonDeltaCases()),
@@ -231,13 +120,13 @@ TEST(Bsdf, MirrorReflectsWithItsReflectance) {
     EXPECT_TRUE(m->isDeltaOnly());
     for (float cosO : kCosines) {
         Vec3 wo = direction(cosO);
-        auto s = m->sample(wo, 0.5f, {0.5f, 0.5f}, r, TransportMode::Radiance);
+        auto s = m->sample(wo, 0.5f, {0.5f, 0.5f}, tinted(r), TransportMode::Radiance);
         ASSERT_TRUE(s);
         EXPECT_TRUE(s->delta);
         EXPECT_EQ(s->weight, r);
         EXPECT_EQ(s->wi, Vec3(-wo.x, -wo.y, wo.z));
-        EXPECT_TRUE(isBlack(m->eval(wo, s->wi, r, TransportMode::Radiance)));
-        EXPECT_EQ(m->pdf(wo, s->wi, r), 0.0f);
+        EXPECT_TRUE(isBlack(m->eval(wo, s->wi, tinted(r), TransportMode::Radiance)));
+        EXPECT_EQ(m->pdf(wo, s->wi, tinted(r)), 0.0f);
     }
 }
 
@@ -251,10 +140,10 @@ TEST(Bsdf, ConductorSmoothLimitIsSchlick) {
         SCOPED_TRACE("cos(theta_o) = " + std::to_string(cosO));
         Vec3 wo = direction(cosO);
         Color schlick = fresnelSchlick(f0, cosO);
-        auto s = smooth->sample(wo, 0.5f, {0.3f, 0.6f}, f0, TransportMode::Radiance);
+        auto s = smooth->sample(wo, 0.5f, {0.3f, 0.6f}, tinted(f0), TransportMode::Radiance);
         ASSERT_TRUE(s && s->delta);
         EXPECT_EQ(s->weight, schlick);
-        auto mc = estimateBySampling(*nearlySmooth, wo, f0, TransportMode::Radiance, 3);
+        auto mc = estimateBySampling(*nearlySmooth, wo, tinted(f0), TransportMode::Radiance, 3);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(mc.mean[c], schlick[c], tolerance(schlick[c]));
         std::printf("  Conductor r=0.02 cos %.2f  MC %.4f %.4f %.4f  Schlick %.4f %.4f %.4f\n", cosO, mc.mean[0],
                     mc.mean[1], mc.mean[2], schlick.x, schlick.y, schlick.z);
@@ -293,8 +182,8 @@ TEST(Bsdf, DielectricSplitsByFresnel) {
             double radianceSum = 0;
             for (int i = 0; i < kSamples; ++i) {
                 float uLobe = rng.uniform();
-                auto imp = m->sample(wo, uLobe, {0.5f, 0.5f}, kWhite, TransportMode::Importance);
-                auto rad = m->sample(wo, uLobe, {0.5f, 0.5f}, kWhite, TransportMode::Radiance);
+                auto imp = m->sample(wo, uLobe, {0.5f, 0.5f}, tinted(kWhite), TransportMode::Importance);
+                auto rad = m->sample(wo, uLobe, {0.5f, 0.5f}, tinted(kWhite), TransportMode::Radiance);
                 ASSERT_TRUE(imp && rad && imp->delta);
                 ASSERT_EQ(imp->weight, kWhite);
                 bool isReflection = imp->wi.z * wo.z > 0;
@@ -332,10 +221,10 @@ TEST(Bsdf, FiniteForAllInputs) {
             float cosO = i % 7 == 0 ? 1e-4f * (rng.uniform() - 0.5f) : 2 * rng.uniform() - 1;
             Vec3 wo = i % 11 == 0 ? Vec3(0, 0, 1) : direction(cosO, 2 * kPi * rng.uniform());
             Vec3 wi = sampleUniformSphere({rng.uniform(), rng.uniform()});
-            Color f = m->eval(wo, wi, kWhite, TransportMode::Radiance);
-            float p = m->pdf(wo, wi, kWhite);
+            Color f = m->eval(wo, wi, tinted(kWhite), TransportMode::Radiance);
+            float p = m->pdf(wo, wi, tinted(kWhite));
             ASSERT_TRUE(isFinite(f) && minComponent(f) >= 0 && std::isfinite(p) && p >= 0) << "wo.z " << wo.z;
-            auto s = m->sample(wo, draw(), {draw(), draw()}, kWhite, TransportMode::Radiance);
+            auto s = m->sample(wo, draw(), {draw(), draw()}, tinted(kWhite), TransportMode::Radiance);
             if (wo.z <= 0 && m != glass) {
                 ASSERT_FALSE(s) << "sample below a reflector";
             }

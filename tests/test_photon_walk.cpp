@@ -60,7 +60,7 @@ void referenceWalk(const Scene& scene, const PhotonEmitter& emitter, const Photo
             float uLobe = rng.uniform();
             Vec2 u{rng.uniform(), rng.uniform()};
             std::optional<BSDFSample> s =
-                sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.tint, TransportMode::Importance);
+                sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.inputs, TransportMode::Importance);
             if (!s) break;
             onlySpecular = onlySpecular && s->delta;
             if (settings.specularOnly && !onlySpecular) break;

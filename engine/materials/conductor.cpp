@@ -27,29 +27,29 @@ public:
 
     // f = F(wo.h) D G2 / (4 cos_o cos_i), Torrance-Sparrow with the height-correlated
     // Smith G2 (see microfacet.h). Zero unless wo and wi are both above the surface.
-    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
+    Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode, unsigned lobes) const override {
         if (ggx_.smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnel(dot(wo, *h), tint) * ggx_.reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in.tint) * ggx_.reflectionNoFresnel(wo, wi, *h);
     }
 
-    float pdf(Vec3 wo, Vec3 wi, Color, unsigned lobes) const override {
+    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
         if (ggx_.smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
         return h ? ggx_.reflectionPdf(wo, *h) : 0.0f;
     }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, Color tint, TransportMode mode,
+    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
-        if (ggx_.smooth()) return sampleMirror(wo, tint);
+        if (ggx_.smooth()) return sampleMirror(wo, in.tint);
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
         Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
         // Weighted through eval()/pdf(); the weight reduces analytically to F G2 / G1(wo)
         // (Heitz 2018).
-        return weightedSample(wo, wi, tint, mode, lobes);
+        return weightedSample(wo, wi, in, mode, lobes);
     }
 
 private:

@@ -14,10 +14,10 @@ public:
     bool twoSided() const override { return false; }  // inside and outside differ
     std::optional<SmoothSpecular> smoothSpecular() const override { return SmoothSpecular{ior_}; }
 
-    Color eval(Vec3, Vec3, Color, TransportMode, unsigned) const override { return Color(0.0f); }
-    float pdf(Vec3, Vec3, Color, unsigned) const override { return 0; }
+    Color eval(Vec3, Vec3, const MaterialInputs&, TransportMode, unsigned) const override { return Color(0.0f); }
+    float pdf(Vec3, Vec3, const MaterialInputs&, unsigned) const override { return 0; }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2, Color tint, TransportMode mode,
+    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (!(lobes & kDeltaLobe) || wo.z == 0) return std::nullopt;
         // wo.z < 0 means wo is inside; fresnelDielectric inverts the ratio for us, and
@@ -25,8 +25,8 @@ public:
         float F = fresnelDielectric(wo.z, ior_);
         // Choosing reflection with probability F makes each weight F/F or (1-F)/(1-F):
         // no variance from the Fresnel split (pbrt-v4 sec. 9.5).
-        if (uLobe < F) return reflection(wo, F, tint);
-        return transmission(wo, 1.0f - F, tint, mode);
+        if (uLobe < F) return reflection(wo, F, in.tint);
+        return transmission(wo, 1.0f - F, in.tint, mode);
     }
 
 private:

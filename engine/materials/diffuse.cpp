@@ -12,18 +12,18 @@ public:
     unsigned lobes() const override { return kDiffuseLobe; }
     bool lambertian() const override { return true; }
 
-    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
+    Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode, unsigned lobes) const override {
         // Reflection only, front side only: light from below the surface never reaches wo.
         if (!(lobes & kDiffuseLobe) || wo.z <= 0 || wi.z <= 0) return Color(0.0f);
-        return tint * kInvPi;
+        return in.tint * kInvPi;
     }
 
-    float pdf(Vec3 wo, Vec3 wi, Color, unsigned lobes) const override {
+    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
         if (!(lobes & kDiffuseLobe) || wo.z <= 0 || wi.z <= 0) return 0;
         return cosineHemispherePdf(wi.z);
     }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, Color tint, TransportMode,
+    std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode,
                                      unsigned lobes) const override {
         if (!(lobes & kDiffuseLobe) || wo.z <= 0) return std::nullopt;
         // Cosine-weighted sampling matches f |cos| exactly, so the weight is the albedo:
@@ -32,7 +32,7 @@ public:
         if (wi.z <= 0) return std::nullopt;  // on the horizon: pdf 0
         BSDFSample s;
         s.wi = wi;
-        s.weight = tint;
+        s.weight = in.tint;
         s.pdf = cosineHemispherePdf(wi.z);
         return s;
     }

@@ -16,6 +16,14 @@ enum class TransportMode { Radiance, Importance };
 // Lobes a material has; integrators decide from these where a camera path stops.
 enum LobeFlags : unsigned { kDiffuseLobe = 1u, kGlossyLobe = 2u, kDeltaLobe = 4u, kAllLobes = 7u };
 
+// What a material reads at a surface point: its texture coordinates, and its tint (the
+// colour parameter, see Material::tint) looked up there once, since nearly every call
+// needs it. Materials with other textured parameters look them up at uv.
+struct MaterialInputs {
+    Vec2 uv;
+    Color tint;
+};
+
 struct BSDFSample {
     Vec3 wi;            // sampled incident direction (local frame)
     Color weight;       // f * |cos(theta_i)| / pdf, already divided by lobeProbability
@@ -33,20 +41,23 @@ public:
     // Every call can be restricted to some of the lobes (`lobes`, a LobeFlags mask): the
     // material then behaves as if it had only those.
     // f(wo, wi) of the non-delta lobes; zero for pure delta materials.
-    virtual Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode mode, unsigned lobes = kAllLobes) const = 0;
+    virtual Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes = kAllLobes) const = 0;
     // Solid-angle density with which sample() returns wi for the non-delta lobes.
-    virtual float pdf(Vec3 wo, Vec3 wi, Color tint, unsigned lobes = kAllLobes) const = 0;
+    virtual float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes = kAllLobes) const = 0;
     // uLobe picks a lobe, u the direction within it.
-    virtual std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode,
+    virtual std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                              unsigned lobes = kAllLobes) const = 0;
     // For a material with a diffuse lobe beside others: the probability with which a
     // camera path should stop on the diffuse lobe alone rather than follow the others
     // (roughly the diffuse lobe's share of the albedo at wo).
-    virtual float diffuseShare(Vec3 wo, Color tint) const { return 1.0f; }
+    virtual float diffuseShare(Vec3 wo, const MaterialInputs& in) const { return 1.0f; }
 
     // The material's colour parameter (albedo or reflectance), constant or textured.
-    // Evaluated once per hit and passed back as `tint`.
+    // Evaluated once per hit and passed back in MaterialInputs::tint.
     const ColorParam& tint() const { return tint_; }
+    MaterialInputs inputsAt(Vec2 uv) const { return {uv, tint_.eval(uv)}; }
+    // True if any parameter is a texture: hits on the material then need uv.
+    virtual bool textured() const { return tint_.textured(); }
     // Opaque materials shade both sides alike (the normal is turned toward the viewer);
     // a dielectric's orientation tells inside from outside, so it is not two-sided.
     virtual bool twoSided() const { return true; }
@@ -67,14 +78,15 @@ protected:
     explicit Material(ColorParam tint) : tint_(std::move(tint)) {}
     // A reflected non-delta sample weighted through this material's own eval() and pdf(),
     // so that weight == eval |cos| / pdf holds exactly whatever lobe proposed wi.
-    std::optional<BSDFSample> weightedSample(Vec3 wo, Vec3 wi, Color tint, TransportMode mode, unsigned lobes) const {
+    std::optional<BSDFSample> weightedSample(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode,
+                                             unsigned lobes) const {
         if (wi.z <= 0) return std::nullopt;
-        float p = pdf(wo, wi, tint, lobes);
+        float p = pdf(wo, wi, in, lobes);
         if (!(p > 0)) return std::nullopt;
         BSDFSample s;
         s.wi = wi;
         s.pdf = p;
-        s.weight = eval(wo, wi, tint, mode, lobes) * (wi.z / p);
+        s.weight = eval(wo, wi, in, mode, lobes) * (wi.z / p);
         return s;
     }
     ColorParam tint_;

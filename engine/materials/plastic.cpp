@@ -23,18 +23,18 @@ public:
     // & Shirley 2000, "An Anisotropic Phong BRDF Model", here with the exact dielectric
     // Fresnel and no renormalisation). Re-reflections inside the coat are ignored, which
     // loses a little energy; tests/test_bsdf.cpp checks the albedo never exceeds one.
-    Color eval(Vec3 wo, Vec3 wi, Color tint, TransportMode, unsigned lobes) const override {
+    Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode, unsigned lobes) const override {
         if (wo.z <= 0 || wi.z <= 0) return Color(0.0f);
         Color f(0.0f);
-        if (lobes & kDiffuseLobe) f += diffuse(wo, wi, tint);
+        if (lobes & kDiffuseLobe) f += diffuse(wo, wi, in.tint);
         if (!smooth() && (lobes & kGlossyLobe)) f += Color(specular(wo, wi));
         return f;
     }
 
-    float pdf(Vec3 wo, Vec3 wi, Color tint, unsigned lobes) const override {
+    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
         lobes &= this->lobes();
         if (wo.z <= 0 || wi.z <= 0 || !lobes) return 0;
-        float pSpec = specularProbability(wo, tint, lobes);
+        float pSpec = specularProbability(wo, in.tint, lobes);
         float p = (lobes & kDiffuseLobe) ? (1.0f - pSpec) * cosineHemispherePdf(wi.z) : 0.0f;
         if (!smooth() && (lobes & kGlossyLobe)) {
             auto h = reflectionHalfVector(wo, wi);
@@ -43,24 +43,24 @@ public:
         return p;
     }
 
-    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, Color tint, TransportMode mode,
+    std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         lobes &= this->lobes();
         if (wo.z <= 0 || !lobes) return std::nullopt;
-        float pSpec = specularProbability(wo, tint, lobes);
+        float pSpec = specularProbability(wo, in.tint, lobes);
         bool pickSpecular = uLobe < pSpec;
         if (smooth() && pickSpecular) return sampleCoatMirror(wo, pSpec);
         Vec3 wi = pickSpecular ? reflect(wo, ggx_.sampleVisibleNormal(wo, u)) : sampleCosineHemisphere(u);
         // Both rough lobes could have produced wi, so the density is the full mixture
         // (one-sample MIS with the balance heuristic, Veach 1997 sec. 9.2.4).
-        std::optional<BSDFSample> s = weightedSample(wo, wi, tint, mode, lobes);
+        std::optional<BSDFSample> s = weightedSample(wo, wi, in, mode, lobes);
         if (!s) return std::nullopt;
         // Smooth coat: only the diffuse kind was picked here, with probability 1 - pSpec.
         s->lobeProbability = smooth() ? 1.0f - pSpec : 1.0f;
         return s;
     }
 
-    float diffuseShare(Vec3 wo, Color tint) const override { return 1.0f - specularProbability(wo, tint, kAllLobes); }
+    float diffuseShare(Vec3 wo, const MaterialInputs& in) const override { return 1.0f - specularProbability(wo, in.tint, kAllLobes); }
 
 private:
     bool smooth() const { return ggx_.smooth(); }

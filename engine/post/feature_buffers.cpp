@@ -22,10 +22,10 @@ FirstHit traceFirstHit(const Scene& scene, float px, float py, Rng& rng) {
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
-        if (!m.isDeltaOnly()) return {beta * sp.tint, sp.frame.n};
+        if (!m.isDeltaOnly()) return {beta * sp.inputs.tint, sp.frame.n};
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
-        std::optional<BSDFSample> s = m.sample(sp.frame.toLocal(wo), uLobe, u, sp.tint, TransportMode::Radiance);
+        std::optional<BSDFSample> s = m.sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs, TransportMode::Radiance);
         if (!s) return {};
         beta *= s->weight;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));

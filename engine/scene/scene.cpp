@@ -109,7 +109,7 @@ void Scene::prepareHitData() {
         const ShapeDescription& shape = shapes_[i];
         ShapeHitData& d = hitData_[i];
         d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
-        d.needsUv = materials_[shape.material]->tint().textured();
+        d.needsUv = materials_[shape.material]->textured();
         if (shape.kind == ShapeDescription::Kind::Sphere) continue;
         const TriangleMesh& m = shape.mesh;
         d.faceNormals.reserve(m.triangleCount());

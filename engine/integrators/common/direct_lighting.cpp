@@ -9,7 +9,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, sp.hit.ns, u);
     if (!ls) return Color(0.0f);
     Vec3 wiLocal = sp.frame.toLocal(ls->wi);
-    Color f = sp.material->eval(sp.frame.toLocal(wo), wiLocal, sp.tint, TransportMode::Radiance, lobes);
+    Color f = sp.material->eval(sp.frame.toLocal(wo), wiLocal, sp.inputs, TransportMode::Radiance, lobes);
     if (isBlack(f)) return Color(0.0f);
     Ray shadow = std::isinf(ls->distance) ? spawnRay(sp.hit.p, sp.hit.ng, ls->wi)
                                           : spawnRayTo(sp.hit.p, sp.hit.ng, sp.hit.p + ls->wi * ls->distance);

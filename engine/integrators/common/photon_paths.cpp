@@ -326,7 +326,7 @@ private:
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
         std::optional<BSDFSample> s =
-            sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.tint, TransportMode::Importance);
+            sp.material->sample(sp.frame.toLocal(wi), uLobe, u, sp.inputs, TransportMode::Importance);
         if (!s) return;
         const bool onlySpecular = L.onlySpecular[i] && s->delta;
         if (settings_.specularOnly && !onlySpecular) return;

@@ -9,7 +9,7 @@ struct ShadingPoint {
     SurfaceHit hit;
     const Material* material = nullptr;
     Frame frame;
-    Color tint;
+    MaterialInputs inputs;  // what the material reads here: uv, and its tint there
 };
 
 // `wo` points back along the arriving ray. Two-sided materials see their normals turned
@@ -25,7 +25,7 @@ inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
 }
 inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);
-    ShadingPoint sp{hit, &m, {}, m.tint().eval(hit.uv)};
+    ShadingPoint sp{hit, &m, {}, m.inputsAt(hit.uv)};
     turnTowardViewer(m, sp.hit, wo);
     sp.frame = Frame::fromNormal(sp.hit.ns);
     return sp;

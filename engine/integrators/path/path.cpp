@@ -31,7 +31,7 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
         if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
-        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.tint,
+        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,
                                                           TransportMode::Radiance);
         if (!s) break;
         beta *= s->weight;

@@ -90,7 +90,7 @@ Color PhotonMap::radiance(const ShadingPoint& sp, Vec3 wo, unsigned lobes, const
     const Vec3 woLocal = sp.frame.toLocal(wo);
     return estimate(sp.hit.p, sp.hit.ng, lookup, [&](const StoredPhoton& ph) {
         if (onlyIndirect && !(ph.flags & StoredPhoton::kIndirect)) return Color(0.0f);
-        return sp.material->eval(woLocal, sp.frame.toLocal(ph.incoming()), sp.tint, TransportMode::Radiance, lobes);
+        return sp.material->eval(woLocal, sp.frame.toLocal(ph.incoming()), sp.inputs, TransportMode::Radiance, lobes);
     });
 }
 

@@ -82,7 +82,7 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
         if (!(lobes & kDeltaLobe) || depth + 1 == settings_.maxDepth) break;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
-        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.tint,
+        std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,
                                                           TransportMode::Radiance, kDeltaLobe);
         if (!s) break;
         beta *= s->weight;
@@ -115,7 +115,7 @@ Color PhotonMapIntegrator::finalGather(const ShadingPoint& sp, Vec3 wo, unsigned
     for (int i = 0; i < n; ++i) {
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
-        std::optional<BSDFSample> s = sp.material->sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance, lobes);
+        std::optional<BSDFSample> s = sp.material->sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance, lobes);
         if (!s) continue;
         Color weight = s->weight;
         Ray ray = spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi));
@@ -130,7 +130,7 @@ Color PhotonMapIntegrator::finalGather(const ShadingPoint& sp, Vec3 wo, unsigned
             // Through mirrors and glass to the next non-delta surface.
             float uLobeY = rng.uniform();
             Vec2 uY{rng.uniform(), rng.uniform()};
-            std::optional<BSDFSample> sy = y.material->sample(y.frame.toLocal(woY), uLobeY, uY, y.tint,
+            std::optional<BSDFSample> sy = y.material->sample(y.frame.toLocal(woY), uLobeY, uY, y.inputs,
                                                               TransportMode::Radiance, kDeltaLobe);
             if (!sy) break;
             weight *= sy->weight;
@@ -146,7 +146,7 @@ Color PhotonMapIntegrator::finalGather(const ShadingPoint& sp, Vec3 wo, unsigned
 Color PhotonMapIntegrator::globalRadiance(const ShadingPoint& y, Vec3 wo, unsigned lobes) const {
     if (irradiance_.size() > 0 && y.material->lobes() == kDiffuseLobe) {
         if (std::optional<Color> e = irradiance_.lookupIrradiance(y.hit.p, y.hit.ns, globalLookup_.maxRadius)) {
-            Color f = y.material->eval(y.frame.toLocal(wo), {0, 0, 1}, y.tint, TransportMode::Radiance, lobes);
+            Color f = y.material->eval(y.frame.toLocal(wo), {0, 0, 1}, y.inputs, TransportMode::Radiance, lobes);
             return f * *e;
         }
     }

@@ -50,16 +50,16 @@ Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, R
         if (m.hasDiffuse()) {
             // Like SPPM's camera pass: stop on the diffuse lobe with its share of the
             // albedo, otherwise follow the other lobes (plastic's coat).
-            pDiffuse = others ? m.diffuseShare(woLocal, sp.tint) : 1.0f;
+            pDiffuse = others ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
             if (uLobe < pDiffuse) {
                 if (std::optional<Color> I = solution.irradianceAt(hit, wo))
-                    L += beta * solution.mesh().diffuseReflectance(scene.materialIndex(hit), sp.tint) * *I *
+                    L += beta * solution.mesh().diffuseReflectance(scene.materialIndex(hit), sp.inputs.tint) * *I *
                          (kInvPi / pDiffuse);
                 break;
             }
             uLobe = rng.uniform();
         }
-        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance, others);
+        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance, others);
         if (!s) break;
         beta *= s->weight / (1.0f - pDiffuse);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));

@@ -80,7 +80,7 @@ Color diffuseFactor(const Material& m) {
         Vec3 wo = sampleCosineHemisphere({(i % n + 0.5f) / n, (i / n + 0.5f) / n});
         for (int j = 0; j < n * n; ++j) {
             Vec3 wi = sampleCosineHemisphere({(j % n + 0.37f) / n, (j / n + 0.61f) / n});
-            sum += m.eval(wo, wi, Color(1.0f), TransportMode::Radiance, kDiffuseLobe) * kPi;
+            sum += m.eval(wo, wi, MaterialInputs{Vec2{}, Color(1.0f)}, TransportMode::Radiance, kDiffuseLobe) * kPi;
         }
     }
     return sum / float(n * n * n * n);

@@ -55,7 +55,7 @@ private:
         // Camera path throughput up to here; for a Lambertian point already multiplied by
         // its f = tint / pi, which then needs no eval() per photon.
         Color beta;
-        Color tint;                // material colour at the hit
+        Vec2 uv;                   // where on the surface, for the material's textures
         uint32_t material : 24 = 0;
         uint32_t lobes : 7 = kAllLobes;  // the material's lobes photons are gathered through
         uint32_t lambertian : 1 = 0;

@@ -59,9 +59,9 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         Vec2 u{rng.uniform(), rng.uniform()};
         Vec3 woLocal = sp.frame.toLocal(wo);
         if (storesHere) {
-            float pd = splits ? m.diffuseShare(woLocal, sp.tint) : 1.0f;
+            float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
             if (uLobe >= pd) {
-                std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.tint, TransportMode::Radiance, others);
+                std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.inputs, TransportMode::Radiance, others);
                 if (!s) break;
                 beta *= s->weight / (1.0f - pd);
                 afterDelta = s->delta;
@@ -71,7 +71,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
             storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
             break;
         }
-        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.tint, TransportMode::Radiance);
+        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
         if (!s) break;
         beta *= s->weight;
         afterDelta = s->delta;
@@ -94,8 +94,8 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     Vec3 woLocal = frame.toLocal(wo);
     // Seen from below its (quantised) normal a surface reflects nothing: leave that to eval().
     const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
-    visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.tint * kInvPi : beta,
-                                   sp.tint, scene_->materialIndex(sp.hit), lobes, lambertian};
+    visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
+                                   sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian};
 }
 
 }  // namespace photon

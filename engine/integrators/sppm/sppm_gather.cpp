@@ -111,8 +111,8 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         c = vp.beta;
     } else {
         Frame frame = Frame::fromNormal(vn);
-        Color f = scene_->materialAt(vp.material).eval(vp.woLocal.decode(), frame.toLocal(hit.wi), vp.tint,
-                                                       TransportMode::Radiance, vp.lobes);
+        const Material& m = scene_->materialAt(vp.material);
+        Color f = m.eval(vp.woLocal.decode(), frame.toLocal(hit.wi), m.inputsAt(vp.uv), TransportMode::Radiance, vp.lobes);
         if (isBlack(f)) return;
         c = vp.beta * f;
     }

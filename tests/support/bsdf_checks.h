@@ -1,0 +1,160 @@
+// Checks shared by the material tests: directions at a given angle, albedo estimates from
+// sample(), and a quadrature of the upper hemisphere independent of sample().
+#pragma once
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <type_traits>
+#include "materials/material.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+
+namespace photon::bsdf_checks {
+
+constexpr int kSamples = 200000;
+constexpr float kCosines[] = {0.1f, 0.5f, 0.95f};  // near-grazing, oblique, near-normal
+
+using Channels = std::array<double, 3>;
+
+// Unit direction with the given cos(theta); a non-zero azimuth avoids axis-aligned luck.
+inline Vec3 direction(float cosTheta, float phi = 0.7f) {
+    float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    return {s * std::cos(phi), s * std::sin(phi), cosTheta};
+}
+
+// Allowed difference between two albedo estimates: 1% relative or 0.005 absolute.
+inline double tolerance(double reference) { return std::max(0.005, 0.01 * std::abs(reference)); }
+
+// Monte Carlo estimate of the directional albedo from sample(): the mean weight.
+struct SampleEstimate {
+    Channels mean{}, stdError{};
+    double nonDeltaFraction = 0;  // share of all draws that returned a non-delta wi
+};
+
+inline SampleEstimate estimateBySampling(const Material& m, Vec3 wo, const MaterialInputs& in, TransportMode mode,
+                                         uint64_t seed) {
+    Rng rng(seed, 0, 0, StreamPurpose::Test);
+    Channels sum{}, sumSq{};
+    int nonDelta = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        auto s = m.sample(wo, uLobe, u, in, mode);
+        if (!s) continue;
+        if (!s->delta) ++nonDelta;
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += s->weight[c];
+            sumSq[c] += double(s->weight[c]) * s->weight[c];
+        }
+    }
+    SampleEstimate e;
+    for (int c = 0; c < 3; ++c) {
+        e.mean[c] = sum[c] / kSamples;
+        double var = std::max(0.0, sumSq[c] / kSamples - e.mean[c] * e.mean[c]);
+        e.stdError[c] = std::sqrt(var / kSamples);
+    }
+    e.nonDeltaFraction = double(nonDelta) / kSamples;
+    return e;
+}
+
+// Deterministic quadrature of g(h) over the hemisphere of normals h (h.z > 0): theta_h uses
+// the warp tan(theta_h) = a tan(u pi/2) up to tan(theta_h) = 30 a, so a lobe of GGX width a
+// is resolved, then a uniform grid up to pi/2 for the broad remainder (a diffuse lobe, an
+// anisotropic lobe's wide direction). Midpoint rule in both, periodic in phi. g returns a
+// number (summed in double) or an array of numbers.
+template <class G>
+auto integrateNormals(float a, G g) {
+    constexpr int kTheta = 400, kPhi = 512;
+    constexpr float kHalfPi = 0.5f * kPi;
+    double uMax = std::atan(30.0) / kHalfPi;  // tan(uMax pi/2) = 30
+    double thetaSplit = std::atan(30.0 * a);
+    using Value = decltype(g(Vec3()));
+    std::conditional_t<std::is_arithmetic_v<Value>, double, Value> total{};
+    auto ring = [&](double theta, double dTheta) {
+        double dPhi = 2.0 * kPi / kPhi, sinTheta = std::sin(theta);
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 h(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(std::cos(theta)));
+            auto v = g(h);
+            double measure = sinTheta * dTheta * dPhi;
+            if constexpr (std::is_arithmetic_v<Value>) {
+                total += v * measure;
+            } else {
+                for (size_t c = 0; c < v.size(); ++c) total[c] += v[c] * measure;
+            }
+        }
+    };
+    double du = uMax / kTheta;
+    for (int i = 0; i < kTheta; ++i) {
+        double t = std::tan((i + 0.5) * du * kHalfPi);
+        double dThetaDu = a * kHalfPi * (1 + t * t) / (1 + a * a * t * t);
+        ring(std::atan(a * t), dThetaDu * du);
+    }
+    double dTheta = (kHalfPi - thetaSplit) / kTheta;
+    for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
+    return total;
+}
+
+// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
+// wi = reflect(wo, h) over the half vectors h of integrateNormals, with d(omega_i) =
+// 4 (wo.h) d(omega_h) (Walter et al. 2007, eq. 14). g returns a Color.
+template <class G>
+Channels integrateHemisphere(Vec3 wo, float a, G g) {
+    return integrateNormals(a, [&](Vec3 h) {
+        Channels v{};
+        float woDotH = dot(wo, h);
+        if (woDotH <= 0) return v;
+        Vec3 wi = normalize(reflect(wo, h));
+        if (wi.z <= 0) return v;
+        Color f = g(wi);
+        for (int c = 0; c < 3; ++c) v[c] = double(f[c]) * 4.0 * woDotH;
+        return v;
+    });
+}
+
+// Reciprocity f(wo, wi) == f(wi, wo) over random pairs, and no reflection into the lower
+// hemisphere.
+inline void expectReciprocal(const Material& m, const MaterialInputs& in) {
+    Rng rng(7, 0, 0, StreamPurpose::Test);
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Color fab = m.eval(a, b, in, TransportMode::Radiance);
+        Color fba = m.eval(b, a, in, TransportMode::Radiance);
+        if (a.z <= 0 || b.z <= 0) {
+            ASSERT_TRUE(isBlack(fab) && isBlack(fba)) << "a.z " << a.z << " b.z " << b.z;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
+    }
+}
+
+// A non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf; a delta one's
+// pdf is its lobe probability.
+inline void expectSamplesAgreeWithPdfAndEval(const Material& m, const MaterialInputs& in) {
+    Rng rng(11, 0, 0, StreamPurpose::Test);
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO, 2.1f);
+        for (int i = 0; i < 20000; ++i) {
+            float uLobe = rng.uniform();
+            auto s = m.sample(wo, uLobe, {rng.uniform(), rng.uniform()}, in, TransportMode::Radiance);
+            if (!s) continue;
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+            ASSERT_GT(s->lobeProbability, 0.0f);
+            ASSERT_LE(s->lobeProbability, 1.0f);
+            if (s->delta) {
+                ASSERT_FLOAT_EQ(s->pdf, s->lobeProbability);
+                continue;
+            }
+            float p = m.pdf(wo, s->wi, in);
+            ASSERT_GT(s->pdf, 0.0f);
+            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
+            Color expected = m.eval(wo, s->wi, in, TransportMode::Radiance) * (s->wi.z / p);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
+        }
+    }
+}
+
+}  // namespace photon::bsdf_checks
