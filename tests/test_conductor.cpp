@@ -323,6 +323,23 @@ TEST(ConductorScene, ComplexIndexFields) {
               fresnelSchlick(Color(0.9f, 0.6f, 0.3f), 1.0f));
 }
 
+TEST(ConductorScene, TexturedIndex) {
+    // eta from an image, looked up at the hit's uv (8-bit texels are sRGB-decoded, so in [0, 1]).
+    const Material& m = loadedMetal({{"type", "conductor"},
+                                     {"eta", {{"texture", "textures/wood.png"}}},
+                                     {"k", {3.0, 2.5, 2.0}},
+                                     {"roughness", 0}});
+    EXPECT_TRUE(m.textured());
+    auto wood = Texture::load(test::fixture().scene / "textures/wood.png");
+    for (Vec2 uv : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.4f, 0.9f}}) {
+        auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(uv), TransportMode::Radiance);
+        ASSERT_TRUE(s && s->delta);
+        Color eta = vmax(wood->lookup(uv), Color(1e-3f));
+        EXPECT_EQ(s->weight, fresnelConductor(1.0f, eta, Color(3.0f, 2.5f, 2.0f))) << uv.x << " " << uv.y;
+    }
+    EXPECT_FALSE(loadedMetal({{"type", "conductor"}, {"metal", "Au"}}).textured());
+}
+
 TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
     // pbrt's remap: alpha = sqrt(0.04) = 0.2; unremapped: alpha = 0.04; photon's: 0.2^2 = 0.04.
     auto albedoAt = [](const Material& m) {

@@ -20,10 +20,13 @@ GGX microfacetDistribution(GgxAlpha alpha) {
 
 class Conductor final : public Material {
 public:
-    Conductor(ColorParam reflectance, std::optional<ComplexIor> ior, GgxAlpha alpha)
-        : Material(std::move(reflectance)), ior_(ior), ggx_(microfacetDistribution(alpha)) {}
+    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, GgxAlpha alpha)
+        : Material(std::move(reflectance)), ior_(std::move(ior)), ggx_(microfacetDistribution(alpha)) {}
 
     unsigned lobes() const override { return ggx_.smooth() ? kDeltaLobe : kGlossyLobe; }
+    bool textured() const override {
+        return Material::textured() || (ior_ && (ior_->eta.textured() || ior_->k.textured()));
+    }
 
     // f = F(wo.h) D G2 / (4 cos_o cos_i), Torrance-Sparrow with the height-correlated
     // Smith G2 (see microfacet.h). Zero unless wo and wi are both above the surface.
@@ -31,7 +34,7 @@ public:
         if (ggx_.smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnel(dot(wo, *h), in.tint) * ggx_.reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in) * ggx_.reflectionNoFresnel(wo, wi, *h);
     }
 
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
@@ -43,7 +46,7 @@ public:
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
-        if (ggx_.smooth()) return sampleMirror(wo, in.tint);
+        if (ggx_.smooth()) return sampleMirror(wo, in);
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
         Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
@@ -53,23 +56,27 @@ public:
     }
 
 private:
-    // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h.
-    Color fresnel(float cosTheta, Color tint) const {
-        return ior_ ? fresnelConductor(cosTheta, ior_->eta, ior_->k) : fresnelSchlick(tint, cosTheta);
+    // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h. Textured indices are
+    // kept physical texel by texel: eta > 0 (at least kMinEta), k >= 0.
+    Color fresnel(float cosTheta, const MaterialInputs& in) const {
+        if (!ior_) return fresnelSchlick(in.tint, cosTheta);
+        Color eta = vmax(ior_->eta.eval(in.uv), Color(kMinEta)), k = vmax(ior_->k.eval(in.uv), Color(0.0f));
+        return fresnelConductor(cosTheta, eta, k);
     }
 
     // The alpha -> 0 limit of the microfacet lobe: all microfacets face n, so h = n,
     // G = 1 and the reflectance is the Fresnel term at the incidence angle.
-    BSDFSample sampleMirror(Vec3 wo, Color tint) const {
+    BSDFSample sampleMirror(Vec3 wo, const MaterialInputs& in) const {
         BSDFSample s;
         s.wi = Vec3(-wo.x, -wo.y, wo.z);
-        s.weight = fresnel(wo.z, tint);
+        s.weight = fresnel(wo.z, in);
         s.pdf = 1;
         s.delta = true;
         return s;
     }
 
-    std::optional<ComplexIor> ior_;  // none: Schlick's Fresnel from the tint
+    static constexpr float kMinEta = 1e-3f;
+    std::optional<ComplexIorParam> ior_;  // none: Schlick's Fresnel from the tint
     GGX ggx_;
 };
 
@@ -85,7 +92,11 @@ MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha) {
 }
 
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha) {
-    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), ior, alpha);
+    return makeConductor(ComplexIorParam{ior.eta, ior.k}, alpha);
+}
+
+MaterialPtr makeConductor(ComplexIorParam ior, GgxAlpha alpha) {
+    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), std::move(ior), alpha);
 }
 
 }  // namespace photon

@@ -112,9 +112,14 @@ MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha);
 struct ComplexIor {
     Color eta, k;
 };
+// The same as colour parameters: constant, or textured and looked up at the hit's uv.
+struct ComplexIorParam {
+    ColorParam eta, k;
+};
 // GGX microfacet conductor with the exact Fresnel of the complex index `ior` (the outside
 // has index 1); its tint is white and unused.
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
+MaterialPtr makeConductor(ComplexIorParam ior, GgxAlpha alpha);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
 

@@ -45,20 +45,22 @@ float roughnessField(JsonObject& obj, float fallback) { return obj.number("rough
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
 
-// A conductor's eta or k: [r, g, b] inside `range`, or the name of a pbrt-v4 conductor
-// spectrum ("metal-Au-eta"), taken as its RGB projection (materials/metal_table.h).
-Color complexIorPart(const JsonValue& value, const Range& range) {
-    if (!value.json().is_string()) return value.vec3(range);
+// A conductor's eta or k: [r, g, b] inside `range`, the name of a pbrt-v4 conductor
+// spectrum ("metal-Au-eta", taken as its RGB projection, materials/metal_table.h), or a
+// texture {"texture": "path"} (a float image for values above 1).
+ColorParam complexIorPart(const JsonValue& value, const Range& range, LoadContext& ctx) {
+    if (value.json().is_object()) return readColorParam(value, ctx);
+    if (!value.json().is_string()) return ColorParam(value.vec3(range));
     auto color = findPbrtMetalSpectrum(value.string());
     if (!color) value.fail("unknown named spectrum \"" + value.string() + "\" (expected [r, g, b] or one of " +
                            pbrtMetalSpectrumNames() + ")");
-    return *color;
+    return ColorParam(*color);
 }
 
 // The complex index of a conductor: "metal" (a symbol of materials/metal_table.h) or "eta"
 // and "k" together; nullopt if none of them is given (the Schlick form). Both forms, or
 // either beside "reflectance", are refused.
-std::optional<ComplexIor> complexIorFields(JsonObject& obj) {
+std::optional<ComplexIorParam> complexIorFields(JsonObject& obj, LoadContext& ctx) {
     auto metal = obj.optional("metal");
     auto eta = obj.optional("eta");
     auto k = obj.optional("k");
@@ -71,10 +73,10 @@ std::optional<ComplexIor> complexIorFields(JsonObject& obj) {
         if (eta || k) (eta ? *eta : *k).fail("a named metal gives eta and k already: use either metal or eta and k");
         auto ior = findMetal(metal->string());
         if (!ior) metal->fail("unknown metal \"" + metal->string() + "\" (expected one of " + metalSymbols() + ")");
-        return ior;
+        return ComplexIorParam{ior->eta, ior->k};
     }
     if (!eta || !k) obj.required(eta ? "k" : "eta");  // throws: missing required field
-    return ComplexIor{complexIorPart(*eta, Range::positive()), complexIorPart(*k, Range::nonNegative())};
+    return ComplexIorParam{complexIorPart(*eta, Range::positive(), ctx), complexIorPart(*k, Range::nonNegative(), ctx)};
 }
 
 // GGX alphas from "roughness" or, for an anisotropic lobe, "uroughness" (along the shading
@@ -101,7 +103,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
         case Dielectric: m = makeDielectric(iorField(obj)); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
-            std::optional<ComplexIor> ior = complexIorFields(obj);
+            std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
             GgxAlpha alpha = conductorAlphaFields(obj);
             m = ior ? makeConductor(*ior, alpha) : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), alpha);
             break;
