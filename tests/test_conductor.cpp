@@ -246,6 +246,16 @@ TEST(ConductorFurnace, PerfectConductorKeepsTheSingleScatteringAlbedo) {
     }
 }
 
+// A closed form of that loss: for alpha = 1, D = 1/pi, and at normal incidence h is the half
+// vector of n and wi with Lambda(wo) = 0 and G2 = 2 cos_i / (1 + cos_i), so the albedo is
+// 1/(4 pi) int G2 d(omega_i) = int_0^1 2 mu / (1 + mu) d(mu) / 2 = 1 - ln 2.
+TEST(ConductorFurnace, PerfectConductorAtAlphaOneKeepsOneMinusLnTwo) {
+    auto material = makeConductor(ComplexIor{Color(1.0f), Color(1e4f)}, GgxAlpha{1.0f, 1.0f});
+    auto mc = estimateBySampling(*material, Vec3(0, 0, 1), tinted(kWhite), TransportMode::Radiance, 29);
+    double expected = 1.0 - std::log(2.0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mc.mean[c], expected, 0.005 * expected) << "MC se " << mc.stdError[c];
+}
+
 // The smooth limit is a delta mirror weighted by the exact Fresnel at the incidence angle.
 TEST(ConductorFurnace, SmoothLimitIsTheExactFresnelMirror) {
     ComplexIor gold = metal("Au");
