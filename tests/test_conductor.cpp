@@ -10,7 +10,6 @@
 #include <ostream>
 #include <string>
 #include <vector>
-#include "integrators/integrator.h"
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/metal_table.h"
@@ -18,7 +17,7 @@
 #include "materials/named_metals.h"
 #include "math/rng.h"
 #include "math/sampling.h"
-#include "scene/scene.h"
+#include "texture/image_texture.h"
 #include "bsdf_checks.h"
 #include "scene_loader_fixture.h"
 #include "test_support.h"
@@ -340,7 +339,7 @@ TEST(ConductorScene, TexturedIndex) {
                                      {"k", {3.0, 2.5, 2.0}},
                                      {"roughness", 0}});
     EXPECT_TRUE(m.textured());
-    auto wood = Texture::load(test::fixture().scene / "textures/wood.png");
+    auto wood = ImageTexture::load(test::fixture().scene / "textures/wood.png");
     for (Vec2 uv : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.4f, 0.9f}}) {
         auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(uv), TransportMode::Radiance);
         ASSERT_TRUE(s && s->delta);
@@ -388,31 +387,14 @@ TEST(ConductorScene, Errors) {
 
 // ---- SPPM against the path tracer, with rough gold ----
 
-// The Cornell box with its tall block in anisotropic rough gold and the short one in rough
-// copper: glossy transport both methods must agree on.
-SceneDescription metalBox(IntegratorKind kind, int passes, int64_t photons) {
-    constexpr int kResolution = 32;
-    SceneDescription d = test::exampleScene("cornell-box", kResolution, passes, photons, 7);
-    d.render.integrator = kind;
-    d.render.maxDepth = 64;
-    d.materials.push_back(makeConductor(metal("Au"), GgxAlpha{0.15f, 0.35f}));
-    d.materials.push_back(makeConductor(metal("Cu"), GgxAlpha{0.3f, 0.3f}));
-    uint32_t gold = uint32_t(d.materials.size() - 2), copper = gold + 1;
-    // The blocks are the scene's last two shapes: the short one, then the tall one.
-    size_t n = d.shapes.size();
-    d.shapes[n - 2].material = copper;
-    d.shapes[n - 1].material = gold;
-    return d;
-}
-
-TEST(ConductorSppmVsPath, RoughGoldBoxAgreesInMean) {
-    Image path = test::renderImage(metalBox(IntegratorKind::Path, 512, 0));
-    Image sppm = test::renderImage(metalBox(IntegratorKind::Sppm, 256, 40000));
-    Color pathMean = test::meanOver(path, 0, 0, path.width, path.height);
-    Color sppmMean = test::meanOver(sppm, 0, 0, sppm.width, sppm.height);
-    std::printf("  path %.4f %.4f %.4f  sppm %.4f %.4f %.4f\n", pathMean.x, pathMean.y, pathMean.z, sppmMean.x,
-                sppmMean.y, sppmMean.z);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sppmMean[c], pathMean[c], 0.02f * pathMean[c]) << "channel " << c;
+// The Cornell box with its blocks in anisotropic rough gold: glossy transport both methods
+// must agree on.
+TEST(ConductorSppmVsPath, RoughGoldBlocksAgreeInMean) {
+    auto gold = makeConductor(metal("Au"), GgxAlpha{0.15f, 0.35f});
+    test::PathAndSppmMeans means = test::renderPathAndSppm(test::cornellBoxWith(gold, 32), 512, 256, 40000);
+    std::printf("  path %.4f %.4f %.4f  sppm %.4f %.4f %.4f\n", means.path.x, means.path.y, means.path.z,
+                means.sppm.x, means.sppm.y, means.sppm.z);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(means.sppm[c], means.path[c], 0.02f * means.path[c]) << "channel " << c;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // path does.
 #include <gtest/gtest.h>
 #include "materials/material.h"
+#include "texture/image_texture.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "scene/scene.h"
@@ -23,7 +24,7 @@ SceneDescription baseScene() {
     d.camera = test::camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
     d.materials.push_back(makeDiffuse(Color(0.5f)));
     // A 2x1 texture: its lookup at the hit's uv shows the uv the hit carried.
-    d.materials.push_back(makeDiffuse(ColorParam(std::make_shared<Texture>(
+    d.materials.push_back(makeDiffuse(ColorParam(std::make_shared<ImageTexture>(
         2, 1, std::vector<Color>{Color(1, 0, 0), Color(0, 0, 1)}))));
     return d;
 }

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 #include "scene_loader_fixture.h"
+#include "texture/image_texture.h"
 
 using namespace photon::test;
 using photon::Color;
@@ -34,9 +35,33 @@ TEST(SceneLoader, FullSceneMaterials) {
     for (const auto& m : s.materials) EXPECT_TRUE(m);
     EXPECT_VEC3_NEAR(s.materials[0]->tint().value, Vec3(0.725f, 0.71f, 0.68f), 0);
     ASSERT_TRUE(s.materials[1]->tint().textured());
-    EXPECT_EQ(s.materials[1]->tint().texture->width(), 2);
+    EXPECT_EQ(dynamic_cast<const photon::ImageTexture&>(*s.materials[1]->tint().texture).width(), 2);
     EXPECT_VEC3_NEAR(s.materials[3]->tint().value, Color(0.95f), 0);
     EXPECT_VEC3_NEAR(s.materials[4]->tint().value, Vec3(0.9f, 0.6f, 0.3f), 0);
+}
+
+TEST(SceneLoader, MixOfNamedAndInlineMaterials) {
+    Json doc = fullScene();
+    doc["materials"]["blend"] = Json::parse(
+        R"({"type": "mix", "materials": ["white", {"type": "conductor", "roughness": 0.3}], "amount": 0.25})");
+    SceneDescription s = load(doc);
+    const photon::Material& blend = *s.materials.back();
+    EXPECT_EQ(blend.lobes(), unsigned(photon::kDiffuseLobe | photon::kGlossyLobe));
+    // A mirror pair of directions: three quarters of the white diffuse, a quarter of the metal.
+    const Vec3 wo(0.6f, 0, 0.8f), wi(-0.6f, 0, 0.8f);
+    const auto radiance = photon::TransportMode::Radiance;
+    auto metal = photon::makeConductor(Color(0.9f), 0.3f);
+    Color expected = s.materials[0]->eval(wo, wi, s.materials[0]->inputsAt({0, 0}), radiance) * 0.75f +
+                     metal->eval(wo, wi, metal->inputsAt({0, 0}), radiance) * 0.25f;
+    EXPECT_VEC3_NEAR(blend.eval(wo, wi, blend.inputsAt({0, 0}), radiance), expected, 1e-5);
+
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["later", "white"]})"); },
+                "materials.blend.materials[0]", "names no material defined before this one: \"later\"");
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["white"]})"); },
+                "materials.blend.materials", "must name exactly 2 materials");
+    expectError([](Json& d) { d["materials"]["blend"] = Json::parse(R"({"type": "mix", "materials": ["white", "glass"]})"); },
+                "materials.blend.materials",
+                "a mix cannot join a one-sided material (a dielectric) with a two-sided one");
 }
 
 TEST(SceneLoader, FullSceneQuads) {
@@ -350,7 +375,7 @@ TEST(ExampleScenes, TexturedMeshIsOutwardFacing) {
 // ---- textures ----
 
 TEST(Texture, BilinearLookupWithWrapAndBottomRowAtVZero) {
-    auto tex = photon::Texture::load(fixture().scene / "textures/wood.png");
+    auto tex = photon::ImageTexture::load(fixture().scene / "textures/wood.png");
     ASSERT_EQ(tex->width(), 2);
     ASSERT_EQ(tex->height(), 2);
     EXPECT_VEC3_NEAR(tex->lookup({0.25f, 0.25f}), Vec3(0, 0, 1), 1e-6);  // bottom left: blue
@@ -369,22 +394,22 @@ TEST(Texture, BilinearLookupWithWrapAndBottomRowAtVZero) {
 TEST(Texture, SrgbGreyAlphaAndFloat) {
     const fs::path dir = fixture().scene / "textures";
     writeImage<uint8_t>(dir / "grey.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {128, 10});
-    auto grey = photon::Texture::load(dir / "grey.png");
+    auto grey = photon::ImageTexture::load(dir / "grey.png");
     // The exact sRGB curve: 128/255 -> 0.2158605, and the linear toe 10/255/12.92.
     EXPECT_VEC3_NEAR(grey->lookup({0.25f, 0.5f}), Color(0.2158605f), 1e-6);
     EXPECT_VEC3_NEAR(grey->lookup({0.75f, 0.5f}), Color(10 / 255.0f / 12.92f), 1e-7);
 
     // Alpha is ignored, and colour is not premultiplied by it.
     writeImage<uint8_t>(dir / "alpha.png", 1, 1, 4, OIIO::TypeDesc::UINT8, {255, 128, 0, 0});
-    EXPECT_VEC3_NEAR(photon::Texture::load(dir / "alpha.png")->average(), Vec3(1, 0.2158605f, 0), 1e-6);
+    EXPECT_VEC3_NEAR(photon::ImageTexture::load(dir / "alpha.png")->average(), Vec3(1, 0.2158605f, 0), 1e-6);
 
     writeImage<uint16_t>(dir / "deep.png", 1, 1, 3, OIIO::TypeDesc::UINT16, {65535, 32768, 0});
     const float half16 = float(std::pow((32768 / 65535.0 + 0.055) / 1.055, 2.4));  // 0.21404
-    EXPECT_VEC3_NEAR(photon::Texture::load(dir / "deep.png")->average(), Vec3(1, half16, 0), 1e-6);
+    EXPECT_VEC3_NEAR(photon::ImageTexture::load(dir / "deep.png")->average(), Vec3(1, half16, 0), 1e-6);
 
     // Float images are linear; negative and NaN texels become 0.
     writeImage<float>(dir / "linear.exr", 2, 1, 3, OIIO::TypeDesc::FLOAT, {2.5f, 0.5f, -1, std::nanf(""), 1, 0});
-    auto lin = photon::Texture::load(dir / "linear.exr");
+    auto lin = photon::ImageTexture::load(dir / "linear.exr");
     EXPECT_VEC3_NEAR(lin->lookup({0.25f, 0.5f}), Vec3(2.5f, 0.5f, 0), 1e-6);
     EXPECT_VEC3_NEAR(lin->lookup({0.75f, 0.5f}), Vec3(0, 1, 0), 1e-6);
 }
@@ -393,19 +418,19 @@ TEST(Texture, TooLargeIsRefused) {
     const fs::path file = fixture().scene / "textures/wide.png";
     writeImage<uint8_t>(file, 16385, 1, 1, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(16385, 0));
     try {
-        photon::Texture::load(file);
+        photon::ImageTexture::load(file);
         FAIL() << "loaded a texture over the limit";
     } catch (const std::runtime_error& e) {
         EXPECT_EQ(std::string(e.what()),
                   "image is 16385x1, larger than the limit of 16384 pixels a side and 64M pixels in total");
     }
-    EXPECT_THROW(photon::Texture::load(fixture().scene / "textures/missing.png"), std::runtime_error);
+    EXPECT_THROW(photon::ImageTexture::load(fixture().scene / "textures/missing.png"), std::runtime_error);
 }
 
 TEST(Texture, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
     const fs::path file = fixture().scene / "textures/cut.png";
     writeImage<uint8_t>(file, 2, 2, 3, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(12, 200));
-    ASSERT_EQ(photon::Texture::load(file)->width(), 2);
+    ASSERT_EQ(photon::ImageTexture::load(file)->width(), 2);
     std::string bytes;
     {
         std::ifstream in(file, std::ios::binary);
@@ -419,7 +444,7 @@ TEST(Texture, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
     bytes.replace(next, 4, declared);
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
     try {
-        photon::Texture::load(file);
+        photon::ImageTexture::load(file);
         FAIL() << "loaded a PNG whose chunk runs past the end of the file";
     } catch (const std::runtime_error& e) {
         EXPECT_EQ(std::string(e.what()), "damaged PNG: chunk " + type + " at byte 33 declares 2147483632 bytes of data, "

@@ -139,7 +139,7 @@ TEST(SceneLoaderErrors, WrongTypes) {
     expectError([](Json& d) { d["shapes"] = Json::array(); }, "shapes", "must contain at least one shape");
     expectError([](Json& d) { d["lights"] = 1; }, "lights", "must be an array");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = "red"; }, "materials.white.albedo",
-                "must be an array of 3 numbers or {\"texture\": \"path\"}");
+                "must be an array of 3 numbers or a texture object");
     expectError([](Json& d) { d["shapes"][2]["transform"]["scale"] = "x"; }, "shapes[2].transform.scale",
                 "must be a number or an array of 3 numbers");
 }

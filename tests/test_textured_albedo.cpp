@@ -10,7 +10,7 @@
 #include "camera/camera.h"
 #include "integrators/integrator.h"
 #include "scene/scene.h"
-#include "texture/texture.h"
+#include "texture/image_texture.h"
 #include "test_support.h"
 
 namespace photon {
@@ -48,7 +48,7 @@ TEST(TexturedAlbedo, RadianceFollowsTheTexture) {
     std::filesystem::create_directories(dir);
     writeRamp(dir / "ramp.png");
     SceneDescription d = loadSceneJson(kScene, dir);
-    std::shared_ptr<const Texture> texture = Texture::load(dir / "ramp.png");  // as the loader reads it
+    std::shared_ptr<const ImageTexture> texture = ImageTexture::load(dir / "ramp.png");  // as the loader reads it
     std::filesystem::remove_all(dir);
     Camera camera(d.camera);
     Renderer renderer(Scene::build(std::move(d)));

@@ -6,6 +6,7 @@
 #include "math/frame.h"
 #include <photon/vec.h>
 #include "texture/color_param.h"
+#include "texture/float_param.h"
 
 namespace photon {
 
@@ -122,5 +123,8 @@ MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
 MaterialPtr makeConductor(ComplexIorParam ior, GgxAlpha alpha);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
+// (1 - amount) a + amount b. Throws std::invalid_argument if one part is one-sided (a
+// dielectric) and the other two-sided.
+MaterialPtr makeMix(MaterialPtr a, MaterialPtr b, FloatParam amount);
 
 }  // namespace photon

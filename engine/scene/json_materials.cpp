@@ -12,32 +12,9 @@ namespace {
 // energy and photon tracing would not converge.
 const Range kFraction = Range::closed(0, 1);
 
-std::shared_ptr<const Texture> loadTexture(const JsonValue& value, LoadContext& ctx) {
-    std::filesystem::path file = resolveFile(value, ctx);
-    auto cached = ctx.textures.find(file);
-    if (cached != ctx.textures.end()) return cached->second;
-    try {
-        return ctx.textures[file] = Texture::load(file);
-    } catch (const std::exception& e) {
-        failWithLibraryError(value, e, ctx);
-    }
-}
-
-// [r, g, b] or {"texture": "relative/path.png"}.
-ColorParam readColorParam(const JsonValue& value, LoadContext& ctx) {
-    if (value.json().is_object()) {
-        JsonObject obj = value.object();
-        auto texture = loadTexture(obj.required("texture"), ctx);
-        obj.finish();
-        return ColorParam(texture);
-    }
-    if (!value.json().is_array()) value.fail("must be an array of 3 numbers or {\"texture\": \"path\"}");
-    return ColorParam(value.vec3(kFraction));
-}
-
 ColorParam colorField(JsonObject& obj, std::string_view key, Color fallback, LoadContext& ctx) {
     auto value = obj.optional(key);
-    return value ? readColorParam(*value, ctx) : ColorParam(fallback);
+    return value ? readColorParam(*value, ctx, kFraction) : ColorParam(fallback);
 }
 
 // Roughness is the perceptual GGX parameter (alpha = roughness^2), meaningful in [0, 1].
@@ -45,12 +22,11 @@ float roughnessField(JsonObject& obj, float fallback) { return obj.number("rough
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
 
-// A conductor's eta or k: [r, g, b] inside `range`, the name of a pbrt-v4 conductor
-// spectrum ("metal-Au-eta", taken as its RGB projection, materials/metal_table.h), or a
-// texture {"texture": "path"} (a float image for values above 1).
+// A conductor's eta or k: [r, g, b] or a texture, inside `range` (docs/scene-format.md,
+// "Textures"; a float image for values above 1), or the name of a pbrt-v4 conductor spectrum
+// ("metal-Au-eta"), taken as its RGB projection (materials/metal_table.h).
 ColorParam complexIorPart(const JsonValue& value, const Range& range, LoadContext& ctx) {
-    if (value.json().is_object()) return readColorParam(value, ctx);
-    if (!value.json().is_string()) return ColorParam(value.vec3(range));
+    if (!value.json().is_string()) return readColorParam(value, ctx, range);
     auto color = findPbrtMetalSpectrum(value.string());
     if (!color) value.fail("unknown named spectrum \"" + value.string() + "\" (expected [r, g, b] or one of " +
                            pbrtMetalSpectrumNames() + ")");
@@ -93,10 +69,37 @@ GgxAlpha conductorAlphaFields(JsonObject& obj) {
     return {u, v};
 }
 
-MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
+MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
+
+// A part of a mix: the name of a material defined before it, or a material object.
+MaterialPtr readMixPart(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
+    if (!value.json().is_string()) return readMaterial(value, ctx, defined);
+    auto found = ctx.materialIndex.find(value.string());
+    if (found == ctx.materialIndex.end() || found->second >= defined.size())
+        value.fail("names no material defined before this one: \"" + value.string() + "\"");
+    return defined[found->second];
+}
+
+// {"type": "mix", "materials": [a, b], "amount": t}: (1 - t) a + t b.
+MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
+    JsonValue parts = obj.required("materials");
+    std::vector<JsonValue> two = parts.elements();
+    if (two.size() != 2) parts.fail("must name exactly 2 materials");
+    MaterialPtr a = readMixPart(two[0], ctx, defined), b = readMixPart(two[1], ctx, defined);
+    auto amount = obj.optional("amount");
+    FloatParam t = amount ? readFloatParam(*amount, ctx, kFraction) : FloatParam(0.5f);
+    try {
+        return makeMix(std::move(a), std::move(b), std::move(t));
+    } catch (const std::invalid_argument& e) {
+        parts.fail(e.what());
+    }
+}
+
+MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic };
-    auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic"}, "type"));
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, Mix };
+    auto type = Type(
+        obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic", "mix"}, "type"));
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
@@ -114,6 +117,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx) {
             m = makePlastic(albedo, ior, roughnessField(obj, 0.0f));
             break;
         }
+        case Mix: m = readMix(obj, ctx, defined); break;
     }
     obj.finish();
     return m;
@@ -125,7 +129,7 @@ void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& s
     JsonObject obj = value.object();
     for (auto& [name, material] : obj.members()) {
         ctx.materialIndex[name] = uint32_t(scene.materials.size());
-        scene.materials.push_back(readMaterial(material, ctx));
+        scene.materials.push_back(readMaterial(material, ctx, scene.materials));
         scene.materialNames.push_back(name);
     }
 }

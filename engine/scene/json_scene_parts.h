@@ -12,7 +12,9 @@
 #include <vector>
 #include <photon/scene_file.h>
 #include "math/transform.h"
-#include "texture/texture.h"
+#include "texture/color_param.h"
+#include "texture/float_param.h"
+#include "texture/image_texture.h"
 #include "scene/json_reader.h"
 #include "description/scene_description.h"
 
@@ -20,8 +22,9 @@ namespace photon::scene_json {
 
 struct LoadContext {
     std::filesystem::path baseDir;  // files resolve against it; empty: the working directory
-    // Textures by resolved path, so materials sharing an image share one copy.
-    std::map<std::filesystem::path, std::shared_ptr<const Texture>> textures;
+    // Images by resolved path and the channels read, so parameters sharing an image share
+    // one copy (the scene's texture cache).
+    std::map<std::pair<std::filesystem::path, int>, std::shared_ptr<const ImageTexture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
     // Every file resolveFile was asked for, relative and in normal form: a record of what was
@@ -39,6 +42,13 @@ std::filesystem::path resolveFile(const JsonValue& value, const LoadContext& ctx
 // Sets each override's key (a dotted path under "render" or "camera") in the document,
 // creating the objects on the way; throws SceneError at the key for any other key.
 void applySettingOverrides(Json& doc, const std::vector<SettingOverride>& overrides);
+
+// A colour parameter: [r, g, b] inside `range`, or a texture object (json_textures.cpp).
+ColorParam readColorParam(const JsonValue& value, LoadContext& ctx, const Range& range);
+// A float parameter: a number inside `range`, or a texture object whose images are read
+// for `channels` (alpha for cutouts).
+FloatParam readFloatParam(const JsonValue& value, LoadContext& ctx, const Range& range,
+                          ImageChannels channels = ImageChannels::Color);
 
 CameraDescription readCamera(const JsonValue& value);
 RenderSettings readRender(const JsonValue& value);

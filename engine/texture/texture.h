@@ -1,39 +1,18 @@
-// An RGB image texture held in memory, read through OpenImageIO.
+// A colour that varies over a surface with its texture coordinates: an image, a pattern,
+// or an expression of other textures. Float parameters read a texture's channel mean
+// (see float_param.h).
 #pragma once
-#include <filesystem>
-#include <memory>
-#include <optional>
-#include <string>
-#include <vector>
 #include <photon/vec.h>
 
 namespace photon {
 
-// libpng believes a chunk's declared length and reserves that much memory before it finds
-// the file shorter: a 2 KB file declaring a 2 GB chunk reserves 2 GB. So a PNG's chunk
-// lengths are checked against the file before any decoder opens it. Returns what is wrong
-// (with the chunk and its byte offset), or nothing for a sound PNG or a file of another kind.
-std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file);
-
 class Texture {
 public:
-    // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
-    // sRGB-encoded and linearised; float images (EXR, HDR) as linear. Throws
-    // std::runtime_error with the reason on failure.
-    static std::shared_ptr<const Texture> load(const std::filesystem::path& file);
-    Texture(int width, int height, std::vector<Color> texels);
-
-    // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
-    Color lookup(Vec2 uv) const;
-    int width() const { return width_; }
-    int height() const { return height_; }
-    Color average() const { return average_; }
-
-private:
-    Color texel(int x, int y) const;
-    int width_, height_;
-    std::vector<Color> texels_;
-    Color average_;
+    virtual ~Texture() = default;
+    // The colour at texture coordinates uv (any finite or non-finite value; images wrap).
+    virtual Color lookup(Vec2 uv) const = 0;
+    // The mean of lookup() over the unit square: what light power and lobe choices use.
+    virtual Color average() const = 0;
 };
 
 }  // namespace photon

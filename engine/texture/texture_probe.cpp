@@ -4,7 +4,7 @@
 #include <cctype>
 #include <set>
 #include <string>
-#include "texture/texture.h"
+#include "texture/image_texture.h"
 
 namespace photon {
 

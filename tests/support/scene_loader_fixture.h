@@ -15,7 +15,7 @@
 #include "scene/mesh_loader.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
-#include "texture/texture.h"
+#include "texture/image_texture.h"
 
 namespace photon::test {
 

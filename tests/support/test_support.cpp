@@ -48,6 +48,35 @@ Image renderImage(SceneDescription d) {
     return renderer.snapshot();
 }
 
+SceneDescription cornellBoxWith(MaterialPtr material, int resolution, bool sphere) {
+    SceneDescription d = exampleScene("cornell-box", resolution, 1, 0, 11);
+    const uint32_t index = uint32_t(d.materials.size());
+    d.materials.push_back(std::move(material));
+    d.materialNames.push_back("under test");
+    // The blocks are its two meshes of more than one quad.
+    for (ShapeDescription& s : d.shapes)
+        if (s.kind == ShapeDescription::Kind::Mesh && s.mesh.triangleCount() > 2)
+            s.material = index;
+    if (sphere) {
+        std::erase_if(d.shapes, [&](const ShapeDescription& s) { return s.material == index; });
+        d.shapes.push_back(test::sphere({0.1f, 0.3f, 0.1f}, 0.3f, index));
+    }
+    d.render.maxDepth = 64;
+    return d;
+}
+
+PathAndSppmMeans renderPathAndSppm(SceneDescription d, int pathPasses, int sppmPasses, int64_t photonsPerPass) {
+    auto meanOf = [&](IntegratorKind kind, int passes, int64_t photons) {
+        SceneDescription copy = d;
+        copy.render.integrator = kind;
+        copy.render.passes = passes;
+        copy.render.photonsPerPass = photons;
+        Image image = renderImage(std::move(copy));
+        return meanOver(image, 0, 0, image.width, image.height);
+    };
+    return {meanOf(IntegratorKind::Path, pathPasses, 0), meanOf(IntegratorKind::Sppm, sppmPasses, photonsPerPass)};
+}
+
 Image renderWithThreads(SceneDescription d, int threads) {
     Image image;
     tbb::task_arena arena(threads);

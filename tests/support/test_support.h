@@ -32,6 +32,17 @@ inline SceneDescription exampleScene(const std::string& name, int resolution, in
 
 // Renders all the scene's passes; the snapshot after the last.
 Image renderImage(SceneDescription d);
+
+// The small scene a material's SPPM image is held to the path tracer's on: the Cornell box
+// (scenes/cornell-box.json) at `resolution` with its two blocks made of `material`, or,
+// with `sphere`, the blocks replaced by one sphere of it (radius 0.3, on the floor).
+SceneDescription cornellBoxWith(MaterialPtr material, int resolution, bool sphere = false);
+// Image means of the scene by the path tracer and by SPPM, with the passes and photons
+// given, at maximum depth 64 (transport the two see alike).
+struct PathAndSppmMeans {
+    Color path, sppm;
+};
+PathAndSppmMeans renderPathAndSppm(SceneDescription d, int pathPasses, int sppmPasses, int64_t photonsPerPass);
 // The same with at most `threads` oneTBB threads (determinism tests).
 Image renderWithThreads(SceneDescription d, int threads);
 

@@ -275,7 +275,17 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
     for (uint64_t count = patchCount(scene, size); count > limit; count = patchCount(scene, size))
         size *= std::max(1.05f, std::sqrt(float(count) / float(limit)));
     patchSize_ = size;
-    for (const MaterialPtr& m : scene.description().materials) diffuseFactors_.push_back(diffuseFactor(*m));
+    const SceneDescription& d = scene.description();
+    for (size_t i = 0; i < d.materials.size(); ++i) {
+        // A patch's reflectance is its diffuse factor times the colour at its centre: a
+        // texture on anything but the colour (a mix amount, a roughness) would be read at
+        // one point for the whole material.
+        const Material& m = *d.materials[i];
+        if (m.textured() && !m.tint().textured())
+            throw std::runtime_error("radiosity: material \"" + (i < d.materialNames.size() ? d.materialNames[i] : "") +
+                                     "\" has a texture on a parameter other than its colour; render it with sppm or path");
+        diffuseFactors_.push_back(diffuseFactor(m));
+    }
     shapes_.resize(scene.description().shapes.size());
     Builder builder(*this, scene, size);
     for (uint32_t i = 0; i < shapes_.size(); ++i) builder.addShape(i);

@@ -1,4 +1,4 @@
-#include "texture/texture.h"
+#include "texture/image_texture.h"
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -43,12 +43,12 @@ void checkSize(const OIIO::ImageSpec& spec) {
                                  std::to_string(kMaxTexels >> 20) + "M pixels in total");
 }
 
-// Reads the first `channels` channels (1: grey, 3: RGB; alpha is never read) as `T`.
+// Reads channels [first, first + channels) (1: grey or alpha, 3: RGB) as `T`.
 template <typename T>
-std::vector<T> readPixels(OIIO::ImageInput& in, int channels, OIIO::TypeDesc type) {
+std::vector<T> readPixels(OIIO::ImageInput& in, int first, int channels, OIIO::TypeDesc type) {
     const OIIO::ImageSpec& spec = in.spec();
     std::vector<T> data(size_t(spec.width) * spec.height * channels);
-    if (!in.read_image(0, 0, 0, channels, type, data.data())) {
+    if (!in.read_image(0, 0, first, first + channels, type, data.data())) {
         std::string err = in.geterror();
         throw std::runtime_error(err.empty() ? "cannot read image" : err);
     }
@@ -96,10 +96,10 @@ std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file)
     return std::nullopt;  // cut short before IEND: OIIO reports that
 }
 
-std::shared_ptr<const Texture> Texture::load(const std::filesystem::path& file) {
+std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& file, ImageChannels which) {
     if (std::optional<std::string> damage = findPngChunkDamage(file)) throw std::runtime_error(*damage);
     // Keep colour as stored: by default OIIO premultiplies unassociated alpha (PNG), which
-    // would darken texels wherever alpha < 1, and the renderer ignores alpha.
+    // would darken texels wherever alpha < 1; alpha, where wanted, is read on its own.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
     auto in = OIIO::ImageInput::open(file.string(), &config);
@@ -109,30 +109,38 @@ std::shared_ptr<const Texture> Texture::load(const std::filesystem::path& file) 
     }
     const OIIO::ImageSpec& spec = in->spec();
     checkSize(spec);
-    const int channels = spec.nchannels >= 3 ? 3 : 1;
+    const bool alpha = which == ImageChannels::Alpha && spec.alpha_channel >= 0;
+    const int first = alpha ? spec.alpha_channel : 0;
+    const int channels = alpha ? 1 : (spec.nchannels >= 3 ? 3 : 1);
 
     std::vector<Color> texels;
-    if (spec.format == OIIO::TypeDesc::UINT8) {
+    if (alpha) {
+        // Coverage is stored linearly in every format.
+        texels = toColors(readPixels<float>(*in, first, 1, OIIO::TypeDesc::FLOAT), 1,
+                          [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f; });
+    } else if (spec.format == OIIO::TypeDesc::UINT8) {
         const auto& table = srgb8Table();
-        texels = toColors(readPixels<uint8_t>(*in, channels, OIIO::TypeDesc::UINT8), channels,
+        texels = toColors(readPixels<uint8_t>(*in, first, channels, OIIO::TypeDesc::UINT8), channels,
                           [&](uint8_t v) { return table[v]; });
     } else if (spec.format.is_floating_point()) {
         // Float images (EXR, HDR) hold linear values; NaN, inf and negative texels would
         // break the energy bookkeeping of photon tracing, so they become 0.
-        texels = toColors(readPixels<float>(*in, channels, OIIO::TypeDesc::FLOAT), channels,
+        texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
                           [](float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; });
     } else {
         // Other integer formats (16-bit PNG, TIFF) arrive normalised to [0, 1], still sRGB.
-        texels = toColors(readPixels<float>(*in, channels, OIIO::TypeDesc::FLOAT), channels,
+        texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
                           [](float v) { return srgbToLinear(std::clamp(v, 0.0f, 1.0f)); });
     }
-    return std::make_shared<const Texture>(spec.width, spec.height, std::move(texels));
+    if (which == ImageChannels::Alpha && !alpha)  // no alpha channel: the mean of what there is
+        for (Color& c : texels) c = Color((c.x + c.y + c.z) / 3.0f);
+    return std::make_shared<const ImageTexture>(spec.width, spec.height, std::move(texels));
 }
 
-Texture::Texture(int width, int height, std::vector<Color> texels)
+ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels)
     : width_(width), height_(height), texels_(std::move(texels)) {
     if (width <= 0 || height <= 0 || texels_.size() != size_t(width) * size_t(height))
-        throw std::invalid_argument("Texture: texel count does not match width x height");
+        throw std::invalid_argument("ImageTexture: texel count does not match width x height");
     // Bilinear filtering with wrap-around preserves the mean, so this is exactly the
     // average of lookup() over the unit square. Summed in double: 64M floats would lose
     // precision in a float accumulator.
@@ -143,9 +151,7 @@ Texture::Texture(int width, int height, std::vector<Color> texels)
     average_ = Color(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
 }
 
-Color Texture::texel(int x, int y) const { return texels_[size_t(y) * width_ + x]; }
-
-Color Texture::lookup(Vec2 uv) const {
+Color ImageTexture::lookup(Vec2 uv) const {
     // Reduce to [0, 1) first: this is the wrap, and it keeps the float→int casts below
     // defined for any uv. Non-finite uvs read as 0.
     auto wrap01 = [](float t) {

@@ -1,0 +1,97 @@
+// Colour and float parameters that take a constant or a texture: images (with a uv
+// scale and offset), checkerboards, products and mixes, nested as deep as a scene likes.
+// The grammar is in docs/scene-format.md ("Textures").
+#include "scene/json_scene_parts.h"
+#include "texture/image_texture.h"
+#include "texture/textures.h"
+
+namespace photon::scene_json {
+
+namespace {
+
+// What a parameter's constants may be, and how an image's channels are read for it.
+struct ParamKind {
+    bool color;              // [r, g, b] constants (else numbers)
+    Range range;             // every constant inside it
+    ImageChannels channels;  // images: colour or alpha
+};
+
+std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx) {
+    std::filesystem::path file = resolveFile(value, ctx);
+    auto key = std::make_pair(file, int(channels));
+    auto cached = ctx.textures.find(key);
+    if (cached != ctx.textures.end()) return cached->second;
+    try {
+        return ctx.textures[key] = ImageTexture::load(file, channels);
+    } catch (const std::exception& e) {
+        failWithLibraryError(value, e, ctx);
+    }
+}
+
+UvMapping readUvMapping(JsonObject& obj) {
+    UvMapping m;
+    if (auto s = obj.optional("uv_scale")) m.scale = s->vec2(Range::any());
+    if (auto o = obj.optional("uv_offset")) m.offset = o->vec2(Range::any());
+    return m;
+}
+
+ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& kind);
+
+std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, const ParamKind& kind) {
+    if (!obj.has("type")) {  // {"texture": "file.png"}: an image
+        auto image = loadImage(obj.required("texture"), kind.channels, ctx);
+        return makeUvMappedTexture(image, readUvMapping(obj));
+    }
+    enum Type { Image, Checkerboard, Product, Mix };
+    switch (Type(obj.required("type").choice({"image", "checkerboard", "product", "mix"}, "texture type"))) {
+        case Image: {
+            auto image = loadImage(obj.required("file"), kind.channels, ctx);
+            return makeUvMappedTexture(image, readUvMapping(obj));
+        }
+        case Checkerboard: {
+            ColorParam even = readParam(obj.required("even"), ctx, kind);
+            ColorParam odd = readParam(obj.required("odd"), ctx, kind);
+            return makeCheckerboardTexture(std::move(even), std::move(odd), readUvMapping(obj));
+        }
+        case Product: {
+            ColorParam a = readParam(obj.required("a"), ctx, kind);
+            ColorParam b = readParam(obj.required("b"), ctx, kind);
+            return makeProductTexture(std::move(a), std::move(b));
+        }
+        case Mix: {
+            ColorParam a = readParam(obj.required("a"), ctx, kind);
+            ColorParam b = readParam(obj.required("b"), ctx, kind);
+            FloatParam amount = readFloatParam(obj.required("amount"), ctx, Range::closed(0, 1));
+            return makeMixTexture(std::move(a), std::move(b), std::move(amount));
+        }
+    }
+    return nullptr;  // unreachable: choice() accepts only the names above
+}
+
+ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& kind) {
+    if (value.json().is_object()) {
+        JsonObject obj = value.object();
+        auto texture = readTexture(obj, ctx, kind);
+        obj.finish();
+        return ColorParam(std::move(texture));
+    }
+    if (kind.color) {
+        if (!value.json().is_array()) value.fail("must be an array of 3 numbers or a texture object");
+        return ColorParam(value.vec3(kind.range));
+    }
+    if (!value.json().is_number()) value.fail("must be a number or a texture object");
+    return ColorParam(Color(value.number(kind.range)));
+}
+
+}  // namespace
+
+ColorParam readColorParam(const JsonValue& value, LoadContext& ctx, const Range& range) {
+    return readParam(value, ctx, {true, range, ImageChannels::Color});
+}
+
+FloatParam readFloatParam(const JsonValue& value, LoadContext& ctx, const Range& range, ImageChannels channels) {
+    ColorParam p = readParam(value, ctx, {false, range, channels});
+    return p.textured() ? FloatParam(p.texture) : FloatParam(p.value.x);
+}
+
+}  // namespace photon::scene_json

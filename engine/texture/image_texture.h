@@ -1,0 +1,47 @@
+// An RGB (or single-channel) image texture held in memory, read through OpenImageIO.
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+#include "texture/texture.h"
+
+namespace photon {
+
+// libpng believes a chunk's declared length and reserves that much memory before it finds
+// the file shorter: a 2 KB file declaring a 2 GB chunk reserves 2 GB. So a PNG's chunk
+// lengths are checked against the file before any decoder opens it. Returns what is wrong
+// (with the chunk and its byte offset), or nothing for a sound PNG or a file of another kind.
+std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file);
+
+// Which of an image's channels a texture reads.
+enum class ImageChannels {
+    Color,  // RGB (a grey image replicated); alpha ignored
+    Alpha,  // the alpha channel in all three (cutouts); an image without one reads its grey/RGB mean
+};
+
+class ImageTexture final : public Texture {
+public:
+    // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
+    // sRGB-encoded and linearised (alpha is linear in every format); float images (EXR,
+    // HDR) as linear. Throws std::runtime_error with the reason on failure.
+    static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& file,
+                                                    ImageChannels channels = ImageChannels::Color);
+    ImageTexture(int width, int height, std::vector<Color> texels);
+
+    // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
+    Color lookup(Vec2 uv) const override;
+    Color average() const override { return average_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Texel (x, y), row 0 at the top of the image.
+    Color texel(int x, int y) const { return texels_[size_t(y) * width_ + x]; }
+
+private:
+    int width_, height_;
+    std::vector<Color> texels_;
+    Color average_;
+};
+
+}  // namespace photon
