@@ -349,6 +349,30 @@ TEST(ConductorScene, TexturedIndex) {
     EXPECT_FALSE(loadedMetal({{"type", "conductor"}, {"metal", "Au"}}).textured());
 }
 
+TEST(ConductorScene, TexturedRoughness) {
+    // A roughness texture reads the mean of its channels at the hit's uv; the lobe there is the
+    // one of that constant roughness (remapped the same way).
+    const Material& m = loadedMetal({{"type", "conductor"},
+                                     {"metal", "Au"},
+                                     {"uroughness", {{"texture", "textures/wood.png"}}},
+                                     {"vroughness", 0.3},
+                                     {"remap_roughness", true}});
+    EXPECT_TRUE(m.textured());
+    EXPECT_EQ(m.lobes(), unsigned(kGlossyLobe));
+    auto wood = ImageTexture::load(test::fixture().scene / "textures/wood.png");
+    Vec3 wo = direction(0.6f, 0.4f), wi = direction(0.7f, 3.0f);
+    for (Vec2 uv : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.4f, 0.9f}}) {
+        Color texel = wood->lookup(uv);
+        float u = (texel.x + texel.y + texel.z) / 3.0f;
+        ComplexIor gold = metal("Au");
+        auto constant = makeConductor(ComplexIorParam{gold.eta, gold.k}, GgxRoughness{u, 0.3f, RoughnessToAlpha::SquareRoot});
+        MaterialInputs at{uv, kWhite};
+        EXPECT_EQ(m.eval(wo, wi, at, TransportMode::Radiance), constant->eval(wo, wi, at, TransportMode::Radiance));
+        EXPECT_EQ(m.pdf(wo, wi, at), constant->pdf(wo, wi, at));
+    }
+    EXPECT_FALSE(loadedMetal({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0.3}}).textured());
+}
+
 TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
     // pbrt's remap: alpha = sqrt(0.04) = 0.2; unremapped: alpha = 0.04; photon's: 0.2^2 = 0.04.
     auto albedoAt = [](const Material& m) {

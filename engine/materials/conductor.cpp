@@ -9,53 +9,77 @@
 namespace photon {
 namespace {
 
-// The lobe's GGX distribution. A lobe that is not smooth keeps each alpha at kSmoothAlpha or
-// more, so that a very narrow direction of an anisotropic lobe stays within float range
-// (pbrt-v4's TrowbridgeReitzDistribution does the same).
-GGX microfacetDistribution(GgxAlpha alpha) {
-    GGX ggx(alpha.x, alpha.y);
+float alphaOf(float roughness, RoughnessToAlpha toAlpha) {
+    switch (toAlpha) {
+        case RoughnessToAlpha::Square: return roughnessToAlpha(roughness);
+        case RoughnessToAlpha::SquareRoot: return pbrtRoughnessToAlpha(roughness);
+        case RoughnessToAlpha::Identity: break;
+    }
+    return roughness;
+}
+
+// The lobe's GGX distribution for alphas ax, ay. A lobe that is not smooth keeps each alpha
+// at kSmoothAlpha or more, so that a very narrow direction of an anisotropic lobe stays
+// within float range (pbrt-v4's TrowbridgeReitzDistribution does the same).
+GGX microfacetDistribution(float ax, float ay) {
+    GGX ggx(ax, ay);
     if (ggx.smooth()) return ggx;
-    return GGX(std::max(alpha.x, kSmoothAlpha), std::max(alpha.y, kSmoothAlpha));
+    return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
 }
 
 class Conductor final : public Material {
 public:
-    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, GgxAlpha alpha)
-        : Material(std::move(reflectance)), ior_(std::move(ior)), ggx_(microfacetDistribution(alpha)) {}
+    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, GgxRoughness roughness)
+        : Material(std::move(reflectance)),
+          ior_(std::move(ior)),
+          roughness_(std::move(roughness)),
+          texturedRoughness_(roughness_.u.textured() || roughness_.v.textured()),
+          ggx_(microfacetDistribution(alphaOf(roughness_.u.value, roughness_.toAlpha),
+                                      alphaOf(roughness_.v.value, roughness_.toAlpha))) {}
 
-    unsigned lobes() const override { return ggx_.smooth() ? kDeltaLobe : kGlossyLobe; }
+    unsigned lobes() const override { return smooth() ? kDeltaLobe : kGlossyLobe; }
     bool textured() const override {
-        return Material::textured() || (ior_ && (ior_->eta.textured() || ior_->k.textured()));
+        return Material::textured() || texturedRoughness_ || (ior_ && (ior_->eta.textured() || ior_->k.textured()));
     }
 
     // f = F(wo.h) D G2 / (4 cos_o cos_i), Torrance-Sparrow with the height-correlated
     // Smith G2 (see microfacet.h). Zero unless wo and wi are both above the surface.
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode, unsigned lobes) const override {
-        if (ggx_.smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
+        if (smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnel(dot(wo, *h), in) * ggx_.reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in) * ggxAt(in.uv).reflectionNoFresnel(wo, wi, *h);
     }
 
-    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
-        if (ggx_.smooth() || !(lobes & kGlossyLobe)) return 0;
+    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
+        if (smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
-        return h ? ggx_.reflectionPdf(wo, *h) : 0.0f;
+        return h ? ggxAt(in.uv).reflectionPdf(wo, *h) : 0.0f;
     }
 
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
-        if (ggx_.smooth()) return sampleMirror(wo, in);
+        if (smooth()) return sampleMirror(wo, in);
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
-        Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
+        Vec3 wi = reflect(wo, ggxAt(in.uv).sampleVisibleNormal(wo, u));
         // Weighted through eval()/pdf(); the weight reduces analytically to F G2 / G1(wo)
         // (Heitz 2018).
         return weightedSample(wo, wi, in, mode, lobes);
     }
 
 private:
+    bool smooth() const { return !texturedRoughness_ && ggx_.smooth(); }
+
+    // The distribution at a hit: the constant one, or the textured roughness looked up there.
+    GGX ggxAt(Vec2 uv) const {
+        if (!texturedRoughness_) return ggx_;
+        float ax = alphaOf(roughness_.u.eval(uv), roughness_.toAlpha);
+        float ay = alphaOf(roughness_.v.eval(uv), roughness_.toAlpha);
+        return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
+    }
+
     // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h. Textured indices are
     // kept physical texel by texel: eta > 0 (at least kMinEta), k >= 0.
     Color fresnel(float cosTheta, const MaterialInputs& in) const {
@@ -77,26 +101,31 @@ private:
 
     static constexpr float kMinEta = 1e-3f;
     std::optional<ComplexIorParam> ior_;  // none: Schlick's Fresnel from the tint
-    GGX ggx_;
+    GgxRoughness roughness_;
+    bool texturedRoughness_;
+    GGX ggx_;  // with constant roughness
 };
 
 }  // namespace
 
 MaterialPtr makeConductor(ColorParam reflectance, float roughness) {
-    float alpha = roughnessToAlpha(roughness);
-    return makeConductor(std::move(reflectance), GgxAlpha{alpha, alpha});
+    return makeConductor(std::move(reflectance), GgxRoughness{roughness, roughness, RoughnessToAlpha::Square});
 }
 
 MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha) {
-    return std::make_shared<Conductor>(std::move(reflectance), std::nullopt, alpha);
+    return makeConductor(std::move(reflectance), GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
+}
+
+MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness) {
+    return std::make_shared<Conductor>(std::move(reflectance), std::nullopt, std::move(roughness));
 }
 
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha) {
-    return makeConductor(ComplexIorParam{ior.eta, ior.k}, alpha);
+    return makeConductor(ComplexIorParam{ior.eta, ior.k}, GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
 }
 
-MaterialPtr makeConductor(ComplexIorParam ior, GgxAlpha alpha) {
-    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), std::move(ior), alpha);
+MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness) {
+    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), std::move(ior), std::move(roughness));
 }
 
 }  // namespace photon

@@ -109,6 +109,17 @@ struct GgxAlpha {
 };
 // The same conductor with anisotropic roughness.
 MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha);
+// How a roughness parameter becomes a GGX alpha: photon's perceptual roughness, alpha = r^2
+// (Burley 2012); pbrt-v4's remapped roughness, alpha = sqrt(r); or r as alpha itself (pbrt-v4
+// without remapping).
+enum class RoughnessToAlpha { Square, SquareRoot, Identity };
+// A lobe's roughness along the shading frame's s (u) and t (v) axes, constant or textured.
+// A textured roughness always makes a glossy lobe (each alpha at least kSmoothAlpha).
+struct GgxRoughness {
+    FloatParam u, v;
+    RoughnessToAlpha toAlpha = RoughnessToAlpha::Square;
+};
+MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness);
 // Complex index of refraction eta + i k per colour channel; k is the extinction coefficient.
 struct ComplexIor {
     Color eta, k;
@@ -120,7 +131,7 @@ struct ComplexIorParam {
 // GGX microfacet conductor with the exact Fresnel of the complex index `ior` (the outside
 // has index 1); its tint is white and unused.
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
-MaterialPtr makeConductor(ComplexIorParam ior, GgxAlpha alpha);
+MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
 // (1 - amount) a + amount b. Throws std::invalid_argument if one part is one-sided (a

@@ -1,6 +1,5 @@
 // The "materials" section: a name → material map, built with the factories of
 // materials/material.h.
-#include "materials/microfacet.h"
 #include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
 
@@ -55,18 +54,21 @@ std::optional<ComplexIorParam> complexIorFields(JsonObject& obj, LoadContext& ct
     return ComplexIorParam{complexIorPart(*eta, Range::positive(), ctx), complexIorPart(*k, Range::nonNegative(), ctx)};
 }
 
-// GGX alphas from "roughness" or, for an anisotropic lobe, "uroughness" (along the shading
-// frame's s axis) and "vroughness" (along t), each defaulting to "roughness". photon's
-// roughness is perceptual, alpha = roughness^2; "remap_roughness" switches to pbrt-v4's
-// meaning: true, alpha = sqrt(roughness) (its remaproughness); false, alpha = roughness.
-GgxAlpha conductorAlphaFields(JsonObject& obj) {
-    float roughness = roughnessField(obj, 0.2f);
-    float u = obj.number("uroughness", roughness, kFraction);
-    float v = obj.number("vroughness", roughness, kFraction);
-    auto remap = obj.optional("remap_roughness");
-    if (!remap) return {roughnessToAlpha(u), roughnessToAlpha(v)};
-    if (remap->boolean()) return {pbrtRoughnessToAlpha(u), pbrtRoughnessToAlpha(v)};
-    return {u, v};
+// A conductor's roughness: "roughness" or, for an anisotropic lobe, "uroughness" (along the
+// shading frame's s axis) and "vroughness" (along t), each defaulting to "roughness"; each a
+// number in [0, 1] or a texture. photon's roughness is perceptual, alpha = roughness^2;
+// "remap_roughness" switches to pbrt-v4's meaning: true, alpha = sqrt(roughness) (its
+// remaproughness); false, alpha = roughness.
+GgxRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
+    auto field = [&](std::string_view key, const FloatParam& fallback) {
+        auto value = obj.optional(key);
+        return value ? readFloatParam(*value, ctx, kFraction) : fallback;
+    };
+    FloatParam roughness = field("roughness", 0.2f);
+    GgxRoughness r{field("uroughness", roughness), field("vroughness", roughness)};
+    if (auto remap = obj.optional("remap_roughness"))
+        r.toAlpha = remap->boolean() ? RoughnessToAlpha::SquareRoot : RoughnessToAlpha::Identity;
+    return r;
 }
 
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
@@ -107,8 +109,9 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
             std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
-            GgxAlpha alpha = conductorAlphaFields(obj);
-            m = ior ? makeConductor(*ior, alpha) : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), alpha);
+            GgxRoughness roughness = conductorRoughnessFields(obj, ctx);
+            m = ior ? makeConductor(*ior, roughness)
+                    : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), roughness);
             break;
         }
         case Plastic: {
