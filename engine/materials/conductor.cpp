@@ -1,7 +1,8 @@
 // Rough metal: GGX microfacet reflection (Walter et al. 2007), isotropic or anisotropic, with
 // either Schlick's Fresnel from the tint F0 or the exact Fresnel of a complex index of
-// refraction eta + i k (pbrt-v4's ConductorBxDF). Smooth enough in both directions, it
-// becomes an ideal mirror with the same Fresnel.
+// refraction eta + i k (pbrt-v4's ConductorBxDF). Index and roughness may be textured.
+// Smooth enough in both directions (and not textured), it becomes an ideal mirror with the
+// same Fresnel.
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/microfacet.h"
@@ -9,6 +10,7 @@
 namespace photon {
 namespace {
 
+// GGX alpha of a roughness value under the scene's meaning of roughness (material.h).
 float alphaOf(float roughness, RoughnessToAlpha toAlpha) {
     switch (toAlpha) {
         case RoughnessToAlpha::Square: return roughnessToAlpha(roughness);
