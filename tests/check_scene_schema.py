@@ -23,6 +23,8 @@ VALID = {
         "mirror": {"type": "mirror", "reflectance": [0.95, 0.95, 0.95]},
         "metal": {"type": "conductor", "reflectance": [0.9, 0.6, 0.3], "roughness": 0.2},
         "gloss": {"type": "plastic", "albedo": [0.1, 0.2, 0.6], "ior": 1.5, "roughness": 0.05},
+        "varnish": {"type": "coated_diffuse", "albedo": [0.6, 0.3, 0.1], "ior": 1.5, "roughness": 0.1},
+        "paper": {"type": "diffuse_transmission", "reflectance": [0.4, 0.4, 0.4], "transmittance": [0.5, 0.5, 0.45]},
     },
     "shapes": [
         {"type": "quad", "origin": [-1, 0, -1], "edge_u": [2, 0, 0], "edge_v": [0, 0, 2], "material": "white"},
@@ -93,6 +95,8 @@ INVALID = [
     ("initial_radius not auto", set_path("render", "initial_radius", "big")),
     ("auto_radius_photons 0", set_path("render", "auto_radius_photons", 0)),
     ("albedo above 1", set_path("materials", "white", "albedo", [0.5, 1.2, 0.5])),
+    ("transmittance above 1", set_path("materials", "paper", "transmittance", [0.5, 1.2, 0.5])),
+    ("coated field on a sheet", set_path("materials", "paper", "ior", 1.5)),
     ("negative emission", set_path("shapes", 4, "emission", [1, -1, 1])),
     ("absolute path", set_path("shapes", 2, "file", "/etc/passwd")),
     ("'..' path", set_path("shapes", 2, "file", "meshes/../../x.obj")),

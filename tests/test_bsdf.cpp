@@ -213,7 +213,8 @@ TEST(Bsdf, FiniteForAllInputs) {
     std::vector<MaterialPtr> all = {makeDiffuse(kWhite), makeMirror(kWhite), glass, makeConductor(kWhite, 0),
                                     makeConductor(kWhite, 0.01f), makeConductor(kWhite, 0.7f),
                                     makePlastic(kWhite, kIor, 0), makePlastic(kWhite, kIor, 0.01f),
-                                    makePlastic(kWhite, kIor, 0.5f)};
+                                    makePlastic(kWhite, kIor, 0.5f), makeCoatedDiffuse(kWhite, kIor, 0),
+                                    makeCoatedDiffuse(kWhite, kIor, 0.01f), makeCoatedDiffuse(kWhite, kIor, 0.5f)};
     Rng rng(13, 0, 0, StreamPurpose::Test);
     auto draw = [&] { return rng.uniform() < 0.05f ? 0.0f : rng.uniform(); };
     for (const MaterialPtr& m : all) {

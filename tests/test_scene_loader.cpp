@@ -187,7 +187,8 @@ TEST(SceneLoader, Defaults) {
     SceneDescription s = load(Json::parse(R"({
       "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
       "materials": {"d": {"type": "diffuse"}, "m": {"type": "mirror"}, "g": {"type": "dielectric"},
-                    "c": {"type": "conductor"}, "p": {"type": "plastic"}},
+                    "c": {"type": "conductor"}, "p": {"type": "plastic"}, "cd": {"type": "coated_diffuse"},
+                    "dt": {"type": "diffuse_transmission"}},
       "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "d"}],
       "lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1]}]
     })"));
@@ -200,6 +201,10 @@ TEST(SceneLoader, Defaults) {
     EXPECT_VEC3_NEAR(s.materials[1]->tint().value, Color(1.0f), 0);
     EXPECT_VEC3_NEAR(s.materials[3]->tint().value, Color(0.9f), 0);
     EXPECT_VEC3_NEAR(s.materials[4]->tint().value, Color(0.5f), 0);
+    EXPECT_VEC3_NEAR(s.materials[5]->tint().value, Color(0.5f), 0);
+    EXPECT_EQ(s.materials[5]->lobes(), unsigned(photon::kDiffuseLobe | photon::kDeltaLobe));  // smooth coat
+    EXPECT_VEC3_NEAR(s.materials[6]->tint().value, Color(0.25f), 0);          // reflectance
+    EXPECT_TRUE(s.materials[6]->transmits());
     EXPECT_FALSE(s.shapes[0].flipNormals);
     EXPECT_FLOAT_EQ(s.lights[0].coneAngleDegrees, 30);
     EXPECT_FLOAT_EQ(s.lights[0].falloffAngleDegrees, 25);

@@ -151,7 +151,16 @@ TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["lights"][0]["type"] = "area"; }, "lights[0].type",
                 "unknown type \"area\" (expected one of point, spot, directional, environment)");
     expectError([](Json& d) { d["materials"]["white"]["type"] = "lambert"; }, "materials.white.type",
-                "unknown type \"lambert\" (expected one of diffuse, dielectric, mirror, conductor, plastic)");
+                "unknown type \"lambert\" (expected one of diffuse, dielectric, mirror, conductor, plastic, "
+                "coated_diffuse, diffuse_transmission, mix)");
+    expectError(
+        [](Json& d) {
+            d["materials"]["white"] = {{"type", "diffuse_transmission"}, {"reflectance", {0.6, 0.6, 0.6}},
+                                       {"transmittance", {0.3, 0.5, 0.3}}};
+        },
+        "materials.white",
+        "reflectance + transmittance must not exceed 1 in any channel (a sheet cannot pass on more light than "
+        "arrives)");
     expectError([](Json& d) { d["camera"]["type"] = "orthographic"; }, "camera.type",
                 "unknown type \"orthographic\" (expected one of perspective)");
     expectError([](Json& d) { d["render"]["integrator"] = "bdpt"; }, "render.integrator",

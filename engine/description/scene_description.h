@@ -2,6 +2,8 @@
 // later) produces and what Scene::build turns into an Embree scene, lights and camera.
 // Plain data, world space, SI-style units as documented in docs/scene-format.md.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,7 +44,22 @@ struct TriangleMesh {
         Corners k = corners(t);
         return 0.5f * length(cross(k.b - k.a, k.c - k.a));
     }
+    // Texture coordinates on triangle t at Embree's barycentrics (u, v): the vertex uvs
+    // interpolated, or (u, v) itself for a mesh without uvs.
+    Vec2 uvAt(size_t t, float u, float v) const {
+        if (uvs.empty()) return {u, v};
+        Vec2 a = uvs[indices[3 * t]], b = uvs[indices[3 * t + 1]], c = uvs[indices[3 * t + 2]];
+        float w = 1.0f - u - v;
+        return {a.x * w + b.x * u + c.x * v, a.y * w + b.y * u + c.y * v};
+    }
 };
+
+// Texture coordinates on a sphere from the outward unit normal n: (longitude, latitude)
+// scaled to [0, 1], y up.
+inline Vec2 sphereUv(Vec3 n) {
+    float phi = std::atan2(n.z, n.x);
+    return {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+}
 
 struct ShapeDescription {
     enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
@@ -52,6 +69,9 @@ struct ShapeDescription {
     uint32_t material = 0;    // index into SceneDescription::materials
     Color emission{0.0f};     // W/(m^2 sr), emitted on the side the normal faces
     bool flipNormals = false; // turn the surface inside out (e.g. a sphere lit from inside)
+    // Coverage: where it is below 1 the surface lets that share of every ray through
+    // (leaves, fences); 1 everywhere is an ordinary surface.
+    FloatParam alpha{1.0f};
     std::string name;         // for messages: the JSON path it came from
 };
 

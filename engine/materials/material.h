@@ -72,6 +72,9 @@ public:
         float ior;
     };
     virtual std::optional<SmoothSpecular> smoothSpecular() const { return std::nullopt; }
+    // True if the non-delta lobes also scatter light to the far side of the surface
+    // (diffuse transmission): light arriving from behind then counts where it is gathered.
+    virtual bool transmits() const { return false; }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 
@@ -133,9 +136,17 @@ struct ComplexIorParam {
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
 MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
+// The cheaper of the two coated models: no internal reflections and no 1/ior^2
+// (materials/plastic.cpp); kept so that scenes made with it render as before.
 MaterialPtr makePlastic(ColorParam albedo, float ior, float roughness);
 // (1 - amount) a + amount b. Throws std::invalid_argument if one part is one-sided (a
 // dielectric) and the other two-sided.
 MaterialPtr makeMix(MaterialPtr a, MaterialPtr b, FloatParam amount);
+// Diffuse base under a dielectric coat with internal reflections summed and the rough
+// coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
+MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);
+// Translucent sheet: Lambertian reflection (reflectance, the tint) on the side light
+// arrives from and Lambertian transmission to the other (reflectance + transmittance <= 1).
+MaterialPtr makeDiffuseTransmission(ColorParam reflectance, ColorParam transmittance);
 
 }  // namespace photon

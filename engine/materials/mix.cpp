@@ -18,6 +18,7 @@ public:
     unsigned lobes() const override { return a_->lobes() | b_->lobes(); }
     bool twoSided() const override { return a_->twoSided(); }  // both agree (makeMix checks)
     bool textured() const override { return amount_.textured() || a_->textured() || b_->textured(); }
+    bool transmits() const override { return a_->transmits() || b_->transmits(); }
 
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes) const override {
         float t = amount_.eval(in.uv);

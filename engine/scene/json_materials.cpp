@@ -71,6 +71,18 @@ GgxRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
     return r;
 }
 
+// A sheet passes on at most what arrives: reflectance + transmittance <= 1 per channel,
+// checked where both are constant (a texture is checked texel by texel nowhere).
+MaterialPtr readDiffuseTransmission(JsonObject& obj, LoadContext& ctx) {
+    ColorParam reflectance = colorField(obj, "reflectance", Color(0.25f), ctx);
+    ColorParam transmittance = colorField(obj, "transmittance", Color(0.25f), ctx);
+    if (!reflectance.textured() && !transmittance.textured() &&
+        maxComponent(reflectance.value + transmittance.value) > 1.0f + 1e-6f)
+        obj.fail("reflectance + transmittance must not exceed 1 in any channel (a sheet cannot pass on more light than "
+                 "arrives)");
+    return makeDiffuseTransmission(reflectance, transmittance);
+}
+
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
 
 // A part of a mix: the name of a material defined before it, or a material object.
@@ -99,9 +111,10 @@ MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<Materia
 
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, Mix };
-    auto type = Type(
-        obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic", "mix"}, "type"));
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, DiffuseTransmission, Mix };
+    auto type = Type(obj.required("type").choice(
+        {"diffuse", "dielectric", "mirror", "conductor", "plastic", "coated_diffuse", "diffuse_transmission", "mix"},
+        "type"));
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
@@ -120,6 +133,13 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
             m = makePlastic(albedo, ior, roughnessField(obj, 0.0f));
             break;
         }
+        case CoatedDiffuse: {
+            ColorParam albedo = colorField(obj, "albedo", Color(0.5f), ctx);
+            float ior = iorField(obj);
+            m = makeCoatedDiffuse(albedo, ior, roughnessField(obj, 0.0f));
+            break;
+        }
+        case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
     }
     obj.finish();

@@ -113,6 +113,12 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     shape.material = readMaterialRef(obj.required("material"), ctx);
     shape.emission = obj.vec3("emission", Color(0.0f), Range::nonNegative());
     shape.flipNormals = obj.boolean("flip_normals", false);
+    if (auto alpha = obj.optional("alpha")) {
+        shape.alpha = readFloatParam(*alpha, ctx, Range::closed(0, 1), ImageChannels::Alpha);
+        // A light's power and its samples assume all of its surface emits.
+        if (!isBlack(shape.emission) && (shape.alpha.textured() || shape.alpha.value < 1))
+            alpha->fail("an emissive shape cannot have an alpha below 1");
+    }
     auto transformValue = obj.optional("transform");
     std::optional<Transform> transform;
     if (transformValue) transform = readTransform(*transformValue);

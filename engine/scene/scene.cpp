@@ -1,4 +1,5 @@
 #include "scene/scene.h"
+#include "scene/alpha_cutout.h"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -59,9 +60,7 @@ void Scene::addMesh(uint32_t shapeIndex) {
     auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                3 * sizeof(uint32_t), m.triangleCount()));
     std::copy(m.indices.begin(), m.indices.end(), idx);
-    rtcCommitGeometry(g);
-    rtcAttachGeometryByID(rtcScene_, g, shapeIndex);
-    rtcReleaseGeometry(g);
+    commitShape(g, shapeIndex);
 }
 
 void Scene::addSphere(uint32_t shapeIndex) {
@@ -73,6 +72,17 @@ void Scene::addSphere(uint32_t shapeIndex) {
     v[1] = s.center.y;
     v[2] = s.center.z;
     v[3] = s.radius;
+    commitShape(g, shapeIndex);
+}
+
+void Scene::commitShape(RTCGeometry g, uint32_t shapeIndex) {
+    const ShapeDescription& s = shapes_[shapeIndex];
+    if (hasCutout(s)) {
+        // A light's power and its samples assume all of its surface emits.
+        if (!isBlack(s.emission))
+            throw std::runtime_error(s.name + ": an emissive shape cannot have an alpha below 1");
+        attachAlphaCutout(g, s);
+    }
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(rtcScene_, g, shapeIndex);
     rtcReleaseGeometry(g);
@@ -177,7 +187,6 @@ void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) cons
     const ShapeHitData& d = hitData_[hit.shape];
     uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];
     // p from Embree's barycentrics: more accurate than o + t d far from the origin.
-    const float w = 1.0f - u - v;
     hit.p = atBarycentric(m.positions[i0], m.positions[i1], m.positions[i2], u, v);
     hit.ng = hit.ns = d.faceNormals[prim];
     if (d.smoothNormals) {
@@ -187,8 +196,7 @@ void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) cons
         // Keep the shading normal on the geometric side so the two agree on which side is up.
         if (dot(hit.ns, hit.ng) < 0) hit.ns = -hit.ns;
     }
-    if (d.needsUv && !m.uvs.empty())
-        hit.uv = {m.uvs[i0].x * w + m.uvs[i1].x * u + m.uvs[i2].x * v, m.uvs[i0].y * w + m.uvs[i1].y * u + m.uvs[i2].y * v};
+    if (d.needsUv) hit.uv = m.uvAt(prim, u, v);
 }
 
 void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const {
@@ -197,9 +205,7 @@ void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const 
     // Spherical (longitude, latitude) parameterisation, y up; the trigonometry is only
     // worth doing for textured spheres.
     if (!d.needsUv) return;
-    const Vec3 n = hit.ng * d.normalSign;
-    float phi = std::atan2(n.z, n.x);
-    hit.uv = {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+    hit.uv = sphereUv(hit.ng * d.normalSign);
 }
 
 bool Scene::occluded(const Ray& ray) const {

@@ -131,6 +131,8 @@ private:
     explicit Scene(SceneDescription description);
     void addMesh(uint32_t shapeIndex);
     void addSphere(uint32_t shapeIndex);
+    // Commits the shape's Embree geometry, with its alpha cutout if any, as geometry shapeIndex.
+    void commitShape(RTCGeometry g, uint32_t shapeIndex);
     void buildLights();
     void prepareHitData();
     // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)

@@ -157,4 +157,43 @@ inline void expectSamplesAgreeWithPdfAndEval(const Material& m, const MaterialIn
     }
 }
 
+// The same over the whole sphere, for materials that transmit: the lower hemisphere is the
+// upper one mirrored (wi.z -> -wi.z), resolved with the same GGX width.
+template <class G>
+Channels integrateSphere(Vec3 wo, float a, G g) {
+    Channels upper = integrateHemisphere(wo, a, g);
+    Channels lower = integrateHemisphere(wo, a, [&](Vec3 wi) { return g(Vec3(wi.x, wi.y, -wi.z)); });
+    for (int c = 0; c < 3; ++c) upper[c] += lower[c];
+    return upper;
+}
+
+// Coarse bins over the upper hemisphere, for comparing the shapes of lobes: kRings rings
+// of equal projected solid angle (equal steps in cos^2 theta) by kSectors equal sectors
+// of azimuth.
+constexpr int kRings = 4, kSectors = 8, kBins = kRings * kSectors;
+using BinnedAlbedo = std::array<Channels, kBins>;
+
+inline int hemisphereBin(Vec3 w) {
+    int ring = std::min(kRings - 1, int(std::max(0.0f, w.z * w.z) * kRings));
+    float phi = std::atan2(w.y, w.x);
+    if (phi < 0) phi += 2 * kPi;
+    int sector = std::min(kSectors - 1, int(phi / (2 * kPi) * kSectors));
+    return ring * kSectors + sector;
+}
+
+// The directional albedo per bin of wi, from `samples` draws of sample(): each bin holds
+// the integral of f cos over it (delta lobes included, in the bin of their direction).
+inline BinnedAlbedo binBySampling(const Material& m, Vec3 wo, const MaterialInputs& in, int samples, uint64_t seed) {
+    Rng rng(seed, 0, 0, StreamPurpose::Test);
+    BinnedAlbedo bins{};
+    for (int i = 0; i < samples; ++i) {
+        float uLobe = rng.uniform();
+        Vec2 u{rng.uniform(), rng.uniform()};
+        auto s = m.sample(wo, uLobe, u, in, TransportMode::Radiance);
+        if (!s || s->wi.z <= 0) continue;
+        for (int c = 0; c < 3; ++c) bins[hemisphereBin(s->wi)][c] += s->weight[c] / samples;
+    }
+    return bins;
+}
+
 }  // namespace photon::bsdf_checks

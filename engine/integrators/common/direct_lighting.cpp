@@ -6,15 +6,25 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     LightSampler::Pick pick = scene.lights().pick(rng.uniform());
     Vec2 u{rng.uniform(), rng.uniform()};
     if (!pick.light) return Color(0.0f);
-    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, sp.hit.ns, u);
-    if (!ls) return Color(0.0f);
+    // Lights may sample only directions above the normal they are given (the environment
+    // does), others any direction. A surface that transmits also sees light from below: it
+    // picks a side with probability 1/2 and keeps only light from that side, which is
+    // unbiased either way (the two sides' restricted estimates sum to the whole).
+    Vec3 n = sp.hit.ns;
+    float sideProbability = 1.0f;
+    if (sp.material->transmits()) {
+        sideProbability = 0.5f;
+        if (rng.uniform() < 0.5f) n = -n;
+    }
+    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, n, u);
+    if (!ls || (sideProbability < 1.0f && !(dot(ls->wi, n) > 0))) return Color(0.0f);
     Vec3 wiLocal = sp.frame.toLocal(ls->wi);
     Color f = sp.material->eval(sp.frame.toLocal(wo), wiLocal, sp.inputs, TransportMode::Radiance, lobes);
     if (isBlack(f)) return Color(0.0f);
     Ray shadow = std::isinf(ls->distance) ? spawnRay(sp.hit.p, sp.hit.ng, ls->wi)
                                           : spawnRayTo(sp.hit.p, sp.hit.ng, sp.hit.p + ls->wi * ls->distance);
     if (scene.occluded(shadow)) return Color(0.0f);
-    return f * ls->weight * (std::abs(wiLocal.z) / pick.probability);
+    return f * ls->weight * (std::abs(wiLocal.z) / (pick.probability * sideProbability));
 }
 
 }  // namespace photon

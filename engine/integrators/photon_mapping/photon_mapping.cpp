@@ -144,7 +144,8 @@ Color PhotonMapIntegrator::finalGather(const ShadingPoint& sp, Vec3 wo, unsigned
 // so the irradiance at the nearest precomputed point facing the same way stands in for a
 // k-nearest estimate (Christensen 1999): one small query instead of k BSDF evaluations.
 Color PhotonMapIntegrator::globalRadiance(const ShadingPoint& y, Vec3 wo, unsigned lobes) const {
-    if (irradiance_.size() > 0 && y.material->lobes() == kDiffuseLobe) {
+    // Not for a sheet that transmits: the points hold the irradiance of one side only.
+    if (irradiance_.size() > 0 && y.material->lobes() == kDiffuseLobe && !y.material->transmits()) {
         if (std::optional<Color> e = irradiance_.lookupIrradiance(y.hit.p, y.hit.ns, globalLookup_.maxRadius)) {
             Color f = y.material->eval(y.frame.toLocal(wo), {0, 0, 1}, y.inputs, TransportMode::Radiance, lobes);
             return f * *e;

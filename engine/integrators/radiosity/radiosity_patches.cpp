@@ -1,4 +1,5 @@
 #include "integrators/radiosity/radiosity_patches.h"
+#include "scene/alpha_cutout.h"
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -86,12 +87,18 @@ Color diffuseFactor(const Material& m) {
     return sum / float(n * n * n * n);
 }
 
-// The texture coordinate the scene gives a hit on triangle `prim` at Embree's (u, v).
-Vec2 triangleUv(const TriangleMesh& m, size_t prim, float u, float v) {
-    if (m.uvs.empty()) return {u, v};
-    Vec2 a = m.uvs[m.indices[3 * prim]], b = m.uvs[m.indices[3 * prim + 1]], c = m.uvs[m.indices[3 * prim + 2]];
-    float w = 1 - u - v;
-    return {a.x * w + b.x * u + c.x * v, a.y * w + b.y * u + c.y * v};
+// A patch holds the light leaving one side of a surface; a sheet that transmits would need
+// both sides coupled, which the solver does not model. Rather than drop the transmitted
+// light in silence, the render fails naming the material.
+void rejectTransmission(const Scene& scene) {
+    const SceneDescription& d = scene.description();
+    for (const ShapeDescription& s : d.shapes) {
+        if (!scene.materialAt(s.material).transmits()) continue;
+        std::string name = s.material < d.materialNames.size() ? d.materialNames[s.material] : std::to_string(s.material);
+        throw std::runtime_error("radiosity: material \"" + name +
+                                 "\" transmits light (diffuse_transmission), which radiosity does not model; render "
+                                 "the scene with sppm, path or photonmap");
+    }
 }
 
 Vec3 spherePoint(float y, float phi) {
@@ -151,7 +158,7 @@ private:
                 std::copy(corners, corners + 4, c.corners);
                 float sc0 = (i + 0.5f) / sc.nu, tc0 = (j + 0.5f) / sc.nv;
                 // The centre's texture coordinate, through the triangle (0 1 2 or 0 2 3) it lies in.
-                Vec2 uv = sc0 >= tc0 ? triangleUv(s.mesh, 0, sc0 - tc0, tc0) : triangleUv(s.mesh, 1, sc0, tc0 - sc0);
+                Vec2 uv = sc0 >= tc0 ? s.mesh.uvAt(0, sc0 - tc0, tc0) : s.mesh.uvAt(1, sc0, tc0 - sc0);
                 addCell(c, s, uv, length(cross(c.b, c.c)), c.a + (c.b + c.c) * 0.5f);
             }
     }
@@ -183,7 +190,7 @@ private:
                         for (int k = 0; k < 3; ++k) c.corners[k] = vertexAt(point(ci[k][0], ci[k][1]), front);
                         float bu = (float(ci[0][0] + ci[1][0] + ci[2][0]) / 3) / n;
                         float bv = (float(ci[0][1] + ci[1][1] + ci[2][1]) / 3) / n;
-                        addCell(c, s, triangleUv(m, t, bu, bv), 0.5f * length(cross(c.b - c.a, c.c - c.a)),
+                        addCell(c, s, m.uvAt(t, bu, bv), 0.5f * length(cross(c.b - c.a, c.c - c.a)),
                                 (c.a + c.b + c.c) / 3.0f);
                     }
         }
@@ -210,8 +217,7 @@ private:
                 c.c = {phi0, phi1, sign};
                 uint32_t corners[4] = {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)};
                 std::copy(corners, corners + 4, c.corners);
-                float phiMid = std::atan2(n.z, n.x);  // the scene's sphere uv (Scene::fillSphereHit)
-                Vec2 uv{0.5f + phiMid / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
+                Vec2 uv = sphereUv(n);  // as the scene gives hits there
                 float area = s.radius * s.radius * (c.b.y - c.b.x) * (phi1 - phi0);
                 addCell(c, s, uv, area, s.center + n * s.radius);
             }
@@ -286,6 +292,11 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
                                      "\" has a texture on a parameter other than its colour; render it with sppm or path");
         diffuseFactors_.push_back(diffuseFactor(m));
     }
+    // Patches cover whole surfaces: a cut-away part would still reflect light.
+    for (const ShapeDescription& shape : d.shapes)
+        if (hasCutout(shape))
+            throw std::runtime_error("radiosity: " + shape.name + " has an alpha cutout; render it with sppm or path");
+    rejectTransmission(scene);
     shapes_.resize(scene.description().shapes.size());
     Builder builder(*this, scene, size);
     for (uint32_t i = 0; i < shapes_.size(); ++i) builder.addShape(i);

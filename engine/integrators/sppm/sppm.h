@@ -57,8 +57,9 @@ private:
         Color beta;
         Vec2 uv;                   // where on the surface, for the material's textures
         uint32_t material : 24 = 0;
-        uint32_t lobes : 7 = kAllLobes;  // the material's lobes photons are gathered through
+        uint32_t lobes : 6 = kAllLobes;  // the material's lobes photons are gathered through
         uint32_t lambertian : 1 = 0;
+        uint32_t transmits : 1 = 0;  // photons arriving on the far side count too
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };

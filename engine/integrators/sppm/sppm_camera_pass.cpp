@@ -95,7 +95,7 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     // Seen from below its (quantised) normal a surface reflects nothing: leave that to eval().
     const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
     visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
-                                   sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian};
+                                   sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian, sp.material->transmits()};
 }
 
 }  // namespace photon

@@ -103,8 +103,11 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
     VisiblePoint& vp = visible_[point];
     Vec3 vn = vp.n.decode();
     // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
-    // do not belong to this point's disc.
-    if (dot(vn, hit.n) < 0.5f) return;
+    // do not belong to this point's disc; but the far side of a sheet that transmits is
+    // the same surface, its normal turned toward the photon.
+    float facing = dot(vn, hit.n);
+    if (vp.transmits) facing = std::abs(facing);
+    if (facing < 0.5f) return;
     Color c;
     if (vp.lambertian) {  // f = tint / pi above the surface, already in beta
         if (!(dot(vn, hit.wi) > 0)) return;

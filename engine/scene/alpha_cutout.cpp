@@ -1,0 +1,50 @@
+#include "scene/alpha_cutout.h"
+#include <bit>
+#include "math/rng.h"
+
+namespace photon {
+namespace {
+
+// A uniform number in [0, 1) from the ray and the primitive: the same ray meets the same
+// threshold whichever query casts it.
+float threshold(const RTCRayN* ray, unsigned n, unsigned i, unsigned primitive) {
+    uint64_t h = primitive;
+    for (float f : {RTCRayN_org_x(const_cast<RTCRayN*>(ray), n, i), RTCRayN_org_y(const_cast<RTCRayN*>(ray), n, i),
+                    RTCRayN_org_z(const_cast<RTCRayN*>(ray), n, i), RTCRayN_dir_x(const_cast<RTCRayN*>(ray), n, i),
+                    RTCRayN_dir_y(const_cast<RTCRayN*>(ray), n, i), RTCRayN_dir_z(const_cast<RTCRayN*>(ray), n, i)})
+        h = mix64<uint64_t>(h ^ std::bit_cast<uint32_t>(f));
+    return static_cast<float>(h >> 40) * 0x1p-24f;
+}
+
+void cutoutFilter(const RTCFilterFunctionNArguments* args) {
+    const auto& shape = *static_cast<const ShapeDescription*>(args->geometryUserPtr);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned primitive = RTCHitN_primID(args->hit, n, i);
+        Vec2 uv;
+        if (shape.kind == ShapeDescription::Kind::Sphere) {
+            // Embree's sphere normal points outward whatever flip_normals says: the uv the
+            // scene gives the hit (Scene::fillSphereHit).
+            uv = sphereUv(normalize(Vec3(RTCHitN_Ng_x(args->hit, n, i), RTCHitN_Ng_y(args->hit, n, i),
+                                         RTCHitN_Ng_z(args->hit, n, i))));
+        } else {
+            uv = shape.mesh.uvAt(primitive, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
+        }
+        const float a = shape.alpha.eval(uv);
+        if (a >= 1) continue;
+        if (a <= 0 || threshold(args->ray, n, i, primitive) >= a) args->valid[i] = 0;
+    }
+}
+
+}  // namespace
+
+bool hasCutout(const ShapeDescription& shape) { return shape.alpha.textured() || shape.alpha.value < 1; }
+
+void attachAlphaCutout(RTCGeometry geometry, const ShapeDescription& shape) {
+    rtcSetGeometryUserData(geometry, const_cast<ShapeDescription*>(&shape));
+    rtcSetGeometryIntersectFilterFunction(geometry, cutoutFilter);
+    rtcSetGeometryOccludedFilterFunction(geometry, cutoutFilter);
+}
+
+}  // namespace photon
