@@ -335,10 +335,33 @@ TEST(SceneLoader, Denoise) {
     EXPECT_FALSE(load(doc).render.denoise.enabled);
 }
 
+// A dielectric is the smooth boundary unless rough (glossy lobes, still one-sided) or thin
+// (a two-sided slab, delta lobes, which photons cross one at a time).
+TEST(SceneLoader, DielectricKinds) {
+    SceneDescription s = load(Json::parse(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40},
+      "materials": {"smooth": {"type": "dielectric", "ior": 1.33, "roughness": 0},
+                    "rough": {"type": "dielectric", "ior": 1.5, "roughness": 0.3},
+                    "pane": {"type": "dielectric", "thin": true},
+                    "ice": {"type": "dielectric", "ior": 0.985, "roughness": 0.5, "thin": false}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "smooth"}],
+      "lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1]}]
+    })"));
+    ASSERT_TRUE(s.materials[0]->smoothSpecular());
+    EXPECT_FLOAT_EQ(s.materials[0]->smoothSpecular()->ior, 1.33f);
+    EXPECT_EQ(s.materials[1]->lobes(), unsigned(photon::kGlossyLobe));
+    EXPECT_FALSE(s.materials[1]->twoSided());
+    EXPECT_TRUE(s.materials[2]->isDeltaOnly());
+    EXPECT_TRUE(s.materials[2]->twoSided());
+    EXPECT_FALSE(s.materials[2]->smoothSpecular());
+    EXPECT_EQ(s.materials[3]->lobes(), unsigned(photon::kGlossyLobe));
+}
+
 // ---- the example scenes ----
 
 TEST(ExampleScenes, AllLoad) {
-    for (const char* name : {"cornell-box.json", "cornell-glass.json", "point-light-plane.json", "textured-mesh.json"}) {
+    for (const char* name :
+         {"cornell-box.json", "cornell-glass.json", "rough-glass.json", "point-light-plane.json", "textured-mesh.json"}) {
         SCOPED_TRACE(name);
         SceneDescription s = photon::loadSceneFile(photon::test::sourcePath(std::string("scenes/") + name));
         EXPECT_EQ(s.camera.width, 512);

@@ -101,6 +101,10 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["materials"]["metal"]["roughness"] = 2; }, "materials.metal.roughness",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["glass"]["ior"] = 0; }, "materials.glass.ior", "must be > 0");
+    expectError([](Json& d) { d["materials"]["glass"]["roughness"] = -0.1; }, "materials.glass.roughness",
+                "must be in [0, 1]");
+    expectError([](Json& d) { d["materials"]["glass"].update({{"thin", true}, {"roughness", 0.2}}); },
+                "materials.glass.roughness", "must be 0 for a thin dielectric (its faces are smooth)");
     expectError([](Json& d) { d["shapes"][5]["emission"] = {1, -1, 1}; }, "shapes[5].emission[1]", "must be >= 0");
     expectError([](Json& d) { d["lights"][0]["intensity"] = {1, 1, -1}; }, "lights[0].intensity[2]", "must be >= 0");
     expectError([](Json& d) { d["lights"][1]["cone_angle"] = 95; }, "lights[1].cone_angle", "must be in (0, 90]");
@@ -134,6 +138,7 @@ TEST(SceneLoaderErrors, WrongTypes) {
     expectError([](Json& d) { d["shapes"][3]["center"] = {1, "2", 3}; }, "shapes[3].center[1]", "must be a number");
     expectError([](Json& d) { d["shapes"][1]["flip_normals"] = 1; }, "shapes[1].flip_normals", "must be true or false");
     expectError([](Json& d) { d["shapes"][0]["material"] = 3; }, "shapes[0].material", "must be a string");
+    expectError([](Json& d) { d["materials"]["glass"]["thin"] = 1; }, "materials.glass.thin", "must be true or false");
     expectError([](Json& d) { d["camera"] = Json::array(); }, "camera", "must be an object");
     expectError([](Json& d) { d["shapes"] = Json::object(); }, "shapes", "must be an array");
     expectError([](Json& d) { d["shapes"] = Json::array(); }, "shapes", "must contain at least one shape");
@@ -201,7 +206,7 @@ TEST(SceneLoaderErrors, UnknownFieldsAtEveryDepth) {
                 "materials.wood.albedo.filter", "unknown field");
     expectError([](Json& d) { d["lights"][2]["position"] = {0, 1, 0}; }, "lights[2].position", "unknown field");
     // A field of another material or shape type is unknown here too.
-    expectError([](Json& d) { d["materials"]["glass"]["roughness"] = 0.1; }, "materials.glass.roughness",
+    expectError([](Json& d) { d["materials"]["glass"]["albedo"] = {1, 1, 1}; }, "materials.glass.albedo",
                 "unknown field");
     expectError([](Json& d) { d["shapes"][3]["edge_u"] = {1, 0, 0}; }, "shapes[3].edge_u", "unknown field");
 }

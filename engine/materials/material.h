@@ -102,6 +102,13 @@ using MaterialPtr = std::shared_ptr<const Material>;
 MaterialPtr makeDiffuse(ColorParam albedo);
 MaterialPtr makeMirror(ColorParam reflectance);
 MaterialPtr makeDielectric(float ior);
+// The same boundary made of GGX microfacets (Walter et al. 2007); alpha = roughness^2.
+// Roughness 0 (or so small that alpha < kSmoothAlpha) is the smooth dielectric. ior is the
+// relative index n_inside / n_outside and may be below 1 (ice in water: 1.31 / 1.33).
+MaterialPtr makeRoughDielectric(float ior, float roughness);
+// A thin slab of index ior (window glass): mirror reflection and straight-through
+// transmission with the slab's inter-reflections summed; two-sided.
+MaterialPtr makeThinDielectric(float ior);
 // GGX microfacet conductor with Schlick's Fresnel from `reflectance` (F0);
 // alpha = roughness^2 (Burley 2012). roughness 0 is a perfect mirror.
 MaterialPtr makeConductor(ColorParam reflectance, float roughness);

@@ -71,6 +71,16 @@ GgxRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
     return r;
 }
 
+// A boundary (rough if roughness > 0), or with "thin": true a thin slab, whose faces are
+// smooth.
+MaterialPtr readDielectric(JsonObject& obj) {
+    float ior = iorField(obj);
+    float roughness = roughnessField(obj, 0.0f);
+    if (!obj.boolean("thin", false)) return makeRoughDielectric(ior, roughness);
+    if (roughness > 0) obj.required("roughness").fail("must be 0 for a thin dielectric (its faces are smooth)");
+    return makeThinDielectric(ior);
+}
+
 // A sheet passes on at most what arrives: reflectance + transmittance <= 1 per channel,
 // checked where both are constant (a texture is checked texel by texel nowhere).
 MaterialPtr readDiffuseTransmission(JsonObject& obj, LoadContext& ctx) {
@@ -118,7 +128,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
-        case Dielectric: m = makeDielectric(iorField(obj)); break;
+        case Dielectric: m = readDielectric(obj); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
             std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);

@@ -1,5 +1,6 @@
 // Checks shared by the material tests: directions at a given angle, albedo estimates from
-// sample(), and a quadrature of the upper hemisphere independent of sample().
+// sample(), and quadratures of the upper hemisphere and of the whole sphere independent of
+// sample().
 #pragma once
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <type_traits>
 #include "materials/material.h"
+#include "math/frame.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 
@@ -194,6 +196,43 @@ inline BinnedAlbedo binBySampling(const Material& m, Vec3 wo, const MaterialInpu
         for (int c = 0; c < 3; ++c) bins[hemisphereBin(s->wi)][c] += s->weight[c] / samples;
     }
     return bins;
+}
+
+// Deterministic quadrature of g(wi) over the whole sphere, independent of sample() and of
+// any half-vector mapping: polar coordinates about `axis`, midpoint rule. The polar angle
+// is spaced geometrically from kTheta0 to kThetaNear (theta = kTheta0 (kThetaNear /
+// kTheta0)^u), so a peak near the axis is resolved whatever its width down to ~1e-5, with
+// the same number of rings per octave of angle, then evenly to pi for the broad remainder
+// and for where g jumps (the horizon, when g is one side's part). The cap inside kTheta0
+// counts as g(axis) times its area. For a BSDF with two narrow lobes, integrate each
+// hemisphere's part about its own peak (g masked by the side of the surface).
+template <class G>
+Channels integrateSphere(Vec3 axis, G g) {
+    constexpr int kNearRings = 1000, kFarRings = 500, kPhi = 384;
+    constexpr double kTheta0 = 1e-6, kThetaNear = 0.5;
+    const double logRatio = std::log(kThetaNear / kTheta0), dPhi = 2.0 * kPi / kPhi;
+    Frame frame = Frame::fromNormal(axis);
+    Channels total{};
+    auto add = [&](Vec3 wi, double measure) {
+        Color v = g(wi);
+        for (int c = 0; c < 3; ++c) total[c] += v[c] * measure;
+    };
+    auto ring = [&](double theta, double dTheta) {
+        double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+        for (int j = 0; j < kPhi; ++j) {
+            double phi = (j + 0.5) * dPhi;
+            Vec3 local(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(cosTheta));
+            add(normalize(frame.toWorld(local)), sinTheta * dTheta * dPhi);
+        }
+    };
+    add(axis, kPi * kTheta0 * kTheta0);
+    for (int i = 0; i < kNearRings; ++i) {
+        double u = (i + 0.5) / kNearRings, theta = kTheta0 * std::exp(u * logRatio);
+        ring(theta, theta * logRatio / kNearRings);
+    }
+    double dTheta = (kPi - kThetaNear) / kFarRings;
+    for (int i = 0; i < kFarRings; ++i) ring(kThetaNear + (i + 0.5) * dTheta, dTheta);
+    return total;
 }
 
 }  // namespace photon::bsdf_checks
