@@ -7,7 +7,10 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include <memory>
 #include "materials/material.h"
+#include "math/transform.h"
+#include "texture/image_texture.h"
 #include <photon/vec.h>
 #include <photon/render_settings.h>
 
@@ -75,13 +78,25 @@ struct ShapeDescription {
     std::string name;         // for messages: the JSON path it came from
 };
 
+// How an environment image covers the sphere of directions, in the light's own frame
+// (docs/scene-format.md): longitude and latitude (y up), or pbrt-v4's equal-area square.
+enum class EnvironmentLayout { LatLong, EqualArea };
+
 struct LightDescription {
     enum class Kind { Point, Spot, Directional, Environment } kind = Kind::Point;
     Vec3 position, direction{0, -1, 0};
     Color intensity{0.0f};   // W/sr (point, spot)
     Color irradiance{0.0f};  // W/m^2 perpendicular to the direction (directional)
-    Color radiance{0.0f};    // W/(m^2 sr) (environment)
+    Color radiance{0.0f};    // W/(m^2 sr) (environment without an image)
     float coneAngleDegrees = 30, falloffAngleDegrees = 25;  // spot: total and full-intensity half-angles
+    // Environment with an image: radiance from a direction is its texel times `scale`.
+    struct EnvironmentImage {
+        std::shared_ptr<const ImageTexture> image;
+        EnvironmentLayout layout = EnvironmentLayout::LatLong;
+        float scale = 1;
+        Transform toWorld;  // a rotation: the light's frame to the world
+    };
+    EnvironmentImage environment;  // image null: constant `radiance`
 };
 
 struct SceneDescription {

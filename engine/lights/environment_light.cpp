@@ -1,6 +1,7 @@
 // Uniform environment: radiance L from every direction. Photons come from a disc of the
 // scene's bounding-sphere radius facing a uniformly chosen direction, so each carries
-// L / (pdf_dir pdf_pos) = L 4 pi * pi R^2 (pbrt-v4 12.5.1).
+// L / (pdf_dir pdf_pos) = L 4 pi * pi R^2 (pbrt-v4 12.5.1). With an image, the light is
+// an ImageEnvironmentLight instead (image_environment_light.cpp).
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "lights/light_factories.h"
@@ -22,8 +23,10 @@ public:
         Vec3 local = sampleCosineHemisphere(u);
         if (local.z <= 0) return std::nullopt;
         return LightSample{Frame::fromNormal(n).toWorld(local), std::numeric_limits<float>::infinity(),
-                           radiance_ / cosineHemispherePdf(local.z)};
+                           radiance_ / cosineHemispherePdf(local.z), cosineHemispherePdf(local.z)};
     }
+
+    float pdfIncident(Vec3, Vec3 n, Vec3 wi) const override { return cosineHemispherePdf(std::max(0.0f, dot(n, wi))); }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         Frame travel = Frame::fromNormal(-sampleUniformSphere(uDirection));
@@ -40,6 +43,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds) {
+    if (d.environment.image) return makeImageEnvironmentLight(d, bounds);
     return std::make_unique<EnvironmentLight>(d, bounds);
 }
 

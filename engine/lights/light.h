@@ -13,6 +13,7 @@ struct LightSample {
     Vec3 wi;                 // unit direction from the shading point toward the light
     float distance = std::numeric_limits<float>::infinity();  // to the sampled point; inf for infinite lights
     Color weight;            // incident radiance / pdf (solid angle), or irradiance for delta lights
+    float pdf = 0;           // the solid-angle density wi was drawn with; 0 for delta lights
 };
 
 struct PhotonEmission {
@@ -58,6 +59,10 @@ public:
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
     // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
     virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }
+    // Infinite lights: the solid-angle density with which sampleIncident(p, n, .) returns
+    // the direction wi, for weighting it against BSDF sampling (multiple importance
+    // sampling, Veach 1997 ch. 9). 0 for lights no ray can find (delta lights).
+    virtual float pdfIncident(Vec3 p, Vec3 n, Vec3 wi) const { return 0; }
     // For projection maps (projection_map.h): where photons leave from, and how much power
     // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
     // world direction w; for parallel kinds: the power per unit area crossing the emission

@@ -9,7 +9,9 @@ namespace photon {
 std::unique_ptr<Light> makePointLight(const LightDescription& d);
 std::unique_ptr<Light> makeSpotLight(const LightDescription& d);
 std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphere bounds);
+// Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight).
 std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds);
+std::unique_ptr<Light> makeImageEnvironmentLight(const LightDescription& d, SceneSphere bounds);
 // An emissive triangle mesh (quads arrive as meshes) or sphere. The shape must outlive the light.
 std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape);
 std::unique_ptr<Light> makeSphereAreaLight(const ShapeDescription& shape);

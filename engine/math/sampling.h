@@ -86,4 +86,12 @@ inline Vec2 sampleUniformTriangle(Vec2 u) {
     return b;
 }
 
+// Multiple importance sampling weight of a sample drawn with density pdfA, against another
+// technique that could have drawn it with density pdfB: the power heuristic with exponent 2
+// for one sample of each (Veach 1997, eq. 9.13).
+inline float powerHeuristic(float pdfA, float pdfB) {
+    const float a = pdfA * pdfA, b = pdfB * pdfB;
+    return a + b > 0 ? a / (a + b) : 0.0f;
+}
+
 }  // namespace photon

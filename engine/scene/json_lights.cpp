@@ -1,4 +1,4 @@
-// The "lights" section: point, spot, directional and environment lights.
+// The "lights" section: point, spot, directional and environment lights (constant or an image).
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
@@ -21,7 +21,29 @@ void readSpotAngles(JsonObject& obj, LightDescription& l) {
     }
 }
 
-LightDescription readLight(const JsonValue& value) {
+// A constant "radiance", or an "image" with its "layout", "scale" and "rotate" (the light's
+// frame to the world), documented in docs/scene-format.md.
+void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
+    auto image = obj.optional("image");
+    if (!image) {
+        for (std::string_view key : {"layout", "scale", "rotate"})
+            if (auto v = obj.optional(key)) v->fail("is only allowed with \"image\"");
+        l.radiance = power(obj, "radiance");
+        return;
+    }
+    if (auto radiance = obj.optional("radiance")) radiance->fail("is not allowed with \"image\" (use \"scale\")");
+    LightDescription::EnvironmentImage& e = l.environment;
+    e.image = loadImage(*image, ImageChannels::Color, ctx);
+    // In the order of EnvironmentLayout.
+    e.layout = EnvironmentLayout(obj.choice("layout", 0, {"latlong", "equal_area"}, "layout"));
+    if (e.layout == EnvironmentLayout::EqualArea && e.image->width() != e.image->height())
+        image->fail("an equal-area image must be square, not " + std::to_string(e.image->width()) + "x" +
+                    std::to_string(e.image->height()));
+    e.scale = obj.number("scale", 1, Range::nonNegative());
+    if (auto rotate = obj.optional("rotate")) e.toWorld = readRotation(*rotate);
+}
+
+LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     LightDescription l;
     // In the order of LightDescription::Kind.
@@ -41,7 +63,7 @@ LightDescription readLight(const JsonValue& value) {
             l.direction = obj.required("direction").direction();
             l.irradiance = power(obj, "irradiance");
             break;
-        case Kind::Environment: l.radiance = power(obj, "radiance"); break;
+        case Kind::Environment: readEnvironment(obj, ctx, l); break;
     }
     obj.finish();
     return l;
@@ -49,10 +71,10 @@ LightDescription readLight(const JsonValue& value) {
 
 }  // namespace
 
-void readLights(const JsonValue& value, SceneDescription& scene) {
+void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
     bool haveEnvironment = false;
     for (const JsonValue& light : value.elements()) {
-        scene.lights.push_back(readLight(light));
+        scene.lights.push_back(readLight(light, ctx));
         if (scene.lights.back().kind != Kind::Environment) continue;
         // The environment is what rays that leave the scene see: there is only one.
         if (haveEnvironment) light.fail("only one environment light is allowed");

@@ -46,7 +46,9 @@ bool emits(const LightDescription& l) {
         case LightDescription::Kind::Point:
         case LightDescription::Kind::Spot: return !isBlack(l.intensity);
         case LightDescription::Kind::Directional: return !isBlack(l.irradiance);
-        case LightDescription::Kind::Environment: return !isBlack(l.radiance);
+        case LightDescription::Kind::Environment:
+            if (l.environment.image) return l.environment.scale > 0 && !isBlack(l.environment.image->average());
+            return !isBlack(l.radiance);
     }
     return false;
 }
@@ -79,7 +81,7 @@ SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
     // Materials before shapes: shapes refer to them by name.
     readMaterials(top.required("materials"), ctx, scene);
     readShapes(top.required("shapes"), ctx, scene);
-    if (auto lights = top.optional("lights")) readLights(*lights, scene);
+    if (auto lights = top.optional("lights")) readLights(*lights, ctx, scene);
     if (auto render = top.optional("render")) scene.render = readRender(*render);
     top.finish();
     checkHasLight(scene);

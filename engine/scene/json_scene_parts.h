@@ -35,6 +35,9 @@ struct LoadContext {
 // A file named by the string `value`: relative, without "..", inside the scene folder
 // (symlinks resolved) and existing. Errors are SceneErrors at value's path.
 std::filesystem::path resolveFile(const JsonValue& value, const LoadContext& ctx);
+// The image file named by the string `value` (through resolveFile), its `channels` read once
+// per scene however often it is named (json_textures.cpp).
+std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx);
 // Rethrows a library failure (Assimp, OpenImageIO) as a SceneError at value's path, with
 // the scene folder removed from the message so only the scene's own names show.
 [[noreturn]] void failWithLibraryError(const JsonValue& value, const std::exception& e, const LoadContext& ctx);
@@ -54,8 +57,10 @@ CameraDescription readCamera(const JsonValue& value);
 RenderSettings readRender(const JsonValue& value);
 void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 void readShapes(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
-void readLights(const JsonValue& value, SceneDescription& scene);
+void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 
+// {"axis": [x, y, z], "angle": degrees}: a rotation about the axis (right-handed).
+Transform readRotation(const JsonValue& value);
 // {"scale", "rotate", "translate"} or {"matrix"}; the result is invertible.
 Transform readTransform(const JsonValue& value);
 // The factor s if `t` is a rotation (possibly with reflection) times a uniform scale s.

@@ -16,18 +16,6 @@ struct ParamKind {
     ImageChannels channels;  // images: colour or alpha
 };
 
-std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx) {
-    std::filesystem::path file = resolveFile(value, ctx);
-    auto key = std::make_pair(file, int(channels));
-    auto cached = ctx.textures.find(key);
-    if (cached != ctx.textures.end()) return cached->second;
-    try {
-        return ctx.textures[key] = ImageTexture::load(file, channels);
-    } catch (const std::exception& e) {
-        failWithLibraryError(value, e, ctx);
-    }
-}
-
 UvMapping readUvMapping(JsonObject& obj) {
     UvMapping m;
     if (auto s = obj.optional("uv_scale")) m.scale = s->vec2(Range::any());
@@ -84,6 +72,18 @@ ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& 
 }
 
 }  // namespace
+
+std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx) {
+    std::filesystem::path file = resolveFile(value, ctx);
+    auto key = std::make_pair(file, int(channels));
+    auto cached = ctx.textures.find(key);
+    if (cached != ctx.textures.end()) return cached->second;
+    try {
+        return ctx.textures[key] = ImageTexture::load(file, channels);
+    } catch (const std::exception& e) {
+        failWithLibraryError(value, e, ctx);
+    }
+}
 
 ColorParam readColorParam(const JsonValue& value, LoadContext& ctx, const Range& range) {
     return readParam(value, ctx, {true, range, ImageChannels::Color});

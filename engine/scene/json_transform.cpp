@@ -19,14 +19,6 @@ Vec3 readScale(const JsonValue& value) {
     return s;
 }
 
-Transform readRotation(const JsonValue& value) {
-    JsonObject obj = value.object();
-    Vec3 axis = obj.required("axis").direction();
-    float angle = obj.required("angle").number();
-    obj.finish();
-    return Transform::rotate(axis, angle);
-}
-
 // 16 numbers, row-major, the last row 0 0 0 1 (affine only: no projective transforms).
 Transform readMatrix(const JsonValue& value) {
     if (!value.json().is_array() || value.json().size() != 16) value.fail("must be an array of 16 numbers");
@@ -48,6 +40,14 @@ bool invertible(const Transform& t) {
 }
 
 }  // namespace
+
+Transform readRotation(const JsonValue& value) {
+    JsonObject obj = value.object();
+    Vec3 axis = obj.required("axis").direction();
+    float angle = obj.required("angle").number();
+    obj.finish();
+    return Transform::rotate(axis, angle);
+}
 
 Transform readTransform(const JsonValue& value) {
     JsonObject obj = value.object();

@@ -118,6 +118,11 @@ public:
     Color emitted(const SurfaceHit& hit, Vec3 w) const;
     // Radiance arriving along a ray that leaves the scene in direction d.
     Color environment(Vec3 d) const;
+    // The environment light (null if there is none) and the probability with which
+    // lights().pick() returns it: what a BSDF-sampled ray that leaves the scene needs to
+    // weigh itself against light sampling.
+    const Light* environmentLight() const { return environmentLight_; }
+    float environmentPickProbability() const { return environmentPickProbability_; }
 
     const Camera& camera() const { return camera_; }
     const RenderSettings& settings() const { return description_.render; }
@@ -207,6 +212,7 @@ private:
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     const Light* environmentLight_ = nullptr;
+    float environmentPickProbability_ = 0;
     Camera camera_;
     Vec3 boundsMin_, boundsMax_;
     RTCDevice device_ = nullptr;

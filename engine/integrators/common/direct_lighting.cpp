@@ -2,7 +2,8 @@
 
 namespace photon {
 
-Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes) {
+Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes,
+                        BsdfContinuation next) {
     LightSampler::Pick pick = scene.lights().pick(rng.uniform());
     Vec2 u{rng.uniform(), rng.uniform()};
     if (!pick.light) return Color(0.0f);
@@ -11,20 +12,27 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     // picks a side with probability 1/2 and keeps only light from that side, which is
     // unbiased either way (the two sides' restricted estimates sum to the whole).
     Vec3 n = sp.hit.ns;
-    float sideProbability = 1.0f;
-    if (sp.material->transmits()) {
-        sideProbability = 0.5f;
-        if (rng.uniform() < 0.5f) n = -n;
-    }
+    const float sideProbability = lightSampleSideProbability(*sp.material);
+    if (sideProbability < 1.0f && rng.uniform() < 0.5f) n = -n;
     std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, n, u);
     if (!ls || (sideProbability < 1.0f && !(dot(ls->wi, n) > 0))) return Color(0.0f);
-    Vec3 wiLocal = sp.frame.toLocal(ls->wi);
-    Color f = sp.material->eval(sp.frame.toLocal(wo), wiLocal, sp.inputs, TransportMode::Radiance, lobes);
+    const Vec3 woLocal = sp.frame.toLocal(wo), wiLocal = sp.frame.toLocal(ls->wi);
+    Color f = sp.material->eval(woLocal, wiLocal, sp.inputs, TransportMode::Radiance, lobes);
     if (isBlack(f)) return Color(0.0f);
     Ray shadow = std::isinf(ls->distance) ? spawnRay(sp.hit.p, sp.hit.ng, ls->wi)
                                           : spawnRayTo(sp.hit.p, sp.hit.ng, sp.hit.p + ls->wi * ls->distance);
     if (scene.occluded(shadow)) return Color(0.0f);
-    return f * ls->weight * (std::abs(wiLocal.z) / (pick.probability * sideProbability));
+    const float pickProbability = pick.probability * sideProbability;
+    const unsigned shared = lobes & next.lobes;
+    if (pick.light == scene.environmentLight() && shared && ls->pdf > 0) {
+        // The continuation could draw wi too: its lobes' share is weighted against it.
+        const float pBsdf = next.probability * sp.material->pdf(woLocal, wiLocal, sp.inputs, next.lobes);
+        const float w = powerHeuristic(pickProbability * ls->pdf, pBsdf);
+        const Color fShared =
+            shared == lobes ? f : sp.material->eval(woLocal, wiLocal, sp.inputs, TransportMode::Radiance, shared);
+        f = (f - fShared) + fShared * w;
+    }
+    return f * ls->weight * (std::abs(wiLocal.z) / pickProbability);
 }
 
 }  // namespace photon

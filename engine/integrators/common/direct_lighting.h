@@ -6,8 +6,20 @@
 
 namespace photon {
 
+// The BSDF sampling a camera path goes on with after the light sample at a vertex: with
+// `probability` it samples its next direction from `lobes`. Environment light that both can
+// find (through those lobes) is shared between them by the power heuristic (Veach 1997,
+// ch. 9); the path then counts the environment its next ray reaches with the matching
+// weight (traceCameraRay with a BounceSampling, shading.h). No continuation (lobes 0): the
+// light sample counts in full, as for every light other than the environment.
+struct BsdfContinuation {
+    unsigned lobes = 0;
+    float probability = 0;
+};
+
 // Reflected radiance toward wo (world space) from one light picked in proportion to power,
 // through the material's `lobes` only.
-Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes = kAllLobes);
+Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes = kAllLobes,
+                        BsdfContinuation next = {});
 
 }  // namespace photon

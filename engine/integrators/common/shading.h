@@ -1,6 +1,7 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
 #include "math/frame.h"
+#include "math/sampling.h"
 #include "scene/scene.h"
 
 namespace photon {
@@ -33,8 +34,9 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
 
 // Casts a camera path's ray; returns whether it hit. Light the ray reaches directly (the
 // environment when it leaves, emission where it lands) is added to L with weight beta when
-// `countEmitted`: integrators that sample lights count it only after delta bounces, where
-// no shadow ray could have found it.
+// `countEmitted`: all of it on camera paths that no light sample could have served (the
+// photon mapper's delta-only paths, radiosity's). Integrators that sample lights at
+// non-delta vertices use the form with a BounceSampling below.
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool countEmitted, SurfaceHit& hit,
                            Color& L) {
     if (!scene.intersect(ray, hit)) {
@@ -42,6 +44,54 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool 
         return false;
     }
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
+    return true;
+}
+
+// How a camera path chose its current ray, for weighting the environment light the ray may
+// find against the light sample taken at the vertex it left (multiple importance sampling,
+// Veach 1997 ch. 9).
+struct BounceSampling {
+    bool delta = true;  // the camera ray or a delta bounce: no light sample could find that light
+    float pdf = 0;      // the solid-angle density the direction was drawn with, lobe choices included
+    Vec3 p, n;          // the vertex left, and its shading normal
+    float sideProbability = 1;  // see lightSampleSideProbability
+};
+
+// Light samples at a surface that transmits are taken for one side, picked with this
+// probability, and keep only light from that side (direct_lighting.cpp); 1 elsewhere.
+inline float lightSampleSideProbability(const Material& m) { return m.transmits() ? 0.5f : 1.0f; }
+
+// How the ray leaving sp along a sample s (drawn with probability `pick` among the ways the
+// path could continue) was chosen.
+inline BounceSampling bounceFrom(const ShadingPoint& sp, const BSDFSample& s, float pick = 1.0f) {
+    if (s.delta) return BounceSampling{};
+    return BounceSampling{false, pick * s.pdf, sp.hit.p, sp.hit.ns, lightSampleSideProbability(*sp.material)};
+}
+
+// The power-heuristic weight of environment light arriving along d after `bounce`: 1 after
+// delta bounces; otherwise against the density with which the light sample at the vertex,
+// picking the environment among the lights, would have chosen d.
+inline float environmentBounceWeight(const Scene& scene, const BounceSampling& bounce, Vec3 d) {
+    if (bounce.delta || !scene.environmentLight()) return 1.0f;
+    // A light sample at a surface that transmits is taken for the side d leaves from.
+    const Vec3 n = bounce.sideProbability < 1 && dot(d, bounce.n) < 0 ? -bounce.n : bounce.n;
+    const float pLight = bounce.sideProbability * scene.environmentPickProbability() *
+                         scene.environmentLight()->pdfIncident(bounce.p, n, d);
+    return powerHeuristic(bounce.pdf, pLight);
+}
+
+// traceCameraRay for integrators that sample lights at every non-delta vertex with
+// sampleDirectLight's BSDF continuation (direct_lighting.h): emission where the ray lands
+// counts after delta bounces only (area lights are found by light samples alone), the
+// environment after every bounce, weighted against its light samples.
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
+                           SurfaceHit& hit, Color& L) {
+    if (!scene.intersect(ray, hit)) {
+        if (scene.environmentLight())
+            L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
+        return false;
+    }
+    if (bounce.delta) L += beta * scene.emitted(hit, -ray.d);
     return true;
 }
 

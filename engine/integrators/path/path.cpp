@@ -22,20 +22,23 @@ private:
 
 Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
     Color L(0.0f), beta(1.0f);
-    bool afterDelta = true;  // emission found by shadow rays is not counted twice
+    // Area light found by shadow rays is not counted again; the environment is shared
+    // between shadow rays and BSDF samples by multiple importance sampling.
+    BounceSampling bounce;
+    const BsdfContinuation next{kAllLobes, 1.0f};
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, bounce, hit, L)) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
-        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng);
+        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
         std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,
                                                           TransportMode::Radiance);
         if (!s) break;
         beta *= s->weight;
-        afterDelta = s->delta;
+        bounce = bounceFrom(sp, *s);
         // Russian roulette after a few bounces, on the throughput's largest channel.
         if (depth >= 3) {
             float q = std::min(1.0f, maxComponent(beta));

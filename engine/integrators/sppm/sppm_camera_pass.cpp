@@ -33,11 +33,13 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     float px = static_cast<float>(index % width_) + rng.uniform();
     float py = static_cast<float>(index / width_) + rng.uniform();
     Ray ray = scene.camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
-    bool afterDelta = true;  // emission is counted only where no shadow ray could have found it
+    // Area light is counted where no shadow ray could have found it (after delta bounces);
+    // the environment is shared between shadow rays and BSDF samples (BounceSampling).
+    BounceSampling bounce;
     float pathLength = 0;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, afterDelta, hit, direct)) break;
+        if (!traceCameraRay(scene, ray, beta, bounce, hit, direct)) break;
         pathLength += hit.t;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
@@ -51,20 +53,25 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         const bool storesHere = m.hasDiffuse() || (!m.isDeltaOnly() && lastVertex);
         const unsigned others = m.lobes() & ~kDiffuseLobe;
         const bool splits = m.hasDiffuse() && others && !lastVertex;
+        const Vec3 woLocal = sp.frame.toLocal(wo);
+        const float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
+        // What the path samples after the light sample: everything where it does not stop,
+        // the other lobes with probability 1 - pd where it splits, nothing where it stops.
+        const BsdfContinuation next = !storesHere ? BsdfContinuation{kAllLobes, 1.0f}
+                                      : splits    ? BsdfContinuation{others, 1.0f - pd}
+                                                  : BsdfContinuation{};
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
-            direct += beta * sampleDirectLight(scene, sp, wo, rng);
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
         else if (splits)  // photons bring direct light through the diffuse lobe only
-            direct += beta * sampleDirectLight(scene, sp, wo, rng, others);
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, others, next);
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
-        Vec3 woLocal = sp.frame.toLocal(wo);
         if (storesHere) {
-            float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
             if (uLobe >= pd) {
                 std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.inputs, TransportMode::Radiance, others);
                 if (!s) break;
                 beta *= s->weight / (1.0f - pd);
-                afterDelta = s->delta;
+                bounce = bounceFrom(sp, *s, 1.0f - pd);
                 ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
                 continue;
             }
@@ -74,7 +81,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
         if (!s) break;
         beta *= s->weight;
-        afterDelta = s->delta;
+        bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = direct;
