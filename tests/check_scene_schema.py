@@ -117,6 +117,14 @@ INVALID = [
      set_path("lights", 3, {"type": "environment", "image": "sky.exr", "layout": "cube"})),
     ("negative environment scale", set_path("lights", 3, {"type": "environment", "image": "sky.exr", "scale": -1})),
     ("zero scale", set_path("shapes", 2, "transform", "scale", 0)),
+    ("unknown metal", set_path("materials", "metal", {"type": "conductor", "metal": "Xx"})),
+    ("metal and reflectance", set_path("materials", "metal", {"type": "conductor", "metal": "Au",
+                                                               "reflectance": [1, 1, 1]})),
+    ("eta without k", set_path("materials", "metal", {"type": "conductor", "eta": [0.2, 0.9, 1.1]})),
+    ("unknown named spectrum", set_path("materials", "metal", {"type": "conductor", "eta": "metal-Fe-eta",
+                                                                "k": [1, 1, 1]})),
+    ("remap_roughness not a boolean", set_path("materials", "metal", {"type": "conductor", "metal": "Au",
+                                                                       "remap_roughness": 1})),
 ]
 
 

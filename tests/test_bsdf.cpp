@@ -102,47 +102,12 @@ TEST_P(BsdfAgreement, SamplingMatchesQuadratureOfEval) {
 }
 
 // Test 3: reciprocity f(wo, wi) == f(wi, wo), and no reflection into the lower hemisphere.
-TEST_P(BsdfAgreement, EvalIsReciprocal) {
-    const Case& tc = GetParam();
-    Rng rng(7, 0, 0, StreamPurpose::Test);
-    for (int i = 0; i < 20000; ++i) {
-        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
-        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
-        Color fab = tc.material->eval(a, b, tc.inputs(), TransportMode::Radiance);
-        Color fba = tc.material->eval(b, a, tc.inputs(), TransportMode::Radiance);
-        if (a.z <= 0 || b.z <= 0) {
-            ASSERT_TRUE(isBlack(fab) && isBlack(fba)) << "a.z " << a.z << " b.z " << b.z;
-            continue;
-        }
-        for (int c = 0; c < 3; ++c)
-            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
-    }
-}
+TEST_P(BsdfAgreement, EvalIsReciprocal) { expectReciprocal(*GetParam().material, GetParam().inputs()); }
 
-// Test 5: a non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf.
+// Test 5: a non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf (only the
+// smooth coat is delta here).
 TEST_P(BsdfAgreement, SampleAgreesWithPdfAndEval) {
-    const Case& tc = GetParam();
-    Rng rng(11, 0, 0, StreamPurpose::Test);
-    for (float cosO : kCosines) {
-        Vec3 wo = direction(cosO, 2.1f);
-        for (int i = 0; i < 20000; ++i) {
-            float uLobe = rng.uniform();
-            auto s = tc.material->sample(wo, uLobe, {rng.uniform(), rng.uniform()}, tc.inputs(), TransportMode::Radiance);
-            if (!s) continue;
-            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
-            ASSERT_GT(s->lobeProbability, 0.0f);
-            ASSERT_LE(s->lobeProbability, 1.0f);
-            if (s->delta) {
-                ASSERT_FLOAT_EQ(s->pdf, s->lobeProbability);  // only the smooth coat is delta here
-                continue;
-            }
-            float p = tc.material->pdf(wo, s->wi, tc.inputs());
-            ASSERT_GT(s->pdf, 0.0f);
-            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
-            Color expected = tc.material->eval(wo, s->wi, tc.inputs(), TransportMode::Radiance) * (s->wi.z / p);
-            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
-        }
-    }
+    expectSamplesAgreeWithPdfAndEval(*GetParam().material, GetParam().inputs());
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, BsdfAgreement, testing::ValuesIn(nonDeltaCases()),

@@ -24,7 +24,7 @@ public:
     }
 
 protected:
-    bool smooth() const { return ggx_.alpha < kSmoothAlpha; }
+    bool smooth() const { return ggx_.smooth(); }
     float fresnel(float cosTheta) const { return fresnelDielectric(cosTheta, ior_); }
     // The coat's specular reflection F(wo.h) D G2 / (4 cos_o cos_i) (Walter et al. 2007,
     // eq. 20); zero when smooth (its mirror is a delta lobe).

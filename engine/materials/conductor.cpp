@@ -1,5 +1,8 @@
-// Rough metal: GGX microfacet reflection (Walter et al. 2007) with Schlick's Fresnel
-// from the tint F0; roughness 0 becomes an ideal mirror with the same Fresnel.
+// Rough metal: GGX microfacet reflection (Walter et al. 2007), isotropic or anisotropic, with
+// either Schlick's Fresnel from the tint F0 or the exact Fresnel of a complex index of
+// refraction eta + i k (pbrt-v4's ConductorBxDF). Index and roughness may be textured.
+// Smooth enough in both directions (and not textured), it becomes an ideal mirror with the
+// same Fresnel.
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/microfacet.h"
@@ -7,12 +10,39 @@
 namespace photon {
 namespace {
 
+// GGX alpha of a roughness value under the scene's meaning of roughness (material.h).
+float alphaOf(float roughness, RoughnessToAlpha toAlpha) {
+    switch (toAlpha) {
+        case RoughnessToAlpha::Square: return roughnessToAlpha(roughness);
+        case RoughnessToAlpha::SquareRoot: return pbrtRoughnessToAlpha(roughness);
+        case RoughnessToAlpha::Identity: break;
+    }
+    return roughness;
+}
+
+// The lobe's GGX distribution for alphas ax, ay. A lobe that is not smooth keeps each alpha
+// at kSmoothAlpha or more, so that a very narrow direction of an anisotropic lobe stays
+// within float range (pbrt-v4's TrowbridgeReitzDistribution does the same).
+GGX microfacetDistribution(float ax, float ay) {
+    GGX ggx(ax, ay);
+    if (ggx.smooth()) return ggx;
+    return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
+}
+
 class Conductor final : public Material {
 public:
-    Conductor(ColorParam reflectance, float roughness)
-        : Material(std::move(reflectance)), ggx_{roughnessToAlpha(roughness)} {}
+    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, GgxRoughness roughness)
+        : Material(std::move(reflectance)),
+          ior_(std::move(ior)),
+          roughness_(std::move(roughness)),
+          texturedRoughness_(roughness_.u.textured() || roughness_.v.textured()),
+          ggx_(microfacetDistribution(alphaOf(roughness_.u.value, roughness_.toAlpha),
+                                      alphaOf(roughness_.v.value, roughness_.toAlpha))) {}
 
     unsigned lobes() const override { return smooth() ? kDeltaLobe : kGlossyLobe; }
+    bool textured() const override {
+        return Material::textured() || texturedRoughness_ || (ior_ && (ior_->eta.textured() || ior_->k.textured()));
+    }
 
     // f = F(wo.h) D G2 / (4 cos_o cos_i), Torrance-Sparrow with the height-correlated
     // Smith G2 (see microfacet.h). Zero unless wo and wi are both above the surface.
@@ -20,48 +50,84 @@ public:
         if (smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnelSchlick(in.tint, dot(wo, *h)) * ggx_.reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in) * ggxAt(in.uv).reflectionNoFresnel(wo, wi, *h);
     }
 
-    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs&, unsigned lobes) const override {
+    float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
         if (smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
-        return h ? ggx_.reflectionPdf(wo, *h) : 0.0f;
+        return h ? ggxAt(in.uv).reflectionPdf(wo, *h) : 0.0f;
     }
 
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
-        if (smooth()) return sampleMirror(wo, in.tint);
+        if (smooth()) return sampleMirror(wo, in);
         // Visible normals never face away from wo, so only the reflected wi that ends up
         // below the horizon is lost (that energy is what single scattering misses).
-        Vec3 wi = reflect(wo, ggx_.sampleVisibleNormal(wo, u));
+        Vec3 wi = reflect(wo, ggxAt(in.uv).sampleVisibleNormal(wo, u));
         // Weighted through eval()/pdf(); the weight reduces analytically to F G2 / G1(wo)
         // (Heitz 2018).
         return weightedSample(wo, wi, in, mode, lobes);
     }
 
 private:
-    bool smooth() const { return ggx_.alpha < kSmoothAlpha; }
+    bool smooth() const { return !texturedRoughness_ && ggx_.smooth(); }
+
+    // The distribution at a hit: the constant one, or the textured roughness looked up there.
+    GGX ggxAt(Vec2 uv) const {
+        if (!texturedRoughness_) return ggx_;
+        float ax = alphaOf(roughness_.u.eval(uv), roughness_.toAlpha);
+        float ay = alphaOf(roughness_.v.eval(uv), roughness_.toAlpha);
+        return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
+    }
+
+    // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h. Textured indices are
+    // kept physical texel by texel: eta > 0 (at least kMinEta), k >= 0.
+    Color fresnel(float cosTheta, const MaterialInputs& in) const {
+        if (!ior_) return fresnelSchlick(in.tint, cosTheta);
+        Color eta = vmax(ior_->eta.eval(in.uv), Color(kMinEta)), k = vmax(ior_->k.eval(in.uv), Color(0.0f));
+        return fresnelConductor(cosTheta, eta, k);
+    }
 
     // The alpha -> 0 limit of the microfacet lobe: all microfacets face n, so h = n,
-    // G = 1 and the reflectance is the Schlick Fresnel at the incidence angle.
-    static BSDFSample sampleMirror(Vec3 wo, Color tint) {
+    // G = 1 and the reflectance is the Fresnel term at the incidence angle.
+    BSDFSample sampleMirror(Vec3 wo, const MaterialInputs& in) const {
         BSDFSample s;
         s.wi = Vec3(-wo.x, -wo.y, wo.z);
-        s.weight = fresnelSchlick(tint, wo.z);
+        s.weight = fresnel(wo.z, in);
         s.pdf = 1;
         s.delta = true;
         return s;
     }
 
-    GGX ggx_;
+    static constexpr float kMinEta = 1e-3f;
+    std::optional<ComplexIorParam> ior_;  // none: Schlick's Fresnel from the tint
+    GgxRoughness roughness_;
+    bool texturedRoughness_;
+    GGX ggx_;  // with constant roughness
 };
 
 }  // namespace
 
 MaterialPtr makeConductor(ColorParam reflectance, float roughness) {
-    return std::make_shared<Conductor>(std::move(reflectance), roughness);
+    return makeConductor(std::move(reflectance), GgxRoughness{roughness, roughness, RoughnessToAlpha::Square});
+}
+
+MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha) {
+    return makeConductor(std::move(reflectance), GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
+}
+
+MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness) {
+    return std::make_shared<Conductor>(std::move(reflectance), std::nullopt, std::move(roughness));
+}
+
+MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha) {
+    return makeConductor(ComplexIorParam{ior.eta, ior.k}, GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
+}
+
+MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness) {
+    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), std::move(ior), std::move(roughness));
 }
 
 }  // namespace photon

@@ -1,6 +1,7 @@
 // Fresnel reflectance and Snell refraction shared by the dielectric, conductor and
 // plastic materials. Local-frame conventions: directions point away from the surface.
 #pragma once
+#include <complex>
 #include <optional>
 #include "math/lanes.h"
 #include <photon/vec.h>
@@ -36,6 +37,32 @@ inline Color fresnelSchlick(Color f0, float cosTheta) {
     float m = std::clamp(1.0f - cosTheta, 0.0f, 1.0f);
     float m2 = m * m;
     return f0 + (Color(1.0f) - f0) * (m2 * m2 * m);
+}
+
+// Exact unpolarised Fresnel reflectance of a smooth conductor of complex index eta + i k
+// (k the extinction coefficient), light arriving from a medium of index 1: Fresnel's
+// equations with a complex index, the mean of |r_parallel|^2 and |r_perpendicular|^2 (Hecht,
+// "Optics", sec. 4.8; pbrt-v4 sec. 9.3.6, FrComplex). The transmitted cosine is complex too,
+// cos_t = sqrt(1 - sin^2_i / (eta + i k)^2). cosThetaI is clamped to [0, 1]: conductors are
+// opaque, so light only ever arrives from outside. With k = 0 this is fresnelDielectric from
+// outside; at normal incidence it is ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2); at grazing
+// incidence it tends to 1.
+inline float fresnelConductor(float cosThetaI, float eta, float k) {
+    using Complex = std::complex<float>;
+    cosThetaI = std::clamp(cosThetaI, 0.0f, 1.0f);
+    Complex index(eta, k);
+    float sin2ThetaI = 1.0f - cosThetaI * cosThetaI;
+    Complex sin2ThetaT = sin2ThetaI / (index * index);
+    Complex cosThetaT = std::sqrt(1.0f - sin2ThetaT);
+    Complex rParallel = (index * cosThetaI - cosThetaT) / (index * cosThetaI + cosThetaT);
+    Complex rPerpendicular = (cosThetaI - index * cosThetaT) / (cosThetaI + index * cosThetaT);
+    return 0.5f * (std::norm(rParallel) + std::norm(rPerpendicular));
+}
+
+// The same per colour channel, for RGB eta and k (materials/metal_table.h).
+inline Color fresnelConductor(float cosThetaI, Color eta, Color k) {
+    return {fresnelConductor(cosThetaI, eta.x, k.x), fresnelConductor(cosThetaI, eta.y, k.y),
+            fresnelConductor(cosThetaI, eta.z, k.z)};
 }
 
 struct Refraction {

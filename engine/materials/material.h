@@ -117,6 +117,36 @@ MaterialPtr makeThinDielectric(float ior);
 // GGX microfacet conductor with Schlick's Fresnel from `reflectance` (F0);
 // alpha = roughness^2 (Burley 2012). roughness 0 is a perfect mirror.
 MaterialPtr makeConductor(ColorParam reflectance, float roughness);
+// GGX alphas of an anisotropic lobe: x along the shading frame's s axis, y along its t axis
+// (math/frame.h). Both below kSmoothAlpha (materials/microfacet.h) make a perfect mirror.
+struct GgxAlpha {
+    float x, y;
+};
+// The same conductor with anisotropic roughness.
+MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha);
+// How a roughness parameter becomes a GGX alpha: photon's perceptual roughness, alpha = r^2
+// (Burley 2012); pbrt-v4's remapped roughness, alpha = sqrt(r); or r as alpha itself (pbrt-v4
+// without remapping).
+enum class RoughnessToAlpha { Square, SquareRoot, Identity };
+// A lobe's roughness along the shading frame's s (u) and t (v) axes, constant or textured.
+// A textured roughness always makes a glossy lobe (each alpha at least kSmoothAlpha).
+struct GgxRoughness {
+    FloatParam u, v;
+    RoughnessToAlpha toAlpha = RoughnessToAlpha::Square;
+};
+MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness);
+// Complex index of refraction eta + i k per colour channel; k is the extinction coefficient.
+struct ComplexIor {
+    Color eta, k;
+};
+// The same as colour parameters: constant, or textured and looked up at the hit's uv.
+struct ComplexIorParam {
+    ColorParam eta, k;
+};
+// GGX microfacet conductor with the exact Fresnel of the complex index `ior` (the outside
+// has index 1); its tint is white and unused.
+MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
+MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 // The cheaper of the two coated models: no internal reflections and no 1/ior^2
 // (materials/plastic.cpp); kept so that scenes made with it render as before.

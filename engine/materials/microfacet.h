@@ -1,7 +1,9 @@
-// The isotropic GGX (Trowbridge-Reitz) microfacet distribution shared by the conductor
-// and the plastic coating: normal distribution, Smith masking and visible-normal sampling.
-// All vectors are in the local shading frame (z = macro normal).
+// The GGX (Trowbridge-Reitz) microfacet distribution shared by the conductor and the plastic
+// coating: normal distribution, Smith masking and visible-normal sampling, anisotropic with
+// roughnesses alphaX along the local frame's x axis and alphaY along its y axis (isotropic
+// when equal). All vectors are in the local shading frame (z = macro normal).
 #pragma once
+#include <cmath>
 #include <optional>
 #include <photon/vec.h>
 
@@ -11,29 +13,48 @@ namespace photon {
 // (D ~ 1/(pi alpha^2) explodes), so materials switch to an exact delta reflection.
 constexpr float kSmoothAlpha = 1e-4f;
 
-// Perceptually linear roughness to GGX alpha (Burley 2012, "Physically-Based Shading
-// at Disney", sec. 5.4).
+// photon's `roughness`: perceptually linear roughness to GGX alpha = roughness^2 (Burley
+// 2012, "Physically-Based Shading at Disney", sec. 5.4).
 inline float roughnessToAlpha(float roughness) { return roughness * roughness; }
 
-struct GGX {
-    float alpha;
+// pbrt-v4's `remaproughness` (on by default in its conductor and dielectric), for scenes
+// written with pbrt's meaning of roughness: alpha = sqrt(roughness)
+// (TrowbridgeReitzDistribution::RoughnessToAlpha, pbrt-v4 sec. 9.6.1). Without the remap
+// pbrt takes the roughness as alpha itself.
+inline float pbrtRoughnessToAlpha(float roughness) { return std::sqrt(roughness); }
 
-    // D(h) = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2) (Walter et al. 2007, eq. 33),
-    // with the bracket rewritten as h.x^2 + h.y^2 + alpha^2 h.z^2: the same for unit h
-    // but free of the cancellation in alpha^2 - 1 when alpha is tiny.
+// Both alphas must be positive; materials switch to a delta lobe below kSmoothAlpha.
+struct GGX {
+    float alphaX, alphaY;
+
+    explicit GGX(float alpha) : alphaX(alpha), alphaY(alpha) {}
+    GGX(float alphaX_, float alphaY_) : alphaX(alphaX_), alphaY(alphaY_) {}
+
+    // Narrower than kSmoothAlpha in both directions: materials use a delta reflection.
+    bool smooth() const { return std::max(alphaX, alphaY) < kSmoothAlpha; }
+
+    // Anisotropic D(h) = 1 / (pi ax ay (h.x^2/ax^2 + h.y^2/ay^2 + h.z^2)^2) (Heitz 2014,
+    // "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 85),
+    // multiplied through by ax ay: ax ay / (pi (h.x^2 ay/ax + h.y^2 ax/ay + ax ay h.z^2)^2).
+    // For ax = ay = alpha that is Walter et al. 2007, eq. 33, with (n.h)^2 (alpha^2 - 1) + 1
+    // written as h.x^2 + h.y^2 + alpha^2 h.z^2: the same for unit h but free of the
+    // cancellation in alpha^2 - 1 when alpha is tiny.
     float D(Vec3 h) const {
         if (h.z <= 0) return 0;
-        float a2 = alpha * alpha;
-        float denom = h.x * h.x + h.y * h.y + a2 * h.z * h.z;
-        return a2 / (kPi * denom * denom);
+        float axy = alphaX * alphaY;
+        float denom = h.x * h.x * (alphaY / alphaX) + h.y * h.y * (alphaX / alphaY) + axy * h.z * h.z;
+        return axy / (kPi * denom * denom);
     }
 
-    // Smith Lambda for GGX: (sqrt(1 + alpha^2 tan^2 theta) - 1) / 2 (Heitz 2014,
-    // "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 86).
+    // Smith Lambda for GGX: (sqrt(1 + alpha(w)^2 tan^2 theta) - 1) / 2, where the
+    // anisotropic alpha(w)^2 = ax^2 cos^2 phi + ay^2 sin^2 phi (Heitz 2014, eqs. 80 and 86),
+    // so alpha(w)^2 tan^2 theta = ax^2 (w.x^2 + (ay/ax)^2 w.y^2) / w.z^2 (written so that
+    // the isotropic case rounds exactly as alpha^2 (w.x^2 + w.y^2) / w.z^2 does).
     float lambda(Vec3 w) const {
         float z2 = w.z * w.z;
         if (z2 == 0) return INFINITY;
-        float alpha2Tan2 = alpha * alpha * (w.x * w.x + w.y * w.y) / z2;
+        float ratio2 = (alphaY * alphaY) / (alphaX * alphaX);
+        float alpha2Tan2 = alphaX * alphaX * (w.x * w.x + ratio2 * w.y * w.y) / z2;
         return 0.5f * (std::sqrt(1.0f + alpha2Tan2) - 1.0f);
     }
 
@@ -47,10 +68,11 @@ struct GGX {
 
     // Samples a normal from the distribution of normals visible from wo (wo.z > 0),
     // D_wo(h) = G1(wo) max(0, wo.h) D(h) / wo.z. Heitz 2018, "Sampling the GGX
-    // Distribution of Visible Normals", JCGT 7(4), listing 1: stretch wo to the
-    // hemisphere configuration, sample the projected disk, unstretch.
+    // Distribution of Visible Normals", JCGT 7(4), listing 1, which is anisotropic as
+    // written: stretch wo by (ax, ay, 1) to the hemisphere configuration, sample the
+    // projected disk, unstretch the normal by the same factors.
     Vec3 sampleVisibleNormal(Vec3 wo, Vec2 u) const {
-        Vec3 vh = normalize(Vec3(alpha * wo.x, alpha * wo.y, wo.z));
+        Vec3 vh = normalize(Vec3(alphaX * wo.x, alphaY * wo.y, wo.z));
         float lensq = vh.x * vh.x + vh.y * vh.y;
         Vec3 t1 = lensq > 0 ? Vec3(-vh.y, vh.x, 0) / std::sqrt(lensq) : Vec3(1, 0, 0);
         Vec3 t2 = cross(vh, t1);
@@ -60,7 +82,7 @@ struct GGX {
         float s = 0.5f * (1.0f + vh.z);
         p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
         Vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-        return normalize(Vec3(alpha * nh.x, alpha * nh.y, std::max(0.0f, nh.z)));
+        return normalize(Vec3(alphaX * nh.x, alphaY * nh.y, std::max(0.0f, nh.z)));
     }
 
     // Density of wi = reflect(wo, h) under visible-normal sampling: D_wo(h) times the

@@ -1,5 +1,6 @@
 // The "materials" section: a name → material map, built with the factories of
 // materials/material.h.
+#include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
@@ -19,6 +20,56 @@ ColorParam colorField(JsonObject& obj, std::string_view key, Color fallback, Loa
 float roughnessField(JsonObject& obj, float fallback) { return obj.number("roughness", fallback, kFraction); }
 
 float iorField(JsonObject& obj) { return obj.number("ior", 1.5f, Range::positive()); }
+
+// A conductor's eta or k: [r, g, b] or a texture, inside `range` (docs/scene-format.md,
+// "Textures"; a float image for values above 1), or the name of a pbrt-v4 conductor spectrum
+// ("metal-Au-eta"), taken as its RGB projection (materials/metal_table.h).
+ColorParam complexIorPart(const JsonValue& value, const Range& range, LoadContext& ctx) {
+    if (!value.json().is_string()) return readColorParam(value, ctx, range);
+    auto color = findPbrtMetalSpectrum(value.string());
+    if (!color) value.fail("unknown named spectrum \"" + value.string() + "\" (expected [r, g, b] or one of " +
+                           pbrtMetalSpectrumNames() + ")");
+    return ColorParam(*color);
+}
+
+// The complex index of a conductor: "metal" (a symbol of materials/metal_table.h) or "eta"
+// and "k" together; nullopt if none of them is given (the Schlick form). Both forms, or
+// either beside "reflectance", are refused.
+std::optional<ComplexIorParam> complexIorFields(JsonObject& obj, LoadContext& ctx) {
+    auto metal = obj.optional("metal");
+    auto eta = obj.optional("eta");
+    auto k = obj.optional("k");
+    if (!metal && !eta && !k) return std::nullopt;
+    if (obj.has("reflectance")) {
+        obj.optional("reflectance")->fail("gives Schlick's F0; the complex index (metal, eta, k) is another way to "
+                                          "give the Fresnel term: use one");
+    }
+    if (metal) {
+        if (eta || k) (eta ? *eta : *k).fail("a named metal gives eta and k already: use either metal or eta and k");
+        auto ior = findMetal(metal->string());
+        if (!ior) metal->fail("unknown metal \"" + metal->string() + "\" (expected one of " + metalSymbols() + ")");
+        return ComplexIorParam{ior->eta, ior->k};
+    }
+    if (!eta || !k) obj.required(eta ? "k" : "eta");  // throws: missing required field
+    return ComplexIorParam{complexIorPart(*eta, Range::positive(), ctx), complexIorPart(*k, Range::nonNegative(), ctx)};
+}
+
+// A conductor's roughness: "roughness" or, for an anisotropic lobe, "uroughness" (along the
+// shading frame's s axis) and "vroughness" (along t), each defaulting to "roughness"; each a
+// number in [0, 1] or a texture. photon's roughness is perceptual, alpha = roughness^2;
+// "remap_roughness" switches to pbrt-v4's meaning: true, alpha = sqrt(roughness) (its
+// remaproughness); false, alpha = roughness.
+GgxRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
+    auto field = [&](std::string_view key, const FloatParam& fallback) {
+        auto value = obj.optional(key);
+        return value ? readFloatParam(*value, ctx, kFraction) : fallback;
+    };
+    FloatParam roughness = field("roughness", 0.2f);
+    GgxRoughness r{field("uroughness", roughness), field("vroughness", roughness)};
+    if (auto remap = obj.optional("remap_roughness"))
+        r.toAlpha = remap->boolean() ? RoughnessToAlpha::SquareRoot : RoughnessToAlpha::Identity;
+    return r;
+}
 
 // A boundary (rough if roughness > 0), or with "thin": true a thin slab, whose faces are
 // smooth.
@@ -80,8 +131,10 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case Dielectric: m = readDielectric(obj); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
-            ColorParam reflectance = colorField(obj, "reflectance", Color(0.9f), ctx);
-            m = makeConductor(reflectance, roughnessField(obj, 0.2f));
+            std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
+            GgxRoughness roughness = conductorRoughnessFields(obj, ctx);
+            m = ior ? makeConductor(*ior, roughness)
+                    : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), roughness);
             break;
         }
         case Plastic: {

@@ -2,8 +2,11 @@
 // sample(), and quadratures of the upper hemisphere and of the whole sphere independent of
 // sample().
 #pragma once
+#include <gtest/gtest.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include "materials/material.h"
 #include "math/frame.h"
 #include "math/rng.h"
@@ -57,30 +60,31 @@ inline SampleEstimate estimateBySampling(const Material& m, Vec3 wo, const Mater
     return e;
 }
 
-// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
-// wi = reflect(wo, h) over half vectors h, with d(omega_i) = 4 (wo.h) d(omega_h)
-// (Walter et al. 2007, eq. 14). theta_h uses the warp tan(theta_h) = a tan(u pi/2) up
-// to tan(theta_h) = 30 a, so a lobe of GGX width a is resolved, then a uniform grid up
-// to pi/2 for the broad (diffuse) remainder. Midpoint rule in both, periodic in phi.
+// Deterministic quadrature of g(h) over the hemisphere of normals h (h.z > 0): theta_h uses
+// the warp tan(theta_h) = a tan(u pi/2) up to tan(theta_h) = 30 a, so a lobe of GGX width a
+// is resolved, then a uniform grid up to pi/2 for the broad remainder (a diffuse lobe, an
+// anisotropic lobe's wide direction). Midpoint rule in both, periodic in phi. g returns a
+// number (summed in double) or an array of numbers.
 template <class G>
-Channels integrateHemisphere(Vec3 wo, float a, G g) {
+auto integrateNormals(float a, G g) {
     constexpr int kTheta = 400, kPhi = 512;
     constexpr float kHalfPi = 0.5f * kPi;
     double uMax = std::atan(30.0) / kHalfPi;  // tan(uMax pi/2) = 30
     double thetaSplit = std::atan(30.0 * a);
-    Channels total{};
+    using Value = decltype(g(Vec3()));
+    std::conditional_t<std::is_arithmetic_v<Value>, double, Value> total{};
     auto ring = [&](double theta, double dTheta) {
         double dPhi = 2.0 * kPi / kPhi, sinTheta = std::sin(theta);
         for (int j = 0; j < kPhi; ++j) {
             double phi = (j + 0.5) * dPhi;
             Vec3 h(float(sinTheta * std::cos(phi)), float(sinTheta * std::sin(phi)), float(std::cos(theta)));
-            float woDotH = dot(wo, h);
-            if (woDotH <= 0) continue;
-            Vec3 wi = normalize(reflect(wo, h));
-            if (wi.z <= 0) continue;
-            Color v = g(wi);
-            double jacobian = 4.0 * woDotH * sinTheta * dTheta * dPhi;
-            for (int c = 0; c < 3; ++c) total[c] += v[c] * jacobian;
+            auto v = g(h);
+            double measure = sinTheta * dTheta * dPhi;
+            if constexpr (std::is_arithmetic_v<Value>) {
+                total += v * measure;
+            } else {
+                for (size_t c = 0; c < v.size(); ++c) total[c] += v[c] * measure;
+            }
         }
     };
     double du = uMax / kTheta;
@@ -92,6 +96,67 @@ Channels integrateHemisphere(Vec3 wo, float a, G g) {
     double dTheta = (kHalfPi - thetaSplit) / kTheta;
     for (int i = 0; i < kTheta; ++i) ring(thetaSplit + (i + 0.5) * dTheta, dTheta);
     return total;
+}
+
+// Deterministic quadrature of g(wi) over the upper hemisphere, independent of sample():
+// wi = reflect(wo, h) over the half vectors h of integrateNormals, with d(omega_i) =
+// 4 (wo.h) d(omega_h) (Walter et al. 2007, eq. 14). g returns a Color.
+template <class G>
+Channels integrateHemisphere(Vec3 wo, float a, G g) {
+    return integrateNormals(a, [&](Vec3 h) {
+        Channels v{};
+        float woDotH = dot(wo, h);
+        if (woDotH <= 0) return v;
+        Vec3 wi = normalize(reflect(wo, h));
+        if (wi.z <= 0) return v;
+        Color f = g(wi);
+        for (int c = 0; c < 3; ++c) v[c] = double(f[c]) * 4.0 * woDotH;
+        return v;
+    });
+}
+
+// Reciprocity f(wo, wi) == f(wi, wo) over random pairs, and no reflection into the lower
+// hemisphere.
+inline void expectReciprocal(const Material& m, const MaterialInputs& in) {
+    Rng rng(7, 0, 0, StreamPurpose::Test);
+    for (int i = 0; i < 20000; ++i) {
+        Vec3 a = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Vec3 b = sampleUniformSphere({rng.uniform(), rng.uniform()});
+        Color fab = m.eval(a, b, in, TransportMode::Radiance);
+        Color fba = m.eval(b, a, in, TransportMode::Radiance);
+        if (a.z <= 0 || b.z <= 0) {
+            ASSERT_TRUE(isBlack(fab) && isBlack(fba)) << "a.z " << a.z << " b.z " << b.z;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(fab[c], fba[c], 1e-4f * std::max(fab[c], fba[c]) + 1e-12f) << "pair " << i << " channel " << c;
+    }
+}
+
+// A non-delta sample's pdf is pdf(wo, wi) and its weight is eval |cos| / pdf; a delta one's
+// pdf is its lobe probability.
+inline void expectSamplesAgreeWithPdfAndEval(const Material& m, const MaterialInputs& in) {
+    Rng rng(11, 0, 0, StreamPurpose::Test);
+    for (float cosO : kCosines) {
+        Vec3 wo = direction(cosO, 2.1f);
+        for (int i = 0; i < 20000; ++i) {
+            float uLobe = rng.uniform();
+            auto s = m.sample(wo, uLobe, {rng.uniform(), rng.uniform()}, in, TransportMode::Radiance);
+            if (!s) continue;
+            ASSERT_NEAR(length(s->wi), 1.0f, 1e-4f);
+            ASSERT_GT(s->lobeProbability, 0.0f);
+            ASSERT_LE(s->lobeProbability, 1.0f);
+            if (s->delta) {
+                ASSERT_FLOAT_EQ(s->pdf, s->lobeProbability);
+                continue;
+            }
+            float p = m.pdf(wo, s->wi, in);
+            ASSERT_GT(s->pdf, 0.0f);
+            ASSERT_NEAR(s->pdf, p, 1e-4f * p);
+            Color expected = m.eval(wo, s->wi, in, TransportMode::Radiance) * (s->wi.z / p);
+            for (int c = 0; c < 3; ++c) ASSERT_NEAR(s->weight[c], expected[c], 1e-4f * expected[c] + 1e-7f);
+        }
+    }
 }
 
 // The same over the whole sphere, for materials that transmit: the lower hemisphere is the
