@@ -107,7 +107,7 @@ inline const Fixture& fixture() {
     return f;
 }
 
-// The brief's example scene, with every field set to something other than its default.
+// The scene format's full example, with every field set to something other than its default.
 inline const char* const kFullScene = R"({
   "camera": {"type": "perspective", "position": [0, 1, 6.8], "look_at": [0, 1, 0], "up": [0, 1, 0],
              "fov": 19.5, "resolution": [640, 480], "aperture_radius": 0.05, "focus_distance": 6.5},
