@@ -18,16 +18,7 @@ namespace {
 
 constexpr float kEps = 1e-5f;
 
-// A camera is required; it plays no part here.
-SceneDescription baseScene() {
-    SceneDescription d;
-    d.camera = test::camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
-    d.materials.push_back(makeDiffuse(Color(0.5f)));
-    // A 2x1 texture: its lookup at the hit's uv shows the uv the hit carried.
-    d.materials.push_back(makeDiffuse(ColorParam(std::make_shared<ImageTexture>(
-        2, 1, std::vector<Color>{Color(1, 0, 0), Color(0, 0, 1)}))));
-    return d;
-}
+SceneDescription baseScene() { return test::hitTestScene(); }
 
 SurfaceHit hitAlong(const Scene& scene, Vec3 o, Vec3 d) {
     SurfaceHit hit;

@@ -152,7 +152,7 @@ TEST(SceneLoaderErrors, WrongTypes) {
 TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["shapes"][0]["material"] = "foo"; }, "shapes[0].material", "unknown material \"foo\"");
     expectError([](Json& d) { d["shapes"][1]["type"] = "cone"; }, "shapes[1].type",
-                "unknown type \"cone\" (expected one of quad, sphere, mesh)");
+                "unknown type \"cone\" (expected one of quad, sphere, mesh, instance)");
     expectError([](Json& d) { d["lights"][0]["type"] = "area"; }, "lights[0].type",
                 "unknown type \"area\" (expected one of point, spot, directional, environment)");
     expectError([](Json& d) { d["materials"]["white"]["type"] = "lambert"; }, "materials.white.type",

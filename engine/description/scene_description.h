@@ -92,6 +92,21 @@ struct ShapeDescription {
     Color meanEmission() const { return emissionTexture ? emission * emissionTexture->average() : emission; }
 };
 
+// Shapes in a frame of their own, placed in the world any number of times by instances:
+// their geometry is stored, and built into Embree's hierarchy, once (pbrt's ObjectBegin,
+// a glTF mesh used by several nodes).
+struct ObjectDescription {
+    std::string name;
+    std::vector<ShapeDescription> shapes;  // in the object's frame
+};
+
+// One placement of an object.
+struct InstanceDescription {
+    uint32_t object = 0;  // index into SceneDescription::objects
+    Transform toWorld;    // invertible
+    std::string name;     // for messages: where it came from
+};
+
 // How an environment image covers the sphere of directions, in the light's own frame
 // (docs/scene-format.md): longitude and latitude (y up), or pbrt-v4's equal-area square.
 enum class EnvironmentLayout { LatLong, EqualArea };
@@ -117,7 +132,9 @@ struct SceneDescription {
     CameraDescription camera;
     std::vector<MaterialPtr> materials;
     std::vector<std::string> materialNames;
-    std::vector<ShapeDescription> shapes;
+    std::vector<ShapeDescription> shapes;  // in world space
+    std::vector<ObjectDescription> objects;
+    std::vector<InstanceDescription> instances;
     std::vector<LightDescription> lights;
     RenderSettings render;
     // Files the scene named (meshes, textures), relative to its folder in normal form, sorted.

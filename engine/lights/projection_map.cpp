@@ -45,6 +45,16 @@ std::vector<BoundingSphere> shapeBoundingSpheres(const std::vector<ShapeDescript
     return spheres;
 }
 
+BoundingSphere placed(BoundingSphere s, const Transform& t) {
+    // The largest stretch squared is the largest eigenvalue of A^T A (A: t's linear part),
+    // at most its largest absolute row sum (Gershgorin): s^2 for s times a rotation.
+    Vec3 c[3] = {{t.m[0], t.m[4], t.m[8]}, {t.m[1], t.m[5], t.m[9]}, {t.m[2], t.m[6], t.m[10]}};
+    float stretch2 = 0;
+    for (int i = 0; i < 3; ++i)
+        stretch2 = std::max(stretch2, std::abs(dot(c[i], c[0])) + std::abs(dot(c[i], c[1])) + std::abs(dot(c[i], c[2])));
+    return {t.point(s.center), s.radius * std::sqrt(stretch2)};
+}
+
 std::optional<ProjectionMap> ProjectionMap::build(const Light& light, const std::vector<BoundingSphere>& objects) {
     ProjectionMap m;
     m.geometry_ = light.emissionGeometry();

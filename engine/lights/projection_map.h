@@ -17,6 +17,9 @@ struct BoundingSphere {
     Vec3 center;
     float radius = 0;
 };
+// A sphere bounding `s` moved by `t`: its centre moved, its radius times a bound on t's
+// largest stretch (exact for rotations with a uniform scale).
+BoundingSphere placed(BoundingSphere s, const Transform& t);
 
 // One bounding sphere per shape that `include` accepts (the sphere itself, or the sphere
 // about a mesh's bounding box).

@@ -47,6 +47,19 @@ struct Transform {
         Vec3 r{dot(c0, n), dot(c1, n), dot(c2, n)};
         return normalize(dot(r0, c0) < 0 ? -r : r);
     }
+    // The inverse of an invertible transform (the caller checks the determinant): the
+    // cofactors over the determinant for the linear part, then the translation undone.
+    Transform inverse() const {
+        Vec3 r0{m[0], m[1], m[2]}, r1{m[4], m[5], m[6]}, r2{m[8], m[9], m[10]};
+        Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
+        const float inv = 1.0f / dot(r0, c0);
+        // The inverse's columns are c0, c1, c2 over the determinant.
+        Transform r{{c0.x * inv, c1.x * inv, c2.x * inv, 0, c0.y * inv, c1.y * inv, c2.y * inv, 0, c0.z * inv,
+                     c1.z * inv, c2.z * inv, 0}};
+        const Vec3 t = r.vector({m[3], m[7], m[11]});
+        r.m[3] = -t.x, r.m[7] = -t.y, r.m[11] = -t.z;
+        return r;
+    }
     float determinant() const {
         Vec3 r0{m[0], m[1], m[2]}, r1{m[4], m[5], m[6]}, r2{m[8], m[9], m[10]};
         return dot(r0, cross(r1, r2));

@@ -60,6 +60,9 @@ void checkHasLight(const SceneDescription& scene) {
         if (emits(l)) return;
     for (const ShapeDescription& s : scene.shapes)
         if (!isBlack(s.emission)) return;
+    for (const InstanceDescription& instance : scene.instances)
+        for (const ShapeDescription& s : scene.objects[instance.object].shapes)
+            if (!isBlack(s.emission)) return;
     throw SceneError("lights", "scene has no light (add a light or an emissive shape)");
 }
 
@@ -80,6 +83,8 @@ SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
     scene.camera = readCamera(top.required("camera"));
     // Materials before shapes: shapes refer to them by name.
     readMaterials(top.required("materials"), ctx, scene);
+    // Objects before shapes: instances among the shapes refer to them by name.
+    if (auto objects = top.optional("objects")) readObjects(*objects, ctx, scene);
     readShapes(top.required("shapes"), ctx, scene);
     if (auto lights = top.optional("lights")) readLights(*lights, ctx, scene);
     if (auto render = top.optional("render")) scene.render = readRender(*render);

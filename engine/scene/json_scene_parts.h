@@ -27,6 +27,8 @@ struct LoadContext {
     std::map<std::pair<std::filesystem::path, int>, std::shared_ptr<const ImageTexture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
+    // Object name -> index, for instances.
+    std::unordered_map<std::string, uint32_t> objectIndex;
     // Every file resolveFile was asked for, relative and in normal form: a record of what was
     // read, kept as the context is passed along read-only.
     mutable std::set<std::string> files;
@@ -56,17 +58,17 @@ FloatParam readFloatParam(const JsonValue& value, LoadContext& ctx, const Range&
 CameraDescription readCamera(const JsonValue& value);
 RenderSettings readRender(const JsonValue& value);
 void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+// The world's shapes and instances of objects ("shapes").
 void readShapes(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+// One shape that is not an instance, in the frame its transform is relative to.
+ShapeDescription readShape(const JsonValue& value, LoadContext& ctx);
+// Named groups of shapes that instances place ("objects", json_objects.cpp).
+void readObjects(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 
 // {"axis": [x, y, z], "angle": degrees}: a rotation about the axis (right-handed).
 Transform readRotation(const JsonValue& value);
 // {"scale", "rotate", "translate"} or {"matrix"}; the result is invertible.
 Transform readTransform(const JsonValue& value);
-// The factor s if `t` is a rotation (possibly with reflection) times a uniform scale s.
-std::optional<float> uniformScale(const Transform& t);
-// Transforms positions and normals; swaps the winding if `t` mirrors, so the geometric
-// normal keeps agreeing with the shading normals (and with the side a quad emits to).
-void applyTransform(const Transform& t, TriangleMesh& mesh);
 
 }  // namespace photon::scene_json

@@ -1,6 +1,7 @@
 // The "shapes" section: quads, spheres and triangle meshes (inline or from files).
 #include <cmath>
 #include "scene/json_scene_parts.h"
+#include "description/shape_transform.h"
 #include "scene/mesh_loader.h"
 
 namespace photon::scene_json {
@@ -88,14 +89,6 @@ uint32_t readMaterialRef(const JsonValue& value, const LoadContext& ctx) {
     return it->second;
 }
 
-// A sphere stays a sphere only under rotation, translation and uniform scale.
-void transformSphere(const Transform& t, const JsonValue& where, ShapeDescription& shape) {
-    auto s = uniformScale(t);
-    if (!s) where.fail("a sphere can only be scaled uniformly (one scale factor for all axes)");
-    shape.center = t.point(shape.center);
-    shape.radius *= *s;
-}
-
 void checkFinite(const JsonObject& obj, const ShapeDescription& shape) {
     bool ok = std::isfinite(shape.radius) && isFinite(shape.center);
     for (Vec3 p : shape.mesh.positions) ok = ok && isFinite(p);
@@ -125,12 +118,17 @@ void normaliseEmission(const JsonValue& value, ShapeDescription& shape) {
     shape.emission *= target / current;
 }
 
+}  // namespace
+
 ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     ShapeDescription shape;
     shape.name = value.path();
-    enum Type { Quad, Sphere, Mesh };
-    auto type = Type(obj.required("type").choice({"quad", "sphere", "mesh"}, "type"));
+    enum Type { Quad, Sphere, Mesh, Instance };
+    JsonValue typeValue = obj.required("type");
+    auto type = Type(typeValue.choice({"quad", "sphere", "mesh", "instance"}, "type"));
+    // readShapes takes the world's instances before they come here.
+    if (type == Instance) typeValue.fail("an object's shapes cannot be instances (one level of instancing)");
     shape.kind = type == Sphere ? ShapeDescription::Kind::Sphere : ShapeDescription::Kind::Mesh;
     // The cheap fields first: a misspelt name should not wait for a mesh file to load.
     shape.material = readMaterialRef(obj.required("material"), ctx);
@@ -152,12 +150,36 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
         shape.center = obj.required("center").vec3();
         shape.radius = obj.required("radius").number(Range::positive());
     }
-    if (transform && type == Sphere) transformSphere(*transform, *transformValue, shape);
-    if (transform && type != Sphere) applyTransform(*transform, shape.mesh);
+    // A sphere stays a sphere only under rotation, translation and uniform scale.
+    if (transform && !transformShape(*transform, shape))
+        transformValue->fail("a sphere can only be scaled uniformly (one scale factor for all axes)");
     checkFinite(obj, shape);
     if (auto power = obj.optional("emission_power")) normaliseEmission(*power, shape);
     obj.finish();
     return shape;
+}
+
+namespace {
+
+// {"type": "instance", "object": name, "transform": ...}: the object placed once more.
+InstanceDescription readInstance(const JsonValue& value, const LoadContext& ctx, const SceneDescription& scene) {
+    JsonObject obj = value.object();
+    InstanceDescription instance;
+    instance.name = value.path();
+    obj.required("type");  // "instance", as readShapes saw
+    const JsonValue objectName = obj.required("object");
+    auto it = ctx.objectIndex.find(objectName.string());
+    if (it == ctx.objectIndex.end()) objectName.fail("unknown object \"" + objectName.string() + "\"");
+    instance.object = it->second;
+    if (auto transform = obj.optional("transform")) {
+        instance.toWorld = readTransform(*transform);
+        // An emitter becomes a light per instance, in the world: a sphere must stay one.
+        for (const ShapeDescription& shape : scene.objects[instance.object].shapes)
+            if (shape.kind == ShapeDescription::Kind::Sphere && !isBlack(shape.emission) && !uniformScale(instance.toWorld))
+                transform->fail("the object has an emissive sphere (" + shape.name + "), which can only be scaled uniformly");
+    }
+    obj.finish();
+    return instance;
 }
 
 }  // namespace
@@ -165,7 +187,13 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
 void readShapes(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
     auto shapes = value.elements();
     if (shapes.empty()) value.fail("must contain at least one shape");
-    for (const JsonValue& shape : shapes) scene.shapes.push_back(readShape(shape, ctx));
+    for (const JsonValue& shape : shapes) {
+        const bool instance = shape.json().is_object() && shape.json().value("type", Json()) == "instance";
+        if (instance)
+            scene.instances.push_back(readInstance(shape, ctx, scene));
+        else
+            scene.shapes.push_back(readShape(shape, ctx));
+    }
 }
 
 }  // namespace photon::scene_json

@@ -20,17 +20,17 @@ std::shared_ptr<const Scene> Scene::build(SceneDescription description) {
 }
 
 Scene::Scene(SceneDescription description) : description_(std::move(description)), camera_(description_.camera) {
+    placeInstancedEmitters();
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw std::runtime_error("Embree: cannot create device");
     rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
     rtcScene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
     for (uint32_t i = 0; i < shapes_.size(); ++i) {
-        if (shapes_[i].kind == ShapeDescription::Kind::Sphere)
-            addSphere(i);
-        else
-            addMesh(i);
+        addShape(shapes_[i], rtcScene_, i);
+        slots_.push_back(&shapes_[i]);
     }
+    addObjectsAndInstances();
     rtcCommitScene(rtcScene_);
     if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) throw std::runtime_error("Embree: scene build failed");
     RTCBounds b;
@@ -43,11 +43,11 @@ Scene::Scene(SceneDescription description) : description_(std::move(description)
 
 Scene::~Scene() {
     if (rtcScene_) rtcReleaseScene(rtcScene_);
+    for (RTCScene s : objectScenes_) rtcReleaseScene(s);
     if (device_) rtcReleaseDevice(device_);
 }
 
-void Scene::addMesh(uint32_t shapeIndex) {
-    const TriangleMesh& m = shapes_[shapeIndex].mesh;
+RTCGeometry Scene::newMesh(const TriangleMesh& m) {
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree-owned buffers (rtcSetNewGeometryBuffer) come with the padding its SIMD loads need.
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -60,11 +60,10 @@ void Scene::addMesh(uint32_t shapeIndex) {
     auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                3 * sizeof(uint32_t), m.triangleCount()));
     std::copy(m.indices.begin(), m.indices.end(), idx);
-    commitShape(g, shapeIndex);
+    return g;
 }
 
-void Scene::addSphere(uint32_t shapeIndex) {
-    const ShapeDescription& s = shapes_[shapeIndex];
+RTCGeometry Scene::newSphere(const ShapeDescription& s) {
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
     auto* v = static_cast<float*>(
         rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
@@ -72,11 +71,11 @@ void Scene::addSphere(uint32_t shapeIndex) {
     v[1] = s.center.y;
     v[2] = s.center.z;
     v[3] = s.radius;
-    commitShape(g, shapeIndex);
+    return g;
 }
 
-void Scene::commitShape(RTCGeometry g, uint32_t shapeIndex) {
-    const ShapeDescription& s = shapes_[shapeIndex];
+void Scene::addShape(const ShapeDescription& s, RTCScene target, uint32_t id) {
+    RTCGeometry g = s.kind == ShapeDescription::Kind::Sphere ? newSphere(s) : newMesh(s.mesh);
     if (hasCutout(s)) {
         // A light's power and its samples assume all of its surface emits.
         if (!isBlack(s.emission))
@@ -84,7 +83,7 @@ void Scene::commitShape(RTCGeometry g, uint32_t shapeIndex) {
         attachAlphaCutout(g, s);
     }
     rtcCommitGeometry(g);
-    rtcAttachGeometryByID(rtcScene_, g, shapeIndex);
+    rtcAttachGeometryByID(target, g, id);
     rtcReleaseGeometry(g);
 }
 
@@ -116,9 +115,10 @@ void Scene::buildLights() {
 }
 
 void Scene::prepareHitData() {
-    hitData_.resize(shapes_.size());
-    for (size_t i = 0; i < shapes_.size(); ++i) {
-        const ShapeDescription& shape = shapes_[i];
+    for (const ShapeDescription* shape : slots_) materialOf_.push_back(shape->material);
+    hitData_.resize(slots_.size());
+    for (size_t i = 0; i < slots_.size(); ++i) {
+        const ShapeDescription& shape = *slots_[i];
         ShapeHitData& d = hitData_[i];
         d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
         d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture;
@@ -134,10 +134,10 @@ void Scene::prepareHitData() {
                 d.smoothNormals = d.smoothNormals || lengthSquared(m.normals[v[k]] - n) > 1e-10f;
         }
     }
-    firstFlatTriangle_.assign(shapes_.size(), kNotFlat);
-    plainSpheres_.assign(shapes_.size(), PlainSphere{});
-    for (size_t i = 0; i < shapes_.size(); ++i) {
-        const ShapeDescription& shape = shapes_[i];
+    firstFlatTriangle_.assign(slots_.size(), kNotFlat);
+    plainSpheres_.assign(slots_.size(), PlainSphere{});
+    for (size_t i = 0; i < slots_.size(); ++i) {
+        const ShapeDescription& shape = *slots_[i];
         ShapeHitData& d = hitData_[i];
         if (shape.kind == ShapeDescription::Kind::Sphere) {
             if (!d.needsUv) plainSpheres_[i] = {shape.center, shape.radius, d.normalSign};
@@ -156,7 +156,7 @@ void Scene::prepareHitData() {
 
 void Scene::completeOtherHit(const Ray& ray, SurfaceHit& hit) const {
     hit.uv = hit.barycentric;
-    const ShapeDescription& shape = shapes_[hit.shape];
+    const ShapeDescription& shape = *slots_[hit.shape];
     if (shape.kind == ShapeDescription::Kind::Sphere) {
         hit.p = sphereHitPoint(ray, shape.center, shape.radius, hit.t);
         fillSphereHit(shape, hit);
@@ -230,7 +230,16 @@ bool Scene::occluded(const Ray& ray) const {
 }
 
 SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
-    const ShapeDescription& s = shapes_[hit.shape];
+    if (hit.instance != kNoInstance) {
+        // In the object's frame, then the tangents (vectors) to the world.
+        const Placement& place = placements_[hit.instance];
+        SurfaceHit local = hit;
+        local.instance = kNoInstance;
+        local.p = place.toObject.point(hit.p);
+        const SurfaceTangents t = tangentsAt(local);
+        return {place.toWorld.vector(t.dpdu), place.toWorld.vector(t.dpdv)};
+    }
+    const ShapeDescription& s = *slots_[hit.shape];
     if (s.kind == ShapeDescription::Kind::Sphere) {
         // p = c + r (cos l cos f, sin l, cos l sin f) with u = 0.5 + f / 2 pi and
         // v = 0.5 + l / pi (sphereUv); degenerate at the poles.
@@ -254,7 +263,7 @@ SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
 }
 
 Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
-    const ShapeDescription& s = shapes_[hit.shape];
+    const ShapeDescription& s = *slots_[hit.shape];
     return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt(hit.uv) : Color(0.0f);
 }
 

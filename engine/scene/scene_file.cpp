@@ -24,8 +24,12 @@ int SceneFile::height() const { return description_->camera.height; }
 
 int64_t SceneFile::triangleCount() const {
     int64_t total = 0;
-    for (const ShapeDescription& shape : description_->shapes)
-        if (shape.kind == ShapeDescription::Kind::Mesh) total += int64_t(shape.mesh.triangleCount());
+    auto add = [&](const std::vector<ShapeDescription>& shapes) {
+        for (const ShapeDescription& shape : shapes)
+            if (shape.kind == ShapeDescription::Kind::Mesh) total += int64_t(shape.mesh.triangleCount());
+    };
+    add(description_->shapes);
+    for (const ObjectDescription& object : description_->objects) add(object.shapes);
     return total;
 }
 

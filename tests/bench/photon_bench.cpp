@@ -6,6 +6,9 @@
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
+//                [--instancing]
+// With --instancing it instead times loading and building 10,000 instances of a 10k-triangle
+// mesh, and their memory, against the mesh placed once.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,6 +19,7 @@
 #include <optional>
 #include <string>
 #include "embree_throughput.h"
+#include "instancing_load.h"
 #include "integrator_comparison.h"
 #include "projection_misses.h"
 #include <photon/render.h>
@@ -38,6 +42,7 @@ struct Options {
     bool rssCheck = true;
     double compareSeconds = 0;    // > 0: compare the integrators instead
     double referenceSeconds = 0;  // 0: 10x compareSeconds
+    bool instancing = false;      // time instanced loading instead
 };
 
 void declareOptions(CLI::App& app, Options& o) {
@@ -50,6 +55,7 @@ void declareOptions(CLI::App& app, Options& o) {
         ->type_name("N")
         ->check(integerIn(1, 100000000));
     app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
+    app.add_flag("--instancing", o.instancing, "time loading 10,000 instances of a 10k-triangle mesh instead");
     app.add_flag("--no-rss-check", [&o](int64_t) { o.rssCheck = false; }, "skip the peak-memory children");
     app.add_option("--projection-scene", o.projectionScene, "the scene for projection-map misses")
         ->capture_default_str();
@@ -175,6 +181,10 @@ int main(int argc, char** argv) {
     try {
         std::optional<photon::ThreadLimit> limit;
         if (o.threads > 0) limit.emplace(size_t(o.threads));
+        if (o.instancing) {
+            std::cout << photon::bench::instancingLoad(10000, 10000).dump(2) << std::endl;
+            return 0;
+        }
         if (o.compareSeconds > 0) {
             double reference = o.referenceSeconds > 0 ? o.referenceSeconds : 10 * o.compareSeconds;
             std::cout << photon::bench::compareIntegrators(o.scene, o.compareSeconds, reference).dump(2) << std::endl;

@@ -15,6 +15,11 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
 // (fov 50, so the view spans +-1.4 units).
 SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution, float halfSize = 20);
 
+// A scene of no shapes yet, its camera at (0, 0, 5) looking at the origin (it plays no
+// part in hit tests), with two materials: 0, grey diffuse; 1, diffuse under a 2x1 texture,
+// red for u < 0.5 and blue above, whose lookup shows the uv a hit carried.
+SceneDescription hitTestScene();
+
 // Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
 SceneDescription furnace(float rho, float emission, int resolution);
 

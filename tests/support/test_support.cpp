@@ -5,8 +5,18 @@
 #include "integrators/integrator.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
+#include "texture/image_texture.h"
 
 namespace photon::test {
+
+SceneDescription hitTestScene() {
+    SceneDescription d;
+    d.camera = camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
+    d.materials.push_back(makeDiffuse(Color(0.5f)));
+    d.materials.push_back(makeDiffuse(ColorParam(std::make_shared<ImageTexture>(
+        2, 1, std::vector<Color>{Color(1, 0, 0), Color(0, 0, 1)}))));
+    return d;
+}
 
 ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emission) {
     ShapeDescription s;

@@ -40,7 +40,8 @@ public:
     const RenderSettings& render() const;
     int width() const;
     int height() const;
-    // Triangles of all meshes together (spheres are not meshed).
+    // Triangles of all meshes together, as held in memory: an object's once, however many
+    // times instances place it (spheres are not meshed).
     int64_t triangleCount() const;
     // The files the scene named (meshes, textures), relative to its folder in normal form
     // ("meshes/a.obj"), sorted.

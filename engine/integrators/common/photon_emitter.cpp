@@ -12,9 +12,14 @@ PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps, PhotonTarg
     }
     if (projectionMaps) {
         const SceneDescription& d = scene.description();
-        std::vector<BoundingSphere> objects = shapeBoundingSpheres(d.shapes, [&](const ShapeDescription& s) {
+        auto include = [&](const ShapeDescription& s) {
             return targets == PhotonTargets::AllShapes || (d.materials[s.material]->lobes() & kDeltaLobe) != 0;
-        });
+        };
+        std::vector<BoundingSphere> objects = shapeBoundingSpheres(d.shapes, include);
+        std::vector<std::vector<BoundingSphere>> inObjects;
+        for (const ObjectDescription& object : d.objects) inObjects.push_back(shapeBoundingSpheres(object.shapes, include));
+        for (const InstanceDescription& instance : d.instances)
+            for (BoundingSphere s : inObjects[instance.object]) objects.push_back(placed(s, instance.toWorld));
         for (size_t i = 0; i < lights.size(); ++i) maps_[i] = ProjectionMap::build(lights.light(i), objects);
     }
     for (size_t i = 0; i < lights.size(); ++i) {

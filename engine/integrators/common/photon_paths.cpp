@@ -182,8 +182,8 @@ public:
         // Two-sided Lambertian surfaces bounce in lanes (the caustic map's walk ends at them
         // anyway: its paths stop at the first non-delta bounce), and so do mirrors and
         // smooth dielectrics.
-        for (const ShapeDescription& shape : scene.description().shapes) {
-            const Material& m = scene.materialAt(shape.material);
+        for (uint32_t i = 0; i < scene.shapeCount(); ++i) {
+            const Material& m = scene.materialAt(scene.shape(i).material);
             ShapeScattering sc{&m, Bounce::OneByOne, m.twoSided(), m.tint().textured(), m.tint().value, 0.0f};
             if (m.lambertian() && m.twoSided() && !settings.specularOnly) sc.bounce = Bounce::Lambertian;
             if (std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular()) {
@@ -260,7 +260,7 @@ private:
         for (int i = 0; i < kWalkLanes; ++i) {
             p.valid[i] = lanes_.alive[i];
             p.rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
-            p.rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+            p.rh.hit.geomID[i] = p.rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
         }
         scene_.intersect(p);
     }

@@ -296,6 +296,11 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
     for (const ShapeDescription& shape : d.shapes)
         if (hasCutout(shape))
             throw std::runtime_error("radiosity: " + shape.name + " has an alpha cutout; render it with sppm or path");
+    // Patches are cut from the world's own meshes; an instanced object's would be repeated
+    // per instance, which is what instancing is there to avoid.
+    if (!d.instances.empty())
+        throw std::runtime_error("radiosity: " + d.instances.front().name +
+                                 " places an object (instancing); render the scene with sppm or path");
     rejectTransmission(scene);
     shapes_.resize(scene.description().shapes.size());
     Builder builder(*this, scene, size);
