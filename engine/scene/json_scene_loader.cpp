@@ -14,10 +14,24 @@ namespace fs = std::filesystem;
 
 namespace scene_json {
 
+const TriangleMesh* LoadContext::importedMesh(const std::string& relative) const {
+    if (!imported) return nullptr;
+    auto it = imported->meshes.find(relative);
+    return it == imported->meshes.end() ? nullptr : &it->second;
+}
+
+const std::string* LoadContext::importedFile(const std::string& relative) const {
+    if (!imported) return nullptr;
+    auto it = imported->files.find(relative);
+    return it == imported->files.end() ? nullptr : &it->second;
+}
+
 fs::path resolveFile(const JsonValue& value, const LoadContext& ctx) {
     const std::string& relative = value.string();
     if (auto why = checkRelativePath(relative)) value.fail(*why);
     fs::path full = ctx.baseDir / relative;
+    // Held in memory by the importer: nothing on disk to check.
+    if (ctx.importedMesh(relative) || ctx.importedFile(relative)) return full;
     std::error_code ec;
     if (!fs::exists(full, ec)) value.fail("file not found: " + relative);
     // The lexical checks above cannot see a symlink that leads out of the folder.
@@ -70,15 +84,17 @@ void checkHasLight(const SceneDescription& scene) {
 
 }  // namespace scene_json
 
-SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
-                               const std::vector<SettingOverride>& overrides) {
+namespace {
+
+SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
+                                   const std::vector<SettingOverride>& overrides, const ImportedScene* imported) {
     using namespace scene_json;
-    Json doc = parseJsonDocument(text);
     if (!doc.is_object()) throw SceneError("", "the scene must be a JSON object");
     applySettingOverrides(doc, overrides);
     JsonObject top(doc, "");
     LoadContext ctx;
     ctx.baseDir = baseDir;
+    ctx.imported = imported;
     SceneDescription scene;
     scene.camera = readCamera(top.required("camera"));
     // Materials before shapes: shapes refer to them by name.
@@ -92,6 +108,22 @@ SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
     checkHasLight(scene);
     scene.files.assign(ctx.files.begin(), ctx.files.end());
     return scene;
+}
+
+}  // namespace
+
+SceneDescription loadSceneJson(const std::string& text, const fs::path& baseDir,
+                               const std::vector<SettingOverride>& overrides) {
+    Json doc = parseJsonDocument(text);
+    return loadSceneDocument(doc, baseDir, overrides, nullptr);
+}
+
+SceneDescription loadImportedScene(const ImportedScene& imported, const fs::path& baseDir,
+                                   const std::vector<SettingOverride>& overrides) {
+    // Through the document's text, as a converted scene's JSON would be read (numbers
+    // rounded to float alike), so that the two render the same image.
+    Json doc = parseJsonDocument(imported.document.dump());
+    return loadSceneDocument(doc, baseDir, overrides, &imported);
 }
 
 SceneDescription loadSceneFile(const fs::path& file, const std::vector<SettingOverride>& overrides) {

@@ -17,6 +17,7 @@
 #include "texture/image_texture.h"
 #include "scene/json_reader.h"
 #include "description/scene_description.h"
+#include "import/imported_scene.h"
 
 namespace photon::scene_json {
 
@@ -32,6 +33,11 @@ struct LoadContext {
     // Every file resolveFile was asked for, relative and in normal form: a record of what was
     // read, kept as the context is passed along read-only.
     mutable std::set<std::string> files;
+    // An imported scene's meshes and files held in memory, found by the names the document
+    // gives them before the disk is looked at (null: a scene read from disk alone).
+    const ImportedScene* imported = nullptr;
+    const TriangleMesh* importedMesh(const std::string& relative) const;
+    const std::string* importedFile(const std::string& relative) const;
 };
 
 // A file named by the string `value`: relative, without "..", inside the scene folder

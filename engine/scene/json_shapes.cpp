@@ -68,6 +68,7 @@ TriangleMesh readInlineMesh(JsonObject& obj) {
 
 TriangleMesh readFileMesh(const JsonValue& file, LoadContext& ctx) {
     std::filesystem::path path = resolveFile(file, ctx);
+    if (const TriangleMesh* imported = ctx.importedMesh(file.string())) return *imported;
     try {
         return loadMeshFile(path, ctx.baseDir.empty() ? std::filesystem::path(".") : ctx.baseDir);
     } catch (const std::exception& e) {

@@ -79,7 +79,7 @@ std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChann
     auto cached = ctx.textures.find(key);
     if (cached != ctx.textures.end()) return cached->second;
     try {
-        return ctx.textures[key] = ImageTexture::load(file, channels);
+        return ctx.textures[key] = ImageTexture::load(file, channels, ctx.importedFile(value.string()));
     } catch (const std::exception& e) {
         failWithLibraryError(value, e, ctx);
     }

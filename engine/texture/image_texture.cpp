@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <optional>
 #include <stdexcept>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 namespace photon {
@@ -68,14 +70,13 @@ std::vector<Color> toColors(const std::vector<T>& data, int channels, Decode dec
 
 }  // namespace
 
-std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file) {
+namespace {
+
+// The check on a stream of `size` bytes (a file, or an image held in memory).
+std::optional<std::string> pngChunkDamage(std::istream& in, uint64_t size) {
     static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
-    std::ifstream in(file, std::ios::binary);
     char signature[8];
     if (!in.read(signature, 8) || std::memcmp(signature, kSignature, 8) != 0) return std::nullopt;
-    std::error_code ec;
-    const uint64_t size = std::filesystem::file_size(file, ec);
-    if (ec) return std::nullopt;
     // Each chunk (PNG spec, sec. 5.3): 4-byte big-endian length, 4-letter type, data, CRC.
     for (uint64_t at = 8; at + 12 <= size;) {
         unsigned char head[8];
@@ -96,12 +97,37 @@ std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file)
     return std::nullopt;  // cut short before IEND: OIIO reports that
 }
 
-std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& file, ImageChannels which) {
-    if (std::optional<std::string> damage = findPngChunkDamage(file)) throw std::runtime_error(*damage);
+}  // namespace
+
+std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::error_code ec;
+    const uint64_t size = std::filesystem::file_size(file, ec);
+    if (!in || ec) return std::nullopt;
+    return pngChunkDamage(in, size);
+}
+
+std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& file, ImageChannels which,
+                                                       const std::string* bytes) {
+    std::optional<std::string> damage;
+    if (bytes) {
+        std::istringstream in(*bytes);
+        damage = pngChunkDamage(in, bytes->size());
+    } else {
+        damage = findPngChunkDamage(file);
+    }
+    if (damage) throw std::runtime_error(*damage);
     // Keep colour as stored: by default OIIO premultiplies unassociated alpha (PNG), which
     // would darken texels wherever alpha < 1; alpha, where wanted, is read on its own.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
+    // An image in memory is read through OpenImageIO's I/O proxy, the name giving its format.
+    std::optional<OIIO::Filesystem::IOMemReader> memory;
+    if (bytes) {
+        memory.emplace(const_cast<char*>(bytes->data()), bytes->size());
+        void* proxy = &*memory;
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    }
     auto in = OIIO::ImageInput::open(file.string(), &config);
     if (!in) {
         std::string err = OIIO::geterror();

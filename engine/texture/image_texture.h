@@ -26,9 +26,12 @@ class ImageTexture final : public Texture {
 public:
     // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
     // sRGB-encoded and linearised (alpha is linear in every format); float images (EXR,
-    // HDR) as linear. Throws std::runtime_error with the reason on failure.
+    // HDR) as linear. With `bytes`, the file's contents are those bytes, held in memory
+    // (`file` then only names it, its extension the format). Throws std::runtime_error with
+    // the reason on failure.
     static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& file,
-                                                    ImageChannels channels = ImageChannels::Color);
+                                                    ImageChannels channels = ImageChannels::Color,
+                                                    const std::string* bytes = nullptr);
     ImageTexture(int width, int height, std::vector<Color> texels);
 
     // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
