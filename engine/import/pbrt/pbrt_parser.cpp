@@ -1,0 +1,417 @@
+#include "import/pbrt/pbrt_parser.h"
+
+#include <cmath>
+#include <fstream>
+#include <system_error>
+
+namespace photon::pbrt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// What follows a directive's name.
+enum class Arguments {
+    Nothing,            // AttributeBegin
+    Numbers,            // Translate 1 2 3; Transform [ 16 numbers ]
+    Strings,            // NamedMaterial "name"
+    StringsThenParams,  // Shape "sphere" "float radius" 2
+    ParamsOnly,         // Option "bool disablepixeljitter" true
+    OneOrTwoStrings,    // MediumInterface "inside" "outside"
+    TimeWord,           // ActiveTransform All
+};
+
+struct Signature {
+    std::string_view name;
+    Arguments arguments;
+    size_t count = 0;  // how many numbers or strings
+};
+
+constexpr Signature signatures[] = {
+    {"AttributeBegin", Arguments::Nothing},
+    {"AttributeEnd", Arguments::Nothing},
+    {"WorldBegin", Arguments::Nothing},
+    {"WorldEnd", Arguments::Nothing},
+    {"ObjectEnd", Arguments::Nothing},
+    {"ReverseOrientation", Arguments::Nothing},
+    {"TransformBegin", Arguments::Nothing},
+    {"TransformEnd", Arguments::Nothing},
+    {"Identity", Arguments::Nothing},
+    {"Translate", Arguments::Numbers, 3},
+    {"Scale", Arguments::Numbers, 3},
+    {"Rotate", Arguments::Numbers, 4},
+    {"LookAt", Arguments::Numbers, 9},
+    {"Transform", Arguments::Numbers, 16},
+    {"ConcatTransform", Arguments::Numbers, 16},
+    {"TransformTimes", Arguments::Numbers, 2},
+    {"CoordinateSystem", Arguments::Strings, 1},
+    {"CoordSysTransform", Arguments::Strings, 1},
+    {"NamedMaterial", Arguments::Strings, 1},
+    {"ObjectBegin", Arguments::Strings, 1},
+    {"ObjectInstance", Arguments::Strings, 1},
+    {"Include", Arguments::Strings, 1},
+    {"Import", Arguments::Strings, 1},
+    {"ColorSpace", Arguments::Strings, 1},
+    {"ActiveTransform", Arguments::TimeWord},
+    {"Camera", Arguments::StringsThenParams, 1},
+    {"Film", Arguments::StringsThenParams, 1},
+    {"Sampler", Arguments::StringsThenParams, 1},
+    {"Integrator", Arguments::StringsThenParams, 1},
+    {"PixelFilter", Arguments::StringsThenParams, 1},
+    {"Accelerator", Arguments::StringsThenParams, 1},
+    {"Shape", Arguments::StringsThenParams, 1},
+    {"Material", Arguments::StringsThenParams, 1},
+    {"LightSource", Arguments::StringsThenParams, 1},
+    {"AreaLightSource", Arguments::StringsThenParams, 1},
+    {"MakeNamedMaterial", Arguments::StringsThenParams, 1},
+    {"MakeNamedMedium", Arguments::StringsThenParams, 1},
+    {"Attribute", Arguments::StringsThenParams, 1},
+    {"Texture", Arguments::StringsThenParams, 3},
+    {"Option", Arguments::ParamsOnly},
+    {"MediumInterface", Arguments::OneOrTwoStrings},
+};
+
+const Signature* signatureOf(std::string_view name) {
+    for (const Signature& s : signatures)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+// The kind of value each parameter type takes.
+enum class Values { Numbers, Integers, Strings, Bools, NumbersOrStrings };
+
+struct ParamType {
+    std::string_view name;
+    Values values;
+};
+
+constexpr ParamType paramTypes[] = {
+    {"float", Values::Numbers},     {"integer", Values::Integers},  {"rgb", Values::Numbers},
+    {"color", Values::Numbers},     {"point", Values::Numbers},     {"point2", Values::Numbers},
+    {"point3", Values::Numbers},    {"vector", Values::Numbers},    {"vector2", Values::Numbers},
+    {"vector3", Values::Numbers},   {"normal", Values::Numbers},    {"normal3", Values::Numbers},
+    {"blackbody", Values::Numbers}, {"spectrum", Values::NumbersOrStrings},
+    {"string", Values::Strings},    {"texture", Values::Strings},   {"bool", Values::Bools},
+};
+
+const ParamType* paramTypeOf(std::string_view name) {
+    for (const ParamType& t : paramTypes)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+
+const char* expectation(Values values) {
+    switch (values) {
+    case Values::Numbers: return "numbers";
+    case Values::Integers: return "integers";
+    case Values::Strings: return "strings";
+    case Values::Bools: return "true or false";
+    case Values::NumbersOrStrings: return "numbers or strings";
+    }
+    return "values";
+}
+
+std::string plural(size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// A token as a message names it: its kind, and for words and strings what it says.
+std::string shown(const Token& t) {
+    constexpr size_t limit = 40;
+    std::string text(t.text.substr(0, limit));
+    if (t.text.size() > limit) text += "...";
+    switch (t.kind) {
+    case TokenKind::Word: return "bare word '" + text + "'";
+    case TokenKind::String: return "string \"" + text + "\"";
+    case TokenKind::Number: return "number " + text;
+    default: return describe(t.kind);
+    }
+}
+
+// Whether `path` (canonical) is `root` (canonical) or lies under it.
+bool isInside(const fs::path& path, const fs::path& root) {
+    auto p = path.begin();
+    for (auto r = root.begin(); r != root.end(); ++r, ++p) {
+        if (r->empty()) continue;  // the empty last part of a root written with a trailing '/'
+        if (p == path.end() || *p != *r) return false;
+    }
+    return true;
+}
+
+// What every file of one parse shares: where the scene lives, what it may still read, and
+// the chain of files now being read (to refuse a file that includes itself).
+struct Session {
+    fs::path root;  // canonical
+    const std::function<void(Directive&&)>& sink;
+    const ParseLimits& limits;
+    std::vector<fs::path> chain;  // canonical paths, main file first
+    size_t files = 0;
+    size_t bytes = 0;
+};
+
+void parseInto(Session& session, std::string_view text, const std::string& name);
+
+// Reads the directives of one file (or in-memory text), handing Includes back to the session.
+class FileParser {
+public:
+    FileParser(Session& session, std::string_view text, const std::string& name)
+        : session_(session), tokens_(text, name) {}
+
+    void run() {
+        for (;;) {
+            Token t = take();
+            if (t.kind == TokenKind::End) return;
+            Directive d = directive(t);
+            if (d.name == "Include" || d.name == "Import")
+                include(d);
+            else
+                session_.sink(std::move(d));
+        }
+    }
+
+private:
+    [[noreturn]] void fail(int line, const std::string& message) const {
+        throw ParseError(tokens_.at(line), message);
+    }
+
+    const Token& peek() {
+        if (!ahead_) {
+            next_ = tokens_.next();
+            ahead_ = true;
+        }
+        return next_;
+    }
+
+    Token take() {
+        peek();
+        ahead_ = false;
+        return next_;
+    }
+
+    Directive directive(const Token& t) {
+        if (t.kind == TokenKind::CloseBracket) fail(t.line, "unbalanced ']'");
+        if (t.kind != TokenKind::Word) fail(t.line, "expected a directive, found " + shown(t));
+        const Signature* signature = signatureOf(t.text);
+        if (!signature) fail(t.line, "unknown directive '" + std::string(t.text.substr(0, 40)) + "'");
+        Directive d;
+        d.name = signature->name;
+        d.where = tokens_.at(t.line);
+        switch (signature->arguments) {
+        case Arguments::Nothing: break;
+        case Arguments::Numbers: numbers(d, signature->count); break;
+        case Arguments::Strings: strings(d, signature->count, signature->count); break;
+        case Arguments::StringsThenParams:
+            strings(d, signature->count, signature->count);
+            params(d);
+            break;
+        case Arguments::ParamsOnly: params(d); break;
+        case Arguments::OneOrTwoStrings: strings(d, 1, 2); break;
+        case Arguments::TimeWord: timeWord(d); break;
+        }
+        return d;
+    }
+
+    // Positional numbers, bare or in brackets ("Transform [ ... ]" and "Transform ..." are
+    // both in use), exactly `count` of them.
+    void numbers(Directive& d, size_t count) {
+        const bool bracketed = peek().kind == TokenKind::OpenBracket;
+        if (bracketed) take();
+        while (peek().kind == TokenKind::Number) d.numbers.push_back(take().number);
+        if (bracketed) {
+            Token close = take();
+            if (close.kind != TokenKind::CloseBracket)
+                fail(close.line, d.name + ": expected ']' after the numbers, found " + shown(close));
+        }
+        if (d.numbers.size() != count)
+            fail(d.where.line, d.name + ": expected " + plural(count, "number", "numbers") + ", found " +
+                                   std::to_string(d.numbers.size()));
+    }
+
+    void strings(Directive& d, size_t least, size_t most) {
+        while (d.strings.size() < most && peek().kind == TokenKind::String) d.strings.push_back(unescape(take()));
+        if (d.strings.size() < least) {
+            std::string wanted = least == most ? plural(least, "string", "strings")
+                                               : std::to_string(least) + " or " + plural(most, "string", "strings");
+            fail(d.where.line, d.name + ": expected " + wanted + ", found " + std::to_string(d.strings.size()) +
+                                   " before " + shown(peek()));
+        }
+    }
+
+    void timeWord(Directive& d) {
+        Token t = take();
+        if (t.kind == TokenKind::Word && (t.text == "All" || t.text == "StartTime" || t.text == "EndTime")) {
+            d.strings.emplace_back(t.text);
+            return;
+        }
+        fail(t.line, d.name + ": expected All, StartTime or EndTime, found " + shown(t));
+    }
+
+    void params(Directive& d) {
+        while (peek().kind == TokenKind::String) d.params.push_back(param());
+    }
+
+    Param param() {
+        Token declaration = take();
+        Param p;
+        p.where = tokens_.at(declaration.line);
+        const std::string written = unescape(declaration);
+        // "type name", blanks around and between allowed, nothing more.
+        std::vector<std::string_view> words;
+        std::string_view rest = written;
+        while (words.size() < 3) {
+            size_t begin = rest.find_first_not_of(" \t\r\n");
+            if (begin == std::string_view::npos) break;
+            rest.remove_prefix(begin);
+            size_t end = std::min(rest.find_first_of(" \t\r\n"), rest.size());
+            words.push_back(rest.substr(0, end));
+            rest.remove_prefix(end);
+        }
+        if (words.size() != 2)
+            fail(declaration.line, "expected a parameter declaration \"type name\", found " + shown(declaration));
+        const ParamType* type = paramTypeOf(words[0]);
+        if (!type) fail(declaration.line, "unknown parameter type '" + std::string(words[0]) + "' in \"" + written + "\"");
+        p.type = words[0];
+        p.name = words[1];
+        const std::string label = "parameter \"" + written + "\"";
+
+        const Token& first = peek();
+        if (first.kind == TokenKind::OpenBracket) {
+            const int open = take().line;
+            for (;;) {
+                Token v = take();
+                if (v.kind == TokenKind::CloseBracket) break;
+                if (v.kind == TokenKind::End) fail(open, "unbalanced '[': " + label + " has no ']'");
+                if (v.kind == TokenKind::OpenBracket) fail(v.line, "'[' inside the values of " + label);
+                value(p, type->values, label, v);
+            }
+        } else if (first.kind == TokenKind::Number || first.kind == TokenKind::String ||
+                   (first.kind == TokenKind::Word && (first.text == "true" || first.text == "false"))) {
+            value(p, type->values, label, take());
+        } else {
+            fail(declaration.line, label + " has no value");
+        }
+        return p;
+    }
+
+    void value(Param& p, Values values, const std::string& label, const Token& v) {
+        const std::string wrongKind = label + " expects " + expectation(values) + ", found " + shown(v);
+        switch (v.kind) {
+        case TokenKind::Number:
+            if (values == Values::Integers) {
+                if (std::trunc(v.number) != v.number || std::abs(v.number) > 2147483647.0) fail(v.line, wrongKind);
+            } else if (values != Values::Numbers && values != Values::NumbersOrStrings) {
+                fail(v.line, wrongKind);
+            }
+            if (!p.strings.empty()) fail(v.line, label + " mixes numbers and strings");
+            p.numbers.push_back(v.number);
+            return;
+        case TokenKind::String:
+            if (values == Values::Bools) {
+                // pbrt-v3 files write bools quoted.
+                if (v.text == "true" || v.text == "false") {
+                    p.bools.push_back(v.text == "true");
+                    return;
+                }
+                fail(v.line, wrongKind);
+            }
+            if (values != Values::Strings && values != Values::NumbersOrStrings) fail(v.line, wrongKind);
+            if (!p.numbers.empty()) fail(v.line, label + " mixes numbers and strings");
+            p.strings.push_back(unescape(v));
+            return;
+        case TokenKind::Word:
+            if (values == Values::Bools && (v.text == "true" || v.text == "false")) {
+                p.bools.push_back(v.text == "true");
+                return;
+            }
+            fail(v.line, wrongKind);
+        default: fail(v.line, wrongKind);
+        }
+    }
+
+    void include(const Directive& d) {
+        const std::string& written = d.strings.front();
+        const std::string quoted = d.name + " \"" + written + "\"";
+        Session& s = session_;
+        if (written.empty()) fail(d.where.line, d.name + ": empty file name");
+        const fs::path relative(written);
+        if (relative.is_absolute())
+            fail(d.where.line, quoted + ": absolute paths are refused; name the file relative to the including file");
+        if (s.chain.size() > s.limits.maxIncludeDepth)
+            fail(d.where.line, quoted + ": includes nested more than " + std::to_string(s.limits.maxIncludeDepth) +
+                                   " deep");
+        const fs::path folder = s.chain.back().parent_path();
+        std::error_code error;
+        const fs::path target = fs::weakly_canonical(folder / relative, error);
+        if (error || !isInside(target, s.root))
+            fail(d.where.line, quoted + ": outside the scene's folder");
+        if (!fs::is_regular_file(target, error)) fail(d.where.line, quoted + ": file not found");
+        for (const fs::path& open : s.chain)
+            if (open == target) fail(d.where.line, quoted + ": the file includes itself (an include cycle)");
+        if (++s.files > s.limits.maxFiles)
+            fail(d.where.line, quoted + ": more than " + std::to_string(s.limits.maxFiles) + " files read");
+        const std::uintmax_t size = fs::file_size(target, error);
+        if (error || size > s.limits.maxTotalBytes - s.bytes)
+            fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
+        std::string text(size, '\0');
+        std::ifstream in(target, std::ios::binary);
+        if (!in.read(text.data(), std::streamsize(size))) fail(d.where.line, quoted + ": cannot be read");
+        s.bytes += size;
+        s.chain.push_back(target);
+        parseInto(s, text, target.lexically_relative(s.root).generic_string());
+        s.chain.pop_back();
+    }
+
+    Session& session_;
+    Tokenizer tokens_;
+    Token next_;
+    bool ahead_ = false;
+};
+
+void parseInto(Session& session, std::string_view text, const std::string& name) {
+    FileParser(session, text, name).run();
+}
+
+fs::path canonicalRoot(const fs::path& root, const std::string& name) {
+    std::error_code error;
+    fs::path canonical = fs::canonical(root.empty() ? fs::path(".") : root, error);
+    if (error) throw ParseError({name, 0}, "scene folder '" + root.string() + "' not found");
+    return canonical;
+}
+
+}  // namespace
+
+const Param* Directive::find(std::string_view wanted) const {
+    for (const Param& p : params)
+        if (p.name == wanted) return &p;
+    return nullptr;
+}
+
+void parseText(std::string_view text, const std::string& name, const fs::path& root,
+               const std::function<void(Directive&&)>& sink, const ParseLimits& limits) {
+    Session session{canonicalRoot(root, name), sink, limits, {}, 1, text.size()};
+    std::error_code error;
+    // The text stands where its name puts it, for its includes' paths and cycles.
+    session.chain.push_back(fs::weakly_canonical(session.root / name, error));
+    if (error) session.chain.back() = session.root / name;
+    parseInto(session, text, name);
+}
+
+void parseFile(const fs::path& file, const fs::path& root, const std::function<void(Directive&&)>& sink,
+               const ParseLimits& limits) {
+    std::string name = file.filename().generic_string();
+    const fs::path canonicalRootPath = canonicalRoot(root, name);
+    std::error_code error;
+    const fs::path target = fs::canonical(file, error);
+    if (error || !fs::is_regular_file(target, error)) throw ParseError({name, 0}, "scene file '" + file.string() + "' not found");
+    if (isInside(target, canonicalRootPath)) name = target.lexically_relative(canonicalRootPath).generic_string();
+    const std::uintmax_t size = fs::file_size(target, error);
+    if (error || size > limits.maxTotalBytes)
+        throw ParseError({name, 0}, "the scene file exceeds " + std::to_string(limits.maxTotalBytes) + " bytes");
+    std::string text(size, '\0');
+    std::ifstream in(target, std::ios::binary);
+    if (!in.read(text.data(), std::streamsize(size))) throw ParseError({name, 0}, "the scene file cannot be read");
+    Session session{canonicalRootPath, sink, limits, {target}, 1, size};
+    parseInto(session, text, name);
+}
+
+}  // namespace photon::pbrt
