@@ -282,6 +282,10 @@ private:
                 if (v.kind == TokenKind::CloseBracket) break;
                 if (v.kind == TokenKind::End) fail(open, "unbalanced '[': " + label + " has no ']'");
                 if (v.kind == TokenKind::OpenBracket) fail(v.line, "'[' inside the values of " + label);
+                // A directive's name among the values: the ']' was forgotten.
+                if (v.kind == TokenKind::Word && signatureOf(v.text))
+                    fail(open, "unbalanced '[': " + label + " has no ']' before " + std::string(v.text) + " on line " +
+                                   std::to_string(v.line));
                 value(p, type->values, label, v);
             }
         } else if (first.kind == TokenKind::Number || first.kind == TokenKind::String ||
