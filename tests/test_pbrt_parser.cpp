@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "import/pbrt/pbrt_parser.h"
+#include "pbrt_bitterli_scenes.h"
 
 namespace photon::pbrt {
 namespace {
@@ -331,6 +332,57 @@ TEST(PbrtParser, TextInMemoryIncludesAgainstTheRoot) {
     });
     EXPECT_EQ(shapes, (std::vector<std::string>{"cylinder @geometry/detail/trim.pbrt:1",
                                                 "bilinearmesh @geometry/detail/trim.pbrt:3"}));
+}
+
+std::vector<const Directive*> named(const std::vector<Directive>& all, std::string_view name) {
+    std::vector<const Directive*> out;
+    for (const Directive& d : all)
+        if (d.name == name) out.push_back(&d);
+    return out;
+}
+
+TEST(PbrtRealScenes, CoffeeMaker) {
+    auto d = parse(test::kCoffeeScene);
+    EXPECT_EQ(d.size(), 61u);
+    EXPECT_EQ(named(d, "Shape").size(), 23u);
+    EXPECT_EQ(named(d, "MakeNamedMaterial").size(), 5u);
+    ASSERT_EQ(named(d, "Transform").size(), 1u);
+    EXPECT_DOUBLE_EQ(named(d, "Transform")[0]->numbers[14], 0.835307);
+    const Directive& metal = *named(d, "MakeNamedMaterial")[3];
+    EXPECT_EQ(metal.strings, std::vector<std::string>{"Metal"});
+    EXPECT_EQ(metal.find("eta")->type, "spectrum");
+    EXPECT_EQ(metal.find("eta")->strings, std::vector<std::string>{"metal-Ag-eta"});
+    EXPECT_EQ(named(d, "MakeNamedMaterial")[0]->find("remaproughness")->bools, std::vector<bool>{false});
+    EXPECT_EQ(named(d, "Shape")[0]->find("filename")->strings, std::vector<std::string>{"models/Mesh013.ply"});
+    EXPECT_EQ(named(d, "Shape")[0]->where.str(), "scene.pbrt:47");
+    EXPECT_EQ(named(d, "Film")[0]->find("yresolution")->numbers, std::vector<double>{1000});
+}
+
+TEST(PbrtRealScenes, CornellBox) {
+    auto d = parse(test::kCornellBoxExcerpt);
+    auto shapes = named(d, "Shape");
+    ASSERT_EQ(shapes.size(), 2u);
+    EXPECT_EQ(shapes[0]->find("indices")->numbers, (std::vector<double>{0, 1, 2, 0, 2, 3}));
+    EXPECT_EQ(shapes[0]->find("P")->numbers.size(), 12u);
+    EXPECT_DOUBLE_EQ(shapes[0]->find("P")->numbers[1], 1.74846e-7);
+    EXPECT_EQ(shapes[0]->find("N")->type, "normal");
+    EXPECT_EQ(named(d, "Camera")[0]->find("fov")->numbers, std::vector<double>{19.5});
+    EXPECT_EQ(named(d, "Film")[0]->find("xresolution")->numbers, std::vector<double>{64});
+    EXPECT_EQ(named(d, "PixelFilter").size(), 1u);  // the other two are commented out
+    EXPECT_EQ(named(d, "AreaLightSource")[0]->find("L")->numbers, (std::vector<double>{17, 12, 4}));
+    EXPECT_EQ(named(d, "MakeNamedMaterial")[0]->find("reflectance")->numbers, (std::vector<double>{0.63, 0.065, 0.05}));
+}
+
+TEST(PbrtRealScenes, VeachMis) {
+    auto d = parse(test::kVeachMisExcerpt);
+    EXPECT_EQ(named(d, "Shape").size(), 2u);
+    EXPECT_EQ(named(d, "Camera")[0]->find("fov")->numbers, std::vector<double>{20.114292});
+    const Directive& smooth = *named(d, "MakeNamedMaterial")[1];
+    EXPECT_EQ(smooth.strings, std::vector<std::string>{"Smooth"});
+    EXPECT_EQ(smooth.find("eta")->numbers, (std::vector<double>{0.200438, 0.924033, 1.102212}));
+    EXPECT_EQ(named(d, "Shape")[1]->find("radius")->numbers, std::vector<double>{0.5});
+    EXPECT_EQ(named(d, "AttributeBegin").size(), 4u);
+    EXPECT_EQ(named(d, "AttributeEnd").size(), 4u);
 }
 
 }  // namespace
