@@ -298,13 +298,14 @@ private:
     }
 
     void value(Param& p, Values values, const std::string& label, const Token& v) {
-        const std::string wrongKind = label + " expects " + expectation(values) + ", found " + shown(v);
+        // Built only when needed: this runs once for each of a mesh's millions of numbers.
+        auto wrongKind = [&] { return label + " expects " + expectation(values) + ", found " + shown(v); };
         switch (v.kind) {
         case TokenKind::Number:
             if (values == Values::Integers) {
-                if (std::trunc(v.number) != v.number || std::abs(v.number) > 2147483647.0) fail(v.line, wrongKind);
+                if (std::trunc(v.number) != v.number || std::abs(v.number) > 2147483647.0) fail(v.line, wrongKind());
             } else if (values != Values::Numbers && values != Values::NumbersOrStrings) {
-                fail(v.line, wrongKind);
+                fail(v.line, wrongKind());
             }
             if (!p.strings.empty()) fail(v.line, label + " mixes numbers and strings");
             p.numbers.push_back(v.number);
@@ -316,9 +317,9 @@ private:
                     p.bools.push_back(v.text == "true");
                     return;
                 }
-                fail(v.line, wrongKind);
+                fail(v.line, wrongKind());
             }
-            if (values != Values::Strings && values != Values::NumbersOrStrings) fail(v.line, wrongKind);
+            if (values != Values::Strings && values != Values::NumbersOrStrings) fail(v.line, wrongKind());
             if (!p.numbers.empty()) fail(v.line, label + " mixes numbers and strings");
             p.strings.push_back(unescape(v));
             return;
@@ -327,8 +328,8 @@ private:
                 p.bools.push_back(v.text == "true");
                 return;
             }
-            fail(v.line, wrongKind);
-        default: fail(v.line, wrongKind);
+            fail(v.line, wrongKind());
+        default: fail(v.line, wrongKind());
         }
     }
 
