@@ -324,6 +324,26 @@ TEST(PbrtParser, IncludeCyclesAndDepthAreRefused) {
     EXPECT_EQ(folder.errorOf("chain0.pbrt", small), "chain1.pbrt:1: Include \"chain2.pbrt\": the scene's files exceed 50 bytes");
 }
 
+TEST(PbrtParser, MissingOrOversizedSceneFiles) {
+    IncludeFolder folder;
+    try {
+        parseFile(folder.scene / "none.pbrt", folder.scene, [](Directive&&) {});
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.where().str(), "none.pbrt:0");
+        EXPECT_EQ(e.message(), "scene file '" + (folder.scene / "none.pbrt").string() + "' not found");
+    }
+    ParseLimits tiny;
+    tiny.maxTotalBytes = 8;
+    EXPECT_EQ(folder.errorOf("scene.pbrt", tiny), "scene.pbrt:0: the scene file exceeds 8 bytes");
+    try {
+        parseText("WorldBegin WorldEnd", "text.pbrt", folder.scene, [](Directive&&) {}, tiny);
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_STREQ(e.what(), "text.pbrt:0: the scene file exceeds 8 bytes");
+    }
+}
+
 TEST(PbrtParser, TextInMemoryIncludesAgainstTheRoot) {
     IncludeFolder folder;
     std::vector<std::string> shapes;

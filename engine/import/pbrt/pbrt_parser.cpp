@@ -138,6 +138,13 @@ bool isInside(const fs::path& path, const fs::path& root) {
     return true;
 }
 
+// A file's `size` bytes (as measured, and checked against the limits, beforehand).
+bool readWhole(const fs::path& file, std::uintmax_t size, std::string& text) {
+    text.assign(size, '\0');
+    std::ifstream in(file, std::ios::binary);
+    return bool(in.read(text.data(), std::streamsize(size)));
+}
+
 // What every file of one parse shares: where the scene lives, what it may still read, and
 // the chain of files now being read (to refuse a file that includes itself).
 struct Session {
@@ -355,11 +362,10 @@ private:
         if (++s.files > s.limits.maxFiles)
             fail(d.where.line, quoted + ": more than " + std::to_string(s.limits.maxFiles) + " files read");
         const std::uintmax_t size = fs::file_size(target, error);
-        if (error || size > s.limits.maxTotalBytes - s.bytes)
+        if (error || s.bytes > s.limits.maxTotalBytes || size > s.limits.maxTotalBytes - s.bytes)
             fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
-        std::string text(size, '\0');
-        std::ifstream in(target, std::ios::binary);
-        if (!in.read(text.data(), std::streamsize(size))) fail(d.where.line, quoted + ": cannot be read");
+        std::string text;
+        if (!readWhole(target, size, text)) fail(d.where.line, quoted + ": cannot be read");
         s.bytes += size;
         s.chain.push_back(target);
         parseInto(s, text, target.lexically_relative(s.root).generic_string());
@@ -394,6 +400,8 @@ const Param* Directive::find(std::string_view wanted) const {
 void parseText(std::string_view text, const std::string& name, const fs::path& root,
                const std::function<void(Directive&&)>& sink, const ParseLimits& limits) {
     Session session{canonicalRoot(root, name), sink, limits, {}, 1, text.size()};
+    if (text.size() > limits.maxTotalBytes)
+        throw ParseError({name, 0}, "the scene file exceeds " + std::to_string(limits.maxTotalBytes) + " bytes");
     std::error_code error;
     // The text stands where its name puts it, for its includes' paths and cycles.
     session.chain.push_back(fs::weakly_canonical(session.root / name, error));
@@ -412,9 +420,8 @@ void parseFile(const fs::path& file, const fs::path& root, const std::function<v
     const std::uintmax_t size = fs::file_size(target, error);
     if (error || size > limits.maxTotalBytes)
         throw ParseError({name, 0}, "the scene file exceeds " + std::to_string(limits.maxTotalBytes) + " bytes");
-    std::string text(size, '\0');
-    std::ifstream in(target, std::ios::binary);
-    if (!in.read(text.data(), std::streamsize(size))) throw ParseError({name, 0}, "the scene file cannot be read");
+    std::string text;
+    if (!readWhole(target, size, text)) throw ParseError({name, 0}, "the scene file cannot be read");
     Session session{canonicalRootPath, sink, limits, {target}, 1, size};
     parseInto(session, text, name);
 }
