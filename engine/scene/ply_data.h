@@ -39,7 +39,8 @@ inline bool fitsType(int64_t v, Type type) {
 
 class AsciiSource {
 public:
-    AsciiSource(std::string_view bytes, size_t start, int firstLine) : bytes_(bytes), pos_(start), line_(firstLine) {}
+    AsciiSource(std::string_view bytes, size_t start, int firstLine)
+        : bytes_(bytes), pos_(start), line_(firstLine), tokenLine_(firstLine) {}
 
     size_t remaining() const { return bytes_.size() - pos_; }
     // Whether `n` more numbers could follow: each takes a character and a separator.
@@ -76,7 +77,9 @@ private:
             if (bytes_[pos_] == '\n') ++line_;
             ++pos_;
         }
-        if (pos_ == bytes_.size()) throw DataProblem{true, {}, where()};
+        // At the end, the line of the last number read: the one that is short.
+        if (pos_ == bytes_.size()) throw DataProblem{true, {}, "line " + std::to_string(tokenLine_)};
+        tokenLine_ = line_;
         size_t start = pos_;
         while (pos_ < bytes_.size() && !isSpace(bytes_[pos_])) ++pos_;
         return bytes_.substr(start, pos_ - start);
@@ -86,6 +89,7 @@ private:
     std::string_view bytes_;
     size_t pos_;
     int line_;
+    int tokenLine_;
 };
 
 // Loads a value of `type` stored at `p` in the file's byte order (`swap`: not the host's).

@@ -36,6 +36,11 @@ float toFloat(double v) {
     return float(v);
 }
 
+// "1 byte", "12 bytes".
+std::string quantity(uint64_t n, const std::string& unit) {
+    return std::to_string(n) + " " + unit + (n == 1 ? "" : "s");
+}
+
 std::string plural(const Element& e) {
     if (e.name == "vertex") return "vertices";
     if (e.name == "face") return "faces";
@@ -118,14 +123,14 @@ private:
         const uint64_t numbers = e.properties.size();
         if (numbers == 0 || e.count <= (source.remaining() / 2 + 1) / numbers) return;
         fail("the header declares " + std::to_string(e.count) + " " + plural(e) + " of at least " +
-             std::to_string(numbers) + " numbers, but only " + std::to_string(source.remaining()) +
+             quantity(numbers, "number") + ", but only " + std::to_string(source.remaining()) +
              " bytes of text are left for them at " + source.where());
     }
     void checkCount(const BinarySource& source, const Element& e) const {
         const size_t size = e.binarySize();
         if (size == 0 || e.count <= source.remaining() / size) return;
         std::string message = "the header declares " + std::to_string(e.count) + " " + plural(e) + " of " +
-                              (e.hasLists() ? "at least " : "") + std::to_string(size) + " bytes, but only " +
+                              (e.hasLists() ? "at least " : "") + quantity(size, "byte") + ", but only " +
                               std::to_string(source.remaining()) + " bytes ";
         if (source.offset() == header_.dataOffset) fail(message + "follow it");
         fail(message + "are left for them at byte offset " + std::to_string(source.offset()));
