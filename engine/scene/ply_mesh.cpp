@@ -9,6 +9,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -238,6 +239,18 @@ private:
         if (n - 2 > kMaxMeshTriangles - triangles)
             fail("face " + std::to_string(face) + " of " + std::to_string(face_->count) +
                  " takes the mesh past the limit of " + std::to_string(kMaxMeshTriangles) + " triangles");
+        if constexpr (std::is_same_v<Source, BinarySource>) {
+            // Triangles of 32-bit indices in host order, what nearly every binary file holds:
+            // one copy of the three instead of a decode each (the caller checked they are there).
+            if (n == 3 && !source.swapped() && (p.type == Type::Int32 || p.type == Type::UInt32)) {
+                uint32_t corners[3];
+                std::memcpy(corners, source.advance(sizeof corners), sizeof corners);
+                for (uint32_t c : corners)
+                    if (c >= vertex_->count) failIndex(face, p.type == Type::Int32 ? int64_t(int32_t(c)) : int64_t(c));
+                mesh_.indices.insert(mesh_.indices.end(), corners, corners + 3);
+                return;
+            }
+        }
         const uint32_t first = vertexIndex(source, p, face);
         uint32_t previous = vertexIndex(source, p, face);
         for (uint64_t k = 2; k < n; ++k) {
@@ -247,12 +260,15 @@ private:
         }
     }
 
+    [[noreturn]] void failIndex(uint64_t face, int64_t index) const {
+        fail("face " + std::to_string(face) + " refers to vertex " + std::to_string(index) + ", but there are " +
+             std::to_string(vertex_->count) + " vertices");
+    }
+
     template <typename Source>
     uint32_t vertexIndex(Source& source, const Property& p, uint64_t face) {
         const int64_t index = source.integer(p.type);
-        if (index < 0 || uint64_t(index) >= vertex_->count)
-            fail("face " + std::to_string(face) + " refers to vertex " + std::to_string(index) + ", but there are " +
-                 std::to_string(vertex_->count) + " vertices");
+        if (index < 0 || uint64_t(index) >= vertex_->count) failIndex(face, index);
         return uint32_t(index);
     }
 
