@@ -1,5 +1,4 @@
-// Reads triangle meshes from files: PLY with photon's own reader (ply_mesh.h), OBJ, glTF 2.0
-// and whatever else Assimp knows with Assimp.
+// Reads triangle meshes from files (OBJ, PLY, glTF 2.0 and whatever else Assimp knows).
 #pragma once
 #include <cstddef>
 #include <filesystem>
