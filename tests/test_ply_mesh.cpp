@@ -226,7 +226,7 @@ TEST(PlyMesh, WriteThenReadIsBitExact) {
     mesh.uvs.clear();
     writePlyMesh(mesh, file);
     expectSameBits(readPlyMesh(file), mesh);
-    fs::remove(file);
+    fs::remove_all(file.parent_path());
 }
 
 // ---- loadMeshFile ----
@@ -433,6 +433,7 @@ TEST(PlyMeshErrors, Files) {
         EXPECT_EQ(std::string(e.what()), "PLY: " + (tempFolder() / "bad.ply").string() +
                                              ": cannot write a mesh whose normals or uvs are not one per position");
     }
+    fs::remove_all(tempFolder());
 }
 
 }  // namespace
