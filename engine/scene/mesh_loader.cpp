@@ -1,4 +1,6 @@
 #include "scene/mesh_loader.h"
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -6,6 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include "scene/ply_mesh.h"
 #include "scene/scene_paths.h"
 
 namespace photon {
@@ -69,9 +72,28 @@ void sanitize(TriangleMesh& mesh) {
         if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {};
 }
 
+bool isPlyFile(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension == ".ply";
+}
+
+// PLY is read by photon's own reader (ply_mesh.h), which checks every count in the file
+// against its size; it references no other files, so only the file itself is confined.
+TriangleMesh loadPlyFile(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
+    if (!confineTo.empty() && !isInsideFolder(file, confineTo))
+        throw std::runtime_error("PLY: " + file.string() + ": the file is outside the folder it must be in");
+    TriangleMesh mesh = readPlyMesh(file);
+    if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
+    sanitize(mesh);
+    return mesh;
+}
+
 }  // namespace
 
 TriangleMesh loadMeshFile(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
+    if (isPlyFile(file)) return loadPlyFile(file, confineTo);
     Assimp::Importer importer;
     if (!confineTo.empty()) importer.SetIOHandler(new ConfinedIOSystem(confineTo));  // importer owns it
     // Drop points and lines at SortByPType: the renderer only intersects triangles.
