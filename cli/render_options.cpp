@@ -2,6 +2,7 @@
 #include <unistd.h>
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include "cli/option_checks.h"
@@ -11,7 +12,19 @@ namespace photon::cli {
 namespace fs = std::filesystem;
 
 void declareOptions(CLI::App& app, RenderOptions& o) {
-    app.add_option("scene", o.scene, "the scene file (JSON)")->required();
+    app.add_option("scene", o.scene, "the scene file: photon JSON, pbrt-v4 (.pbrt) or glTF 2.0 (.gltf, .glb)")
+        ->required();
+    app.add_option("--camera", o.camera, "glTF: the camera to render, by name (default: the first)");
+    app.add_option("--resolution", o.resolution, "image size instead of the scene's, e.g. 640x360")
+        ->type_name("WxH")
+        ->check([](const std::string& r) {
+            int w = 0, h = 0;
+            char x = 0, rest = 0;
+            return std::sscanf(r.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X') && w >= 1 &&
+                           h >= 1 && w <= 16384 && h <= 16384
+                       ? ""
+                       : "expected WIDTHxHEIGHT, each in [1, 16384]";
+        });
     app.add_option("-o,--output", o.outputs,
                    "image to write, by its extension: .exr (linear HDR, with the denoiser's layers) or .png "
                    "(the scene's exposure, sRGB); repeatable")
@@ -52,6 +65,11 @@ std::vector<SettingOverride> RenderOptions::overrides() const {
     if (seed) out.push_back({"render.seed", std::to_string(*seed)});
     if (timeLimit) out.push_back({"render.time_limit", std::to_string(*timeLimit)});
     if (!integrator.empty()) out.push_back({"render.integrator", integrator});
+    if (!resolution.empty()) {
+        std::string r = resolution;
+        std::replace(r.begin(), r.end(), 'X', 'x');
+        out.push_back({"camera.resolution", "[" + r.replace(r.find('x'), 1, ",") + "]"});
+    }
     for (const std::string& d : defines) {
         const size_t eq = d.find('=');
         out.push_back({d.substr(0, eq), d.substr(eq + 1)});

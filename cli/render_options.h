@@ -17,6 +17,8 @@ struct RenderOptions {
     std::optional<long long> passes, photons, threads, seed;
     std::optional<double> timeLimit;
     std::string integrator;
+    std::string camera;      // glTF: the camera's name
+    std::string resolution;  // "WxH"
     std::vector<std::string> defines;  // -D key=value
     std::string checkpoint, resume;
     bool check = false, quiet = false;

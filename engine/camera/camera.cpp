@@ -7,8 +7,10 @@ Camera::Camera(const CameraDescription& d)
     : position_(d.position), apertureRadius_(d.apertureRadius), focusDistance_(d.focusDistance),
       width_(d.width), height_(d.height) {
     forward_ = normalize(d.lookAt - d.position);
-    right_ = normalize(cross(forward_, d.up));
-    up_ = cross(right_, forward_);
+    const Vec3 rightHanded = normalize(cross(forward_, d.up));
+    up_ = cross(rightHanded, forward_);
+    // A left-handed camera (pbrt's) sees the same view mirrored left to right.
+    right_ = d.leftHanded ? -rightHanded : rightHanded;
     tanHalfFov_ = std::tan(d.fovDegrees * kPi / 360.0f);
     aspect_ = static_cast<float>(width_) / static_cast<float>(height_);
     pixelAngle_ = 2.0f * tanHalfFov_ / static_cast<float>(height_);

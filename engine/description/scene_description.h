@@ -22,6 +22,9 @@ struct CameraDescription {
     int width = 512, height = 512;
     float apertureRadius = 0;  // 0: pinhole
     float focusDistance = 1;   // distance to the plane in focus when apertureRadius > 0
+    // The image's right is up x forward (pbrt's left-handed camera space) rather than
+    // forward x up: the image mirrored left to right.
+    bool leftHanded = false;
 };
 
 // Triangles in world space; normals and uvs per vertex, either empty or one per position.

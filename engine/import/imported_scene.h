@@ -4,6 +4,7 @@
 // so an imported scene and its converted JSON (photon-convert) are one scene.
 #pragma once
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 #include <nlohmann/json.hpp>
@@ -19,6 +20,9 @@ struct ImportedScene {
     // glTF primitive): relative path ("meshes/3.ply") -> triangles, in the shape's own frame.
     // photon-convert writes them as binary PLY files under those names.
     std::map<std::string, TriangleMesh> meshes;
+    // Those of `meshes` that are exactly a file on disk under the same name (a PLY file read
+    // to check its orientation): photon-convert references them rather than writing them.
+    std::set<std::string> meshesOnDisk;
     // Other files the document names that are not on disk (a glTF's embedded images):
     // relative path -> the file's bytes, written as they are by photon-convert.
     std::map<std::string, std::string> files;

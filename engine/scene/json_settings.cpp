@@ -38,6 +38,7 @@ CameraDescription readCamera(const JsonValue& value) {
     c.apertureRadius = obj.number("aperture_radius", 0, Range::nonNegative());
     // By default the point looked at is in focus.
     c.focusDistance = obj.number("focus_distance", length(c.lookAt - c.position), Range::positive());
+    c.leftHanded = obj.choice("handedness", 0, {"right", "left"}, "handedness") == 1;
     obj.finish();
     return c;
 }

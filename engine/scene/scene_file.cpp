@@ -1,4 +1,5 @@
 #include <photon/scene_file.h>
+#include "import/scene_import.h"
 #include "scene/scene_loader.h"
 
 namespace photon {
@@ -7,8 +8,14 @@ SceneFile SceneFile::parseJson(const std::string& text, const std::filesystem::p
                                const std::vector<SettingOverride>& overrides) {
     return SceneFile(loadSceneJson(text, baseDir, overrides));
 }
-SceneFile SceneFile::read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides) {
-    return SceneFile(loadSceneFile(file, overrides));
+SceneFile SceneFile::read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides,
+                          const ImportOptions& options) {
+    if (sceneFormatOf(file) == SceneFormat::Json) return SceneFile(loadSceneFile(file, overrides));
+    ImportedScene imported = importSceneFile(file, options);
+    const std::filesystem::path folder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    SceneFile scene(loadImportedScene(imported, folder, overrides));
+    scene.warnings_ = std::move(imported.warnings);
+    return scene;
 }
 
 SceneFile::SceneFile(SceneDescription description)

@@ -21,6 +21,16 @@ struct SettingOverride {
     std::string key, value;
 };
 
+// The formats a scene file may be in, by its extension: photon's JSON (.json and anything
+// else), pbrt-v4 (.pbrt) or glTF 2.0 (.gltf, .glb), the last two imported (docs/import.md).
+enum class SceneFormat { Json, Pbrt, Gltf };
+SceneFormat sceneFormatOf(const std::filesystem::path& file);
+
+// Choices an import needs beyond the file.
+struct ImportOptions {
+    std::string camera;  // glTF: the camera's name (empty: the first)
+};
+
 class SceneFile {
 public:
     // The JSON scene format (docs/scene-format.md). Files the scene names (meshes,
@@ -28,7 +38,10 @@ public:
     // Throws SceneError naming the JSON path of what is wrong.
     static SceneFile parseJson(const std::string& text, const std::filesystem::path& baseDir,
                                const std::vector<SettingOverride>& overrides = {});
-    static SceneFile read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides = {});
+    // A scene file in any format photon reads (sceneFormatOf); imported ones keep the
+    // importer's warnings. The overrides apply on top of the file's own settings.
+    static SceneFile read(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides = {},
+                          const ImportOptions& options = {});
 
     explicit SceneFile(SceneDescription description);
     SceneFile(SceneFile&&) noexcept;
@@ -47,11 +60,16 @@ public:
     // ("meshes/a.obj"), sorted.
     const std::vector<std::string>& files() const;
 
+    // What an import approximated or left out, each naming where ("scene.pbrt:12: ...");
+    // empty for photon's JSON.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
     // The description itself, for the engine.
     SceneDescription& description() { return *description_; }
 
 private:
     std::unique_ptr<SceneDescription> description_;
+    std::vector<std::string> warnings_;
 };
 
 }  // namespace photon

@@ -1,0 +1,103 @@
+// The pbrt-v4 importer's state while it reads a file's directives in order: pbrt's graphics
+// state (transform, material, area light, orientation, attribute stack), its named things
+// (materials, textures, coordinate systems, objects), and the photon JSON scene it writes.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+#include <nlohmann/json.hpp>
+#include <photon/errors.h>
+#include "import/imported_scene.h"
+#include "import/pbrt/pbrt_params.h"
+#include "import/pbrt/pbrt_parser.h"
+#include "math/transform.h"
+
+namespace photon::pbrt {
+
+using Json = nlohmann::ordered_json;
+
+// pbrt's CTM with its projective part checked away: pbrt matrices are 4x4, photon's affine.
+struct GraphicsState {
+    Transform ctm;  // object (or camera) to world, as pbrt's current transformation matrix
+    bool reverseOrientation = false;
+    std::string material;            // the photon material's name; empty: pbrt's default
+    std::optional<Json> areaLight;   // emission fields for the shapes that follow
+    Location areaLightWhere;
+};
+
+class SceneBuilder {
+public:
+    SceneBuilder(std::filesystem::path baseDir, ImportedScene& out) : baseDir_(std::move(baseDir)), out_(out) {}
+    void handle(Directive&& d);
+    // Writes camera, render settings and the rest into the document once every directive is read.
+    void finish();
+
+private:
+    // pbrt_transforms.cpp
+    void transformDirective(const Directive& d);
+    // pbrt_camera.cpp: Camera, Film, Sampler, Integrator, PixelFilter and the options.
+    void camera(const Directive& d);
+    void film(const Directive& d);
+    void sampler(const Directive& d);
+    void integrator(const Directive& d);
+    void writeCameraAndRender();
+    // pbrt_materials.cpp
+    void makeNamedMaterial(const Directive& d);
+    void material(const Directive& d);
+    void texture(const Directive& d);
+    // The photon material for pbrt material parameters (type given by `type`), or nullopt
+    // for pbrt's "interface" (no surface: its shapes are left out).
+    std::optional<Json> materialJson(const std::string& type, const Params& p);
+    std::string currentMaterial();
+    // A colour or float parameter: a constant, or a named texture's photon texture object.
+    std::optional<Json> colorValue(const Params& p, std::string_view name, int spectrumKind);
+    std::optional<Json> floatValue(const Params& p, std::string_view name);
+    Json roughnessFields(const Params& p, bool anisotropic);
+    // pbrt_shapes.cpp
+    void shape(const Directive& d);
+    void addMeshShape(TriangleMesh mesh, const std::string& name, const Params& p, const Directive& d);
+    void addSphere(const Params& p, const Directive& d);
+    void addShapeJson(Json shape, bool emissive, const Directive& d);
+    Json commonShapeFields(const Params& p);
+    std::string meshFromPly(const Params& p, const Directive& d);
+    // pbrt_lights.cpp
+    void lightSource(const Directive& d);
+    void areaLightSource(const Directive& d);
+    // pbrt_objects.cpp (in pbrt_shapes.cpp)
+    void objectBegin(const Directive& d);
+    void objectInstance(const Directive& d);
+
+    void warn(const Location& where, const std::string& message);
+    Json matrixJson(const Transform& t) const;
+
+    std::filesystem::path baseDir_;
+    ImportedScene& out_;
+    Json materials_ = Json::object(), shapes_ = Json::array(), objects_ = Json::object(), lights_ = Json::array();
+    Json render_ = Json::object();
+
+    GraphicsState state_;
+    std::vector<GraphicsState> stack_;          // AttributeBegin/End
+    std::vector<Transform> transformStack_;     // TransformBegin/End
+    std::map<std::string, Transform> coordinateSystems_;
+    std::map<std::string, Json> floatTextures_, spectrumTextures_;
+    std::map<std::string, std::string> namedMaterials_;  // pbrt name -> photon name
+    std::optional<std::string> currentObject_;  // inside ObjectBegin
+    Location objectWhere_;
+    std::map<std::string, std::string> plyMeshes_;  // (file, reversed) key -> mesh name
+    int meshCount_ = 0, materialCount_ = 0;
+
+    // The camera and film, written at the end (the film may follow the camera).
+    struct CameraState {
+        bool seen = false;
+        Transform cameraToWorld;
+        double fov = 90, lensRadius = 0, focalDistance = 1e6;
+        std::optional<std::vector<double>> screenWindow;
+        Location where;
+    } camera_;
+    int width_ = 1280, height_ = 720;
+    bool worldBegun_ = false;
+};
+
+}  // namespace photon::pbrt

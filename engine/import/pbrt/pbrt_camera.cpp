@@ -1,0 +1,94 @@
+// Camera, Film, Sampler and Integrator: photon's camera and render settings.
+#include <cmath>
+#include "import/pbrt/pbrt_builder.h"
+
+namespace photon::pbrt {
+
+namespace {
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+}
+
+void SceneBuilder::camera(const Directive& d) {
+    Params p(d);
+    if (d.strings.at(0) != "perspective")
+        fail(d.where, "Camera \"" + d.strings[0] + "\" is not supported (photon has perspective cameras only)");
+    if (std::abs(state_.ctm.determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
+    camera_.seen = true;
+    camera_.where = d.where;
+    // The CTM is camera-from-world here; pbrt names its inverse "camera".
+    camera_.cameraToWorld = state_.ctm.inverse();
+    coordinateSystems_["camera"] = camera_.cameraToWorld;
+    camera_.fov = p.number("fov", 90);
+    if (!(camera_.fov > 0 && camera_.fov < 180)) fail(d.where, "Camera: fov must be in (0, 180)");
+    camera_.lensRadius = p.number("lensradius", 0);
+    camera_.focalDistance = p.number("focaldistance", 1e6);
+    if (p.has("screenwindow")) camera_.screenWindow = p.numbers("screenwindow", {"float"});
+    // The frame aspect ratio only matters with a screen window, which is checked against it.
+    p.find("frameaspectratio");
+}
+
+void SceneBuilder::film(const Directive& d) {
+    Params p(d);
+    width_ = static_cast<int>(p.number("xresolution", 1280));
+    height_ = static_cast<int>(p.number("yresolution", 720));
+    p.find("filename");  // photon's outputs are named by its caller
+}
+
+void SceneBuilder::sampler(const Directive& d) {
+    Params p(d);
+    render_["passes"] = static_cast<int64_t>(p.number("pixelsamples", 16));
+}
+
+void SceneBuilder::integrator(const Directive& d) {
+    Params p(d);
+    const std::string& type = d.strings.at(0);
+    render_["integrator"] = "sppm";
+    render_["max_depth"] = static_cast<int64_t>(p.number("maxdepth", 5));
+    if (type == "sppm") {
+        if (auto photons = p.number("photonsperiteration"); photons && *photons > 0)
+            render_["photons_per_pass"] = static_cast<int64_t>(*photons);
+        if (auto radius = p.number("radius")) render_["initial_radius"] = *radius;
+        if (auto seed = p.number("seed")) render_["seed"] = static_cast<int64_t>(*seed);
+        if (auto iterations = p.number("iterations")) render_["passes"] = static_cast<int64_t>(*iterations);
+        return;
+    }
+    warn(d.where, "Integrator \"" + type + "\" rendered with photon's SPPM (its maxdepth kept)");
+}
+
+void SceneBuilder::writeCameraAndRender() {
+    if (!camera_.seen) throw SceneError("", "the pbrt scene has no Camera");
+    const Transform& c = camera_.cameraToWorld;
+    const Vec3 position = c.point({0, 0, 0});
+    const Vec3 forward = normalize(c.vector({0, 0, 1})), up = normalize(c.vector({0, 1, 0}));
+    const Vec3 right = c.vector({1, 0, 0});
+    // pbrt's fov spans the shorter image axis; photon's the vertical one.
+    double tanHalf = std::tan(camera_.fov / 2 / kDegrees);
+    if (width_ < height_) tanHalf *= double(height_) / width_;
+    if (camera_.screenWindow) {
+        // A symmetric window of the image's shape scales the view; anything else shifts or
+        // stretches it, which photon's camera cannot.
+        const std::vector<double>& w = *camera_.screenWindow;
+        const double aspect = double(width_) / height_;
+        const double defaultHalfHeight = aspect >= 1 ? 1 : 1 / aspect;
+        const bool symmetric = w.size() == 4 && std::abs(w[0] + w[1]) < 1e-6 && std::abs(w[2] + w[3]) < 1e-6 &&
+                               w[3] > 0 && std::abs((w[1] / w[3]) / aspect - 1) < 1e-3;
+        if (!symmetric)
+            fail(camera_.where, "Camera: a screenwindow that is not centred or not of the image's shape is not supported");
+        tanHalf *= w[3] / defaultHalfHeight;
+    }
+    Json cam = {{"type", "perspective"},
+                {"position", {position.x, position.y, position.z}},
+                {"look_at", {position.x + forward.x, position.y + forward.y, position.z + forward.z}},
+                {"up", {up.x, up.y, up.z}},
+                {"fov", 2 * std::atan(tanHalf) * kDegrees},
+                {"resolution", {width_, height_}}};
+    // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
+    if (dot(right, cross(forward, up)) < 0) cam["handedness"] = "left";
+    if (camera_.lensRadius > 0) {
+        cam["aperture_radius"] = camera_.lensRadius;
+        cam["focus_distance"] = camera_.focalDistance;
+    }
+    out_.document["camera"] = cam;
+}
+
+}  // namespace photon::pbrt

@@ -1,0 +1,144 @@
+#include "import/pbrt/pbrt_import.h"
+#include <photon/errors.h>
+#include "import/pbrt/pbrt_builder.h"
+
+namespace photon {
+
+namespace pbrt {
+
+void SceneBuilder::warn(const Location& where, const std::string& message) {
+    out_.warnings.push_back(where.str() + ": " + message);
+}
+
+Json SceneBuilder::matrixJson(const Transform& t) const {
+    Json m = Json::array();
+    for (float v : t.m) m.push_back(v);
+    for (float v : {0.0f, 0.0f, 0.0f, 1.0f}) m.push_back(v);
+    return Json{{"matrix", m}};
+}
+
+void SceneBuilder::handle(Directive&& d) {
+    const std::string& n = d.name;
+    if (n == "AttributeBegin") {
+        stack_.push_back(state_);
+    } else if (n == "AttributeEnd") {
+        if (stack_.empty()) fail(d.where, "AttributeEnd without a matching AttributeBegin");
+        state_ = stack_.back();
+        stack_.pop_back();
+    } else if (n == "TransformBegin") {
+        transformStack_.push_back(state_.ctm);
+    } else if (n == "TransformEnd") {
+        if (transformStack_.empty()) fail(d.where, "TransformEnd without a matching TransformBegin");
+        state_.ctm = transformStack_.back();
+        transformStack_.pop_back();
+    } else if (n == "Identity" || n == "Translate" || n == "Scale" || n == "Rotate" || n == "LookAt" ||
+               n == "Transform" || n == "ConcatTransform" || n == "CoordinateSystem" || n == "CoordSysTransform") {
+        transformDirective(d);
+    } else if (n == "ActiveTransform" || n == "TransformTimes") {
+        // Motion blur: photon renders the scene at the start time.
+        if (n == "ActiveTransform" && !d.strings.empty() && d.strings[0] != "StartTime" && d.strings[0] != "All")
+            warn(d.where, "ActiveTransform " + d.strings[0] + ": motion blur is not rendered; the start time is used");
+    } else if (n == "ReverseOrientation") {
+        state_.reverseOrientation = !state_.reverseOrientation;
+    } else if (n == "WorldBegin") {
+        worldBegun_ = true;
+        state_.ctm = Transform();
+        coordinateSystems_["world"] = Transform();
+    } else if (n == "WorldEnd") {
+        // pbrt-v3's end of file.
+    } else if (n == "Camera") {
+        camera(d);
+    } else if (n == "Film") {
+        film(d);
+    } else if (n == "Sampler") {
+        sampler(d);
+    } else if (n == "Integrator") {
+        integrator(d);
+    } else if (n == "PixelFilter" || n == "Accelerator" || n == "ColorSpace" || n == "Option") {
+        if (n == "Option" && d.find("seed")) {
+            Params p(d);
+            render_["seed"] = static_cast<int64_t>(p.number("seed", 0));
+        } else if (!(n == "ColorSpace" && !d.strings.empty() && d.strings[0] == "srgb")) {
+            const char* why = n == "PixelFilter"   ? "photon averages each pixel's samples with a box filter"
+                              : n == "Accelerator" ? "photon builds Embree's BVH"
+                              : n == "ColorSpace"  ? "photon renders in linear sRGB"
+                                                   : "not an option photon has";
+            warn(d.where, describe(d) + " ignored (" + why + ")");
+        }
+        return;
+    } else if (n == "MakeNamedMaterial") {
+        makeNamedMaterial(d);
+    } else if (n == "Material") {
+        material(d);
+    } else if (n == "NamedMaterial") {
+        const std::string& name = d.strings.at(0);
+        auto it = namedMaterials_.find(name);
+        if (it == namedMaterials_.end()) fail(d.where, "NamedMaterial \"" + name + "\" was not defined");
+        state_.material = it->second;
+    } else if (n == "Texture") {
+        texture(d);
+    } else if (n == "Shape") {
+        shape(d);
+    } else if (n == "LightSource") {
+        lightSource(d);
+    } else if (n == "AreaLightSource") {
+        areaLightSource(d);
+    } else if (n == "ObjectBegin") {
+        objectBegin(d);
+    } else if (n == "ObjectEnd") {
+        if (!currentObject_) fail(d.where, "ObjectEnd without a matching ObjectBegin");
+        currentObject_.reset();
+        if (stack_.empty()) fail(d.where, "ObjectEnd without a matching ObjectBegin");
+        state_ = stack_.back();
+        stack_.pop_back();
+    } else if (n == "ObjectInstance") {
+        objectInstance(d);
+    } else if (n == "MakeNamedMedium") {
+        fail(d.where, "participating media (MakeNamedMedium \"" + (d.strings.empty() ? "" : d.strings[0]) +
+                          "\") are not supported by photon");
+    } else if (n == "MediumInterface") {
+        for (const std::string& s : d.strings)
+            if (!s.empty()) fail(d.where, "MediumInterface: participating media are not supported by photon");
+        return;
+    } else if (n == "Attribute") {
+        fail(d.where, "Attribute \"" + (d.strings.empty() ? "" : d.strings[0]) +
+                          "\": default parameters by directive are not supported; give them on each directive");
+    } else {
+        fail(d.where, "directive " + n + " is not supported");
+    }
+    Params(d).warnUnused(out_.warnings);
+}
+
+void SceneBuilder::finish() {
+    if (!stack_.empty()) warn(Location{}, "the file ends inside an AttributeBegin block");
+    writeCameraAndRender();
+    Json& doc = out_.document;
+    // An object with nothing photon renders (only interfaces) is never instanced.
+    for (auto it = objects_.begin(); it != objects_.end();)
+        it = it.value()["shapes"].empty() ? objects_.erase(it) : std::next(it);
+    if (!objects_.empty()) doc["objects"] = objects_;
+    doc["materials"] = materials_;
+    doc["shapes"] = shapes_;
+    if (!lights_.empty()) doc["lights"] = lights_;
+    doc["render"] = render_;
+    if (shapes_.empty()) throw SceneError("", "the pbrt scene has no shapes that photon can render");
+}
+
+}  // namespace pbrt
+
+ImportedScene importPbrt(const std::filesystem::path& file) {
+    ImportedScene out;
+    const std::filesystem::path root = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+    pbrt::SceneBuilder builder(root, out);
+    try {
+        pbrt::parseFile(file, root, [&](pbrt::Directive&& d) { builder.handle(std::move(d)); });
+    } catch (const pbrt::ParseError& e) {
+        // Its text starts with the location, which SceneError adds again.
+        const std::string what = e.what(), prefix = e.where().str() + ": ";
+        throw SceneError(e.where().str(), what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+    }
+    builder.finish();
+    return out;
+}
+
+}  // namespace photon

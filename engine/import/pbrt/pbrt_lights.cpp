@@ -1,0 +1,115 @@
+// LightSource and AreaLightSource. pbrt-v4 scales light spectra given other than as "rgb"
+// to unit luminance (pbrt_spectra.h); "scale" multiplies, and "power" (area lights) becomes
+// photon's emission_power, whose definition is the same (pbrt-v4 DiffuseAreaLight::Create).
+#include <cmath>
+#include "import/pbrt/pbrt_builder.h"
+#include "import/pbrt/pbrt_spectra.h"
+#include "scene/scene_paths.h"
+
+namespace photon::pbrt {
+
+namespace {
+
+Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
+Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
+
+// A rotation's axis and angle (degrees), if `t`'s linear part is a rotation.
+std::optional<std::pair<Vec3, float>> axisAngle(const Transform& t) {
+    const float* m = t.m.data();
+    const Vec3 c0{m[0], m[4], m[8]}, c1{m[1], m[5], m[9]}, c2{m[2], m[6], m[10]};
+    for (Vec3 c : {c0, c1, c2})
+        if (std::abs(length(c) - 1) > 1e-3f) return std::nullopt;
+    if (t.determinant() < 0) return std::nullopt;
+    const float cosAngle = std::clamp((m[0] + m[5] + m[10] - 1) * 0.5f, -1.0f, 1.0f);
+    const float angle = std::acos(cosAngle);
+    if (angle < 1e-6f) return std::make_pair(Vec3(0, 1, 0), 0.0f);
+    Vec3 axis{m[9] - m[6], m[2] - m[8], m[4] - m[1]};
+    if (length(axis) < 1e-4f) {
+        // A half turn: the axis from the symmetric part, (R + I) / 2 = a a^T.
+        axis = {std::sqrt(std::max(0.0f, (m[0] + 1) * 0.5f)), std::sqrt(std::max(0.0f, (m[5] + 1) * 0.5f)),
+                std::sqrt(std::max(0.0f, (m[10] + 1) * 0.5f))};
+        if (m[1] < 0) axis.y = -axis.y;
+        if (m[2] < 0) axis.z = -axis.z;
+    }
+    return std::make_pair(normalize(axis), angle * 180.0f / kPi);
+}
+
+}  // namespace
+
+void SceneBuilder::lightSource(const Directive& d) {
+    Params p(d);
+    const std::string& type = d.strings.at(0);
+    const double scale = p.number("scale", 1);
+    auto spectrum = [&](std::string_view name) {
+        const Param* param = p.find(name);
+        return param ? spectrumColor(*param, SpectrumKind::Illuminant, baseDir_) : Color(1.0f);
+    };
+    if (currentObject_) fail(d.where, "LightSource inside ObjectBegin is not supported");
+    Json light;
+    if (type == "point") {
+        const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0}));
+        light = {{"type", "point"}, {"position", vec(from)}, {"intensity", rgb(spectrum("I") * float(scale))}};
+        if (auto power = p.number("power"))
+            light["intensity"] = rgb(spectrum("I") * float(*power / (4 * kPi * luminance(spectrum("I")))));
+    } else if (type == "spot") {
+        const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0})), to = state_.ctm.point(p.vec3("to", {0, 0, 1}));
+        const double cone = p.number("coneangle", 30), delta = p.number("conedelta", 5);
+        if (!(length(to - from) > 0)) fail(d.where, "spot: \"from\" and \"to\" are the same point");
+        light = {{"type", "spot"},
+                 {"position", vec(from)},
+                 {"direction", vec(normalize(to - from))},
+                 {"intensity", rgb(spectrum("I") * float(scale))},
+                 {"cone_angle", std::clamp(cone, 1e-3, 90.0)},
+                 {"falloff_angle", std::clamp(cone - delta, 0.0, std::clamp(cone, 1e-3, 90.0))}};
+        if (cone > 90) warn(d.where, "spot: a cone wider than 90 degrees is narrowed to 90");
+        if (p.has("power")) warn(d.where, "spot: \"power\" is not supported; \"I\" and \"scale\" used");
+        p.find("power");
+    } else if (type == "distant") {
+        const Vec3 from = p.vec3("from", {0, 0, 0}), to = p.vec3("to", {0, 0, 1});
+        if (!(length(to - from) > 0)) fail(d.where, "distant: \"from\" and \"to\" are the same point");
+        light = {{"type", "directional"},
+                 {"direction", vec(normalize(state_.ctm.vector(to - from)))},
+                 {"irradiance", rgb(spectrum("L") * float(scale))}};
+        if (auto e = p.number("illuminance")) light["irradiance"] = rgb(spectrum("L") * float(*e / luminance(spectrum("L"))));
+    } else if (type == "infinite") {
+        if (auto file = p.string("filename")) {
+            if (auto why = checkRelativePath(*file)) fail(d.where, "infinite: \"" + *file + "\": " + *why);
+            if (p.has("L")) fail(d.where, "infinite: give \"L\" or \"filename\", not both");
+            light = {{"type", "environment"}, {"image", *file}, {"layout", "equal_area"}, {"scale", scale}};
+            auto rotation = axisAngle(state_.ctm);
+            if (!rotation) fail(d.where, "infinite: the light's transform must be a rotation");
+            if (rotation->second != 0)
+                light["rotate"] = {{"axis", vec(rotation->first)}, {"angle", rotation->second}};
+        } else {
+            light = {{"type", "environment"}, {"radiance", rgb(spectrum("L") * float(scale))}};
+        }
+        if (p.has("illuminance")) warn(d.where, "infinite: \"illuminance\" normalisation is not supported; \"scale\" used");
+        p.find("illuminance");
+        if (p.has("portal")) warn(d.where, "infinite: \"portal\" ignored (it only guides pbrt's sampling)");
+        p.find("portal");
+    } else {
+        fail(d.where, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
+    }
+    lights_.push_back(std::move(light));
+}
+
+void SceneBuilder::areaLightSource(const Directive& d) {
+    Params p(d);
+    if (d.strings.at(0) != "diffuse") fail(d.where, "AreaLightSource \"" + d.strings[0] + "\" is not supported (diffuse only)");
+    Json e = Json::object();
+    if (auto file = p.string("filename")) {
+        if (auto why = checkRelativePath(*file)) fail(d.where, "AreaLightSource: \"" + *file + "\": " + *why);
+        e["emission"] = {{"type", "image"}, {"file", *file}};
+        p.find("L");
+    } else {
+        const Param* L = p.find("L");
+        e["emission"] = rgb(L ? spectrumColor(*L, SpectrumKind::Illuminant, baseDir_) : Color(1.0f));
+    }
+    if (const double scale = p.number("scale", 1); scale != 1) e["emission_scale"] = scale;
+    if (p.boolean("twosided", false)) e["two_sided"] = true;
+    if (auto power = p.number("power")) e["emission_power"] = *power;
+    state_.areaLight = e;
+    state_.areaLightWhere = d.where;
+}
+
+}  // namespace photon::pbrt

@@ -1,0 +1,308 @@
+// Materials and textures: pbrt-v4's material types onto photon's (docs/import.md lists the
+// mapping). Roughness: pbrt's alpha is the roughness itself, or its square root with
+// "remaproughness" (pbrt-v4's TrowbridgeReitzDistribution::RoughnessToAlpha); photon's
+// dielectric and coated diffuse take a perceptual roughness r with alpha = r^2, so they get
+// sqrt(alpha), while its conductor takes pbrt's values and remap flag as they are.
+#include <algorithm>
+#include <cmath>
+#include "import/pbrt/pbrt_builder.h"
+#include "import/pbrt/pbrt_spectra.h"
+#include "scene/scene_paths.h"
+
+namespace photon::pbrt {
+
+namespace {
+
+Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
+
+// The name photon gives what pbrt's "interface" material marks: no surface.
+const std::string kNoSurface = "";
+
+}  // namespace
+
+std::optional<Json> SceneBuilder::colorValue(const Params& p, std::string_view name, int spectrumKind) {
+    const Param* param = p.find(name);
+    if (!param) return std::nullopt;
+    if (param->type == "texture") {
+        const std::string& texture = param->strings.at(0);
+        auto it = spectrumTextures_.find(texture);
+        if (it == spectrumTextures_.end())
+            fail(param->where, "\"" + param->name + "\": no spectrum texture named \"" + texture + "\"");
+        return it->second;
+    }
+    // Named metal spectra stay names: photon's conductor reads them from its own table.
+    if (param->type == "spectrum" && param->strings.size() == 1 && param->strings[0].rfind("metal-", 0) == 0 &&
+        static_cast<SpectrumKind>(spectrumKind) == SpectrumKind::Index) {
+        spectrumColor(*param, SpectrumKind::Index, baseDir_);  // checks the name
+        return Json(param->strings[0]);
+    }
+    return rgb(spectrumColor(*param, static_cast<SpectrumKind>(spectrumKind), baseDir_));
+}
+
+std::optional<Json> SceneBuilder::floatValue(const Params& p, std::string_view name) {
+    const Param* param = p.find(name);
+    if (!param) return std::nullopt;
+    if (param->type == "texture") {
+        const std::string& texture = param->strings.at(0);
+        auto it = floatTextures_.find(texture);
+        if (it == floatTextures_.end())
+            fail(param->where, "\"" + param->name + "\": no float texture named \"" + texture + "\"");
+        return it->second;
+    }
+    if ((param->type != "float" && param->type != "integer") || param->numbers.size() != 1)
+        fail(param->where, "\"" + param->name + "\" must be one float or a float texture");
+    return Json(param->numbers[0]);
+}
+
+namespace {
+
+// A constant colour clamped to [0, 1] (pbrt allows reflectances above 1; photon's loader
+// does not), with a warning; textures are left as they are.
+Json reflectance(Json value, const Location& where, std::vector<std::string>& warnings) {
+    if (!value.is_array()) return value;
+    bool clamped = false;
+    for (Json& v : value) {
+        const double c = v.get<double>();
+        if (c < 0 || c > 1) {
+            v = std::clamp(c, 0.0, 1.0);
+            clamped = true;
+        }
+    }
+    if (clamped) warnings.push_back(where.str() + ": a reflectance outside [0, 1] clamped to it");
+    return value;
+}
+
+double number(const Json& v) { return v.is_number() ? v.get<double>() : -1; }
+
+}  // namespace
+
+// pbrt's (u, v) roughness and remap flag as one perceptual roughness (photon's dielectric
+// and coated diffuse are isotropic).
+Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic) {
+    const Location& where = p.directive().where;
+    std::optional<Json> r = floatValue(p, "roughness"), u = floatValue(p, "uroughness"), v = floatValue(p, "vroughness");
+    const bool remap = p.boolean("remaproughness", true);
+    if (!u) u = r;
+    if (!v) v = r;
+    if (anisotropic) {
+        Json out = Json::object();
+        if (u) out["uroughness"] = *u;
+        if (v) out["vroughness"] = *v;
+        if (u || v) out["remap_roughness"] = remap;
+        return out;
+    }
+    if (!u && !v) return Json::object();
+    const Json& one = u ? *u : *v;
+    if (!one.is_number() || (v && !v->is_number())) {
+        warn(where, "a textured roughness on this material is not supported; its mean is not known here, 0 used");
+        return Json::object();
+    }
+    double a = number(one);
+    if (v && std::abs(number(*v) - a) > 1e-6) {
+        warn(where, "anisotropic roughness (uroughness != vroughness) on an isotropic photon material: their mean used");
+        a = 0.5 * (a + number(*v));
+    }
+    const double alpha = remap ? std::sqrt(std::max(a, 0.0)) : a;
+    return Json{{"roughness", std::clamp(std::sqrt(std::max(alpha, 0.0)), 0.0, 1.0)}};
+}
+
+namespace {
+
+// A dielectric's index: a float, or a spectrum's value (named glasses have one; a sampled
+// spectrum's dispersion is lost: its mean over the visible colour channels is used).
+double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, std::vector<std::string>& warnings) {
+    const Param* eta = p.find("eta");
+    if (!eta) return 1.5;
+    if (eta->type == "texture") fail(eta->where, "a textured eta is not supported");
+    const Color c = spectrumColor(*eta, SpectrumKind::Index, baseDir);
+    if (eta->type == "spectrum" && eta->numbers.size() > 1)
+        warnings.push_back(eta->where.str() + ": dispersion left out; the index's mean over R, G, B used");
+    return (c.x + c.y + c.z) / 3;
+}
+
+}  // namespace
+
+std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Params& p) {
+    const Location& where = p.directive().where;
+    Json m;
+    if (type == "interface" || type == "none" || type.empty()) return std::nullopt;
+    if (type == "diffuse") {
+        m = {{"type", "diffuse"},
+             {"albedo", reflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
+                                    where, out_.warnings)}};
+    } else if (type == "coateddiffuse") {
+        m = {{"type", "coated_diffuse"},
+             {"albedo", reflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
+                                    where, out_.warnings)},
+             {"ior", indexOfRefraction(p, baseDir_, out_.warnings)}};
+        m.update(roughnessFields(p, false));
+        if (auto albedo = colorValue(p, "albedo", int(SpectrumKind::Reflectance));
+            albedo && !(albedo->is_array() && (*albedo)[0] == 0 && (*albedo)[1] == 0 && (*albedo)[2] == 0))
+            warn(where, "coateddiffuse: the medium between coat and base (albedo, g, thickness) is left out");
+        // The layer's thickness only matters with a medium; the random walk's depth and samples
+        // are pbrt's estimator, which photon's closed form replaces.
+        for (const char* name : {"thickness", "g", "maxdepth", "nsamples"}) p.find(name);
+    } else if (type == "dielectric" || type == "thindielectric") {
+        m = {{"type", "dielectric"}, {"ior", indexOfRefraction(p, baseDir_, out_.warnings)}};
+        if (type == "thindielectric") {
+            m["thin"] = true;
+        } else {
+            m.update(roughnessFields(p, false));
+        }
+    } else if (type == "conductor" || type == "coatedconductor") {
+        m = {{"type", "conductor"}};
+        const bool coated = type == "coatedconductor";
+        const std::string prefix = coated ? "conductor." : "";
+        if (auto r = colorValue(p, "reflectance", int(SpectrumKind::Reflectance))) {
+            m["reflectance"] = reflectance(*r, where, out_.warnings);
+            warn(where, "conductor \"reflectance\": taken as the reflectance at normal incidence (Schlick's Fresnel)");
+        } else {
+            m["eta"] = colorValue(p, prefix + "eta", int(SpectrumKind::Index)).value_or(Json("metal-Cu-eta"));
+            m["k"] = colorValue(p, prefix + "k", int(SpectrumKind::Index)).value_or(Json("metal-Cu-k"));
+        }
+        if (coated) {
+            warn(where, "coatedconductor: the dielectric coat is left out (rendered as its conductor)");
+            for (const char* name : {"interface.roughness", "interface.uroughness", "interface.vroughness", "interface.eta",
+                                     "thickness", "g", "albedo", "maxdepth", "nsamples"})
+                p.find(name);
+            const Json isotropic = floatValue(p, "conductor.roughness").value_or(Json(0));
+            const Json u = floatValue(p, "conductor.uroughness").value_or(isotropic);
+            m["uroughness"] = u;
+            m["vroughness"] = floatValue(p, "conductor.vroughness").value_or(u);
+            m["remap_roughness"] = p.boolean("remaproughness", true);
+        } else {
+            Json r = roughnessFields(p, true);
+            // pbrt's conductor is smooth without a roughness; photon's defaults to 0.2.
+            if (!r.contains("uroughness")) r = {{"roughness", 0}};
+            m.update(r);
+        }
+    } else if (type == "diffusetransmission") {
+        const double scale = p.number("scale", 1);
+        auto scaled = [&](std::optional<Json> v) {
+            Json c = v.value_or(rgb(Color(0.25f)));
+            if (scale == 1) return c;
+            if (c.is_array()) {
+                for (Json& x : c) x = x.get<double>() * scale;
+                return c;
+            }
+            return Json{{"type", "product"}, {"a", c}, {"b", rgb(Color(float(scale)))}};
+        };
+        m = {{"type", "diffuse_transmission"},
+             {"reflectance", reflectance(scaled(colorValue(p, "reflectance", int(SpectrumKind::Reflectance))), where, out_.warnings)},
+             {"transmittance",
+              reflectance(scaled(colorValue(p, "transmittance", int(SpectrumKind::Reflectance))), where, out_.warnings)}};
+    } else if (type == "mix") {
+        const std::vector<std::string> names = p.strings("materials");
+        if (names.size() != 2) fail(where, "mix: \"materials\" must name two materials");
+        Json parts = Json::array();
+        for (const std::string& n : names) {
+            auto it = namedMaterials_.find(n);
+            if (it == namedMaterials_.end()) fail(where, "mix: material \"" + n + "\" was not defined before");
+            if (it->second == kNoSurface) fail(where, "mix: material \"" + n + "\" is an interface (no surface)");
+            parts.push_back(it->second);
+        }
+        m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
+    } else {
+        fail(where, "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+                                           "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)");
+    }
+    if (auto d = floatValue(p, "displacement")) m["bump"] = *d;
+    if (auto n = p.string("normalmap")) {
+        if (auto why = checkRelativePath(*n)) fail(where, "normalmap \"" + *n + "\": " + *why);
+        m["normal_map"] = *n;
+    }
+    return m;
+}
+
+void SceneBuilder::makeNamedMaterial(const Directive& d) {
+    Params p(d);
+    const std::string& name = d.strings.at(0);
+    const std::string type = p.string("type", "");
+    if (!p.has("type")) fail(d.where, "MakeNamedMaterial \"" + name + "\" has no \"string type\"");
+    std::optional<Json> m = materialJson(type, p);
+    namedMaterials_[name] = m ? name : kNoSurface;
+    if (m) materials_[name] = *m;
+}
+
+void SceneBuilder::material(const Directive& d) {
+    Params p(d);
+    std::optional<Json> m = materialJson(d.strings.at(0), p);
+    if (!m) {
+        state_.material = "\x01";  // pbrt's interface: shapes under it are no surfaces
+        return;
+    }
+    // Identical anonymous materials share one entry.
+    for (auto& [name, existing] : materials_.items())
+        if (existing == *m && name.rfind("material ", 0) == 0) {
+            state_.material = name;
+            return;
+        }
+    const std::string name = "material " + std::to_string(++materialCount_);
+    materials_[name] = *m;
+    state_.material = name;
+}
+
+std::string SceneBuilder::currentMaterial() {
+    if (state_.material == "\x01") return kNoSurface;
+    if (!state_.material.empty()) return state_.material;
+    // pbrt-v4's default material: diffuse, reflectance 0.5.
+    if (!materials_.contains("default")) materials_["default"] = {{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
+    return "default";
+}
+
+void SceneBuilder::texture(const Directive& d) {
+    Params p(d);
+    const std::string& name = d.strings.at(0);
+    const std::string& kind = d.strings.at(1);
+    const std::string& cls = d.strings.at(2);
+    if (kind != "spectrum" && kind != "float" && kind != "color")
+        fail(d.where, "Texture \"" + name + "\": type must be \"spectrum\" or \"float\", not \"" + kind + "\"");
+    const bool color = kind != "float";
+    auto value = [&](std::string_view param, double fallback) {
+        std::optional<Json> v = color ? colorValue(p, param, int(SpectrumKind::Reflectance)) : floatValue(p, param);
+        return v.value_or(color ? rgb(Color(float(fallback))) : Json(fallback));
+    };
+    auto mapping = [&](Json& t) {
+        const std::string map = p.string("mapping", "uv");
+        if (map != "uv") fail(d.where, "Texture \"" + name + "\": mapping \"" + map + "\" is not supported (uv only)");
+        const double su = p.number("uscale", 1), sv = p.number("vscale", 1), du = p.number("udelta", 0),
+                     dv = p.number("vdelta", 0);
+        if (su != 1 || sv != 1) t["uv_scale"] = {su, sv};
+        if (du != 0 || dv != 0) t["uv_offset"] = {du, dv};
+    };
+    Json t;
+    if (cls == "imagemap") {
+        const std::string file = p.string("filename", "");
+        if (file.empty()) fail(d.where, "Texture \"" + name + "\": imagemap needs a \"filename\"");
+        if (auto why = checkRelativePath(file)) fail(d.where, "Texture \"" + name + "\": \"" + file + "\": " + *why);
+        t = {{"type", "image"}, {"file", file}};
+        mapping(t);
+        const std::string encoding = p.string("encoding", "sRGB");
+        if (encoding != "sRGB")
+            warn(d.where, "Texture \"" + name + "\": encoding \"" + encoding +
+                              "\" not honoured (8-bit images are read as sRGB, float images as linear)");
+        if (p.boolean("invert", false)) fail(d.where, "Texture \"" + name + "\": \"invert\" is not supported");
+        const std::string wrap = p.string("wrap", "repeat");
+        if (wrap != "repeat") warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
+        for (const char* ignored : {"filter", "maxanisotropy"}) p.find(ignored);  // photon filters bilinearly
+        const double scale = p.number("scale", 1);
+        if (scale != 1) t = {{"type", "product"}, {"a", t}, {"b", color ? rgb(Color(float(scale))) : Json(scale)}};
+    } else if (cls == "checkerboard") {
+        if (p.number("dimension", 2) != 2) fail(d.where, "Texture \"" + name + "\": only 2D checkerboards are supported");
+        t = {{"type", "checkerboard"}, {"even", value("tex1", 1)}, {"odd", value("tex2", 0)}};
+        mapping(t);
+    } else if (cls == "scale") {
+        t = {{"type", "product"}, {"a", value("tex", 1)}, {"b", value("scale", 1)}};
+    } else if (cls == "mix") {
+        const std::optional<Json> amount = floatValue(p, "amount");
+        t = {{"type", "mix"}, {"a", value("tex1", 0)}, {"b", value("tex2", 1)}, {"amount", amount.value_or(Json(0.5))}};
+    } else if (cls == "constant") {
+        t = value("value", 1);
+    } else {
+        fail(d.where, "Texture \"" + name + "\": class \"" + cls +
+                          "\" is not supported (photon imports imagemap, checkerboard, scale, mix, constant)");
+    }
+    (color ? spectrumTextures_ : floatTextures_)[name] = t;
+}
+
+}  // namespace photon::pbrt

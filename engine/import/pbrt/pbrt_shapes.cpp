@@ -1,0 +1,257 @@
+// Shapes and object instancing. Every mesh is held in the object's own frame with pbrt's
+// orientation baked into its winding, so photon's geometric normal faces where pbrt's
+// does: with vertex normals, the side they point to (pbrt-v4 makes the geometric normal
+// follow the shading normal, and ReverseOrientation flips the vertex normals); without,
+// the winding's, flipped by ReverseOrientation. The CTM goes into the shape's "transform",
+// which mirrors winding and normals alike, as pbrt's handedness test does.
+#include <cmath>
+#include <utility>
+#include "description/shape_transform.h"
+#include "import/pbrt/pbrt_builder.h"
+#include "scene/mesh_loader.h"
+#include "scene/scene_paths.h"
+
+namespace photon::pbrt {
+
+namespace {
+
+bool isIdentity(const Transform& t) { return t.m == Transform().m; }
+
+// Returns how many triangles were turned over.
+size_t orient(TriangleMesh& mesh, bool reverse) {
+    size_t turned = 0;
+    if (!mesh.normals.empty()) {
+        if (reverse)
+            for (Vec3& n : mesh.normals) n = -n;
+        for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+            uint32_t* v = &mesh.indices[3 * t];
+            const Vec3 shading = mesh.normals[v[0]] + mesh.normals[v[1]] + mesh.normals[v[2]];
+            const TriangleMesh::Corners k = mesh.corners(t);
+            if (dot(cross(k.b - k.a, k.c - k.a), shading) < 0) {
+                std::swap(v[1], v[2]);
+                ++turned;
+            }
+        }
+        return turned;
+    }
+    if (reverse)
+        for (size_t t = 0; t < mesh.triangleCount(); ++t) std::swap(mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]);
+    return reverse ? mesh.triangleCount() : 0;
+}
+
+std::vector<Vec3> points(const std::vector<double>& v) {
+    std::vector<Vec3> out;
+    for (size_t i = 0; i + 2 < v.size(); i += 3) out.push_back({float(v[i]), float(v[i + 1]), float(v[i + 2])});
+    return out;
+}
+
+// The common mesh parameters: positions, normals and uvs per vertex, checked.
+TriangleMesh meshVertices(const Params& p, const Directive& d) {
+    TriangleMesh mesh;
+    const std::vector<double> P = p.numbers("P", {"point3", "point"});
+    if (P.empty() || P.size() % 3 != 0) fail(d.where, describe(d) + ": \"P\" must hold 3 numbers per vertex");
+    mesh.positions = points(P);
+    for (Vec3 q : mesh.positions)
+        if (!isFinite(q)) fail(d.where, describe(d) + ": \"P\" has a coordinate that is not finite");
+    const std::vector<double> N = p.numbers("N", {"normal", "normal3"});
+    if (!N.empty()) {
+        if (N.size() != P.size()) fail(d.where, describe(d) + ": \"N\" must have one normal per vertex of \"P\"");
+        mesh.normals = points(N);
+    }
+    std::vector<double> uv = p.numbers("uv", {"point2", "float"});
+    if (uv.empty()) uv = p.numbers("st", {"point2", "float"});
+    if (!uv.empty()) {
+        if (uv.size() != 2 * mesh.positions.size())
+            fail(d.where, describe(d) + ": \"uv\" must have one (u, v) per vertex of \"P\"");
+        for (size_t i = 0; i < uv.size(); i += 2) mesh.uvs.push_back({float(uv[i]), float(uv[i + 1])});
+    }
+    return mesh;
+}
+
+std::vector<uint32_t> meshIndices(const Params& p, const Directive& d, size_t vertices, size_t perFace) {
+    std::vector<double> raw = p.numbers("indices", {"integer"});
+    if (raw.empty() && vertices == perFace)
+        for (size_t i = 0; i < perFace; ++i) raw.push_back(double(i));
+    if (raw.empty() || raw.size() % perFace != 0)
+        fail(d.where, describe(d) + ": \"indices\" must hold " + std::to_string(perFace) + " indices per face");
+    if (raw.size() / perFace > kMaxMeshTriangles) fail(d.where, describe(d) + ": more triangles than photon's limit");
+    std::vector<uint32_t> out;
+    out.reserve(raw.size());
+    for (double i : raw) {
+        if (!(i >= 0 && i < double(vertices)))
+            fail(d.where, describe(d) + ": index " + std::to_string(int64_t(i)) + " is out of range (" +
+                              std::to_string(vertices) + " vertices)");
+        out.push_back(uint32_t(i));
+    }
+    return out;
+}
+
+// pbrt-v4's disk: radius r at height h on the z axis, facing +z, with a hole of innerradius;
+// u = phi / 2pi, v = (r - rho) / (r - ri). 256 segments: the polygon's area is 0.01% short.
+TriangleMesh diskMesh(double h, double r, double ri) {
+    constexpr int kSegments = 256;
+    TriangleMesh m;
+    for (int i = 0; i <= kSegments; ++i) {
+        const double phi = 2 * 3.14159265358979323846 * i / kSegments;
+        const float u = float(i) / kSegments;
+        m.positions.push_back({float(r * std::cos(phi)), float(r * std::sin(phi)), float(h)});
+        m.uvs.push_back({u, 0});
+        m.positions.push_back({float(ri * std::cos(phi)), float(ri * std::sin(phi)), float(h)});
+        m.uvs.push_back({u, 1});
+    }
+    for (uint32_t i = 0; i < kSegments; ++i) {
+        const uint32_t o0 = 2 * i, i0 = o0 + 1, o1 = o0 + 2, i1 = o0 + 3;
+        m.indices.insert(m.indices.end(), {o0, o1, i1});  // counter-clockwise seen from +z
+        if (ri > 0) m.indices.insert(m.indices.end(), {o0, i1, i0});
+    }
+    return m;
+}
+
+}  // namespace
+
+Json SceneBuilder::commonShapeFields(const Params& p) {
+    Json s = Json::object();
+    if (auto alpha = floatValue(p, "alpha")) {
+        if (!(alpha->is_number() && alpha->get<double>() >= 1)) s["alpha"] = *alpha;
+    }
+    if (!isIdentity(state_.ctm)) s["transform"] = matrixJson(state_.ctm);
+    if (state_.areaLight) s.update(*state_.areaLight);
+    return s;
+}
+
+void SceneBuilder::addShapeJson(Json shape, bool emissive, const Directive& d) {
+    (void)emissive;
+    (void)d;
+    if (currentObject_)
+        objects_[*currentObject_]["shapes"].push_back(std::move(shape));
+    else
+        shapes_.push_back(std::move(shape));
+}
+
+void SceneBuilder::addMeshShape(TriangleMesh mesh, const std::string& name, const Params& p, const Directive& d) {
+    Json s = {{"type", "mesh"}, {"file", name}, {"material", currentMaterial()}};
+    s.update(commonShapeFields(p));
+    out_.meshes[name] = std::move(mesh);
+    addShapeJson(std::move(s), state_.areaLight.has_value(), d);
+}
+
+std::string SceneBuilder::meshFromPly(const Params& p, const Directive& d) {
+    const std::string file = p.string("filename", "");
+    if (file.empty()) fail(d.where, "plymesh needs a \"filename\"");
+    if (auto why = checkRelativePath(file)) fail(d.where, "plymesh \"" + file + "\": " + *why);
+    const std::string key = file + (state_.reverseOrientation ? "\n" : "");
+    if (auto it = plyMeshes_.find(key); it != plyMeshes_.end()) return it->second;
+    const std::filesystem::path full = baseDir_ / file;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(full, ec) || !isInsideFolder(full, baseDir_))
+        fail(d.where, "plymesh: file not found: " + file);
+    TriangleMesh mesh;
+    try {
+        mesh = loadMeshFile(full, baseDir_);
+    } catch (const std::exception& e) {
+        fail(d.where, "plymesh \"" + file + "\": " + e.what());
+    }
+    const size_t turned = orient(mesh, state_.reverseOrientation);
+    // Unchanged, the mesh is the file itself; changed, it gets a name of its own.
+    std::string name = file;
+    if (turned > 0) name = file.substr(0, file.size() - std::filesystem::path(file).extension().string().size()) +
+                           (state_.reverseOrientation ? "-reversed.ply" : "-oriented.ply");
+    if (turned == 0) out_.meshesOnDisk.insert(name);
+    out_.meshes[name] = std::move(mesh);
+    plyMeshes_[key] = name;
+    return name;
+}
+
+void SceneBuilder::addSphere(const Params& p, const Directive& d) {
+    const double r = p.number("radius", 1);
+    if (!(r > 0)) fail(d.where, "sphere: radius must be > 0");
+    if (p.number("zmin", -r) > -r || p.number("zmax", r) < r || p.number("phimax", 360) < 360)
+        fail(d.where, "sphere: partial spheres (zmin, zmax, phimax) are not supported");
+    Json s = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", r}, {"material", currentMaterial()}};
+    if (state_.reverseOrientation) s["flip_normals"] = true;
+    s.update(commonShapeFields(p));
+    if (isIdentity(state_.ctm) || uniformScale(state_.ctm)) return addShapeJson(std::move(s), false, d);
+    // A sphere under a non-uniform scale is an ellipsoid: an instance of an object holding it.
+    if (state_.areaLight) fail(d.where, "sphere: an emissive sphere can only be scaled uniformly");
+    if (currentObject_) fail(d.where, "sphere: a sphere scaled unevenly inside ObjectBegin is not supported");
+    Json transform = s["transform"];
+    s.erase("transform");
+    const std::string object = "ellipsoid " + std::to_string(objects_.size() + 1);
+    objects_[object] = {{"shapes", Json::array({s})}};
+    shapes_.push_back({{"type", "instance"}, {"object", object}, {"transform", transform}});
+}
+
+void SceneBuilder::shape(const Directive& d) {
+    Params p(d);
+    const std::string& type = d.strings.at(0);
+    if (currentMaterial().empty()) {
+        // pbrt's "interface" material: a boundary between media, not a surface.
+        for (const Param& param : d.params) param.used = true;
+        warn(d.where, describe(d) + " has the interface material (no surface) and is left out");
+        return;
+    }
+    if (type == "trianglemesh" || type == "bilinearmesh" || type == "loopsubdiv") {
+        TriangleMesh mesh = meshVertices(p, d);
+        const size_t perFace = type == "bilinearmesh" ? 4 : 3;
+        std::vector<uint32_t> indices = meshIndices(p, d, mesh.positions.size(), perFace);
+        if (perFace == 4) {
+            // pbrt-v4's bilinear patch (p00, p10, p01, p11) as two triangles; a patch that is
+            // not planar loses its curvature.
+            for (size_t i = 0; i < indices.size(); i += 4)
+                mesh.indices.insert(mesh.indices.end(), {indices[i], indices[i + 1], indices[i + 3], indices[i],
+                                                         indices[i + 3], indices[i + 2]});
+        } else {
+            mesh.indices = std::move(indices);
+        }
+        if (type == "loopsubdiv") {
+            p.find("levels");
+            warn(d.where, "loopsubdiv: rendered as its control mesh, without subdivision");
+        }
+        if (p.has("faceIndices")) p.find("faceIndices");  // per-face material ids; one material per shape here
+        orient(mesh, state_.reverseOrientation);
+        return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
+    }
+    if (type == "plymesh") {
+        const std::string name = meshFromPly(p, d);
+        if (p.has("displacement")) warn(d.where, "plymesh: displacement is not applied");
+        p.find("displacement");
+        p.find("edgelength");
+        Json s = {{"type", "mesh"}, {"file", name}, {"material", currentMaterial()}};
+        s.update(commonShapeFields(p));
+        return addShapeJson(std::move(s), state_.areaLight.has_value(), d);
+    }
+    if (type == "sphere") return addSphere(p, d);
+    if (type == "disk") {
+        const double r = p.number("radius", 1), ri = p.number("innerradius", 0), h = p.number("height", 0);
+        if (p.number("phimax", 360) < 360) fail(d.where, "disk: a partial disk (phimax) is not supported");
+        if (!(r > 0) || !(ri >= 0 && ri < r)) fail(d.where, "disk: needs radius > innerradius >= 0");
+        TriangleMesh mesh = diskMesh(h, r, ri);
+        orient(mesh, state_.reverseOrientation);
+        return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
+    }
+    fail(d.where, "Shape \"" + type + "\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
+                                      "bilinearmesh, loopsubdiv)");
+}
+
+void SceneBuilder::objectBegin(const Directive& d) {
+    if (currentObject_) fail(d.where, "ObjectBegin inside ObjectBegin \"" + *currentObject_ + "\"");
+    const std::string& name = d.strings.at(0);
+    if (objects_.contains(name)) fail(d.where, "ObjectBegin: an object named \"" + name + "\" exists already");
+    // pbrt-v4 opens an attribute block with the object.
+    stack_.push_back(state_);
+    currentObject_ = name;
+    objectWhere_ = d.where;
+    objects_[name] = {{"shapes", Json::array()}};
+}
+
+void SceneBuilder::objectInstance(const Directive& d) {
+    if (currentObject_) fail(d.where, "ObjectInstance inside ObjectBegin is not supported (one level of instancing)");
+    const std::string& name = d.strings.at(0);
+    if (!objects_.contains(name)) fail(d.where, "ObjectInstance: no object named \"" + name + "\"");
+    if (objects_[name]["shapes"].empty()) return;  // nothing photon renders in it
+    Json instance = {{"type", "instance"}, {"object", name}};
+    if (!isIdentity(state_.ctm)) instance["transform"] = matrixJson(state_.ctm);
+    shapes_.push_back(std::move(instance));
+}
+
+}  // namespace photon::pbrt

@@ -1,0 +1,35 @@
+#include "import/scene_import.h"
+#include <algorithm>
+#include <photon/errors.h>
+#include "import/pbrt/pbrt_import.h"
+
+namespace photon {
+
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& file) {
+    std::string e = file.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return e;
+}
+
+}  // namespace
+
+SceneFormat sceneFormatOf(const std::filesystem::path& file) {
+    const std::string e = lowerExtension(file);
+    if (e == ".pbrt") return SceneFormat::Pbrt;
+    if (e == ".gltf" || e == ".glb") return SceneFormat::Gltf;
+    return SceneFormat::Json;
+}
+
+ImportedScene importSceneFile(const std::filesystem::path& file, const ImportOptions& options) {
+    switch (sceneFormatOf(file)) {
+        case SceneFormat::Pbrt: return importPbrt(file);
+        case SceneFormat::Gltf: throw SceneError("", "glTF import is not available in this build");
+        case SceneFormat::Json: break;
+    }
+    (void)options;
+    throw SceneError("", file.filename().string() + " is not a scene format photon imports (.pbrt, .gltf, .glb)");
+}
+
+}  // namespace photon
