@@ -38,7 +38,12 @@ struct Context {
 };
 
 // "/name/index", the JSON pointer to an element of a top-level array.
-inline std::string pointerTo(const char* array, int index) { return "/" + std::string(array) + "/" + std::to_string(index); }
+// Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about "/" + std::string&&.
+inline std::string pointerTo(const char* array, int index) {
+    std::string pointer = "/";
+    pointer.append(array).append("/").append(std::to_string(index));
+    return pointer;
+}
 
 // A number of an extension's object, or `fallback` when it is absent or not a number.
 double numberIn(const tinygltf::Value& object, const char* key, double fallback);
