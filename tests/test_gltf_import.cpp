@@ -416,6 +416,50 @@ TEST(GltfImport, Errors) {
     EXPECT_EQ(errorOf([&] { import(badIndex); }), "scene.gltf: /accessors/1: index 2 (7) is not below POSITION's 3 vertices");
 }
 
+TEST(GltfImport, SparseAccessorAndTriangleStrip) {
+    Gltf g = lit();
+    const int mesh = g.mesh(kTriangle, {0, 1, 2});
+    // Vertex 2 replaced by (0, 3, 0) (sec. 3.6.2.3).
+    const int at = g.view(std::string("\x02\x00", 2));
+    const std::vector<float> moved = {0, 3, 0};
+    const int values = g.view(std::string(reinterpret_cast<const char*>(moved.data()), 12));
+    g.doc["accessors"][0]["sparse"] = {{"count", 1},
+                                       {"indices", {{"bufferView", at}, {"componentType", 5123}}},
+                                       {"values", {{"bufferView", values}}}};
+    g.node({{"mesh", mesh}});
+    // A strip of four vertices without indices: triangles (0, 1, 2) and (1, 3, 2).
+    const std::vector<float> strip = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+    Json primitive = {{"attributes", {{"POSITION", g.accessor(strip, "VEC3", 5126, 4)}}}, {"mode", 5}};
+    g.doc["meshes"].push_back({{"primitives", Json::array({primitive})}});
+    g.node({{"mesh", 1}});
+    const SceneDescription d = load(import(g));
+    expectNear(d.shapes[0].mesh.positions[2], {0, 3, 0});
+    EXPECT_EQ(d.shapes[1].mesh.indices, std::vector<uint32_t>({0, 1, 2, 1, 3, 2}));
+}
+
+TEST(GltfImport, TextureTransformKeepsTheFlip) {
+    Gltf g;
+    g.camera();
+    const int texture = g.image(redOverGreenPng());
+    g = emissiveSquare(texture, g);
+    // glTF reads t = 0.5 v + 0.5: the image's lower half (green) over the whole square.
+    g.doc["materials"][0]["emissiveTexture"]["extensions"] = {
+        {"KHR_texture_transform", {{"scale", {1, 0.5}}, {"offset", {0, 0.5}}}}};
+    const ImportedScene s = import(g);
+    EXPECT_EQ(s.document["shapes"][0]["emission"]["uv_scale"], Json({1.0, 0.5}));
+    EXPECT_EQ(s.document["shapes"][0]["emission"]["uv_offset"], Json({0.0, 0.0}));
+    expectNear(emissionAt(load(s), 0.5f, 0.5f), {0, 1, 0});
+}
+
+TEST(GltfImport, ImageUriMustStayInsideTheFolder) {
+    Gltf g = lit();
+    g.doc["images"].push_back({{"uri", "../outside.png"}});
+    g.doc["textures"].push_back({{"source", 0}});
+    const int m = g.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    g.node({{"mesh", g.mesh(kSquare, kSquareIndices, m, kSquareUvs)}});
+    EXPECT_EQ(errorOf([&] { import(g); }), "scene.gltf: /images/0/uri: must be a relative path inside the glTF's folder");
+}
+
 // An emissive quad over a diffuse floor, imported and written by hand: the same triangles,
 // materials and camera, so SPPM's image is the same to the bit.
 TEST(GltfImport, RenderMatchesTheSameSceneWrittenByHand) {
