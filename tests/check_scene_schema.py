@@ -27,9 +27,12 @@ VALID = {
         "gloss": {"type": "plastic", "albedo": [0.1, 0.2, 0.6], "ior": 1.5, "roughness": 0.05},
         "varnish": {"type": "coated_diffuse", "albedo": [0.6, 0.3, 0.1], "ior": 1.5, "roughness": 0.1},
         "paper": {"type": "diffuse_transmission", "reflectance": [0.4, 0.4, 0.4], "transmittance": [0.5, 0.5, 0.45]},
+        "packed": {"type": "conductor", "reflectance": [0.9, 0.9, 0.9],
+                   "roughness": {"texture": "textures/orm.png", "channel": "g"}},
     },
     "shapes": [
-        {"type": "quad", "origin": [-1, 0, -1], "edge_u": [2, 0, 0], "edge_v": [0, 0, 2], "material": "white"},
+        {"type": "quad", "origin": [-1, 0, -1], "edge_u": [2, 0, 0], "edge_v": [0, 0, 2], "material": "white",
+         "alpha": {"texture": "textures/leaf.png", "channel": "a"}, "alpha_cutoff": 0.5},
         {"type": "sphere", "center": [0.4, 0.3, 0.2], "radius": 0.3, "material": "glass",
          "flip_normals": False},
         {"type": "mesh", "file": "meshes/bunny.obj", "material": "white",
@@ -129,6 +132,9 @@ INVALID = [
     ("eta without k", set_path("materials", "metal", {"type": "conductor", "eta": [0.2, 0.9, 1.1]})),
     ("unknown named spectrum", set_path("materials", "metal", {"type": "conductor", "eta": "metal-Fe-eta",
                                                                 "k": [1, 1, 1]})),
+    ("unknown image channel", set_path("materials", "packed", "roughness", "channel", "x")),
+    ("alpha_cutoff 0", set_path("shapes", 0, "alpha_cutoff", 0)),
+    ("alpha_cutoff above 1", set_path("shapes", 0, "alpha_cutoff", 1.5)),
     ("remap_roughness not a boolean", set_path("materials", "metal", {"type": "conductor", "metal": "Au",
                                                                        "remap_roughness": 1})),
 ]

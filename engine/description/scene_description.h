@@ -80,6 +80,9 @@ struct ShapeDescription {
     // Coverage: where it is below 1 the surface lets that share of every ray through
     // (leaves, fences); 1 everywhere is an ordinary surface.
     FloatParam alpha{1.0f};
+    // Above 0, `alpha` is a mask instead (glTF's alphaMode MASK): where it is at least this
+    // cutoff the surface is opaque, elsewhere fully transparent.
+    float alphaCutoff = 0;
     std::string name;         // for messages: the JSON path it came from
 
     float surfaceArea() const {

@@ -32,6 +32,10 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
             uv = shape.mesh.uvAt(primitive, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
         }
         const float a = shape.alpha.eval(uv);
+        if (shape.alphaCutoff > 0) {  // a mask: no randomness
+            if (a < shape.alphaCutoff) args->valid[i] = 0;
+            continue;
+        }
         if (a >= 1) continue;
         if (a <= 0 || threshold(args->ray, n, i, primitive) >= a) args->valid[i] = 0;
     }
@@ -39,7 +43,9 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
 
 }  // namespace
 
-bool hasCutout(const ShapeDescription& shape) { return shape.alpha.textured() || shape.alpha.value < 1; }
+bool hasCutout(const ShapeDescription& shape) {
+    return shape.alpha.textured() || shape.alpha.value < (shape.alphaCutoff > 0 ? shape.alphaCutoff : 1.0f);
+}
 
 void attachAlphaCutout(RTCGeometry geometry, const ShapeDescription& shape) {
     rtcSetGeometryUserData(geometry, const_cast<ShapeDescription*>(&shape));

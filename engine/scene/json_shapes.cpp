@@ -141,6 +141,11 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
         if (!isBlack(shape.emission) && (shape.alpha.textured() || shape.alpha.value < 1))
             alpha->fail("an emissive shape cannot have an alpha below 1");
     }
+    // "alpha_cutoff": the alpha is a mask, opaque where it reaches the cutoff (glTF MASK).
+    if (auto cutoff = obj.optional("alpha_cutoff")) {
+        if (!obj.has("alpha")) cutoff->fail("needs \"alpha\"");
+        shape.alphaCutoff = cutoff->number(Range::openClosed(0, 1));
+    }
     auto transformValue = obj.optional("transform");
     std::optional<Transform> transform;
     if (transformValue) transform = readTransform(*transformValue);

@@ -25,17 +25,27 @@ UvMapping readUvMapping(JsonObject& obj) {
 
 ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& kind);
 
+// An image's "channel": "r", "g", "b" or "a" reads that one channel, as stored (data such as
+// a glTF's packed roughness and metallic); without it, what the parameter reads (`kind`).
+ImageChannels readChannels(JsonObject& obj, const ParamKind& kind) {
+    auto channel = obj.optional("channel");
+    if (!channel) return kind.channels;
+    constexpr ImageChannels kChannels[] = {ImageChannels::R, ImageChannels::G, ImageChannels::B, ImageChannels::A};
+    return kChannels[channel->choice({"r", "g", "b", "a"}, "channel")];
+}
+
+// {"texture": file} or {"type": "image", "file": file}, with a uv mapping and a channel.
+std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, LoadContext& ctx, const ParamKind& kind) {
+    const ImageChannels channels = readChannels(obj, kind);
+    auto image = loadImage(obj.required(fileKey), channels, ctx);
+    return makeUvMappedTexture(image, readUvMapping(obj));
+}
+
 std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, const ParamKind& kind) {
-    if (!obj.has("type")) {  // {"texture": "file.png"}: an image
-        auto image = loadImage(obj.required("texture"), kind.channels, ctx);
-        return makeUvMappedTexture(image, readUvMapping(obj));
-    }
+    if (!obj.has("type")) return readImage(obj, "texture", ctx, kind);  // {"texture": "file.png"}
     enum Type { Image, Checkerboard, Product, Mix };
     switch (Type(obj.required("type").choice({"image", "checkerboard", "product", "mix"}, "texture type"))) {
-        case Image: {
-            auto image = loadImage(obj.required("file"), kind.channels, ctx);
-            return makeUvMappedTexture(image, readUvMapping(obj));
-        }
+        case Image: return readImage(obj, "file", ctx, kind);
         case Checkerboard: {
             ColorParam even = readParam(obj.required("even"), ctx, kind);
             ColorParam odd = readParam(obj.required("odd"), ctx, kind);

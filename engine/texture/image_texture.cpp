@@ -68,6 +68,17 @@ std::vector<Color> toColors(const std::vector<T>& data, int channels, Decode dec
     return texels;
 }
 
+// With ImageChannels R, G, B or A, the image channel to read (-1: A of an image without
+// alpha, which reads as opaque); nothing for the other kinds.
+std::optional<int> selectedChannel(ImageChannels which, const OIIO::ImageSpec& spec) {
+    if (which == ImageChannels::A) return spec.alpha_channel;
+    const bool rgb = spec.nchannels >= 3;
+    if (which == ImageChannels::R) return 0;
+    if (which == ImageChannels::G) return rgb ? 1 : 0;
+    if (which == ImageChannels::B) return rgb ? 2 : 0;
+    return std::nullopt;
+}
+
 }  // namespace
 
 namespace {
@@ -140,7 +151,11 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
     const int channels = alpha ? 1 : (spec.nchannels >= 3 ? 3 : 1);
 
     std::vector<Color> texels;
-    if (alpha) {
+    if (auto channel = selectedChannel(which, spec)) {
+        texels = *channel < 0 ? std::vector<Color>(size_t(spec.width) * spec.height, Color(1.0f))
+                              : toColors(readPixels<float>(*in, *channel, 1, OIIO::TypeDesc::FLOAT), 1,
+                                         [](float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; });
+    } else if (alpha) {
         // Coverage is stored linearly in every format.
         texels = toColors(readPixels<float>(*in, first, 1, OIIO::TypeDesc::FLOAT), 1,
                           [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f; });

@@ -20,6 +20,14 @@ enum class ImageChannels {
     Color,  // RGB (a grey image replicated); alpha ignored
     Alpha,  // the alpha channel in all three (cutouts); an image without one reads its grey/RGB mean
     Data,   // RGB as stored, integers scaled to [0, 1] without the sRGB curve (normal maps)
+    // One channel in all three, as stored: data such as roughness or metallic packed into
+    // one image (glTF's metallicRoughnessTexture keeps them linear, glTF 2.0 sec. 3.9.2),
+    // never the sRGB curve. A grey image's grey serves for R, G and B; an image without
+    // alpha reads A as 1 (opaque).
+    R,
+    G,
+    B,
+    A,
 };
 
 class ImageTexture final : public Texture {
