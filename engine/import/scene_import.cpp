@@ -1,6 +1,7 @@
 #include "import/scene_import.h"
 #include <algorithm>
 #include <photon/errors.h>
+#include "import/gltf/gltf_import.h"
 #include "import/pbrt/pbrt_import.h"
 
 namespace photon {
@@ -25,10 +26,9 @@ SceneFormat sceneFormatOf(const std::filesystem::path& file) {
 ImportedScene importSceneFile(const std::filesystem::path& file, const ImportOptions& options) {
     switch (sceneFormatOf(file)) {
         case SceneFormat::Pbrt: return importPbrt(file);
-        case SceneFormat::Gltf: throw SceneError("", "glTF import is not available in this build");
+        case SceneFormat::Gltf: return importGltf(file, GltfImportOptions{options.camera});
         case SceneFormat::Json: break;
     }
-    (void)options;
     throw SceneError("", file.filename().string() + " is not a scene format photon imports (.pbrt, .gltf, .glb)");
 }
 

@@ -40,6 +40,12 @@ public:
         return LightSample{wi, dist, shape_.emissionAt(s.uv) * (cosLight * area_ / dist2), dist2 / (cosLight * area_)};
     }
 
+    // sampleIncident's density for the point y: 1/A by area, d^2 / (cos A) in solid angle.
+    float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const override {
+        const float cosLight = std::abs(dot(ny, wi));
+        return cosLight > 0 ? lengthSquared(y - p) / (cosLight * area_) : 0.0f;
+    }
+
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         SurfacePoint s = samplePoint(uPosition);
         Frame frame = Frame::fromNormal(s.n);

@@ -63,6 +63,9 @@ public:
     // the direction wi, for weighting it against BSDF sampling (multiple importance
     // sampling, Veach 1997 ch. 9). 0 for lights no ray can find (delta lights).
     virtual float pdfIncident(Vec3 p, Vec3 n, Vec3 wi) const { return 0; }
+    // Area lights: the same for the direction wi from p whose ray first meets the light at
+    // y, where its geometric normal is ny. 0 for lights no ray can find.
+    virtual float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const { return 0; }
     // For projection maps (projection_map.h): where photons leave from, and how much power
     // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
     // world direction w; for parallel kinds: the power per unit area crossing the emission

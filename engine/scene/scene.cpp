@@ -91,8 +91,13 @@ void Scene::buildLights() {
     Vec3 c = (boundsMin_ + boundsMax_) * 0.5f;
     float r = std::max(length(boundsMax_ - c), 1e-3f);
     SceneSphere sphere{c, r};
-    for (const ShapeDescription& s : shapes_) {
+    // Emitters are world shapes (an object's are copied into the world per instance); the
+    // sampler keeps the lights' order, so a light's index there is its index here.
+    lightOfShape_.assign(slots_.size(), -1);
+    for (uint32_t i = 0; i < shapes_.size(); ++i) {
+        const ShapeDescription& s = shapes_[i];
         if (isBlack(s.emission)) continue;
+        lightOfShape_[i] = int32_t(ownedLights_.size());
         ownedLights_.push_back(s.kind == ShapeDescription::Kind::Sphere ? makeSphereAreaLight(s)
                                                                         : makeMeshAreaLight(s));
     }
@@ -112,6 +117,7 @@ void Scene::buildLights() {
     lightSampler_ = LightSampler(std::move(lights));
     for (size_t i = 0; i < lightSampler_.size(); ++i)
         if (&lightSampler_.light(i) == environmentLight_) environmentPickProbability_ = lightSampler_.probability(i);
+
 }
 
 void Scene::prepareHitData() {

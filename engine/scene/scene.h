@@ -133,6 +133,17 @@ public:
     // lights().pick() returns it: what a BSDF-sampled ray that leaves the scene needs to
     // weigh itself against light sampling.
     const Light* environmentLight() const { return environmentLight_; }
+    // The area light of the emitting shape a hit landed on (null if it emits nothing) and
+    // the probability lights().pick() returns it with: for weighting emission a BSDF sample
+    // found against the light sample that could have found it too.
+    struct Emitter {
+        const Light* light = nullptr;
+        float pickProbability = 0;
+    };
+    Emitter emitterAt(const SurfaceHit& hit) const {
+        const int32_t i = lightOfShape_[hit.shape];
+        return i < 0 ? Emitter{} : Emitter{&lightSampler_.light(size_t(i)), lightSampler_.probability(size_t(i))};
+    }
     float environmentPickProbability() const { return environmentPickProbability_; }
 
     const Camera& camera() const { return camera_; }
@@ -224,6 +235,7 @@ private:
     std::vector<MaterialPtr>& materials_ = description_.materials;
     std::vector<const ShapeDescription*> slots_;  // what shape() returns
     std::vector<uint32_t> materialOf_;            // by shape: its material, one load away
+    std::vector<int32_t> lightOfShape_;           // by shape: its area light's index in lightSampler_, or -1
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).
     struct Placement {

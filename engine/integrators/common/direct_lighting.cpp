@@ -24,7 +24,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     if (scene.occluded(shadow)) return Color(0.0f);
     const float pickProbability = pick.probability * sideProbability;
     const unsigned shared = lobes & next.lobes;
-    if (pick.light == scene.environmentLight() && shared && ls->pdf > 0) {
+    if (shared && ls->pdf > 0) {
         // The continuation could draw wi too: its lobes' share is weighted against it.
         const float pBsdf = next.probability * sp.material->pdf(woLocal, wiLocal, sp.inputs, next.lobes);
         const float w = powerHeuristic(pickProbability * ls->pdf, pBsdf);

@@ -7,11 +7,11 @@
 namespace photon {
 
 // The BSDF sampling a camera path goes on with after the light sample at a vertex: with
-// `probability` it samples its next direction from `lobes`. Environment light that both can
-// find (through those lobes) is shared between them by the power heuristic (Veach 1997,
-// ch. 9); the path then counts the environment its next ray reaches with the matching
-// weight (traceCameraRay with a BounceSampling, shading.h). No continuation (lobes 0): the
-// light sample counts in full, as for every light other than the environment.
+// `probability` it samples its next direction from `lobes`. Light that both can find (an
+// area light's or the environment's, through those lobes) is shared between them by the
+// power heuristic (Veach 1997, ch. 9); the path then counts the light its next ray reaches
+// with the matching weight (traceCameraRay with a BounceSampling, shading.h). No
+// continuation (lobes 0): the light sample counts in full, as for delta lights always.
 struct BsdfContinuation {
     unsigned lobes = 0;
     float probability = 0;

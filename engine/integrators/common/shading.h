@@ -88,10 +88,18 @@ inline float environmentBounceWeight(const Scene& scene, const BounceSampling& b
     return powerHeuristic(bounce.pdf, pLight);
 }
 
+// The same for emission from the area light e where the ray from `bounce` lands (hit).
+inline float areaLightBounceWeight(const BounceSampling& bounce, const Scene::Emitter& e, const SurfaceHit& hit, Vec3 d) {
+    const float pLight = bounce.sideProbability * e.pickProbability * e.light->pdfIncidentFrom(bounce.p, hit.p, hit.ng, d);
+    return powerHeuristic(bounce.pdf, pLight);
+}
+
 // traceCameraRay for integrators that sample lights at every non-delta vertex with
-// sampleDirectLight's BSDF continuation (direct_lighting.h): emission where the ray lands
-// counts after delta bounces only (area lights are found by light samples alone), the
-// environment after every bounce, weighted against its light samples.
+// sampleDirectLight's BSDF continuation (direct_lighting.h): light the ray finds (emission
+// where it lands, the environment where it leaves) counts in full after delta bounces and
+// otherwise weighted against the light sample that could have found it too, so that a
+// small bright light in a sharp highlight comes from BSDF samples and a large dim one from
+// light samples (Veach 1997, ch. 9).
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
                            SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
@@ -99,7 +107,12 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const
             L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
         return false;
     }
-    if (bounce.delta) L += beta * scene.emitted(hit, -ray.d);
+    if (bounce.delta) {
+        L += beta * scene.emitted(hit, -ray.d);
+    } else if (Scene::Emitter e = scene.emitterAt(hit); e.light) {
+        const Color Le = scene.emitted(hit, -ray.d);
+        if (!isBlack(Le)) L += beta * Le * areaLightBounceWeight(bounce, e, hit, ray.d);
+    }
     return true;
 }
 
