@@ -48,7 +48,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
               test_projection_map test_radiosity test_radix_sort test_renderer test_sampling test_scene_hits
               test_scene_loader test_scene_loader_errors test_spot_light_profile test_sppm_determinism
               test_sppm_radius test_textured_albedo test_thin_lens test_textures test_mix_material
-              test_alpha_cutout test_instancing test_bitterli_scenes test_pbrt_import test_normal_map test_piecewise_constant test_environment_map
+              test_alpha_cutout test_instancing test_bitterli_scenes test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_area_light_kinds test_conductor test_rough_dielectric test_coated_diffuse
               test_diffuse_transmission test_texture_channels test_gltf_import)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head)
@@ -91,7 +91,7 @@ launcher=()
 san="$root/build-sanitize"
 san_build() {
     CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$san" "${cmake_args[@]}" -DPHOTON_FUZZ=ON > /dev/null
-    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint photon-server photon-render \
+    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt photon-server photon-render \
         "${engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
 }
 # fuzz_run TARGET CORPUS: new inputs go to build-sanitize/corpus (the seeds stay as they are).
@@ -124,6 +124,8 @@ san_tests() {
 step "asan+ubsan: build" san_build
 step "fuzz: fuzz_scene ${fuzz_seconds}s" fuzz_run fuzz_scene scene
 step "fuzz: fuzz_obj ${fuzz_seconds}s" fuzz_run fuzz_obj obj
+step "fuzz: fuzz_ply ${fuzz_seconds}s" fuzz_run fuzz_ply ply
+step "fuzz: fuzz_pbrt ${fuzz_seconds}s" fuzz_run fuzz_pbrt pbrt
 step "fuzz: fuzz_http ${fuzz_seconds}s" fuzz_run fuzz_http http
 step "fuzz: fuzz_checkpoint ${fuzz_seconds}s" fuzz_run fuzz_checkpoint checkpoint
 step "asan+ubsan: tests" san_tests

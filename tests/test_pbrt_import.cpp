@@ -1,0 +1,282 @@
+// The pbrt-v4 importer: pbrt's conventions (transform order, the camera's left-handed
+// space and fov on the shorter axis, orientation from normals and ReverseOrientation) and
+// each directive's mapping onto photon's scene, against values worked out by hand; errors
+// and warnings with their file:line; and photon-convert's JSON rendering the same image as
+// the file it came from.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <cmath>
+#include <fstream>
+#include <photon/errors.h>
+#include <photon/render.h>
+#include <photon/scene_convert.h>
+#include "import/pbrt/pbrt_import.h"
+#include "scene/ply_mesh.h"
+#include "scene/scene.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+fs::path scratch() {
+    static const fs::path dir = [] {
+        fs::path d = fs::temp_directory_path() / ("photon-pbrt-import-" + std::to_string(getpid()));
+        fs::remove_all(d);
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+fs::path writeScene(const std::string& name, const std::string& text) {
+    const fs::path file = scratch() / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << text;
+    return file;
+}
+
+// A camera looking down -z from (0, 1, 5) with a 2:1 film, an area light, a floor.
+const std::string kHeader = R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+Film "rgb" "integer xresolution" [64] "integer yresolution" [32] "string filename" "x.exr"
+Sampler "halton" "integer pixelsamples" [4]
+WorldBegin
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [4 4 4]
+  Shape "trianglemesh" "point3 P" [-0.5 2 -0.5  0.5 2 -0.5  0.5 2 0.5  -0.5 2 0.5] "integer indices" [0 1 2 0 2 3]
+AttributeEnd
+Shape "trianglemesh" "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5] "integer indices" [0 2 1 0 3 2]
+)";
+
+ImportedScene import(const std::string& body, const std::string& name = "scene.pbrt") {
+    return importPbrt(writeScene(name, kHeader + body));
+}
+
+SceneError importError(const std::string& text) {
+    try {
+        importPbrt(writeScene("bad.pbrt", text));
+    } catch (const SceneError& e) {
+        return e;
+    }
+    ADD_FAILURE() << "imported without error";
+    return SceneError("?", "?");
+}
+
+Vec3 vec(const Json& j) { return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()}; }
+
+TEST(PbrtImport, CameraFromLookAtIsLeftHandedWithFovOnTheShorterAxis) {
+    const Json cam = import("").document["camera"];
+    EXPECT_VEC3_NEAR(vec(cam["position"]), Vec3(0, 1, 5), 1e-5f);
+    EXPECT_VEC3_NEAR(vec(cam["look_at"]) - vec(cam["position"]), Vec3(0, 0, -1), 1e-5f);
+    EXPECT_VEC3_NEAR(vec(cam["up"]), Vec3(0, 1, 0), 1e-5f);
+    EXPECT_NEAR(cam["fov"].get<double>(), 30, 1e-4);  // landscape: the shorter axis is the vertical one
+    EXPECT_EQ(cam["resolution"], Json::parse("[64, 32]"));
+    // pbrt's LookAt puts the image's right at up x forward: -x here, mirrored from photon's.
+    EXPECT_EQ(cam["handedness"], "left");
+    // A portrait film: the fov is the horizontal one, so the vertical is wider.
+    const Json portrait = importPbrt(writeScene("portrait.pbrt", R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+Film "rgb" "integer xresolution" [50] "integer yresolution" [100]
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere")")).document["camera"];
+    EXPECT_NEAR(portrait["fov"].get<double>(), 2 * std::atan(2 * std::tan(15 * kPi / 180)) * 180 / kPi, 1e-4);
+}
+
+TEST(PbrtImport, CameraSeesTheImageTheRightWayRound) {
+    // A red quad on the left of the view (x < 0 in a world whose camera x axis is -x ...)
+    // pbrt: with this LookAt, world +x is the image's left. The red quad at x = +1 must
+    // therefore show in the left half of the image.
+    ImportedScene s = importPbrt(writeScene("sides.pbrt", R"(
+LookAt 0 0 5  0 0 0  0 1 0
+Camera "perspective" "float fov" [40]
+Film "rgb" "integer xresolution" [16] "integer yresolution" [16]
+WorldBegin
+LightSource "distant" "point3 from" [0 0 1] "point3 to" [0 0 0] "rgb L" [3 3 3]
+Material "diffuse" "rgb reflectance" [0.8 0 0]
+Shape "trianglemesh" "point3 P" [0.2 -1 0  1.5 -1 0  1.5 1 0  0.2 1 0] "integer indices" [0 1 2 0 2 3])"));
+    SceneDescription d = loadImportedScene(s, scratch(), {{"render.integrator", "path"}, {"render.passes", "4"}});
+    Image image = test::renderImage(std::move(d));
+    EXPECT_GT(test::meanOver(image, 0, 0, 8, 16).x, 0.1f);
+    EXPECT_EQ(test::meanOver(image, 8, 0, 16, 16).x, 0.0f);
+}
+
+TEST(PbrtImport, TransformsComposeInPbrtsOrder) {
+    // Translate then Scale: the scale applies first (pbrt post-multiplies the CTM).
+    ImportedScene s = import(R"(
+AttributeBegin
+  Translate 1 2 3
+  Scale 2 2 2
+  Shape "trianglemesh" "point3 P" [0 0 0  1 0 0  0 1 0]
+AttributeEnd
+AttributeBegin
+  Transform [0 1 0 0  -1 0 0 0  0 0 1 0  5 0 0 1]
+  Shape "trianglemesh" "point3 P" [0 0 0  1 0 0  0 1 0]
+AttributeEnd)");
+    SceneDescription d = loadImportedScene(s, scratch());
+    const TriangleMesh& a = d.shapes[2].mesh;
+    EXPECT_VEC3_NEAR(a.positions[1], Vec3(3, 2, 3), 1e-5f);  // 2 * (1, 0, 0) + (1, 2, 3)
+    const TriangleMesh& b = d.shapes[3].mesh;
+    // Columns (0 1 0), (-1 0 0), (0 0 1), translation (5 0 0): x maps to +y.
+    EXPECT_VEC3_NEAR(b.positions[1], Vec3(5, 1, 0), 1e-5f);
+    EXPECT_VEC3_NEAR(b.positions[2], Vec3(4, 0, 0), 1e-5f);
+}
+
+TEST(PbrtImport, OrientationFollowsNormalsAndReverseOrientation) {
+    // Wound to face -y, with normals +y: pbrt's surface faces the normals' side.
+    ImportedScene s = import(R"(
+Shape "trianglemesh" "point3 P" [0 1 0  1 1 0  0 1 1] "normal N" [0 1 0  0 1 0  0 1 0]
+Shape "trianglemesh" "point3 P" [0 1 0  1 1 0  0 1 1]
+ReverseOrientation
+Shape "trianglemesh" "point3 P" [0 1 0  1 1 0  0 1 1])");
+    SceneDescription d = loadImportedScene(s, scratch());
+    EXPECT_VEC3_NEAR(d.shapes[2].mesh.faceNormal(0), Vec3(0, 1, 0), 1e-6f);
+    const Vec3 plain = d.shapes[3].mesh.faceNormal(0), reversed = d.shapes[4].mesh.faceNormal(0);
+    EXPECT_VEC3_NEAR(plain, Vec3(0, -1, 0), 1e-6f);  // (1,0,0) x (0,0,1) = (0,-1,0)
+    EXPECT_VEC3_NEAR(reversed, Vec3(0, 1, 0), 1e-6f);
+}
+
+TEST(PbrtImport, MaterialsMapOntoPhotons) {
+    const Json m = import(R"(
+MakeNamedMaterial "gold" "string type" "conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"
+  "float roughness" [0.04]
+MakeNamedMaterial "plastic" "string type" "coateddiffuse" "rgb reflectance" [0.2 0.3 0.4]
+  "float roughness" [0.01] "bool remaproughness" false
+MakeNamedMaterial "glass" "string type" "dielectric" "spectrum eta" "glass-BK7"
+MakeNamedMaterial "pane" "string type" "thindielectric" "float eta" [1.4]
+MakeNamedMaterial "sheet" "string type" "diffusetransmission" "rgb transmittance" [0.5 0.5 0.5] "float scale" [0.5]
+MakeNamedMaterial "both" "string type" "mix" "string materials" ["gold" "plastic"] "float amount" [0.25]
+)").document["materials"];
+    EXPECT_EQ(m["gold"], Json::parse(R"({"type": "conductor", "eta": "metal-Au-eta", "k": "metal-Au-k",
+        "uroughness": 0.04, "vroughness": 0.04, "remap_roughness": true})"));
+    // alpha = 0.01 (no remap); photon's perceptual roughness is sqrt(alpha).
+    EXPECT_EQ(m["plastic"]["type"], "coated_diffuse");
+    EXPECT_NEAR(m["plastic"]["roughness"].get<double>(), 0.1, 1e-9);
+    EXPECT_NEAR(m["plastic"]["ior"].get<double>(), 1.5, 1e-9);
+    EXPECT_NEAR(m["glass"]["ior"].get<double>(), 1.5168, 1e-4);
+    EXPECT_EQ(m["pane"]["thin"], true);
+    EXPECT_NEAR(m["sheet"]["transmittance"][0].get<double>(), 0.25, 1e-6);
+    EXPECT_NEAR(m["sheet"]["reflectance"][0].get<double>(), 0.125, 1e-6);
+    EXPECT_EQ(m["both"], Json::parse(R"({"type": "mix", "materials": ["gold", "plastic"], "amount": 0.25})"));
+}
+
+TEST(PbrtImport, LightsMapOntoPhotons) {
+    const Json doc = import(R"(
+LightSource "point" "point3 from" [1 2 3] "rgb I" [2 2 2] "float scale" [3]
+LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "float coneangle" [40] "float conedelta" [10] "blackbody I" [6500]
+AttributeBegin
+  Translate 0 0 1
+  LightSource "distant" "point3 from" [0 1 0] "point3 to" [0 0 0] "rgb L" [5 5 5]
+AttributeEnd
+LightSource "infinite" "rgb L" [0.1 0.2 0.3]
+)").document;
+    const Json& l = doc["lights"];
+    EXPECT_VEC3_NEAR(vec(l[0]["position"]), Vec3(1, 2, 3), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(6), 1e-5f);
+    EXPECT_EQ(l[1]["cone_angle"], 40.0);
+    EXPECT_EQ(l[1]["falloff_angle"], 30.0);
+    EXPECT_NEAR(luminance(Color(vec(l[1]["intensity"]))), 1.0f, 1e-4f);  // blackbody: unit luminance
+    EXPECT_VEC3_NEAR(vec(l[2]["direction"]), Vec3(0, -1, 0), 1e-6f);    // a translation leaves it
+    EXPECT_VEC3_NEAR(vec(l[2]["irradiance"]), Vec3(5), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[3]["radiance"]), Vec3(0.1f, 0.2f, 0.3f), 1e-6f);
+    // The area light's quad carries the emission.
+    EXPECT_VEC3_NEAR(vec(doc["shapes"][0]["emission"]), Vec3(4), 1e-6f);
+}
+
+TEST(PbrtImport, SpheresDisksInstancesAndPly) {
+    TriangleMesh tri;
+    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    tri.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+    tri.indices = {0, 1, 2};  // wound to face -y: turned over to face the normals
+    fs::create_directories(scratch() / "models");
+    writePlyMesh(tri, scratch() / "models/tri.ply");
+    ImportedScene s = import(R"(
+AttributeBegin
+  Translate 0 1 0
+  Scale 1 2 1
+  Shape "sphere" "float radius" [0.5]
+AttributeEnd
+Shape "disk" "float radius" [2] "float height" [0.5]
+ObjectBegin "pair"
+  Shape "sphere" "float radius" [0.1]
+  Shape "plymesh" "string filename" "models/tri.ply"
+ObjectEnd
+AttributeBegin
+  Translate 3 0 0
+  ObjectInstance "pair"
+AttributeEnd
+ObjectInstance "pair"
+)");
+    SceneDescription d = loadImportedScene(s, scratch());
+    // The unevenly scaled sphere: an object placed once; the pair: two instances.
+    ASSERT_EQ(d.instances.size(), 3u);
+    EXPECT_EQ(d.objects.size(), 2u);
+    // The disk: radius 2 at z = 0.5, facing +z, its 256-gon 0.01% short of pi r^2.
+    const ShapeDescription& disk = d.shapes[2];
+    EXPECT_NEAR(disk.surfaceArea(), 4 * kPi * (1 - 1.0e-4), 4 * kPi * 1e-5);  // (N / 2 pi) sin(2 pi / N), N = 256
+    EXPECT_VEC3_NEAR(disk.mesh.faceNormal(0), Vec3(0, 0, 1), 1e-5f);
+    EXPECT_FLOAT_EQ(disk.mesh.positions[0].z, 0.5f);
+    // The PLY, oriented to its normals, is kept in memory under a name of its own.
+    const auto pair = std::find_if(d.objects.begin(), d.objects.end(), [](auto& o) { return o.name == "pair"; });
+    ASSERT_NE(pair, d.objects.end());
+    EXPECT_VEC3_NEAR(pair->shapes[1].mesh.faceNormal(0), Vec3(0, 1, 0), 1e-6f);
+    EXPECT_TRUE(s.meshes.count("models/tri-oriented.ply"));
+}
+
+TEST(PbrtImport, ErrorsNameFileAndLine) {
+    const std::string head = "Camera \"perspective\"\nWorldBegin\n";
+    EXPECT_STREQ(importError(head + "Material \"hair\"\n").what(),
+                 "bad.pbrt:3: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+                 "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n").what(),
+                 "bad.pbrt:3: participating media (MakeNamedMedium \"fog\") are not supported by photon");
+    EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(), "bad.pbrt:3: NamedMaterial \"nope\" was not defined");
+    EXPECT_STREQ(importError(head + "Shape \"sphere\" \"float zmax\" [0.5]\n").what(),
+                 "bad.pbrt:3: sphere: partial spheres (zmin, zmax, phimax) are not supported");
+    EXPECT_STREQ(importError(head + "Shape \"curve\"\n").what(),
+                 "bad.pbrt:3: Shape \"curve\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
+                 "bilinearmesh, loopsubdiv)");
+    EXPECT_STREQ(importError(head + "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]\n").what(),
+                 "bad.pbrt:3: Shape \"trianglemesh\": index 5 is out of range (3 vertices)");
+    EXPECT_STREQ(importError("WorldBegin\nShape \"sphere\"\n").what(), "the pbrt scene has no Camera");
+    EXPECT_STREQ(importError(head + "Shape \"sphere\" \"float radius\" [1 2]\n").what(),
+                 "bad.pbrt:3: Shape \"sphere\": parameter \"radius\" needs 1 value, not 2");
+    // The parser's own errors keep their location.
+    EXPECT_EQ(importError(head + "Shape \"sphere\" \"float radius\" [1\n").path(), "bad.pbrt:3");
+}
+
+TEST(PbrtImport, WhatIsLeftOutIsWarned) {
+    const ImportedScene s = import(R"(
+Shape "trianglemesh" "point3 P" [0 0 0 1 0 0 0 1 0] "vector3 S" [1 0 0 1 0 0 1 0 0]
+)");
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_EQ(s.warnings.back(), "scene.pbrt:13: Shape \"trianglemesh\": parameter \"S\" (vector3) ignored");
+}
+
+// photon-convert's JSON (meshes as PLY files beside it) renders the image the .pbrt does,
+// bit for bit: import and conversion make one scene.
+TEST(PbrtImport, ConvertedJsonRendersTheSameImage) {
+    const fs::path pbrt = writeScene("convert/scene.pbrt", kHeader + R"(
+Material "coateddiffuse" "rgb reflectance" [0.7 0.3 0.2] "float roughness" [0.05]
+Shape "sphere" "float radius" [0.4]
+Shape "disk" "float radius" [0.3] "float height" [1.2]
+)");
+    const fs::path json = scratch() / "converted" / "scene.json";
+    ConversionReport report = convertScene(pbrt, json);
+    EXPECT_EQ(report.written.size(), 3u);  // the light's quad, the floor, the disk
+    const std::vector<SettingOverride> settings = {{"render.passes", "3"}, {"render.photons_per_pass", "20000"}};
+    Image fromPbrt = test::renderImage(SceneFile::read(pbrt, settings).description());
+    Image fromJson = test::renderImage(SceneFile::read(json, settings).description());
+    ASSERT_EQ(fromPbrt.rgb.size(), fromJson.rgb.size());
+    for (size_t i = 0; i < fromPbrt.rgb.size(); ++i) ASSERT_EQ(fromPbrt.rgb[i], fromJson.rgb[i]) << i;
+    EXPECT_GT(luminance(test::meanOver(fromPbrt, 0, 0, fromPbrt.width, fromPbrt.height)), 0.01f);
+}
+
+}  // namespace
+}  // namespace photon
