@@ -1,4 +1,5 @@
-// Reads triangle meshes from files (OBJ, PLY, glTF 2.0 and whatever else Assimp knows).
+// Reads triangle meshes from files: PLY with photon's own reader (ply_mesh.h), OBJ, glTF 2.0
+// and whatever else Assimp knows with Assimp.
 #pragma once
 #include <cstddef>
 #include <filesystem>
