@@ -2,7 +2,7 @@
 #pragma once
 #include <filesystem>
 #include <photon/scene_file.h>
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon {
 

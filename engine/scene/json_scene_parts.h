@@ -17,7 +17,7 @@
 #include "texture/image_texture.h"
 #include "scene/json_reader.h"
 #include "description/scene_description.h"
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon::scene_json {
 

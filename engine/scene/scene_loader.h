@@ -5,7 +5,7 @@
 #include <photon/errors.h>
 #include <photon/scene_file.h>
 #include "description/scene_description.h"
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon {
 
@@ -15,7 +15,7 @@ namespace photon {
 SceneDescription loadSceneJson(const std::string& text, const std::filesystem::path& baseDir,
                                const std::vector<SettingOverride>& overrides = {});
 SceneDescription loadSceneFile(const std::filesystem::path& file, const std::vector<SettingOverride>& overrides = {});
-// A scene an importer made (import/imported_scene.h): its document read as JSON, its
+// A scene an importer made (description/imported_scene.h): its document read as JSON, its
 // in-memory meshes and files found by the names the document gives them.
 SceneDescription loadImportedScene(const ImportedScene& imported, const std::filesystem::path& baseDir,
                                    const std::vector<SettingOverride>& overrides = {});

@@ -5,7 +5,7 @@
 #include <string>
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon::gltf {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon {
 

@@ -9,7 +9,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 #include <photon/errors.h>
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 #include "import/pbrt/pbrt_params.h"
 #include "import/pbrt/pbrt_parser.h"
 #include "math/transform.h"

@@ -2,7 +2,7 @@
 // lists what maps onto what, what is approximated and what is refused.
 #pragma once
 #include <filesystem>
-#include "import/imported_scene.h"
+#include "description/imported_scene.h"
 
 namespace photon {
 
