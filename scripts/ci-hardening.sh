@@ -48,7 +48,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
               test_projection_map test_radiosity test_radix_sort test_renderer test_sampling test_scene_hits
               test_scene_loader test_scene_loader_errors test_spot_light_profile test_sppm_determinism
               test_sppm_radius test_textured_albedo test_thin_lens test_textures test_mix_material
-              test_alpha_cutout test_instancing test_bitterli_scenes test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
+              test_alpha_cutout test_instancing test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_area_light_kinds test_conductor test_rough_dielectric test_coated_diffuse
               test_diffuse_transmission test_texture_channels test_gltf_import)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head)

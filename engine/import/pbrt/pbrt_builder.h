@@ -24,7 +24,6 @@ struct GraphicsState {
     bool reverseOrientation = false;
     std::string material;            // the photon material's name; empty: pbrt's default
     std::optional<Json> areaLight;   // emission fields for the shapes that follow
-    Location areaLightWhere;
 };
 
 class SceneBuilder {
@@ -59,7 +58,7 @@ private:
     void shape(const Directive& d);
     void addMeshShape(TriangleMesh mesh, const std::string& name, const Params& p, const Directive& d);
     void addSphere(const Params& p, const Directive& d);
-    void addShapeJson(Json shape, bool emissive, const Directive& d);
+    void addShapeJson(Json shape);  // to the world, or to the object being defined
     Json commonShapeFields(const Params& p);
     std::string meshFromPly(const Params& p, const Directive& d);
     // pbrt_lights.cpp
@@ -84,7 +83,6 @@ private:
     std::map<std::string, Json> floatTextures_, spectrumTextures_;
     std::map<std::string, std::string> namedMaterials_;  // pbrt name -> photon name
     std::optional<std::string> currentObject_;  // inside ObjectBegin
-    Location objectWhere_;
     std::map<std::string, std::string> plyMeshes_;  // (file, reversed) key -> mesh name
     int meshCount_ = 0, materialCount_ = 0;
 

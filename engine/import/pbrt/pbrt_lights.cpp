@@ -109,7 +109,6 @@ void SceneBuilder::areaLightSource(const Directive& d) {
     if (p.boolean("twosided", false)) e["two_sided"] = true;
     if (auto power = p.number("power")) e["emission_power"] = *power;
     state_.areaLight = e;
-    state_.areaLightWhere = d.where;
 }
 
 }  // namespace photon::pbrt

@@ -119,9 +119,7 @@ Json SceneBuilder::commonShapeFields(const Params& p) {
     return s;
 }
 
-void SceneBuilder::addShapeJson(Json shape, bool emissive, const Directive& d) {
-    (void)emissive;
-    (void)d;
+void SceneBuilder::addShapeJson(Json shape) {
     if (currentObject_)
         objects_[*currentObject_]["shapes"].push_back(std::move(shape));
     else
@@ -132,7 +130,7 @@ void SceneBuilder::addMeshShape(TriangleMesh mesh, const std::string& name, cons
     Json s = {{"type", "mesh"}, {"file", name}, {"material", currentMaterial()}};
     s.update(commonShapeFields(p));
     out_.meshes[name] = std::move(mesh);
-    addShapeJson(std::move(s), state_.areaLight.has_value(), d);
+    addShapeJson(std::move(s));
 }
 
 std::string SceneBuilder::meshFromPly(const Params& p, const Directive& d) {
@@ -170,7 +168,7 @@ void SceneBuilder::addSphere(const Params& p, const Directive& d) {
     Json s = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", r}, {"material", currentMaterial()}};
     if (state_.reverseOrientation) s["flip_normals"] = true;
     s.update(commonShapeFields(p));
-    if (isIdentity(state_.ctm) || uniformScale(state_.ctm)) return addShapeJson(std::move(s), false, d);
+    if (isIdentity(state_.ctm) || uniformScale(state_.ctm)) return addShapeJson(std::move(s));
     // A sphere under a non-uniform scale is an ellipsoid: an instance of an object holding it.
     if (state_.areaLight) fail(d.where, "sphere: an emissive sphere can only be scaled uniformly");
     if (currentObject_) fail(d.where, "sphere: a sphere scaled unevenly inside ObjectBegin is not supported");
@@ -218,7 +216,7 @@ void SceneBuilder::shape(const Directive& d) {
         p.find("edgelength");
         Json s = {{"type", "mesh"}, {"file", name}, {"material", currentMaterial()}};
         s.update(commonShapeFields(p));
-        return addShapeJson(std::move(s), state_.areaLight.has_value(), d);
+        return addShapeJson(std::move(s));
     }
     if (type == "sphere") return addSphere(p, d);
     if (type == "disk") {
@@ -240,7 +238,6 @@ void SceneBuilder::objectBegin(const Directive& d) {
     // pbrt-v4 opens an attribute block with the object.
     stack_.push_back(state_);
     currentObject_ = name;
-    objectWhere_ = d.where;
     objects_[name] = {{"shapes", Json::array()}};
 }
 
