@@ -78,6 +78,7 @@ Problem problemFor(const server::ServiceError& error) {
         problem.type = std::string(kTypePrefix) + "scene-invalid";
         problem.title = "Invalid scene";
         problem.scenePath = error.scenePath();
+        problem.scenePathIsJson = error.scenePathIsJson();
     }
     return problem;
 }
@@ -121,7 +122,7 @@ std::string problemBody(const Problem& problem) {
                         {"error", problem.detail}};
     if (problem.scenePath) {
         body["path"] = *problem.scenePath;
-        body["pointer"] = jsonPointerOf(*problem.scenePath);
+        if (problem.scenePathIsJson) body["pointer"] = jsonPointerOf(*problem.scenePath);
     }
     // Replace: the message may not be valid UTF-8 (it can quote client input).
     return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -30,6 +30,7 @@ struct Problem {
     // "about:blank" (the status says it all; the title is its reason phrase).
     std::string type = "about:blank";
     std::optional<std::string> scenePath;  // the scene's JSON path, for scene errors
+    bool scenePathIsJson = true;           // false: an imported file's place, with no JSON Pointer
     std::string title;                     // empty: the status's reason phrase
 };
 

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <charconv>
 #include <climits>
+#include <filesystem>
 #include "api/guard_fields.h"
 #include "api/errors.h"
 #include "api/handlers.h"
@@ -24,6 +25,7 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
     o.passes = integerParam(req, "passes", 1, INT64_MAX);
     o.photonsPerPass = integerParam(req, "photons_per_pass", 1, INT64_MAX);
     o.seed = unsignedParam(req, "seed");
+    o.camera = stringParam(req, "camera");
     o.priority = int(integerParam(req, "priority", INT_MIN, INT_MAX).value_or(0));
     o.name = stringParam(req, "name").value_or("");
     o.labels = stringParams(req, "label");
@@ -33,6 +35,7 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
 // Query parameters first, then the form's fields; the name defaults to the scene file's.
 void addFormFields(server::SubmitOptions& options, const httplib::Request& req, const UploadFields& fields) {
     if (!req.has_param("name")) options.name = fields.name.value_or(server::nameFromSceneFile(fields.sceneFileName));
+    if (!req.has_param("camera") && fields.camera) options.camera = fields.camera;
     options.labels.insert(options.labels.end(), fields.labels.begin(), fields.labels.end());
 }
 
@@ -83,6 +86,15 @@ std::string nextPageLink(const httplib::Request& req, int64_t cursor) {
     for (const auto& [key, value] : req.params)
         if (key != "cursor" && key != "offset") query += httplib::detail::encode_query_param(key) + "=" + httplib::detail::encode_query_param(value) + "&";
     return "<" + req.path + "?" + query + "cursor=" + std::to_string(cursor) + ">; rel=\"next\"";
+}
+
+// The media type of a stored scene file, by its name (server/job_folders.h).
+std::string sceneContentType(const std::string& fileName) {
+    const std::string extension = std::filesystem::path(fileName).extension().string();
+    if (extension == ".pbrt") return "text/plain; charset=utf-8";
+    if (extension == ".gltf") return "model/gltf+json";
+    if (extension == ".glb") return "model/gltf-binary";
+    return "application/json";
 }
 
 }  // namespace
@@ -147,9 +159,10 @@ void cloneJob(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     sendJson(res, 201, toJson(result.job));
 }
 
-// GET /api/v1/jobs/{id}/scene: the scene JSON as submitted.
+// GET /api/v1/jobs/{id}/scene: the scene file as submitted, JSON or imported.
 void getScene(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
-    res.set_content(ctx.service.scene(pathId(req)), "application/json");
+    const std::string id = pathId(req);
+    res.set_content(ctx.service.scene(id), sceneContentType(ctx.service.sceneFileName(id)));
 }
 
 // POST /api/v1/jobs/{id}/pause: 200 when it paused at once (queued), 202 when a running

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include "api/errors.h"
+#include "server/job_folders.h"
 #include "server/service_limits.h"
 
 namespace photon::api {
@@ -41,9 +42,15 @@ public:
             if (part.name == "scene") {
                 if (sawScene_) throw ServiceError(ErrorKind::BadRequest, "more than one scene part");
                 sawScene_ = true;
+                std::optional<std::string> stored = server::JobFolders::sceneFileNameFor(part.filename);
+                if (!stored)
+                    throw ServiceError(ErrorKind::BadRequest, "scene part (file name \"" + part.filename +
+                                                                  "\"): expected " +
+                                                                  server::JobFolders::acceptedSceneFiles());
+                upload_.setSceneFileName(*stored);
                 target_ = Target::Scene;
                 fields_.sceneFileName = part.filename;
-            } else if (part.filename.empty() && (part.name == "name" || part.name == "label")) {
+            } else if (part.filename.empty() && (part.name == "name" || part.name == "label" || part.name == "camera")) {
                 target_ = Target::Field;
                 fieldName_ = part.name;
             } else if (!part.filename.empty()) {
@@ -51,7 +58,7 @@ public:
                 target_ = Target::Asset;
             } else {
                 throw ServiceError(ErrorKind::BadRequest, "form field \"" + part.name +
-                                                              "\" is neither the scene, a file, \"name\" nor \"label\"");
+                                                              "\" is neither the scene, a file, \"name\", \"label\" nor \"camera\"");
             }
         });
     }
@@ -99,6 +106,7 @@ private:
     void endField() {
         if (target_ != Target::Field) return;
         if (fieldName_ == "name") fields_.name = field_;
+        else if (fieldName_ == "camera") fields_.camera = field_;
         else fields_.labels.push_back(field_);
         field_.clear();
         target_ = Target::None;

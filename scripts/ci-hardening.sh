@@ -56,7 +56,7 @@ server_tests=(test_image_cache test_server_jobs test_server_errors test_server_r
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
               test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges
               test_server_framing test_server_connections test_server_listing
-              test_server_image_options)
+              test_server_image_options test_server_imports)
 
 # run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
 # from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer

@@ -22,16 +22,20 @@ enum class ErrorKind {
 
 class ServiceError : public std::runtime_error {
 public:
-    ServiceError(ErrorKind kind, const std::string& message, std::optional<std::string> scenePath = std::nullopt)
-        : std::runtime_error(message), kind_(kind), scenePath_(std::move(scenePath)) {}
+    ServiceError(ErrorKind kind, const std::string& message, std::optional<std::string> scenePath = std::nullopt,
+                 bool scenePathIsJson = true)
+        : std::runtime_error(message), kind_(kind), scenePath_(std::move(scenePath)), scenePathIsJson_(scenePathIsJson) {}
     ErrorKind kind() const { return kind_; }
-    // The JSON path of the offending scene value, for scene errors (may be empty for
-    // problems with the document as a whole).
+    // Where in the scene the error is, for scene errors: the JSON path of the offending
+    // value (may be empty for problems with the document as a whole), or for an imported
+    // file its own place ("scene.pbrt:12", "scene.gltf: /meshes/0"), not a JSON path.
     const std::optional<std::string>& scenePath() const { return scenePath_; }
+    bool scenePathIsJson() const { return scenePathIsJson_; }
 
 private:
     ErrorKind kind_;
     std::optional<std::string> scenePath_;
+    bool scenePathIsJson_;
 };
 
 }  // namespace photon::server

@@ -24,6 +24,7 @@ struct JobSettings {
     uint64_t seed = 0;
     std::string integrator;  // "sppm" or "path"
     int width = 0, height = 0;
+    std::string camera;  // the imported glTF camera asked for by name; empty: the file's first
 };
 
 struct JobProgress {

@@ -3,6 +3,8 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <fstream>
 #include <sstream>
@@ -47,9 +49,44 @@ fs::path JobFolders::imageFile(const std::string& id, ImageFormat format) const 
     return jobDir(id) / (std::string("image.") + toString(format));
 }
 
+const std::vector<std::string>& JobFolders::sceneFileNames() {
+    static const std::vector<std::string> names{"scene.json", "scene.pbrt", "scene.gltf", "scene.glb"};
+    return names;
+}
+
+std::optional<std::string> JobFolders::sceneFileNameFor(const std::string& uploaded) {
+    std::string extension = fs::path(uploaded).extension().string();
+    if (extension.empty()) return sceneFileNames().front();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    for (const std::string& name : sceneFileNames())
+        if (fs::path(name).extension() == extension) return name;
+    return std::nullopt;
+}
+
+std::string JobFolders::acceptedSceneFiles() {
+    const std::vector<std::string>& names = sceneFileNames();
+    std::string text = "a ";
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+        text += fs::path(names[i]).extension().string();
+    }
+    return text + " file";
+}
+
+fs::path JobFolders::sceneFile(const std::string& id) const {
+    const fs::path dir = jobDir(id);
+    std::error_code ec;
+    for (const std::string& name : sceneFileNames())
+        if (fs::exists(dir / name, ec)) return dir / name;
+    return dir / sceneFileNames().front();
+}
+
 bool JobFolders::isServiceFile(const std::string& name) {
-    for (const char* own : {"scene.json", "image.png", "image.exr", "checkpoint.bin", "job.log"})
-        if (name == own || name == std::string(own) + ".tmp") return true;
+    std::vector<std::string> own = sceneFileNames();
+    own.insert(own.end(), {"image.png", "image.exr", "checkpoint.bin", "job.log"});
+    for (const std::string& file : own)
+        if (name == file || name == file + ".tmp") return true;
     return false;
 }
 

@@ -1,7 +1,8 @@
 // The on-disk layout under the data directory:
 //   DIR/lock                  held (flock) by the server using DIR
 //   DIR/jobs.db               job records (JobStore)
-//   DIR/jobs/<id>/scene.json  the scene as submitted, plus its asset files
+//   DIR/jobs/<id>/scene.json  the scene as submitted (scene.pbrt, scene.gltf or scene.glb
+//                             when it was one of those: see sceneFileNameFor), plus its assets
 //   DIR/jobs/<id>/image.png   final images (and image.exr), written when the job finishes
 //   DIR/jobs/<id>/checkpoint.bin  the running render's state, while there is one
 //   DIR/jobs/<id>/job.log     what happened to the job, one timestamped line an event
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 #include "image_format.h"
 
 namespace photon::server {
@@ -25,13 +27,23 @@ public:
 
     std::filesystem::path databaseFile() const { return root_ / "jobs.db"; }
     std::filesystem::path jobDir(const std::string& id) const { return root_ / "jobs" / id; }
-    std::filesystem::path sceneFile(const std::string& id) const { return jobDir(id) / "scene.json"; }
+    // The job's scene file, whichever of sceneFileNames() its folder holds.
+    std::filesystem::path sceneFile(const std::string& id) const;
+    // The names a job's scene is stored under, one a kind of scene file the service
+    // accepts: photon's JSON, and the pbrt-v4 and glTF files the engine imports. The name
+    // keeps the uploaded file's extension, which is how the engine tells the kinds apart.
+    static const std::vector<std::string>& sceneFileNames();
+    // The name for an uploaded scene file called `uploaded` (by its extension, in any case;
+    // none or no name at all: JSON), or nullopt for an extension the service does not take.
+    static std::optional<std::string> sceneFileNameFor(const std::string& uploaded);
+    // "a .json, .pbrt, .gltf or .glb file": the kinds, for messages.
+    static std::string acceptedSceneFiles();
     // The running render's saved state (engine checkpoint bytes), while there is one.
     std::filesystem::path checkpointFile(const std::string& id) const { return jobDir(id) / "checkpoint.bin"; }
     std::filesystem::path imageFile(const std::string& id, ImageFormat format) const;
     std::filesystem::path logFile(const std::string& id) const { return jobDir(id) / "job.log"; }
     // A name (relative to a job folder, in normal form) that is one of the service's own
-    // files above, or their temporary copies ("image.png.tmp"): never an asset's.
+    // files above (any of the scene file names), or their temporary copies ("image.png.tmp"): never an asset's.
     static bool isServiceFile(const std::string& name);
 
     // A new, empty, uniquely named folder on the same file system as jobs/, so that

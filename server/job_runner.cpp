@@ -40,8 +40,7 @@ void JobRunner::run(const std::string& id) {
 
 JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     const std::string& id = started.job.id;
-    SceneFile scene = SceneFile::read(folders_.sceneFile(id));
-    applySettings(started.job.settings, scene.render());
+    SceneFile scene = readJobScene(folders_.sceneFile(id), started.job.settings);
     Renderer renderer(std::move(scene));
     resumeFromCheckpoint(id, renderer);
     int resumedAt = renderer.progress().pass;

@@ -99,13 +99,19 @@ SubmitResult JobService::submit(StagedUpload& upload, const SubmitRequest& reque
     upload.endAsset();
     checkTextureSizes(upload.dir(), limits_);
     JobRecord job;
-    AcceptedScene scene = validateScene(upload.sceneText(), upload.dir(), request.options, limits_);
+    // Stored first: an imported scene is read from its file, next to its assets.
+    const std::filesystem::path sceneFile = upload.dir() / upload.sceneFileName();
+    guardStorage("storing the scene", [&] { writeFileAtomically(sceneFile, upload.sceneText()); });
+    AcceptedScene scene = validateScene(upload.sceneText(), sceneFile, request.options, limits_);
     job.settings = scene.settings;
+    job.warnings = scene.warnings;
     // Files the scene does not name are not kept: they would only take the client's disk.
-    for (const std::string& name : upload.keepOnly(scene.files))
-        job.warnings.push_back("asset \"" + name + "\" is not used by the scene and was not stored");
+    // An importer also reads files the scene's list leaves out (included .pbrt files, PLY
+    // meshes, glTF buffers), so an imported scene keeps every file uploaded with it.
+    if (!scene.imported)
+        for (const std::string& name : upload.keepOnly(scene.files))
+            job.warnings.push_back("asset \"" + name + "\" is not used by the scene and was not stored");
     job.uploadBytes = upload.storedBytes();
-    guardStorage("storing the scene", [&] { writeFileAtomically(upload.dir() / "scene.json", upload.sceneText()); });
     job.priority = request.options.priority;
     job.name = request.options.name;
     job.labels = request.options.labels;
@@ -254,10 +260,16 @@ std::string JobService::scene(const std::string& id) const {
     return *text;
 }
 
+std::string JobService::sceneFileName(const std::string& id) const {
+    if (!table_.contains(id)) notFound(id);
+    return folders_.sceneFile(id).filename().string();
+}
+
 SubmitResult JobService::clone(const std::string& id, const SubmitOptions& overrides, const std::string& client) {
     JobRecord original = get(id);
     std::unique_ptr<StagedUpload> upload = newUpload();
     upload->sceneText() = scene(id);
+    upload->setSceneFileName(folders_.sceneFile(id).filename().string());
     // Every file of the job's folder but what rendering wrote: submit() keeps those the
     // scene names, and holds them to the asset limits like an upload.
     const std::filesystem::path folder = folders_.jobDir(id);
@@ -276,6 +288,7 @@ SubmitResult JobService::clone(const std::string& id, const SubmitOptions& overr
     if (!options.passes) options.passes = original.settings.passes;
     if (!options.photonsPerPass) options.photonsPerPass = original.settings.photonsPerPass;
     if (!options.seed) options.seed = original.settings.seed;
+    if (!options.camera && !original.settings.camera.empty()) options.camera = original.settings.camera;
     if (options.name.empty()) options.name = original.name;
     if (options.labels.empty()) options.labels = original.labels;
     SubmitResult result = submit(*upload, {options, client, std::nullopt, ""});

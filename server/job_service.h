@@ -79,8 +79,9 @@ public:
     // unset keep the original's (its name and labels too). Held to the same limits as a
     // submission.
     SubmitResult clone(const std::string& id, const SubmitOptions& overrides, const std::string& client);
-    // The scene as submitted.
+    // The scene as submitted, and the name it is stored under (JobFolders::sceneFileNames).
     std::string scene(const std::string& id) const;
+    std::string sceneFileName(const std::string& id) const;
     // The job's own log (job_log.h).
     std::string log(const std::string& id) const;
     void remove(const std::string& id);

@@ -59,12 +59,20 @@ UPDATE jobs SET updated_at = COALESCE(finished_at, started_at, created_at);
 PRAGMA user_version = 3;
 COMMIT;
 )sql";
-constexpr int64_t kSchemaVersion = 3;
+// Version 4: the camera an imported glTF scene was asked to render from (NULL: its first,
+// and every job before).
+const char* kMigrateTo4 = R"sql(
+BEGIN IMMEDIATE;
+ALTER TABLE jobs ADD COLUMN camera TEXT;
+PRAGMA user_version = 4;
+COMMIT;
+)sql";
+constexpr int64_t kSchemaVersion = 4;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client, upload_bytes, warnings, name, labels, updated_at)"
-    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16)";
+    " client, upload_bytes, warnings, name, labels, updated_at, camera)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
@@ -82,7 +90,7 @@ const char* kFindKey =
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
     " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
-    " upload_bytes, warnings, name, labels, updated_at FROM jobs ORDER BY seq";
+    " upload_bytes, warnings, name, labels, updated_at, camera FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
@@ -126,6 +134,7 @@ sql::Database& withSchema(sql::Database& db) {
                                  ") than this server knows (" + std::to_string(kSchemaVersion) + ")");
     if (version < 2) migrate(db, kMigrateTo2);
     if (version < 3) migrate(db, kMigrateTo3);
+    if (version < 4) migrate(db, kMigrateTo4);
     return db;
 }
 
@@ -173,6 +182,7 @@ JobRecord readRow(const sql::Statement& s) {
     job.name = s.text(22);
     job.labels = splitLines(s.text(23));
     job.updatedAt = s.text(24);
+    job.settings.camera = s.text(25);
     return job;
 }
 
@@ -200,7 +210,7 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bind(9, int64_t(job.settings.width)).bind(10, int64_t(job.settings.height));
         insert_.bindTextOrNull(11, job.client).bind(12, job.uploadBytes).bindTextOrNull(13, joinLines(job.warnings));
         insert_.bindTextOrNull(14, job.name).bindTextOrNull(15, joinLines(job.labels));
-        insert_.bindTextOrNull(16, job.updatedAt);
+        insert_.bindTextOrNull(16, job.updatedAt).bindTextOrNull(17, job.settings.camera);
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;

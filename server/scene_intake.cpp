@@ -1,7 +1,6 @@
 #include "scene_intake.h"
 #include <algorithm>
 #include <cstdint>
-#include <photon/scene_file.h>
 #include "errors.h"
 
 namespace photon::server {
@@ -16,13 +15,22 @@ void checkOverride(const char* name, const std::optional<int64_t>& value) {
 
 }  // namespace
 
-AcceptedScene validateScene(const std::string& sceneText, const std::filesystem::path& folder,
-                          const SubmitOptions& options, const Limits& limits) {
+AcceptedScene validateScene(const std::string& sceneText, const std::filesystem::path& sceneFile,
+                            const SubmitOptions& options, const Limits& limits) {
+    const SceneFormat format = sceneFormatOf(sceneFile);
+    const bool imported = format != SceneFormat::Json;
+    // Silently rendering another view than the one asked for would be worse than refusing.
+    if (options.camera && !options.camera->empty() && format != SceneFormat::Gltf)
+        throw ServiceError(ErrorKind::BadRequest,
+                           "camera: chooses among a glTF scene's cameras; this scene has a single camera");
     std::optional<SceneFile> scene;
     try {
-        scene = SceneFile::parseJson(sceneText, folder);
+        // JSON from its text, as ever; an import reads its file, already stored beside its assets.
+        if (imported) scene = SceneFile::read(sceneFile, {}, ImportOptions{options.camera.value_or("")});
+        else scene = SceneFile::parseJson(sceneText, sceneFile.parent_path());
     } catch (const SceneError& e) {
-        throw ServiceError(ErrorKind::BadRequest, e.what(), e.path());
+        // An imported file's place ("scene.pbrt:12") is no path into photon's JSON scene.
+        throw ServiceError(ErrorKind::BadRequest, e.what(), e.path(), !imported);
     }
     checkOverride("passes", options.passes);
     checkOverride("photons_per_pass", options.photonsPerPass);
@@ -45,7 +53,14 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     s.integrator = std::string(integratorName(render.integrator));
     s.width = scene->width();
     s.height = scene->height();
-    return {s, scene->files()};
+    s.camera = options.camera.value_or("");
+    return {s, scene->files(), imported, scene->warnings()};
+}
+
+SceneFile readJobScene(const std::filesystem::path& sceneFile, const JobSettings& settings) {
+    SceneFile scene = SceneFile::read(sceneFile, {}, ImportOptions{settings.camera});
+    applySettings(settings, scene.render());
+    return scene;
 }
 
 void applySettings(const JobSettings& settings, RenderSettings& render) {

@@ -62,7 +62,8 @@ std::optional<std::string> assetNameProblem(const std::string& name) {
     return std::nullopt;
 }
 
-StagedUpload::StagedUpload(fs::path dir, size_t maxAssetBytes) : dir_(std::move(dir)), maxAssetBytes_(maxAssetBytes) {}
+StagedUpload::StagedUpload(fs::path dir, size_t maxAssetBytes)
+    : dir_(std::move(dir)), maxAssetBytes_(maxAssetBytes), sceneFileName_(JobFolders::sceneFileNames().front()) {}
 
 StagedUpload::~StagedUpload() {
     asset_.reset();

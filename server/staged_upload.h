@@ -40,7 +40,11 @@ public:
     // Bytes of the scene and the assets kept.
     int64_t storedBytes() const;
 
+    // The scene file's bytes as received (binary for a .glb), and the name it is stored
+    // under in the job folder (JobFolders::sceneFileNameFor).
     std::string& sceneText() { return sceneText_; }
+    const std::string& sceneFileName() const { return sceneFileName_; }
+    void setSceneFileName(std::string name) { sceneFileName_ = std::move(name); }
     const std::filesystem::path& dir() const { return dir_; }
     // The folder was renamed into place: do not remove it.
     void markCommitted() { committed_ = true; }
@@ -53,6 +57,7 @@ private:
     size_t assetBytes_ = 0;
     std::map<std::string, int64_t> names_;  // assets by name in normal form: their bytes
     std::string sceneText_;
+    std::string sceneFileName_;  // JSON unless set
     bool committed_ = false;
 };
 

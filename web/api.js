@@ -190,6 +190,7 @@ export function normalizeJob(raw) {
     elapsedSeconds,
     etaSeconds: num(r.eta_seconds, r.eta),
     error: first(r.error, null),
+    warnings: Array.isArray(r.warnings) ? r.warnings.map(String) : [],
   };
 }
 
@@ -213,14 +214,17 @@ export async function getJob(id) {
 
 // sceneText: the scene JSON as text. assets: [{ file: File, path: 'meshes/x.obj' }].
 // params: { passes, photons_per_pass, seed, priority }; empty values are left out.
-export async function submitJob({ sceneText, assets = [], params = {} }) {
+// sceneFile: a scene file sent as it is (a .pbrt, .gltf or .glb the server imports) instead
+// of sceneText; its name's extension tells the server its kind.
+export async function submitJob({ sceneText, sceneFile = null, assets = [], params = {} }) {
   const url = `/jobs${query(params)}`;
-  if (assets.length === 0) {
+  if (assets.length === 0 && !sceneFile) {
     const headers = { 'Content-Type': 'application/json' };
     return normalizeJob(await requestJson('POST', url, { body: sceneText, headers }));
   }
   const form = new FormData();
-  form.append('scene', new Blob([sceneText], { type: 'application/json' }), 'scene.json');
+  if (sceneFile) form.append('scene', sceneFile, sceneFile.name);
+  else form.append('scene', new Blob([sceneText], { type: 'application/json' }), 'scene.json');
   // The part name is fixed ('scene' is reserved); the filename carries the asset's path.
   for (const { file, path } of assets) form.append('asset', file, path);
   return normalizeJob(await requestJson('POST', url, { body: form }));

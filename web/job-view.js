@@ -45,6 +45,8 @@ export function createJobView({ onChanged, onDeleted }) {
     created: $('job-created'),
     progress: $('job-progress'),
     error: $('job-error'),
+    warnings: $('job-warnings'),
+    warningList: $('job-warning-list'),
     actionError: $('job-action-error'),
     cancel: $('cancel-button'),
     remove: $('delete-button'),
@@ -59,6 +61,18 @@ export function createJobView({ onChanged, onDeleted }) {
     el.empty.hidden = false;
     el.empty.textContent = text;
     el.id.textContent = '';
+  }
+
+  // What the server accepted with a change (an import's approximations, unused files).
+  function showWarnings(warnings) {
+    el.warnings.hidden = warnings.length === 0;
+    el.warningList.replaceChildren(
+      ...warnings.map((text) => {
+        const item = document.createElement('li');
+        item.textContent = text;
+        return item;
+      }),
+    );
   }
 
   function setDownload(link, id, format, ready) {
@@ -112,6 +126,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.progress.value = progressFraction(job.passesDone, job.passes);
     el.error.hidden = !job.error;
     el.error.textContent = job.error ? `The render failed: ${job.error}` : '';
+    showWarnings(job.warnings || []);
     el.cancel.disabled = job.status !== 'queued' && job.status !== 'running';
     el.remove.disabled = !isFinished(job);
     setDownload(el.png, job.id, 'png', job.passesDone > 0);

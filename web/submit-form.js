@@ -1,4 +1,5 @@
-// The "New render" form: a scene from the bundled examples, a .json file or pasted text;
+// The "New render" form: a scene from the bundled examples, a .json file or pasted text, or
+// a .pbrt, .gltf or .glb file the server imports (sent as it is);
 // asset files with editable relative paths; optional passes, photons per pass and seed;
 // the method (render.integrator) and denoising (render.denoise), written into the scene.
 // Checks what it can before sending (JSON syntax, whole numbers) and shows every error,
@@ -36,6 +37,7 @@ export function createSubmitForm({ onSubmitted }) {
   const button = $('submit-button');
   const status = $('form-status');
   let assets = []; // { file, pathInput }
+  let importedScene = null; // a chosen .pbrt/.gltf/.glb File: sent as it is, not as the text
 
   for (const example of EXAMPLES) select.add(new Option(example.title, example.name));
 
@@ -81,18 +83,35 @@ export function createSubmitForm({ onSubmitted }) {
     });
   }
 
+  function useImported(file) {
+    importedScene = file;
+    sceneText.value = '';
+    sceneText.placeholder = file ? `${file.name} is sent as it is; the server imports it.` : '';
+  }
+
   select.addEventListener('change', () => {
     const scene = exampleScene(select.value);
     if (!scene) return;
+    useImported(null);
     sceneText.value = formatJson(scene);
     sceneFile.value = '';
     clearErrors();
+  });
+
+  sceneText.addEventListener('input', () => {
+    if (importedScene) useImported(null);
   });
 
   sceneFile.addEventListener('change', async () => {
     const file = sceneFile.files && sceneFile.files[0];
     if (!file) return;
     clearErrors();
+    if (/\.(pbrt|gltf|glb)$/i.test(file.name)) {
+      useImported(file);
+      select.value = '';
+      return;
+    }
+    useImported(null);
     try {
       sceneText.value = await file.text();
       select.value = '';
@@ -200,7 +219,8 @@ export function createSubmitForm({ onSubmitted }) {
     clearErrors();
     let text = sceneText.value;
     try {
-      text = sceneWithChoices(text);
+      // An imported file's own settings stand; the overrides below still apply.
+      if (!importedScene) text = sceneWithChoices(text);
     } catch (parseError) {
       showError('scene-error', describeJsonError(text, parseError), sceneText);
       sceneText.focus();
@@ -213,7 +233,7 @@ export function createSubmitForm({ onSubmitted }) {
     button.disabled = true;
     button.textContent = 'Submitting…';
     try {
-      const job = await submitJob({ sceneText: text, assets: files, params });
+      const job = await submitJob({ sceneText: text, sceneFile: importedScene, assets: files, params });
       status.textContent = `Submitted job ${job.id}.`;
       onSubmitted(job);
     } catch (error) {

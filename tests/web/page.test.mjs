@@ -267,6 +267,36 @@ test('a running job can be cancelled and a finished one deleted', async () => {
   assert.equal(gone.status, 404);
 });
 
+test('an imported pbrt file is sent as it is and its warnings are shown', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
+  const pbrt = [
+    'LookAt 0 1 4  0 1 0  0 1 0',
+    'Camera "perspective" "float fov" [45]',
+    'Film "rgb" "integer xresolution" [16] "integer yresolution" [16]',
+    'PixelFilter "gaussian"',
+    'WorldBegin',
+    'AreaLightSource "diffuse" "rgb L" [4 4 4]',
+    'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]',
+    '',
+  ].join('\n');
+  await page.setInputFiles('#scene-file', { name: 'room.pbrt', mimeType: 'text/plain', buffer: Buffer.from(pbrt) });
+  await page.waitForFunction(() => document.querySelector('#scene-text').placeholder.includes('room.pbrt'));
+  await page.fill('#passes', '1');
+  await page.fill('#photons-per-pass', '1000');
+  await page.click('#submit-button');
+  const id = await submittedJobId();
+  const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+  assert.equal(record.name, 'room');
+  assert.deepEqual(record.warnings, [
+    'scene.pbrt:4: PixelFilter "gaussian" ignored (photon averages each pixel\'s samples with a box filter)',
+  ]);
+  const warnings = page.locator('#job-warnings');
+  await warnings.waitFor({ state: 'visible' });
+  assert.deepEqual(await page.locator('#job-warning-list li').allTextContents(), record.warnings);
+  await waitForStatus(page, server, id, 'completed', RENDER_TIMEOUT_MS);
+  await page.fill('#passes', '');
+  await page.fill('#photons-per-pass', '');
+});
+
 test('the page raised no script errors', () => {
   assert.deepEqual(pageErrors, []);
 });

@@ -63,6 +63,7 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.progress.elapsedSeconds, expected.progress.elapsedSeconds);
     EXPECT_EQ(actual.progress.etaSeconds, expected.progress.etaSeconds);
     EXPECT_EQ(actual.error, expected.error);
+    EXPECT_EQ(actual.settings.camera, expected.settings.camera);
     EXPECT_EQ(actual.client, expected.client);
     EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
     EXPECT_EQ(actual.warnings, expected.warnings);
@@ -95,7 +96,7 @@ TEST_F(JobStoreTest, InsertReturnsSubmissionSequenceFromOne) {
 TEST_F(JobStoreTest, InsertStoresTheSubmissionFields) {
     JobRecord job = newJob("00112233aabbccdd");
     job.priority = -3;
-    job.settings = JobSettings{100000, 10'000'000'000LL, 0xFEDCBA9876543210ULL, "path", 4096, 2160};
+    job.settings = JobSettings{100000, 10'000'000'000LL, 0xFEDCBA9876543210ULL, "path", 4096, 2160, "Camera.001"};
     job.client = "2001:db8::1";
     job.uploadBytes = 5'000'000'000LL;
     job.warnings = {"asset \"a.obj\" is not used by the scene and was not stored", "second warning"};
@@ -382,13 +383,13 @@ TEST_F(JobStoreTest, RefusesADatabaseOfANewerSchemaVersion) {
     { JobStore store(dbFile()); }
     {
         sql::Database db(dbFile());
-        db.exec("PRAGMA user_version = 4");
+        db.exec("PRAGMA user_version = 5");
     }
     try {
         JobStore store(dbFile());
-        FAIL() << "opened a version 4 database";
+        FAIL() << "opened a version 5 database";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("newer version (4)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("newer version (5)"), std::string::npos) << e.what();
     }
 }
 
@@ -436,6 +437,7 @@ VALUES ('old', 'queued', 1, '2023-01-01T00:00:00.000Z', 4, 1000, 7, 'path', 64, 
     EXPECT_EQ(jobs[0].name, "");
     EXPECT_TRUE(jobs[0].labels.empty());
     EXPECT_EQ(jobs[0].updatedAt, "2023-01-01T00:00:00.000Z");  // its creation
+    EXPECT_EQ(jobs[0].settings.camera, "");  // nor versions before 4 this
 
     JobRecord fresh = newJob("new");
     EXPECT_EQ(store.insert(fresh, IdempotencyEntry{"k", "0123456789abcdef", "", 1000}), 2);
