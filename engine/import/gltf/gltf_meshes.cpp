@@ -78,7 +78,7 @@ std::optional<TriangleMesh> readPrimitive(Context& ctx, int meshIndex, int primi
         const AccessorValues uvs = readAttribute(ctx, texcoord, 2, n, pointer + "/attributes/TEXCOORD_0");
         // glTF's uv origin is the image's top-left corner (sec. 3.7.2.1), photon's the
         // bottom-left: v is flipped here, once, so that every texture reads as glTF means.
-        for (size_t i = 0; i < n; ++i) mesh.uvs.emplace_back(float(uvs.at(i, 0)), float(1.0 - uvs.at(i, 1)));
+        for (size_t i = 0; i < n; ++i) mesh.uvs.push_back({float(uvs.at(i, 0)), float(1.0 - uvs.at(i, 1))});
     }
 
     std::vector<uint32_t> vertices;
