@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include "fuzz_mesh_check.h"
 #include "fuzz_support.h"
 #include "scene/mesh_loader.h"
 
@@ -23,16 +24,6 @@ const fs::path& folder() {
     return dir;
 }
 
-void checkMesh(const photon::TriangleMesh& mesh) {
-    if (mesh.indices.size() % 3 != 0) std::abort();
-    for (uint32_t i : mesh.indices)
-        if (i >= mesh.positions.size()) std::abort();
-    for (photon::Vec3 p : mesh.positions)
-        if (!photon::isFinite(p)) std::abort();
-    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) std::abort();
-    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) std::abort();
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -42,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
     }
     try {
-        checkMesh(photon::loadMeshFile(file, folder()));
+        photon::fuzz::checkMesh(photon::loadMeshFile(file, folder()));
     } catch (const std::runtime_error&) {
     }
     return 0;

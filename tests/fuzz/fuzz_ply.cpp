@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string_view>
+#include "fuzz_mesh_check.h"
 #include "fuzz_support.h"
 #include "scene/mesh_loader.h"
 #include "scene/ply_mesh.h"
@@ -19,16 +20,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-void checkMesh(const photon::TriangleMesh& mesh) {
-    if (mesh.indices.size() % 3 != 0 || mesh.triangleCount() > photon::kMaxMeshTriangles) std::abort();
-    for (uint32_t i : mesh.indices)
-        if (i >= mesh.positions.size()) std::abort();
-    for (photon::Vec3 p : mesh.positions)
-        if (!photon::isFinite(p)) std::abort();
-    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) std::abort();
-    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) std::abort();
-}
 
 // Bit for bit, except that a NaN may come back as another NaN: values pass through double
 // on the way in, which quiets a signalling NaN.
@@ -60,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const std::runtime_error&) {
         return 0;
     }
-    checkMesh(mesh);
+    photon::fuzz::checkMesh(mesh);
     checkRoundTrip(mesh);
     return 0;
 }
