@@ -1,5 +1,5 @@
-// The conductor with a complex index of refraction and anisotropic GGX roughness: the exact
-// conductor Fresnel against closed forms, the anisotropic distribution's normalisations,
+// The conductor with a complex index of refraction and anisotropic GGX or Beckmann roughness:
+// the exact conductor Fresnel against closed forms, the anisotropic distributions' normalisations,
 // sample() against eval()/pdf() by independent quadrature, reciprocity, the white furnace,
 // the named metals and their scene-file fields, and SPPM against the path tracer on a scene
 // with rough gold.
@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 #include <vector>
+#include "materials/beckmann.h"
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/metal_table.h"
@@ -35,6 +36,12 @@ ComplexIor metal(std::string_view symbol) {
     auto ior = findMetal(symbol);
     EXPECT_TRUE(ior) << symbol;
     return ior.value_or(ComplexIor{kWhite, kWhite});
+}
+
+// A conductor of index `ior` with Beckmann alphas (ax, ay).
+MaterialPtr beckmannConductor(ComplexIor ior, float ax, float ay) {
+    return makeConductor(ComplexIorParam{ior.eta, ior.k},
+                         MicrofacetRoughness{ax, ay, RoughnessToAlpha::Identity, MicrofacetDistribution::Beckmann});
 }
 
 // ---- Fresnel ----
@@ -95,23 +102,33 @@ TEST(ConductorFresnel, GoldSilverAluminiumHaveTheirKnownColours) {
     EXPECT_VEC3_NEAR(f0("Al"), Color(0.913f, 0.921f, 0.925f), 0.03f);
 }
 
-// ---- the anisotropic GGX distribution ----
+// ---- the anisotropic GGX and Beckmann distributions ----
+
+// The microfacets' projected area is the macro surface's: int D(h) h.z dh = 1 (Heitz 2014,
+// eq. 4). The visible normals' distribution integrates to one for every wo (eq. 2 there),
+// which ties Lambda to D: int G1(wo) max(0, wo.h) D(h) / wo.z dh = 1.
+template <class Distribution>
+void expectProjectedAreaAndVisibleNormalsNormalised(float ax, float ay) {
+    Distribution d(ax, ay);
+    float a = std::min(ax, ay);
+    EXPECT_NEAR(integrateNormals(a, [&](Vec3 h) { return d.D(h) * h.z; }), 1.0, 2e-3) << ax << " " << ay;
+    for (float cosO : kCosines)
+        for (float phi : kAzimuths) {
+            Vec3 wo = direction(cosO, phi);
+            double visible = integrateNormals(a, [&](Vec3 h) { return d.G1(wo) * std::max(0.0f, dot(wo, h)) * d.D(h) / wo.z; });
+            EXPECT_NEAR(visible, 1.0, 3e-3) << ax << " " << ay << " cos " << cosO << " phi " << phi;
+        }
+}
 
 TEST(AnisotropicGgx, ProjectedAreaAndVisibleNormalsAreNormalised) {
-    for (auto [ax, ay] : {std::pair{0.05f, 0.3f}, std::pair{0.4f, 0.1f}, std::pair{0.2f, 0.2f}}) {
-        GGX ggx(ax, ay);
-        float a = std::min(ax, ay);
-        // The microfacets' projected area is the macro surface's: int D(h) h.z dh = 1 (Heitz 2014, eq. 4).
-        EXPECT_NEAR(integrateNormals(a, [&](Vec3 h) { return ggx.D(h) * h.z; }), 1.0, 2e-3) << ax << " " << ay;
-        // The visible normals' distribution integrates to one for every wo (eq. 2 there), which ties
-        // Lambda to D: int G1(wo) max(0, wo.h) D(h) / wo.z dh = 1.
-        for (float cosO : kCosines)
-            for (float phi : kAzimuths) {
-                Vec3 wo = direction(cosO, phi);
-                double visible = integrateNormals(a, [&](Vec3 h) { return ggx.G1(wo) * std::max(0.0f, dot(wo, h)) * ggx.D(h) / wo.z; });
-                EXPECT_NEAR(visible, 1.0, 3e-3) << ax << " " << ay << " cos " << cosO << " phi " << phi;
-            }
-    }
+    for (auto [ax, ay] : {std::pair{0.05f, 0.3f}, std::pair{0.4f, 0.1f}, std::pair{0.2f, 0.2f}})
+        expectProjectedAreaAndVisibleNormalsNormalised<GGX>(ax, ay);
+}
+
+// For Beckmann this checks the exact Lambda (erf form) against its D.
+TEST(AnisotropicBeckmann, ProjectedAreaAndVisibleNormalsAreNormalised) {
+    for (auto [ax, ay] : {std::pair{0.05f, 0.3f}, std::pair{0.4f, 0.1f}, std::pair{0.2f, 0.2f}, std::pair{0.9f, 0.9f}})
+        expectProjectedAreaAndVisibleNormalsNormalised<Beckmann>(ax, ay);
 }
 
 TEST(AnisotropicGgx, SwappingAlphasTurnsTheLobeByAQuarter) {
@@ -142,6 +159,21 @@ TEST(AnisotropicGgx, IsotropicCaseIsTheOneAlphaDistribution) {
     }
 }
 
+// The tails that tell Beckmann from GGX: at the same alpha, a normal tilted by
+// tan(theta) = 4 alpha is exp(-16) (cos(theta) = 1 / sqrt(1 + 16 alpha^2) to the fourth, cancelled by
+// D's 1/cos^4) of the peak under Beckmann, and 1 / 17^2 under GGX.
+TEST(AnisotropicBeckmann, TailsAreGaussianWhereGgxsArePowerLaws) {
+    const float alpha = 0.05f;
+    Beckmann beckmann(alpha);
+    GGX ggx(alpha);
+    const float t = 4 * alpha, c = 1 / std::sqrt(1 + t * t);
+    Vec3 tilted(t * c, 0, c), n(0, 0, 1);
+    double c4 = std::pow(double(c), 4);
+    EXPECT_NEAR(beckmann.D(tilted) * c4 / beckmann.D(n), std::exp(-16.0), 1e-3 * std::exp(-16.0));
+    EXPECT_NEAR(ggx.D(tilted) * c4 / ggx.D(n), 1.0 / (17.0 * 17.0), 1e-4);
+    EXPECT_NEAR(beckmann.D(n), 1.0 / (kPi * alpha * alpha), 1e-3 / (kPi * alpha * alpha));
+}
+
 TEST(AnisotropicGgx, RoughnessRemaps) {
     EXPECT_FLOAT_EQ(roughnessToAlpha(0.5f), 0.25f);      // photon: alpha = roughness^2
     EXPECT_FLOAT_EQ(pbrtRoughnessToAlpha(0.25f), 0.5f);  // pbrt-v4 remaproughness: sqrt
@@ -166,6 +198,9 @@ std::vector<Case> cases() {
         {"CopperAnisotropicTurned", makeConductor(metal("Cu"), GgxAlpha{0.4f, 0.1f}), kWhite, 0.1f},
         {"TitaniumRough", makeConductor(metal("Ti"), GgxAlpha{0.6f, 0.6f}), kWhite, 0.6f},
         {"SchlickAnisotropic", makeConductor(ColorParam(f0), GgxAlpha{0.1f, 0.4f}), f0, 0.1f},
+        {"BeckmannCopper", beckmannConductor(metal("Cu"), 0.1f, 0.1f), kWhite, 0.1f},
+        {"BeckmannGoldAnisotropic", beckmannConductor(metal("Au"), 0.05f, 0.3f), kWhite, 0.05f},
+        {"BeckmannTitaniumRough", beckmannConductor(metal("Ti"), 0.7f, 0.7f), kWhite, 0.7f},
     };
 }
 
@@ -241,6 +276,29 @@ TEST(ConductorFurnace, PerfectConductorKeepsTheSingleScatteringAlbedo) {
                 }
                 std::printf("  furnace alpha (%.1f, %.1f) cos %.2f phi %.1f  MC %.4f  single-scattering %.4f\n", alpha.x,
                             alpha.y, cosO, phi, mc.mean[0], expected);
+            }
+    }
+}
+
+// The same for Beckmann, whose normals are sampled by D(h) h.z rather than as seen from wo.
+TEST(ConductorFurnace, PerfectBeckmannConductorKeepsTheSingleScatteringAlbedo) {
+    const ComplexIor perfect{Color(1.0f), Color(1e4f)};
+    for (auto [ax, ay] : {std::pair{0.3f, 0.3f}, std::pair{0.8f, 0.8f}, std::pair{0.1f, 0.6f}}) {
+        auto material = beckmannConductor(perfect, ax, ay);
+        Beckmann beckmann(ax, ay);
+        for (float cosO : kCosines)
+            for (float phi : kAzimuths) {
+                Vec3 wo = direction(cosO, phi);
+                double expected = integrateNormals(std::min(ax, ay), [&](Vec3 h) {
+                    float woDotH = dot(wo, h);
+                    Vec3 wi = reflect(wo, h);
+                    if (woDotH <= 0 || wi.z <= 0) return 0.0;
+                    return double(beckmann.G2(wo, wi)) * woDotH * beckmann.D(h) / wo.z;
+                });
+                auto mc = estimateBySampling(*material, wo, tinted(kWhite), TransportMode::Radiance, 37);
+                EXPECT_LE(expected, 1.0);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(mc.mean[c], expected, tolerance(expected)) << "alpha " << ax << " " << ay;
             }
     }
 }
@@ -365,7 +423,7 @@ TEST(ConductorScene, TexturedRoughness) {
         Color texel = wood->lookup(uv);
         float u = (texel.x + texel.y + texel.z) / 3.0f;
         ComplexIor gold = metal("Au");
-        auto constant = makeConductor(ComplexIorParam{gold.eta, gold.k}, GgxRoughness{u, 0.3f, RoughnessToAlpha::SquareRoot});
+        auto constant = makeConductor(ComplexIorParam{gold.eta, gold.k}, MicrofacetRoughness{u, 0.3f, RoughnessToAlpha::SquareRoot});
         MaterialInputs at{uv, kWhite};
         EXPECT_EQ(m.eval(wo, wi, at, TransportMode::Radiance), constant->eval(wo, wi, at, TransportMode::Radiance));
         EXPECT_EQ(m.pdf(wo, wi, at), constant->pdf(wo, wi, at));
@@ -384,6 +442,18 @@ TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
     double unremapped = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", false}}));
     double photonMapping = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.2}}));
     EXPECT_NEAR(unremapped, photonMapping, 1e-6);  // 0.2^2 in float is not quite 0.04
+}
+
+TEST(ConductorScene, DistributionField) {
+    Vec3 wo = direction(0.6f, 0.4f), wi = direction(0.7f, 3.0f);
+    auto evalOf = [&](const Material& m) { return m.eval(wo, wi, tinted(kWhite), TransportMode::Radiance); };
+    const Material& beckmann = loadedMetal(
+        {{"type", "conductor"}, {"metal", "Cu"}, {"roughness", 0.3}, {"remap_roughness", false}, {"distribution", "beckmann"}});
+    EXPECT_EQ(evalOf(beckmann), evalOf(*beckmannConductor(metal("Cu"), 0.3f, 0.3f)));
+    const Material& ggx = loadedMetal(
+        {{"type", "conductor"}, {"metal", "Cu"}, {"roughness", 0.3}, {"remap_roughness", false}, {"distribution", "ggx"}});
+    EXPECT_EQ(evalOf(ggx), evalOf(*makeConductor(metal("Cu"), GgxAlpha{0.3f, 0.3f})));
+    EXPECT_NE(evalOf(ggx), evalOf(beckmann));
 }
 
 TEST(ConductorScene, Errors) {
@@ -407,6 +477,8 @@ TEST(ConductorScene, Errors) {
                 path + "vroughness", "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"remap_roughness", 1}}; },
                 path + "remap_roughness", "must be true or false");
+    expectError([](Json& d) { d["materials"]["metal"] = {{"type", "conductor"}, {"metal", "Au"}, {"distribution", "phong"}}; },
+                path + "distribution", "unknown distribution \"phong\" (expected \"ggx\" or \"beckmann\")");
 }
 
 // ---- SPPM against the path tracer, with rough gold ----

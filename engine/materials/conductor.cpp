@@ -1,8 +1,10 @@
-// Rough metal: GGX microfacet reflection (Walter et al. 2007), isotropic or anisotropic, with
+// Rough metal: GGX or Beckmann microfacet reflection (Walter et al. 2007), isotropic or
+// anisotropic, with
 // either Schlick's Fresnel from the tint F0 or the exact Fresnel of a complex index of
 // refraction eta + i k (pbrt-v4's ConductorBxDF). Index and roughness may be textured.
 // Smooth enough in both directions (and not textured), it becomes an ideal mirror with the
 // same Fresnel.
+#include "materials/beckmann.h"
 #include "materials/fresnel.h"
 #include "materials/material.h"
 #include "materials/microfacet.h"
@@ -20,24 +22,27 @@ float alphaOf(float roughness, RoughnessToAlpha toAlpha) {
     return roughness;
 }
 
-// The lobe's GGX distribution for alphas ax, ay. A lobe that is not smooth keeps each alpha
-// at kSmoothAlpha or more, so that a very narrow direction of an anisotropic lobe stays
-// within float range (pbrt-v4's TrowbridgeReitzDistribution does the same).
-GGX microfacetDistribution(float ax, float ay) {
-    GGX ggx(ax, ay);
-    if (ggx.smooth()) return ggx;
-    return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
+// The lobe's distribution for alphas ax, ay. A lobe that is not smooth keeps each alpha at
+// kSmoothAlpha or more, so that a very narrow direction of an anisotropic lobe stays within
+// float range (pbrt-v4's TrowbridgeReitzDistribution does the same).
+template <class Distribution>
+Distribution lobeDistribution(float ax, float ay) {
+    Distribution d(ax, ay);
+    if (d.smooth()) return d;
+    return Distribution(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
 }
 
+// Distribution: GGX or Beckmann.
+template <class Distribution>
 class Conductor final : public Material {
 public:
-    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, GgxRoughness roughness)
+    Conductor(ColorParam reflectance, std::optional<ComplexIorParam> ior, MicrofacetRoughness roughness)
         : Material(std::move(reflectance)),
           ior_(std::move(ior)),
           roughness_(std::move(roughness)),
           texturedRoughness_(roughness_.u.textured() || roughness_.v.textured()),
-          ggx_(microfacetDistribution(alphaOf(roughness_.u.value, roughness_.toAlpha),
-                                      alphaOf(roughness_.v.value, roughness_.toAlpha))) {}
+          lobe_(lobeDistribution<Distribution>(alphaOf(roughness_.u.value, roughness_.toAlpha),
+                                               alphaOf(roughness_.v.value, roughness_.toAlpha))) {}
 
     unsigned lobes() const override { return smooth() ? kDeltaLobe : kGlossyLobe; }
     bool textured() const override {
@@ -50,36 +55,38 @@ public:
         if (smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnel(dot(wo, *h), in) * ggxAt(in.uv).reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in) * lobeAt(in.uv).reflectionNoFresnel(wo, wi, *h);
     }
 
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
         if (smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
-        return h ? ggxAt(in.uv).reflectionPdf(wo, *h) : 0.0f;
+        return h ? lobeAt(in.uv).reflectionPdf(wo, *h) : 0.0f;
     }
 
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
         if (wo.z <= 0 || !(lobes & this->lobes())) return std::nullopt;
         if (smooth()) return sampleMirror(wo, in);
-        // Visible normals never face away from wo, so only the reflected wi that ends up
-        // below the horizon is lost (that energy is what single scattering misses).
-        Vec3 wi = reflect(wo, ggxAt(in.uv).sampleVisibleNormal(wo, u));
-        // Weighted through eval()/pdf(); the weight reduces analytically to F G2 / G1(wo)
-        // (Heitz 2018).
-        return weightedSample(wo, wi, in, mode, lobes);
+        // GGX samples visible normals, which never face away from wo, so only the reflected
+        // wi that ends up below the horizon is lost (that energy is what single scattering
+        // misses); Beckmann's normals can face away, and those draws are lost too.
+        Vec3 h = lobeAt(in.uv).sampleHalfVector(wo, u);
+        if (dot(wo, h) <= 0) return std::nullopt;
+        // Weighted through eval()/pdf(); for GGX the weight reduces analytically to
+        // F G2 / G1(wo) (Heitz 2018).
+        return weightedSample(wo, reflect(wo, h), in, mode, lobes);
     }
 
 private:
-    bool smooth() const { return !texturedRoughness_ && ggx_.smooth(); }
+    bool smooth() const { return !texturedRoughness_ && lobe_.smooth(); }
 
     // The distribution at a hit: the constant one, or the textured roughness looked up there.
-    GGX ggxAt(Vec2 uv) const {
-        if (!texturedRoughness_) return ggx_;
+    Distribution lobeAt(Vec2 uv) const {
+        if (!texturedRoughness_) return lobe_;
         float ax = alphaOf(roughness_.u.eval(uv), roughness_.toAlpha);
         float ay = alphaOf(roughness_.v.eval(uv), roughness_.toAlpha);
-        return GGX(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
+        return Distribution(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
     }
 
     // Fresnel reflectance of a microfacet seen at cos(theta) = wo.h. Textured indices are
@@ -103,31 +110,38 @@ private:
 
     static constexpr float kMinEta = 1e-3f;
     std::optional<ComplexIorParam> ior_;  // none: Schlick's Fresnel from the tint
-    GgxRoughness roughness_;
+    MicrofacetRoughness roughness_;
     bool texturedRoughness_;
-    GGX ggx_;  // with constant roughness
+    Distribution lobe_;  // with constant roughness
 };
+
+// The conductor with the roughness's distribution.
+MaterialPtr conductorOf(ColorParam reflectance, std::optional<ComplexIorParam> ior, MicrofacetRoughness roughness) {
+    if (roughness.distribution == MicrofacetDistribution::Beckmann)
+        return std::make_shared<Conductor<Beckmann>>(std::move(reflectance), std::move(ior), std::move(roughness));
+    return std::make_shared<Conductor<GGX>>(std::move(reflectance), std::move(ior), std::move(roughness));
+}
 
 }  // namespace
 
 MaterialPtr makeConductor(ColorParam reflectance, float roughness) {
-    return makeConductor(std::move(reflectance), GgxRoughness{roughness, roughness, RoughnessToAlpha::Square});
+    return makeConductor(std::move(reflectance), MicrofacetRoughness{roughness, roughness, RoughnessToAlpha::Square});
 }
 
 MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha) {
-    return makeConductor(std::move(reflectance), GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
+    return makeConductor(std::move(reflectance), MicrofacetRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
 }
 
-MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness) {
-    return std::make_shared<Conductor>(std::move(reflectance), std::nullopt, std::move(roughness));
+MaterialPtr makeConductor(ColorParam reflectance, MicrofacetRoughness roughness) {
+    return conductorOf(std::move(reflectance), std::nullopt, std::move(roughness));
 }
 
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha) {
-    return makeConductor(ComplexIorParam{ior.eta, ior.k}, GgxRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
+    return makeConductor(ComplexIorParam{ior.eta, ior.k}, MicrofacetRoughness{alpha.x, alpha.y, RoughnessToAlpha::Identity});
 }
 
-MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness) {
-    return std::make_shared<Conductor>(ColorParam(Color(1.0f)), std::move(ior), std::move(roughness));
+MaterialPtr makeConductor(ComplexIorParam ior, MicrofacetRoughness roughness) {
+    return conductorOf(ColorParam(Color(1.0f)), std::move(ior), std::move(roughness));
 }
 
 }  // namespace photon

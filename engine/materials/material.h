@@ -128,13 +128,18 @@ MaterialPtr makeConductor(ColorParam reflectance, GgxAlpha alpha);
 // (Burley 2012); pbrt-v4's remapped roughness, alpha = sqrt(r); or r as alpha itself (pbrt-v4
 // without remapping).
 enum class RoughnessToAlpha { Square, SquareRoot, Identity };
-// A lobe's roughness along the shading frame's s (u) and t (v) axes, constant or textured.
-// A textured roughness always makes a glossy lobe (each alpha at least kSmoothAlpha).
-struct GgxRoughness {
+// The microfacet distribution of a rough conductor: GGX (materials/microfacet.h), long
+// tails; or Beckmann (materials/beckmann.h), Gaussian slopes.
+enum class MicrofacetDistribution { GGX, Beckmann };
+// A lobe's roughness along the shading frame's s (u) and t (v) axes, constant or textured,
+// and its distribution. A textured roughness always makes a glossy lobe (each alpha at least
+// kSmoothAlpha).
+struct MicrofacetRoughness {
     FloatParam u, v;
     RoughnessToAlpha toAlpha = RoughnessToAlpha::Square;
+    MicrofacetDistribution distribution = MicrofacetDistribution::GGX;
 };
-MaterialPtr makeConductor(ColorParam reflectance, GgxRoughness roughness);
+MaterialPtr makeConductor(ColorParam reflectance, MicrofacetRoughness roughness);
 // Complex index of refraction eta + i k per colour channel; k is the extinction coefficient.
 struct ComplexIor {
     Color eta, k;
@@ -146,7 +151,7 @@ struct ComplexIorParam {
 // GGX microfacet conductor with the exact Fresnel of the complex index `ior` (the outside
 // has index 1); its tint is white and unused.
 MaterialPtr makeConductor(ComplexIor ior, GgxAlpha alpha);
-MaterialPtr makeConductor(ComplexIorParam ior, GgxRoughness roughness);
+MaterialPtr makeConductor(ComplexIorParam ior, MicrofacetRoughness roughness);
 // Diffuse base under a dielectric coating of index `ior` with GGX roughness (0 = smooth).
 // The cheaper of the two coated models: no internal reflections and no 1/ior^2
 // (materials/plastic.cpp); kept so that scenes made with it render as before.

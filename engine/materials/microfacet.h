@@ -23,15 +23,40 @@ inline float roughnessToAlpha(float roughness) { return roughness * roughness; }
 // pbrt takes the roughness as alpha itself.
 inline float pbrtRoughnessToAlpha(float roughness) { return std::sqrt(roughness); }
 
-// Both alphas must be positive; materials switch to a delta lobe below kSmoothAlpha.
-struct GGX {
+// What every microfacet distribution derives from its own D(h) and Smith Lambda(w)
+// (Heitz 2014): masking, masking-shadowing and the reflection lobe. Distribution is the
+// derived type (GGX below, Beckmann in beckmann.h), which supplies D and lambda.
+template <class Distribution>
+struct MicrofacetLobe {
     float alphaX, alphaY;
 
-    explicit GGX(float alpha) : alphaX(alpha), alphaY(alpha) {}
-    GGX(float alphaX_, float alphaY_) : alphaX(alphaX_), alphaY(alphaY_) {}
+    MicrofacetLobe(float alphaX_, float alphaY_) : alphaX(alphaX_), alphaY(alphaY_) {}
 
     // Narrower than kSmoothAlpha in both directions: materials use a delta reflection.
     bool smooth() const { return std::max(alphaX, alphaY) < kSmoothAlpha; }
+
+    // Smith masking of one direction, 1 / (1 + Lambda) (Smith 1967; Heitz 2014).
+    float G1(Vec3 w) const { return 1.0f / (1.0f + self().lambda(w)); }
+
+    // Height-correlated masking-shadowing 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz 2014,
+    // eq. 99): more accurate than the separable G1(wo) G1(wi), which double-counts
+    // occlusion, and still symmetric in wo and wi, so the BRDF stays reciprocal.
+    float G2(Vec3 wo, Vec3 wi) const { return 1.0f / (1.0f + self().lambda(wo) + self().lambda(wi)); }
+
+    // Torrance-Sparrow reflection without Fresnel, D G2 / (4 cos_o cos_i) (Walter et al.
+    // 2007, eq. 20); callers multiply by their own Fresnel term F(wo.h).
+    float reflectionNoFresnel(Vec3 wo, Vec3 wi, Vec3 h) const {
+        return self().D(h) * G2(wo, wi) / (4.0f * wo.z * wi.z);
+    }
+
+private:
+    const Distribution& self() const { return static_cast<const Distribution&>(*this); }
+};
+
+// Both alphas must be positive; materials switch to a delta lobe below kSmoothAlpha.
+struct GGX : MicrofacetLobe<GGX> {
+    explicit GGX(float alpha) : MicrofacetLobe(alpha, alpha) {}
+    GGX(float alphaX_, float alphaY_) : MicrofacetLobe(alphaX_, alphaY_) {}
 
     // Anisotropic D(h) = 1 / (pi ax ay (h.x^2/ax^2 + h.y^2/ay^2 + h.z^2)^2) (Heitz 2014,
     // "Understanding the Masking-Shadowing Function in Microfacet-Based BRDFs", eq. 85),
@@ -57,14 +82,6 @@ struct GGX {
         float alpha2Tan2 = alphaX * alphaX * (w.x * w.x + ratio2 * w.y * w.y) / z2;
         return 0.5f * (std::sqrt(1.0f + alpha2Tan2) - 1.0f);
     }
-
-    // Smith masking of one direction, 1 / (1 + Lambda) (Smith 1967; Heitz 2014).
-    float G1(Vec3 w) const { return 1.0f / (1.0f + lambda(w)); }
-
-    // Height-correlated masking-shadowing 1 / (1 + Lambda(wo) + Lambda(wi)) (Heitz 2014,
-    // eq. 99): more accurate than the separable G1(wo) G1(wi), which double-counts
-    // occlusion, and still symmetric in wo and wi, so the BRDF stays reciprocal.
-    float G2(Vec3 wo, Vec3 wi) const { return 1.0f / (1.0f + lambda(wo) + lambda(wi)); }
 
     // Samples a normal from the distribution of normals visible from wo (wo.z > 0),
     // D_wo(h) = G1(wo) max(0, wo.h) D(h) / wo.z. Heitz 2018, "Sampling the GGX
@@ -92,11 +109,8 @@ struct GGX {
         return G1(wo) * D(h) / (4.0f * wo.z);
     }
 
-    // Torrance-Sparrow reflection without Fresnel, D G2 / (4 cos_o cos_i) (Walter et al.
-    // 2007, eq. 20); callers multiply by their own Fresnel term F(wo.h).
-    float reflectionNoFresnel(Vec3 wo, Vec3 wi, Vec3 h) const {
-        return D(h) * G2(wo, wi) / (4.0f * wo.z * wi.z);
-    }
+    // The conductor's sampling strategy: visible normals.
+    Vec3 sampleHalfVector(Vec3 wo, Vec2 u) const { return sampleVisibleNormal(wo, u); }
 };
 
 // Half vector of a reflection pair in the upper hemisphere; nullopt when it is undefined

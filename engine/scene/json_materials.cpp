@@ -58,16 +58,22 @@ std::optional<ComplexIorParam> complexIorFields(JsonObject& obj, LoadContext& ct
 // shading frame's s axis) and "vroughness" (along t), each defaulting to "roughness"; each a
 // number in [0, 1] or a texture. photon's roughness is perceptual, alpha = roughness^2;
 // "remap_roughness" switches to pbrt-v4's meaning: true, alpha = sqrt(roughness) (its
-// remaproughness); false, alpha = roughness.
-GgxRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
+// remaproughness); false, alpha = roughness. "distribution": "ggx" (the default) or
+// "beckmann".
+MicrofacetRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) {
     auto field = [&](std::string_view key, const FloatParam& fallback) {
         auto value = obj.optional(key);
         return value ? readFloatParam(*value, ctx, kFraction) : fallback;
     };
     FloatParam roughness = field("roughness", 0.2f);
-    GgxRoughness r{field("uroughness", roughness), field("vroughness", roughness)};
+    MicrofacetRoughness r{field("uroughness", roughness), field("vroughness", roughness)};
     if (auto remap = obj.optional("remap_roughness"))
         r.toAlpha = remap->boolean() ? RoughnessToAlpha::SquareRoot : RoughnessToAlpha::Identity;
+    if (auto distribution = obj.optional("distribution")) {
+        const std::string name = distribution->string();
+        if (name == "beckmann") r.distribution = MicrofacetDistribution::Beckmann;
+        else if (name != "ggx") distribution->fail("unknown distribution \"" + name + "\" (expected \"ggx\" or \"beckmann\")");
+    }
     return r;
 }
 
@@ -132,7 +138,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: {
             std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
-            GgxRoughness roughness = conductorRoughnessFields(obj, ctx);
+            MicrofacetRoughness roughness = conductorRoughnessFields(obj, ctx);
             m = ior ? makeConductor(*ior, roughness)
                     : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), roughness);
             break;

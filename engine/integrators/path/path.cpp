@@ -26,9 +26,13 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
     // between shadow rays and BSDF samples by multiple importance sampling.
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
-    for (int depth = 0; depth < maxDepth; ++depth) {
+    for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         if (!traceCameraRay(scene, ray, beta, bounce, hit, L)) break;
+        // The ray after the last vertex is traced only for the light its BSDF sample shares
+        // with that vertex's light sample (as pbrt-v4's PathIntegrator does): without it a
+        // glossy surface at the last vertex loses most of its highlight.
+        if (depth == maxDepth) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);

@@ -73,6 +73,10 @@ private:
     void tracePixel(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
+    // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
+    // weighted against that vertex's light sample.
+    void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
+                     Color& direct) const;
     void buildGrid();
     void photonPass(const CancelToken& cancel);
     struct PhotonCounters {

@@ -55,11 +55,16 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         const bool splits = m.hasDiffuse() && others && !lastVertex;
         const Vec3 woLocal = sp.frame.toLocal(wo);
         const float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
-        // What the path samples after the light sample: everything where it does not stop,
-        // the other lobes with probability 1 - pd where it splits, nothing where it stops.
-        const BsdfContinuation next = !storesHere ? BsdfContinuation{kAllLobes, 1.0f}
-                                      : splits    ? BsdfContinuation{others, 1.0f - pd}
-                                                  : BsdfContinuation{};
+        // At the last vertex a material with lobes beside the diffuse one also traces one
+        // BSDF sample, only for the light it shares with the light sample (as the path tracer
+        // does): a narrow highlight found by light samples alone is mostly noise.
+        const bool lastLookup = storesHere && lastVertex && others;
+        // What the path samples after the light sample: everything where it does not stop
+        // (or looks up the light at the last vertex), the other lobes with probability 1 - pd
+        // where it splits, nothing where it stops.
+        const BsdfContinuation next = !storesHere || lastLookup ? BsdfContinuation{kAllLobes, 1.0f}
+                                      : splits                  ? BsdfContinuation{others, 1.0f - pd}
+                                                                : BsdfContinuation{};
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
             direct += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
         else if (splits)  // photons bring direct light through the diffuse lobe only
@@ -76,6 +81,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 continue;
             }
             storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
+            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct);
             break;
         }
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
@@ -85,6 +91,17 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = direct;
+}
+
+void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
+                                 Color& direct) const {
+    float uLobe = rng.uniform();
+    Vec2 u{rng.uniform(), rng.uniform()};
+    std::optional<BSDFSample> s = sp.material->sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
+    if (!s) return;
+    SurfaceHit hit;
+    traceCameraRay(scene, spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi)), beta * s->weight, bounceFrom(sp, *s),
+                   hit, direct);
 }
 
 void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
