@@ -207,9 +207,10 @@ JobRecord JobService::resume(const std::string& id) {
         case JobTable::ResumeResult::Resumed: break;
     }
     store_.update(job);
+    // Logged before the push: a free worker may take the job at once and log its own start.
+    appendJobLog(folders_.logFile(id), "resumed: queued again");
     queue_.push(id, job.priority, job.seq);
     hub_.publish(job, std::nullopt);
-    appendJobLog(folders_.logFile(id), "resumed: queued again");
     return job;
 }
 

@@ -56,6 +56,36 @@ TEST(AreaLightKinds, TwoSidedEmitsAlikeOnBothSides) {
     EXPECT_EQ(light.emissionTriangles(), nullptr);  // not the one-sided lanes' kind
 }
 
+// A sphere of radius r and radiance Le seen from distance d: the irradiance on a surface
+// facing its centre is pi Le (r/d)^2 (the cap's projected solid angle, pi sin^2 theta_max),
+// at any distance, a grazing 1.01 radii or a far 1000. Light samples lie on the near cap, in
+// the cone the sphere subtends, with the solid-angle density the MIS weights ask for.
+TEST(AreaLightKinds, SphereLightsAreSampledByTheConeTheySubtend) {
+    for (float d : {1.01f, 1.5f, 7.0f, 1000.0f}) {
+        SCOPED_TRACE("distance " + std::to_string(d));
+        ShapeDescription s = test::sphere({0, 0, 0}, 1.0f, 0, Color(3.0f));
+        auto scene = sceneWith(s);
+        const Light& light = scene->lights().light(0);
+        const Vec3 p(0, 0, d), n(0, 0, -1);
+        const double sin2Max = 1.0 / (double(d) * d);
+        const double oneMinusCos = 1.0 - std::sqrt(1.0 - sin2Max);
+        Rng rng(3, 0, 0, StreamPurpose::Test);
+        double irradiance = 0;
+        const int samples = 20000;
+        for (int i = 0; i < samples; ++i) {
+            auto ls = light.sampleIncident(p, n, {rng.uniform(), rng.uniform()});
+            ASSERT_TRUE(ls);
+            irradiance += ls->weight.x * std::max(0.0f, dot(ls->wi, n)) / samples;
+            EXPECT_NEAR(ls->pdf, 1.0 / (2 * kPi * oneMinusCos), 2e-3 / (2 * kPi * oneMinusCos));
+            const Vec3 y = p + ls->wi * ls->distance;
+            EXPECT_NEAR(length(y), 1.0f, 2e-3f * std::max(1.0f, d / 100));  // on the sphere
+            EXPECT_GT(dot(y, p - y), -1e-3f * d);                             // on the near cap
+            EXPECT_EQ(light.pdfIncidentFrom(p, y, normalize(y), ls->wi), ls->pdf);
+        }
+        EXPECT_NEAR(irradiance, kPi * 3.0 * sin2Max, 2e-3 * kPi * 3.0 * sin2Max);
+    }
+}
+
 TEST(AreaLightKinds, TexturedEmissionFollowsTheTexture) {
     ShapeDescription s = panel(Color(3.0f));
     // Cells of a 2 x 1 checkerboard in u: x < 0 even (black), x > 0 odd.

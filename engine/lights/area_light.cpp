@@ -102,12 +102,69 @@ private:
     EmissionTriangles triangles_;
 };
 
+// Seen from outside, a sphere emitting outward is sampled by the cone of directions it
+// subtends, uniformly in solid angle (pbrt-v4's Sphere::Sample with a reference point): every
+// sample lands on the visible cap, where sampling by area wastes half its samples on the far
+// side and weighs the rest by cos / d^2. Inside, or emitting inward, it is sampled by area.
 class SphereAreaLight final : public AreaLight {
 public:
     explicit SphereAreaLight(const ShapeDescription& shape)
         : AreaLight(shape, 4.0f * kPi * shape.radius * shape.radius), sign_(shape.flipNormals ? -1.0f : 1.0f) {}
 
+    std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
+        auto cone = coneFrom(p);
+        if (!cone) return AreaLight::sampleIncident(p, n, u);
+        // Below sin^2 = 0.00068523 (1.5 degrees) 1 - cos loses its digits in float: sample
+        // sin^2 theta linearly there instead (pbrt-v4, sec. 6.2.4).
+        float sin2Theta, cosTheta;
+        if (cone->small) {
+            sin2Theta = cone->sin2Max * u.x;
+            cosTheta = std::sqrt(1.0f - sin2Theta);
+        } else {
+            cosTheta = (1.0f - u.x) + u.x * cone->cosMax;
+            sin2Theta = std::max(0.0f, 1.0f - cosTheta * cosTheta);
+        }
+        const float sinTheta = std::sqrt(sin2Theta), phi = 2.0f * kPi * u.y;
+        const Vec3 wi = cone->frame.toWorld(Vec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta));
+        // The near intersection of the ray p + t wi with the sphere.
+        const float r = shape_.radius;
+        const float dist = std::max(0.0f, cone->distance * cosTheta -
+                                              std::sqrt(std::max(0.0f, r * r - cone->distance * cone->distance * sin2Theta)));
+        const Vec3 normal = normalize(p + wi * dist - shape_.center);
+        const Color Le = shape_.emissionAt(shape_.emissionTexture ? sphereUv(normal) : Vec2{});
+        return LightSample{wi, dist, Le / cone->pdf, cone->pdf};
+    }
+
+    float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const override {
+        auto cone = coneFrom(p);
+        return cone ? cone->pdf : AreaLight::pdfIncidentFrom(p, y, ny, wi);
+    }
+
 private:
+    struct Cone {
+        Frame frame;  // n toward the centre
+        float distance, sin2Max, cosMax, pdf;
+        bool small;
+    };
+
+    // The cone the sphere subtends from p, if p is outside and the sphere emits outward.
+    std::optional<Cone> coneFrom(Vec3 p) const {
+        if (sign_ < 0) return std::nullopt;
+        const Vec3 toCentre = shape_.center - p;
+        const float d2 = lengthSquared(toCentre), r2 = shape_.radius * shape_.radius;
+        // Too close to tell inside from outside in float: sample by area.
+        if (d2 <= r2 * 1.0001f) return std::nullopt;
+        Cone c;
+        c.distance = std::sqrt(d2);
+        c.frame = Frame::fromNormal(toCentre / c.distance);
+        c.sin2Max = r2 / d2;
+        c.cosMax = std::sqrt(std::max(0.0f, 1.0f - c.sin2Max));
+        c.small = c.sin2Max < 0.00068523f;
+        const float oneMinusCosMax = c.small ? 0.5f * c.sin2Max : 1.0f - c.cosMax;
+        c.pdf = 1.0f / (2.0f * kPi * oneMinusCosMax);
+        return c;
+    }
+
     SurfacePoint samplePoint(Vec2 u) const override {
         Vec3 n = sampleUniformSphere(u);
         return {shape_.center + n * shape_.radius, n * sign_, shape_.emissionTexture ? sphereUv(n) : Vec2{}};
