@@ -50,6 +50,18 @@ bool Renderer::renderPass(const CancelToken& cancel) {
     return true;
 }
 
+bool Renderer::independentPasses() const { return integrator_->independentPasses(); }
+
+std::optional<PassSums> Renderer::renderPasses(int64_t first, int count, const CancelToken& cancel) {
+    return integrator_->renderPasses(first, count, cancel);
+}
+
+void Renderer::addPasses(const PassSums& sums) {
+    integrator_->addPasses(sums);
+    progress_.pass = integrator_->passesDone();
+    progress_.photonsTraced += sums.count * scene_->settings().photonsPerPass;
+}
+
 void Renderer::saveCheckpoint(std::ostream& out) const {
     std::ostringstream body;
     writeRaw(body, &progress_.photonsTraced, 1);

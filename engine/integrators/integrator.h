@@ -3,7 +3,10 @@
 #pragma once
 #include <istream>
 #include <ostream>
+#include <optional>
+#include <stdexcept>
 #include <photon/image.h>
+#include <photon/pass_sums.h>
 #include <photon/progress.h>
 
 namespace photon {
@@ -26,6 +29,17 @@ public:
     // what saveState wrote for the same scene and settings, else throws CheckpointError.
     virtual void saveState(std::ostream& out) const = 0;
     virtual void restoreState(std::istream& in) = 0;
+    // Integrators whose passes are independent estimates (SPPM with the global radius
+    // schedule): renderPasses renders passes first .. first + count - 1 on their own,
+    // leaving the state as it was (nullopt if cancelled, or if passes are not independent);
+    // addPasses adds such a batch, rendered here or anywhere, to the state.
+    virtual bool independentPasses() const { return false; }
+    virtual std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) {
+        return std::nullopt;
+    }
+    virtual void addPasses(const PassSums&) {
+        throw std::logic_error("this render's passes are not independent (render.radius_schedule \"global\" makes them so)");
+    }
 };
 
 }  // namespace photon

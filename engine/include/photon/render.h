@@ -6,7 +6,9 @@
 #include <istream>
 #include <memory>
 #include <ostream>
+#include <optional>
 #include <photon/image.h>
+#include <photon/pass_sums.h>
 #include <photon/pending_image.h>
 #include <photon/progress.h>
 #include <photon/scene_file.h>
@@ -33,6 +35,15 @@ public:
     RenderOutcome run(const CancelToken& cancel, const ProgressFn& onPass = {});
     // Renders one pass; false if cancelled (the image stays as after the last pass).
     bool renderPass(const CancelToken& cancel);
+
+    // Independent passes (render.radius_schedule "global"; docs/sppm.md): renderPasses
+    // renders passes first .. first + count - 1 of this render on their own, without adding
+    // them (nullopt if cancelled, or if the render's passes are not independent); addPasses
+    // adds a batch rendered here or by any other Renderer of the same scene. Batches add
+    // exactly, in any order: N renderers give the image one gives.
+    bool independentPasses() const;
+    std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel);
+    void addPasses(const PassSums& sums);
 
     // The image after the passes done so far: denoised when render.denoise is on (the
     // filter runs on every call, so call it once per pass, not per client).

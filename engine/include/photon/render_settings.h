@@ -21,6 +21,13 @@ inline std::optional<IntegratorKind> integratorNamed(std::string_view name) {
 enum class KernelKind { Uniform, Biweight, Cone };
 // Where SPPM takes direct light at visible points from.
 enum class DirectLighting { LightSampling, Photons };
+// How SPPM shrinks its gather radii. PerPixel: Hachisuka & Jensen 2009's per-pixel
+// statistics, each pixel's radius following its own photon counts, so a pass depends on
+// every pass before it. Global: Knaus & Zwicker 2011's schedule, the same for every pixel,
+// r_i^2 = r_1^2 prod_{k<i} (k + alpha) / (k + 1), r_1 from the pass's own visible point; each
+// pass is then an independent estimate, and passes rendered anywhere, in any order, add up
+// (docs/sppm.md, "Independent passes").
+enum class RadiusSchedule { PerPixel, Global };
 
 // Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
 // the form factors and the linear system are computed.
@@ -74,6 +81,7 @@ struct RenderSettings {
     float exposure = 0;               // stops, applied when tone mapping to PNG
     DirectLighting direct = DirectLighting::LightSampling;
     bool projectionMaps = true;       // emit photons only toward geometry (Jensen 2001, 5.1.3)
+    RadiusSchedule radiusSchedule = RadiusSchedule::PerPixel;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -94,6 +102,9 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     const RadiositySettings& r = s.radiosity;
     visit(r.patchSize), visit(r.maxPatches), visit(r.raysPerPatch), visit(r.directSamples), visit(r.tolerance);
     visit(r.maxIterations);
+    // Visited only when not the default, so that checkpoints written before it existed keep
+    // their key.
+    if (s.radiusSchedule != RadiusSchedule::PerPixel) visit(s.radiusSchedule);
 }
 
 }  // namespace photon

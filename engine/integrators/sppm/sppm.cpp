@@ -3,6 +3,7 @@
 #include "integrators/common/checkpoint.h"
 #include <tbb/parallel_for.h>
 #include <chrono>
+#include <cmath>
 
 namespace photon {
 
@@ -16,17 +17,93 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()) {
     size_t n = static_cast<size_t>(width_) * height_;
-    pixels_.resize(n);
+    if (global()) {
+        sums_.width = width_, sums_.height = height_;
+        sums_.values.assign(n * 3, 0);
+    } else {
+        pixels_.resize(n);
+    }
     discs_.resize(n);
     visible_.resize(n);
     passDirect_.resize(n);
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
-    return sizeof(PixelState) + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
+    const size_t state = global() ? 3 * sizeof(int64_t) : sizeof(PixelState);
+    return state + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
+    if (global()) {
+        std::optional<PassSums> pass = renderPasses(passes_, 1, cancel);
+        if (!pass) return false;
+        addPasses(*pass);
+        return true;
+    }
+    passIndex_ = passes_;
+    if (!traceOnePass(cancel)) return false;
+    auto t0 = std::chrono::steady_clock::now();
+    updateStatistics();
+    stats_.updateMs = millisecondsSince(t0);
+    return true;
+}
+
+// Knaus & Zwicker 2011, eq. 15: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) for passes counted
+// from 1, so r_i^2 / r_1^2 = prod_{k=1}^{i-1} (k + alpha) / (k + 1)
+// = Gamma(i + alpha) / (Gamma(1 + alpha) Gamma(i + 1)), by lgamma for any i in constant time.
+double SppmIntegrator::globalShrinkAt(int64_t index) const {
+    const double i = static_cast<double>(index) + 1.0, a = settings_.alpha;
+    return std::exp(std::lgamma(i + a) - std::lgamma(1.0 + a) - std::lgamma(i + 1.0));
+}
+
+std::optional<PassSums> SppmIntegrator::renderPasses(int64_t first, int count, const CancelToken& cancel) {
+    if (!global() || first < 0 || count <= 0) return std::nullopt;
+    PassSums batch;
+    batch.first = first;
+    batch.width = width_, batch.height = height_;
+    batch.values.assign(static_cast<size_t>(width_) * height_ * 3, 0);
+    for (int k = 0; k < count; ++k) {
+        passIndex_ = first + k;
+        globalShrink_ = static_cast<float>(globalShrinkAt(passIndex_));
+        if (!traceOnePass(cancel)) return std::nullopt;
+        addPassEstimate(batch);
+        ++batch.count;
+        double radiusSum = 0;
+        size_t withRadius = 0;
+        for (const GatherDisc& d : discs_)
+            if (d.r2 > 0) radiusSum += std::sqrt(d.r2), ++withRadius;
+        stats_.meanRadius = withRadius ? radiusSum / static_cast<double>(withRadius) : 0.0;
+    }
+    return batch;
+}
+
+void SppmIntegrator::addPasses(const PassSums& batch) {
+    if (!global()) Integrator::addPasses(batch);
+    std::lock_guard<std::mutex> lock(stateMutex_);
+    sums_.add(batch);
+    passes_ = static_cast<int>(sums_.count);
+}
+
+// One pass's estimate per pixel: the direct light its camera path found plus the photons'
+// flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
+void SppmIntegrator::addPassEstimate(PassSums& sums) const {
+    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    const double emitted = static_cast<double>(settings_.photonsPerPass);
+    tbb::parallel_for(size_t(0), visible_.size(), [&](size_t i) {
+        Color L = passDirect_[i];
+        const VisiblePoint& vp = visible_[i];
+        if (vp.photonCount > 0 && discs_[i].r2 > 0) {
+            const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].r2) * emitted);
+            L += Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
+                       static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
+                       static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
+        }
+        for (int c = 0; c < 3; ++c)
+            sums.values[i * 3 + c] += std::llround(static_cast<double>(std::max(L[c], 0.0f)) * PassSums::kScale);
+    });
+}
+
+bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     stats_ = PassStats{};
     auto t0 = std::chrono::steady_clock::now();
     cameraPass(cancel);
@@ -43,9 +120,6 @@ bool SppmIntegrator::renderPass(const CancelToken& cancel) {
     stats_.photonMs = millisecondsSince(t0);
     if (cancel.cancelled()) return false;
 
-    t0 = std::chrono::steady_clock::now();
-    updateStatistics();
-    stats_.updateMs = millisecondsSince(t0);
     return true;
 }
 
@@ -91,12 +165,27 @@ void SppmIntegrator::saveState(std::ostream& out) const {
     std::lock_guard<std::mutex> lock(stateMutex_);
     writeCheckpointHeader(out, checkpointKey(settings_, width_, height_));
     writeRaw(out, &passes_, 1);
-    writeRaw(out, pixels_.data(), pixels_.size());
+    if (global())
+        writeRaw(out, sums_.values.data(), sums_.values.size());
+    else
+        writeRaw(out, pixels_.data(), pixels_.size());
 }
 
 void SppmIntegrator::restoreState(std::istream& in) {
     readCheckpointHeader(in, checkpointKey(settings_, width_, height_));
     int passes = readPassCount(in);
+    if (global()) {
+        std::vector<int64_t> values(sums_.values.size());
+        readRaw(in, values.data(), values.size());
+        for (int64_t v : values)
+            if (v < 0) throw CheckpointError("checkpoint: invalid pass sums");
+        requireEndOfCheckpoint(in);
+        std::lock_guard<std::mutex> lock(stateMutex_);
+        passes_ = passes;
+        sums_.values = std::move(values);
+        sums_.count = passes;
+        return;
+    }
     std::vector<PixelState> pixels(pixels_.size());
     readRaw(in, pixels.data(), pixels.size());
     for (const PixelState& p : pixels)
@@ -114,6 +203,18 @@ Image SppmIntegrator::snapshot() const {
     Image image(width_, height_);
     std::lock_guard<std::mutex> lock(stateMutex_);
     if (passes_ == 0) return image;
+    if (global()) {  // the mean of the passes' estimates
+        const double unit = 1.0 / (PassSums::kScale * static_cast<double>(passes_));
+        tbb::parallel_for(0, height_, [&](int y) {
+            for (int x = 0; x < width_; ++x) {
+                const int64_t* v = &sums_.values[(static_cast<size_t>(y) * width_ + x) * 3];
+                image.set(x, y, Color(static_cast<float>(static_cast<double>(v[0]) * unit),
+                                      static_cast<float>(static_cast<double>(v[1]) * unit),
+                                      static_cast<float>(static_cast<double>(v[2]) * unit)));
+            }
+        });
+        return image;
+    }
     const double emitted = static_cast<double>(passes_) * static_cast<double>(settings_.photonsPerPass);
     const float invPasses = 1.0f / static_cast<float>(passes_);
     tbb::parallel_for(0, height_, [&](int y) {

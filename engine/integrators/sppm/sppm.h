@@ -6,6 +6,7 @@
 #pragma once
 #include <mutex>
 #include <vector>
+#include <photon/pass_sums.h>
 #include "accel/hash_grid.h"
 #include "integrators/common/photon_emitter.h"
 #include "math/octahedral.h"
@@ -27,6 +28,9 @@ public:
     size_t bytesPerPixel() const override;
     void saveState(std::ostream& out) const override;
     void restoreState(std::istream& in) override;
+    bool independentPasses() const override { return global(); }
+    std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) override;
+    void addPasses(const PassSums& sums) override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
     struct PixelState {
@@ -69,6 +73,13 @@ private:
     // threads add them in, and the image is bit-identical for any thread count.
     static constexpr double kFluxScale = 4294967296.0;
 
+    bool global() const { return settings_.radiusSchedule == RadiusSchedule::Global; }
+    // Renders pass passIndex_ (camera pass, grid, photon pass) without touching the state.
+    bool traceOnePass(const CancelToken& cancel);
+    // The global schedule's r_i^2 / r_1^2 for the pass with index i (from 0).
+    double globalShrinkAt(int64_t i) const;
+    // Adds this pass's estimate, direct + Phi / (pi r_i^2 N_emitted), to `sums` in fixed point.
+    void addPassEstimate(PassSums& sums) const;
     void cameraPass(const CancelToken& cancel);
     void tracePixel(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
@@ -100,9 +111,12 @@ private:
     PhotonEmitter emitter_;
     int width_, height_;
     int passes_ = 0;
+    int64_t passIndex_ = 0;     // the pass being rendered: its random streams' index
+    float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
     PassStats stats_;
 
-    std::vector<PixelState> pixels_;
+    std::vector<PixelState> pixels_;  // the per-pixel schedule's statistics
+    PassSums sums_;                    // the global schedule's: its passes' estimates summed
     std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
     std::vector<Color> passDirect_;      // direct light found by this pass's camera paths

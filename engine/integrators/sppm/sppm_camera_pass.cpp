@@ -8,7 +8,7 @@
 namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
-    const RngStream stream(settings_.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
+    const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
     forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) { tracePixel(index, rng); });
     stats_.cameraRays = static_cast<int64_t>(pixels_.size());
 }
@@ -109,10 +109,11 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     OctahedralVector n(sp.hit.ns);
     Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
     // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
-    float r2 = pixels_[index].r2;
+    float r2 = global() ? 0.0f : pixels_[index].r2;
     if (r2 == 0) {
         float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
         r2 = r * r;
+        if (global()) r2 *= globalShrink_;
     }
     discs_[index] = GatherDisc{sp.hit.p, r2};
     Vec3 woLocal = frame.toLocal(wo);

@@ -32,7 +32,7 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
     PhotonCounters counters = tbb::parallel_reduce(
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
-            PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passes_), settings_.maxDepth};
+            PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passIndex_), settings_.maxDepth};
             // Direct light may come from light sampling in the camera pass instead.
             paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
             PhotonPathCounters pathCounters;
