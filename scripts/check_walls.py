@@ -48,6 +48,7 @@ LIBRARIES = {
     "zlib.h": {"engine", "engine-tests"},
     "httplib.h": {"api", "service-tests", "fuzz"},
     "sqlite3.h": {"server", "service-tests"},
+    "hiredis": {"server"},
     "CLI": {"cli", "app", "engine-tests"},  # photon-bench
 }
 

@@ -58,7 +58,7 @@ server_tests=(test_image_cache test_server_jobs test_server_errors test_server_r
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
               test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges
               test_server_framing test_server_connections test_server_listing
-              test_server_image_options test_server_imports)
+              test_server_image_options test_server_imports test_farm)
 
 # run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
 # from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer
@@ -71,6 +71,7 @@ run_tests() {
         path="$build/tests/$t"
         [ -x "$path" ] || path="$build/tests/server/$t"
         [ -x "$path" ] || path="$build/tests/server/unit/$t"
+        [ -x "$path" ] || path="$build/tests/server/farm/$t"
         log="$build/$t.log"
         echo "-- $t"
         "${launcher[@]}" "$path" --gtest_brief=1 > "$log" 2>&1 || { cat "$log"; status=1; }
@@ -93,7 +94,7 @@ launcher=()
 san="$root/build-sanitize"
 san_build() {
     CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$san" "${cmake_args[@]}" -DPHOTON_FUZZ=ON > /dev/null
-    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt photon-server photon-render \
+    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt photon-server photon-render photon-worker \
         "${engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
 }
 # fuzz_run TARGET CORPUS: new inputs go to build-sanitize/corpus (the seeds stay as they are).
@@ -154,7 +155,7 @@ tsan="$root/build-tsan"
 tsan_engine_tests=(test_renderer test_checkpoint)
 tsan_build() {
     cmake -S "$root" -B "$tsan" "${cmake_args[@]}" -DPHOTON_TSAN=ON > /dev/null
-    nice cmake --build "$tsan" -j2 --target photon-server photon-render "${tsan_engine_tests[@]}" "${unit_tests[@]}" \
+    nice cmake --build "$tsan" -j2 --target photon-server photon-render photon-worker "${tsan_engine_tests[@]}" "${unit_tests[@]}" \
         "${server_tests[@]}"
 }
 tsan_tests() {

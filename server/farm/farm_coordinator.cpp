@@ -1,0 +1,77 @@
+#include "farm_coordinator.h"
+#include "farm_keys.h"
+#include "stream_entries.h"
+
+namespace photon::farm {
+
+FarmCoordinator::FarmCoordinator(const RedisAddress& address, std::string name)
+    : redis_(address, std::chrono::seconds(5), std::chrono::seconds(60)), name_(std::move(name)) {
+    ensureGroup(redis_, kWorkStream, kWorkersGroup);
+    ensureGroup(redis_, kResultStream, kCoordinatorGroup);
+}
+
+void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
+                             const std::set<int64_t>& merged) {
+    redis_.command({"DEL", cancelKey(job), sceneKey(job)});
+    scene.store(redis_, job);
+    handedOn_[job] = merged;
+    for (int64_t b = 0; b < plan.batches(); ++b) {
+        if (merged.count(b)) continue;
+        redis_.command({"XADD", kWorkStream, "*", "job", job, "batch", std::to_string(b), "first",
+                        std::to_string(plan.first(b)), "count", std::to_string(plan.count(b))});
+    }
+}
+
+size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::function<void(Result&&)>& onResult) {
+    // Results read before a restart but never acknowledged come first ("0"), then new ones.
+    std::vector<StreamEntry> entries = entriesOfRead(redis_.command(
+        {"XREADGROUP", "GROUP", kCoordinatorGroup, name_, "COUNT", "64", "STREAMS", kResultStream, "0"}));
+    if (entries.empty())
+        entries = entriesOfRead(redis_.command({"XREADGROUP", "GROUP", kCoordinatorGroup, name_, "COUNT", "64",
+                                                "BLOCK", std::to_string(wait.count()), "STREAMS", kResultStream,
+                                                ">"}));
+    size_t handed = 0;
+    for (const StreamEntry& e : entries) {
+        ++counters_.results;
+        Result r;
+        r.job = e.field("job");
+        r.worker = e.field("worker");
+        auto known = handedOn_.find(r.job);
+        const bool hasBatch = !e.field("batch").empty();
+        if (hasBatch) r.batch = std::stoll(e.field("batch"));
+        if (known != handedOn_.end() && (!hasBatch || known->second.insert(r.batch).second)) {
+            if (auto error = e.fields.find("error"); error != e.fields.end()) {
+                r.error = error->second;
+            } else {
+                try {
+                    r.sums = PassSums::decode(e.field("sums"));
+                } catch (const std::invalid_argument& bad) {
+                    r.error = std::string("worker ") + r.worker + " sent " + bad.what();
+                }
+            }
+            onResult(std::move(r));
+            ++handed;
+        } else if (known != handedOn_.end()) {
+            ++counters_.duplicates;
+        }
+        redis_.command({"XACK", kResultStream, kCoordinatorGroup, e.id});
+        redis_.command({"XDEL", kResultStream, e.id});
+    }
+    return handed;
+}
+
+// The mark outlives any batch in flight by far, then goes.
+void FarmCoordinator::cancel(const std::string& job) { redis_.command({"SET", cancelKey(job), "1", "EX", "86400"}); }
+
+void FarmCoordinator::forget(const std::string& job) {
+    cancel(job);
+    redis_.command({"DEL", sceneKey(job)});
+    handedOn_.erase(job);
+    // Its items still queued: the stream holds one entry per batch in flight, so a scan is short.
+    for (const StreamEntry& e : entriesOfRange(redis_.command({"XRANGE", kWorkStream, "-", "+"})))
+        if (e.fields.count("job") && e.fields.at("job") == job) redis_.command({"XDEL", kWorkStream, e.id});
+}
+
+int64_t FarmCoordinator::queueDepth() { return redis_.command({"XLEN", kWorkStream}).integer; }
+
+}  // namespace photon::farm
