@@ -52,6 +52,23 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
     app.add_option("--checkpoint-seconds", o.service.checkpointSeconds, "seconds between a render's checkpoints")
         ->type_name("N")->check(integerIn(1, 86400))
         ->capture_default_str();
+    app.add_option_function<std::string>(
+           "--redis",
+           [&o](const std::string& url) { o.service.redis = farm::RedisAddress::parse(url); },
+           "render jobs whose passes are independent (render.radius_schedule \"global\") on the photon-worker "
+           "processes of the farm at redis://HOST:PORT")
+        ->type_name("URL")
+        ->check([](const std::string& url) {
+            try {
+                farm::RedisAddress::parse(url);
+                return std::string();
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+        });
+    app.add_option("--farm-batch-passes", o.service.farmBatchPasses, "passes in one work item of the render farm")
+        ->type_name("N")->check(integerIn(1, 100000))
+        ->capture_default_str();
     app.add_option("--log-level", o.logLevel, "trace, debug, info (each request), warn, error or off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}))
         ->capture_default_str();

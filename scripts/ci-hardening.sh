@@ -58,7 +58,7 @@ server_tests=(test_image_cache test_server_jobs test_server_errors test_server_r
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
               test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges
               test_server_framing test_server_connections test_server_listing
-              test_server_image_options test_server_imports test_farm)
+              test_server_image_options test_server_imports test_farm test_farm_server)
 
 # run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
 # from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer
@@ -147,8 +147,9 @@ step "asan+ubsan: tests" san_tests
 #  - ignore_noninstrumented_modules: memory functions (memcpy, send, ...) called from inside
 #    those libraries are not checked, e.g. httplib's function-local static strings, whose
 #    initialisation guard is read in uninstrumented code. Our code's accesses still are.
-# Left out: CrashTest (renders for seconds to be killed halfway, many times slower under TSan
-# on one CPU; the restart path is covered by the other restart tests) and the slowloris test
+# Left out: CrashTest and FarmServerTest.ARestartedServer... (render for seconds to be killed
+# halfway, many times slower under TSan on one CPU; the restart path is covered by the other
+# restart tests) and the slowloris test
 # (it times answers to a second while 400 connections trickle bytes: a timing test on one CPU
 # under TSan says nothing; the guard's thread is exercised by the other connection tests).
 tsan="$root/build-tsan"
@@ -161,7 +162,7 @@ tsan_build() {
 tsan_tests() {
     local launcher=(taskset -c 0)
     TSAN_OPTIONS="ignore_noninstrumented_modules=1:log_path=$tsan/sanitizer-logs/tsan:second_deadlock_stack=1" \
-        GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*' run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
+        GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*:FarmServerTest.ARestartedServer*' run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
 }
 step "tsan: build" tsan_build
 step "tsan: tests" tsan_tests

@@ -3,9 +3,11 @@
 #include <cstdio>
 #include <spdlog/spdlog.h>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <photon/render.h>
 #include "clock.h"
+#include "farm/farm_dispatcher.h"
 #include "image_metadata.h"
 #include "job_log.h"
 #include "scene_intake.h"
@@ -46,6 +48,7 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     int resumedAt = renderer.progress().pass;
     appendJobLog(folders_.logFile(id), resumedAt > 0 ? "resumed from its checkpoint after pass " + std::to_string(resumedAt)
                                                      : "started");
+    if (farm_.farm && renderer.independentPasses()) return renderOnFarm(started, renderer);
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
@@ -60,10 +63,82 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
         saveCheckpoint(id, renderer);            // kept: more passes can follow
         return Ending::Completed;
     }
+    return stopped(id, renderer);
+}
+
+JobRunner::Ending JobRunner::stopped(const std::string& id, const Renderer& renderer) {
     if (table_.cancelRequested(id)) return Ending::Cancelled;
     // Paused, or the server is stopping: keep the state after the last finished pass.
     saveCheckpoint(id, renderer);
     return table_.pauseRequested(id) ? Ending::Paused : Ending::Interrupted;
+}
+
+// The farm renders batches of passes after the ones the checkpoint holds; they are merged in
+// pass order (a batch that arrives early waits in memory), so the checkpoint's pass count
+// says exactly which are merged and a restart asks the farm for the rest only. The image
+// is the one this process would render, bit for bit (docs/scale-out.md).
+JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Renderer& renderer) {
+    const std::string& id = started.job.id;
+    const JobSettings& settings = started.job.settings;
+    const int64_t total = renderer.progress().totalPasses;
+    int64_t merged = renderer.progress().pass;
+    const int64_t mergedAtStart = merged;
+    const std::filesystem::path sceneFile = folders_.sceneFile(id);
+    farm::FarmScene scene = farm::FarmScene::fromFolder(
+        folders_.jobDir(id), sceneFile.filename().string(),
+        {{"render.passes", std::to_string(settings.passes)},
+         {"render.photons_per_pass", std::to_string(settings.photonsPerPass)},
+         {"render.seed", std::to_string(settings.seed)}},
+        [&](const std::filesystem::path& relative) {
+            const std::string name = relative.generic_string();
+            return name == sceneFile.filename().string() || !JobFolders::isServiceFile(name);
+        });
+    scene.camera = settings.camera;
+    auto results = farm_.farm->start(id, scene, farm::BatchPlan{total - merged, farm_.batchPasses, merged});
+    appendJobLog(folders_.logFile(id), "on the render farm from pass " + std::to_string(merged) + ", " +
+                                           std::to_string(farm_.batchPasses) + " passes a batch");
+    std::map<int64_t, PassSums> early;  // batches that came before the passes before them
+    const double elapsedBefore = started.job.progress.elapsedSeconds;
+    double elapsedAtLastPass = elapsedBefore;
+    const auto start = std::chrono::steady_clock::now();
+    auto lastCheckpoint = start;
+    while (merged < total) {
+        if (started.cancel->cancelled()) {
+            farm_.farm->stop(id);
+            return stopped(id, renderer);
+        }
+        std::optional<farm::FarmCoordinator::Result> r = results->next(std::chrono::milliseconds(200));
+        if (!r) continue;
+        if (!r->error.empty()) {
+            farm_.farm->stop(id);
+            throw std::runtime_error("worker " + r->worker + ": " + r->error);
+        }
+        if (r->sums.first < merged) continue;  // passes merged already
+        early.emplace(r->sums.first, std::move(r->sums));
+        while (!early.empty() && early.begin()->first == merged) {
+            const PassSums& batch = early.begin()->second;
+            renderer.addPasses(batch);
+            merged += batch.count;
+            early.erase(early.begin());
+            RenderProgress p = renderer.progress();
+            p.elapsedSeconds = elapsedBefore + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            // At the rate of the batches merged since this start.
+            p.etaSeconds = (p.elapsedSeconds - elapsedBefore) * double(total - merged) / double(merged - mergedAtStart);
+            p.lastPass = PassStats{};
+            p.lastPass.photons = settings.photonsPerPass * batch.count;
+            double before = elapsedAtLastPass;
+            onPass(id, settings, renderer, p, before);
+            elapsedAtLastPass = p.elapsedSeconds;
+            const auto now = std::chrono::steady_clock::now();
+            if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
+                saveCheckpoint(id, renderer);
+                lastCheckpoint = now;
+            }
+        }
+    }
+    farm_.farm->stop(id);  // its scene and marks go; nothing of it is left to render
+    saveCheckpoint(id, renderer);
+    return Ending::Completed;
 }
 
 void JobRunner::saveCheckpoint(const std::string& id, const Renderer& renderer) {

@@ -15,14 +15,26 @@ class Renderer;
 struct RenderProgress;
 }  // namespace photon
 
+namespace photon::farm {
+class FarmDispatcher;
+}  // namespace photon::farm
+
 namespace photon::server {
+
+// With a render farm (photon-server --redis), a job whose passes are independent (render.
+// radius_schedule "global") is rendered by the farm's workers in batches of `batchPasses`,
+// merged here in pass order; other jobs render here as always.
+struct FarmUse {
+    farm::FarmDispatcher* farm = nullptr;  // none: every job renders here
+    int batchPasses = 4;
+};
 
 class JobRunner {
 public:
     JobRunner(JobTable& table, JobStore& store, const JobFolders& folders, ImageCache& images, EventHub& hub,
-              Metrics& metrics, double checkpointSeconds)
+              Metrics& metrics, double checkpointSeconds, FarmUse farm = {})
         : table_(table), store_(store), folders_(folders), images_(images), hub_(hub), metrics_(metrics),
-          checkpointSeconds_(checkpointSeconds) {}
+          checkpointSeconds_(checkpointSeconds), farm_(farm) {}
 
     // Does nothing if the job is no longer queued. Never throws.
     void run(const std::string& id);
@@ -30,6 +42,10 @@ public:
 private:
     enum class Ending { Completed, Cancelled, Paused, Interrupted };
     Ending render(const JobTable::Started& started);
+    Ending renderOnFarm(const JobTable::Started& started, Renderer& renderer);
+    // What a stop without completion means: cancelled, paused or the server stopping (the
+    // state kept in the checkpoint for the last two).
+    Ending stopped(const std::string& id, const Renderer& renderer);
     void onPass(const std::string& id, const JobSettings& settings, const Renderer& renderer,
                 const RenderProgress& progress, double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
@@ -45,6 +61,7 @@ private:
     EventHub& hub_;
     Metrics& metrics_;
     double checkpointSeconds_;
+    FarmUse farm_;
 };
 
 }  // namespace photon::server

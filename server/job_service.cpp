@@ -18,7 +18,9 @@ JobService::JobService(const ServiceConfig& config)
     : limits_(config.limits),
       folders_(config.dataDir),
       store_(folders_.databaseFile()),
-      runner_(table_, store_, folders_, images_, hub_, metrics_, config.checkpointSeconds) {
+      farm_(config.redis ? std::make_unique<farm::FarmDispatcher>(*config.redis, "photon-server") : nullptr),
+      runner_(table_, store_, folders_, images_, hub_, metrics_, config.checkpointSeconds,
+              FarmUse{farm_.get(), config.farmBatchPasses}) {
     restore();
     workers_ = std::make_unique<WorkerPool>(queue_, runner_, config.workers);
 }

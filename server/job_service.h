@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include "event_hub.h"
+#include "farm/farm_dispatcher.h"
 #include "idempotency.h"
 #include "image_cache.h"
 #include "job_folders.h"
@@ -30,6 +31,10 @@ struct ServiceConfig {
     // crash or restart resumes it from there rather than from pass 0.
     double checkpointSeconds = 10;
     Limits limits;
+    // The render farm (docs/scale-out.md): with a Redis address, jobs whose passes are
+    // independent are rendered by photon-worker processes, `farmBatchPasses` passes an item.
+    std::optional<farm::RedisAddress> redis;
+    int farmBatchPasses = 4;
 };
 
 // A submission as the API layer hands it over: the overrides, who sends it, and how to
@@ -112,6 +117,7 @@ private:
     ImageCache images_;
     EventHub hub_;
     Metrics metrics_;
+    std::unique_ptr<farm::FarmDispatcher> farm_;  // before runner_, which uses it
     JobRunner runner_;
     std::unique_ptr<WorkerPool> workers_;
     KeyLocks keyLocks_;

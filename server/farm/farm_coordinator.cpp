@@ -1,4 +1,5 @@
 #include "farm_coordinator.h"
+#include <cstdlib>
 #include "farm_keys.h"
 #include "stream_entries.h"
 
@@ -13,11 +14,13 @@ FarmCoordinator::FarmCoordinator(const RedisAddress& address, std::string name)
 void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
                              const std::set<int64_t>& merged) {
     redis_.command({"DEL", cancelKey(job), sceneKey(job)});
+    dropQueuedItems(job);
     scene.store(redis_, job);
-    handedOn_[job] = merged;
+    const std::string round = std::to_string(redis_.command({"INCR", kRoundCounter}).integer);
+    jobs_[job] = Submitted{round, merged};
     for (int64_t b = 0; b < plan.batches(); ++b) {
         if (merged.count(b)) continue;
-        redis_.command({"XADD", kWorkStream, "*", "job", job, "batch", std::to_string(b), "first",
+        redis_.command({"XADD", kWorkStream, "*", "job", job, "round", round, "batch", std::to_string(b), "first",
                         std::to_string(plan.first(b)), "count", std::to_string(plan.count(b))});
     }
 }
@@ -36,10 +39,13 @@ size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::funct
         Result r;
         r.job = e.field("job");
         r.worker = e.field("worker");
-        auto known = handedOn_.find(r.job);
+        auto known = jobs_.find(r.job);
         const bool hasBatch = !e.field("batch").empty();
         if (hasBatch) r.batch = std::stoll(e.field("batch"));
-        if (known != handedOn_.end() && (!hasBatch || known->second.insert(r.batch).second)) {
+        auto round = e.fields.find("round");
+        if (known != jobs_.end() && round != e.fields.end() && round->second != known->second.round) {
+            ++counters_.stale;
+        } else if (known != jobs_.end() && (!hasBatch || known->second.handedOn.insert(r.batch).second)) {
             if (auto error = e.fields.find("error"); error != e.fields.end()) {
                 r.error = error->second;
             } else {
@@ -51,7 +57,7 @@ size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::funct
             }
             onResult(std::move(r));
             ++handed;
-        } else if (known != handedOn_.end()) {
+        } else if (known != jobs_.end()) {
             ++counters_.duplicates;
         }
         redis_.command({"XACK", kResultStream, kCoordinatorGroup, e.id});
@@ -66,10 +72,37 @@ void FarmCoordinator::cancel(const std::string& job) { redis_.command({"SET", ca
 void FarmCoordinator::forget(const std::string& job) {
     cancel(job);
     redis_.command({"DEL", sceneKey(job)});
-    handedOn_.erase(job);
-    // Its items still queued: the stream holds one entry per batch in flight, so a scan is short.
+    jobs_.erase(job);
+    dropQueuedItems(job);
+}
+
+// The stream holds one entry per batch in flight, so a scan is short.
+void FarmCoordinator::dropQueuedItems(const std::string& job) {
     for (const StreamEntry& e : entriesOfRange(redis_.command({"XRANGE", kWorkStream, "-", "+"})))
         if (e.fields.count("job") && e.fields.at("job") == job) redis_.command({"XDEL", kWorkStream, e.id});
+}
+
+std::vector<WorkerInfo> FarmCoordinator::workers() {
+    std::vector<WorkerInfo> out;
+    for (const RedisReply& name : redis_.command({"SMEMBERS", kWorkerSet}).elements) {
+        RedisReply fields = redis_.command({"HGETALL", workerKey(name.string)});
+        if (fields.elements.empty()) {  // expired: gone
+            redis_.command({"SREM", kWorkerSet, name.string});
+            continue;
+        }
+        std::map<std::string, std::string> f;
+        for (size_t i = 0; i + 1 < fields.elements.size(); i += 2) f[fields.elements[i].string] = fields.elements[i + 1].string;
+        WorkerInfo w;
+        w.name = name.string;
+        w.host = f["host"];
+        w.item = f["item"];
+        w.threads = std::atoi(f["threads"].c_str());
+        w.passesPerSecond = std::atof(f["passes_per_second"].c_str());
+        w.batches = std::atoll(f["batches"].c_str());
+        w.claimed = std::atoll(f["claimed"].c_str());
+        out.push_back(std::move(w));
+    }
+    return out;
 }
 
 int64_t FarmCoordinator::queueDepth() { return redis_.command({"XLEN", kWorkStream}).integer; }

@@ -15,20 +15,32 @@
 
 namespace photon::farm {
 
-// The batches of a job of `passes` passes, `batchPasses` each (the last may be shorter).
+// The batches of `passes` passes from pass `firstPass` on, `batchPasses` each (the last may
+// be shorter).
 struct BatchPlan {
     int64_t passes = 0;
     int batchPasses = 1;
+    int64_t firstPass = 0;
     int64_t batches() const { return (passes + batchPasses - 1) / batchPasses; }
-    int64_t first(int64_t batch) const { return batch * batchPasses; }
-    int count(int64_t batch) const { return int(std::min<int64_t>(batchPasses, passes - first(batch))); }
+    int64_t first(int64_t batch) const { return firstPass + batch * batchPasses; }
+    int count(int64_t batch) const { return int(std::min<int64_t>(batchPasses, firstPass + passes - first(batch))); }
+};
+
+// A worker as its heartbeat describes it.
+struct WorkerInfo {
+    std::string name, host, item;  // item: JOB/BATCH being rendered, or empty
+    int threads = 0;
+    double passesPerSecond = 0;
+    int64_t batches = 0, claimed = 0;
 };
 
 class FarmCoordinator {
 public:
     FarmCoordinator(const RedisAddress& address, std::string name = "coordinator");
 
-    // Stores the job's scene and adds a work item for each batch not in `merged`.
+    // Stores the job's scene and adds a work item for each batch not in `merged`. Items and
+    // results of an earlier submission of the job (before a restart) are dropped: each
+    // submission is a round of its own, numbered by Redis.
     void submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
                 const std::set<int64_t>& merged = {});
 
@@ -50,15 +62,24 @@ public:
     struct Counters {
         int64_t results = 0;      // results read
         int64_t duplicates = 0;   // of batches handed on before (re-deliveries)
+        int64_t stale = 0;        // of an earlier round of their job
     };
     const Counters& counters() const { return counters_; }
     // Work items waiting or being rendered.
     int64_t queueDepth();
+    // Workers whose heartbeat has not expired.
+    std::vector<WorkerInfo> workers();
 
 private:
+    void dropQueuedItems(const std::string& job);
+
     RedisClient redis_;
     std::string name_;
-    std::map<std::string, std::set<int64_t>> handedOn_;  // per submitted job
+    struct Submitted {
+        std::string round;
+        std::set<int64_t> handedOn;
+    };
+    std::map<std::string, Submitted> jobs_;
     Counters counters_;
 };
 

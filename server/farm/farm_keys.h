@@ -11,6 +11,7 @@ inline const std::string kWorkersGroup = "workers";
 inline const std::string kResultStream = "photon:results";     // job, batch, worker, sums
 inline const std::string kCoordinatorGroup = "coordinator";
 inline const std::string kWorkerSet = "photon:workers";        // names of workers seen
+inline const std::string kRoundCounter = "photon:rounds";      // numbers each submission of a job
 // Hash: "main" the scene's main file name, "overrides" a JSON object of setting overrides,
 // "file:PATH" each file's bytes by its path relative to the scene's folder.
 inline std::string sceneKey(const std::string& job) { return "photon:job:" + job + ":scene"; }

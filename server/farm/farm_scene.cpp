@@ -31,20 +31,27 @@ std::filesystem::path inside(const std::filesystem::path& folder, const std::str
 }  // namespace
 
 FarmScene FarmScene::fromFolder(const std::filesystem::path& folder, const std::string& mainFile,
-                                std::vector<SettingOverride> overrides) {
+                                std::vector<SettingOverride> overrides,
+                                const std::function<bool(const std::filesystem::path&)>& include) {
     FarmScene s;
     s.mainFile = mainFile;
     s.overrides = std::move(overrides);
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder))
-        if (entry.is_regular_file())
-            s.files.emplace_back(entry.path().lexically_relative(folder).generic_string(), readWhole(entry.path()));
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+        if (!entry.is_regular_file()) continue;
+        const std::filesystem::path relative = entry.path().lexically_relative(folder);
+        if (!include || include(relative)) s.files.emplace_back(relative.generic_string(), readWhole(entry.path()));
+    }
     return s;
+}
+
+SceneFile FarmScene::read(const std::filesystem::path& main) const {
+    return SceneFile::read(main, overrides, ImportOptions{camera});
 }
 
 void FarmScene::store(RedisClient& redis, const std::string& job) const {
     std::string overrideLines;
     for (const SettingOverride& o : overrides) overrideLines += o.key + "=" + o.value + "\n";
-    std::vector<std::string> args = {"HSET", sceneKey(job), "main", mainFile, "overrides", overrideLines};
+    std::vector<std::string> args = {"HSET", sceneKey(job), "main", mainFile, "overrides", overrideLines, "camera", camera};
     for (const auto& [path, bytes] : files) {
         args.push_back(std::string(kFilePrefix) + path);
         args.push_back(bytes);
@@ -61,6 +68,8 @@ std::optional<FarmScene> FarmScene::load(RedisClient& redis, const std::string& 
         std::string& value = all.elements[i + 1].string;
         if (field == "main") {
             s.mainFile = value;
+        } else if (field == "camera") {
+            s.camera = value;
         } else if (field == "overrides") {
             std::istringstream lines(value);
             for (std::string line; std::getline(lines, line);) {

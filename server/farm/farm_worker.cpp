@@ -101,9 +101,9 @@ bool FarmWorker::step() {
         // The scene does not load or the item is malformed: every worker would fail alike,
         // so the coordinator hears of it and the item is done.
         job_.reset();
-        redis_.command({"XADD", kResultStream, "*", "job", entry.fields.count("job") ? entry.fields.at("job") : "",
-                        "batch", entry.fields.count("batch") ? entry.fields.at("batch") : "", "worker", options_.name,
-                        "error", e.what()});
+        auto field = [&](const char* name) { return entry.fields.count(name) ? entry.fields.at(name) : std::string(); };
+        redis_.command({"XADD", kResultStream, "*", "job", field("job"), "round", field("round"), "batch",
+                        field("batch"), "worker", options_.name, "error", e.what()});
         redis_.command({"XACK", kWorkStream, kWorkersGroup, entry.id});
         redis_.command({"XDEL", kWorkStream, entry.id});
     }
@@ -122,7 +122,7 @@ FarmWorker::Job* FarmWorker::jobFor(const std::string& id) {
     const std::filesystem::path folder = options_.scratch / id;
     std::filesystem::remove_all(folder);
     const std::filesystem::path main = scene->unpack(folder);
-    job_ = std::make_unique<Job>(Job{id, Renderer(SceneFile::read(main, scene->overrides))});
+    job_ = std::make_unique<Job>(Job{id, Renderer(scene->read(main))});
     return job_.get();
 }
 
@@ -156,8 +156,9 @@ void FarmWorker::process(const StreamEntry& entry) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     passesPerSecond_ = seconds > 0 ? count / seconds : 0;
-    redis_.command({"XADD", kResultStream, "*", "job", jobId, "batch", batch, "worker", options_.name, "sums",
-                    sums->encode()});
+    const auto round = entry.fields.find("round");
+    redis_.command({"XADD", kResultStream, "*", "job", jobId, "round", round != entry.fields.end() ? round->second : "",
+                    "batch", batch, "worker", options_.name, "sums", sums->encode()});
     finish();
     ++counters_.batches;
     counters_.passes += count;

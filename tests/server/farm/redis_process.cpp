@@ -75,3 +75,35 @@ RedisProcess::~RedisProcess() {
 }
 
 }  // namespace photon::test
+
+namespace photon::test {
+
+WorkerProcess::WorkerProcess(const farm::RedisAddress& redis, const std::string& name, const std::string& binary) {
+    const std::string url = redis.url();
+    pid_ = fork();
+    if (pid_ == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        dup2(null, STDOUT_FILENO);
+        execl(binary.c_str(), binary.c_str(), "--redis", url.c_str(), "--name", name.c_str(), "--threads", "1", nullptr);
+        _exit(127);
+    }
+}
+
+WorkerProcess::~WorkerProcess() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    for (int i = 0; i < 500; ++i) {
+        if (waitpid(pid_, nullptr, WNOHANG) == pid_) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    kill();
+}
+
+void WorkerProcess::kill() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+}
+
+}  // namespace photon::test

@@ -2,6 +2,7 @@
 // saved to disk, stopped (SIGTERM, then SIGKILL) when the object goes.
 #pragma once
 #include <sys/types.h>
+#include <string>
 #include "server/farm/redis_client.h"
 
 namespace photon::test {
@@ -20,6 +21,24 @@ public:
 private:
     pid_t pid_ = -1;
     farm::RedisAddress address_;
+};
+
+}  // namespace photon::test
+
+namespace photon::test {
+
+// The photon-worker binary as a child process, stopped (SIGTERM, then SIGKILL) when the
+// object goes; kill() is a crash.
+class WorkerProcess {
+public:
+    WorkerProcess(const farm::RedisAddress& redis, const std::string& name, const std::string& binary);
+    ~WorkerProcess();
+    WorkerProcess(const WorkerProcess&) = delete;
+    WorkerProcess& operator=(const WorkerProcess&) = delete;
+    void kill();
+
+private:
+    pid_t pid_ = -1;
 };
 
 }  // namespace photon::test

@@ -1,0 +1,76 @@
+// photon-server --redis end to end: a job whose passes are independent is rendered by two
+// photon-worker processes and served as the image one process renders, bit for bit; a job
+// with per-pixel statistics still renders in the server.
+#include "redis_process.h"
+#include <cstring>
+#include <thread>
+#include "../server_fixture.h"
+
+namespace photon::test {
+namespace {
+
+class FarmServerTest : public ServerTest {
+protected:
+    bool bitIdentical(const Image& a, const Image& b) {
+        return a.rgb.size() == b.rgb.size() &&
+               std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+    }
+    Image servedExr(const std::string& id) {
+        httplib::Result r = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str(), auth());
+        EXPECT_EQ(r->status, 200);
+        return decodeImage(r->body, ".exr");
+    }
+    RedisProcess redis_;
+};
+
+TEST_F(FarmServerTest, IndependentPassesRenderOnTheWorkersAsInOneProcess) {
+    WorkerProcess a(redis_.address(), "a", PHOTON_WORKER_BINARY), b(redis_.address(), "b", PHOTON_WORKER_BINARY);
+    startServer({"--redis", redis_.address().url(), "--farm-batch-passes", "2"});
+    json scene = smallScene(6, 5000, 32);
+    scene["render"]["radius_schedule"] = "global";
+    const std::string id = submitOk(scene);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed" || j["status"] == "failed"; },
+                       std::chrono::seconds(60));
+    ASSERT_EQ(job["status"], "completed") << job.dump();
+    EXPECT_EQ(job["pass"], 6);
+    EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene)));
+    httplib::Result log = client().Get(("/api/v1/jobs/" + id + "/log").c_str(), auth());
+    EXPECT_NE(log->body.find("on the render farm from pass 0, 2 passes a batch"), std::string::npos) << log->body;
+
+    // Per-pixel statistics cannot be split: rendered here, the same way.
+    json perPixel = smallScene(3, 5000, 32);
+    const std::string local = submitOk(perPixel);
+    ASSERT_EQ(waitForStatus(local, "completed")["pass"], 3);
+    EXPECT_TRUE(bitIdentical(servedExr(local), renderInProcess(perPixel)));
+}
+
+// The server is killed (SIGKILL) while the farm renders its job; started again, it asks the
+// farm only for the passes its checkpoint does not hold, and the image is still one
+// process's.
+TEST_F(FarmServerTest, ARestartedServerReissuesOnlyWhatItHadNotMerged) {
+    WorkerProcess worker(redis_.address(), "w", PHOTON_WORKER_BINARY);
+    const std::vector<std::string> args = {"--redis", redis_.address().url(), "--farm-batch-passes", "2",
+                                           "--checkpoint-seconds", "1"};
+    startServer(args);
+    json scene = smallScene(120, 20000, 32);
+    scene["render"]["radius_schedule"] = "global";
+    const std::string id = submitOk(scene);
+    waitFor(id, [](const json& j) { return j["pass"].get<int>() >= 10; }, std::chrono::seconds(60));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // a checkpoint after pass 10
+    killServer();
+    startServer(args);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed" || j["status"] == "failed"; },
+                       std::chrono::seconds(120));
+    ASSERT_EQ(job["status"], "completed") << job.dump();
+    const std::string log = client().Get(("/api/v1/jobs/" + id + "/log").c_str(), auth())->body;
+    const std::string second = "on the render farm from pass ";
+    const size_t at = log.rfind(second);
+    ASSERT_NE(at, std::string::npos) << log;
+    const int resumedFrom = std::stoi(log.substr(at + second.size()));
+    EXPECT_GE(resumedFrom, 10) << log;
+    EXPECT_LT(resumedFrom, 120) << log;
+    EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene)));
+}
+
+}  // namespace
+}  // namespace photon::test
