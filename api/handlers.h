@@ -26,6 +26,7 @@ void serviceEvents(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_system.cpp
 void health(RouteContext&, const httplib::Request&, httplib::Response&);
 void info(RouteContext&, const httplib::Request&, httplib::Response&);
+void listWorkers(RouteContext&, const httplib::Request&, httplib::Response&);
 void metrics(RouteContext&, const httplib::Request&, httplib::Response&);
 void homePage(RouteContext&, const httplib::Request&, httplib::Response&);
 // routes_session.cpp

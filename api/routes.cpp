@@ -9,11 +9,12 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 22> kRoutes{{
+constexpr std::array<Route, 23> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
     {"GET", "/api/v1/info", info, nullptr},
+    {"GET", "/api/v1/workers", listWorkers, nullptr},
     {"POST", "/api/v1/session", startSession, nullptr},
     {"DELETE", "/api/v1/session", endSession, nullptr},
     {"GET", "/api/v1/events", serviceEvents, nullptr},

@@ -41,8 +41,27 @@ void info(RouteContext& ctx, const httplib::Request&, httplib::Response& res) {
               {"limits", limits}});
 }
 
+// The render farm's workers (docs/scale-out.md): empty, with "farm": false, when the server
+// renders everything itself.
+void listWorkers(RouteContext& ctx, const httplib::Request&, httplib::Response& res) {
+    std::optional<server::FarmFigures> farm = ctx.service.farmFigures();
+    nlohmann::json workers = nlohmann::json::array();
+    if (farm)
+        for (const server::FarmFigures::Worker& w : farm->workers)
+            workers.push_back({{"name", w.name},
+                               {"host", w.host},
+                               {"threads", w.threads},
+                               {"busy", w.busy},
+                               {"passes_per_second", w.passesPerSecond},
+                               {"batches", w.batches},
+                               {"redeliveries", w.claimed}});
+    sendJson(res, 200,
+             {{"farm", farm.has_value()}, {"queue_depth", farm ? farm->queueDepth : 0}, {"workers", workers}});
+}
+
 void metrics(RouteContext& ctx, const httplib::Request&, httplib::Response& res) {
-    res.set_content(ctx.service.metrics().prometheusText(ctx.service.jobCounts()), "text/plain; version=0.0.4");
+    res.set_content(ctx.service.metrics().prometheusText(ctx.service.jobCounts(), ctx.service.farmFigures()),
+                    "text/plain; version=0.0.4");
 }
 
 void homePage(RouteContext&, const httplib::Request&, httplib::Response& res) {

@@ -1,4 +1,5 @@
 #include "job_service.h"
+#include <spdlog/spdlog.h>
 #include "job_labels.h"
 #include "job_log.h"
 #include "clock.h"
@@ -26,6 +27,23 @@ JobService::JobService(const ServiceConfig& config)
 }
 
 JobService::~JobService() { shutdown(); }
+
+std::optional<FarmFigures> JobService::farmFigures() {
+    if (!farm_) return std::nullopt;
+    try {
+        FarmFigures f;
+        const farm::FarmCoordinator::Counters c = farm_->counters();
+        f.queueDepth = farm_->queueDepth();
+        f.results = c.results, f.duplicates = c.duplicates, f.stale = c.stale;
+        f.batches = c.batches, f.batchSeconds = c.batchSeconds;
+        for (const farm::WorkerInfo& w : farm_->workers())
+            f.workers.push_back({w.name, w.host, w.threads, w.passesPerSecond, w.batches, w.claimed, !w.item.empty()});
+        return f;
+    } catch (const std::exception& e) {
+        spdlog::warn("render farm: {}", e.what());
+        return std::nullopt;
+    }
+}
 
 void JobService::restore() {
     for (JobRecord& job : store_.loadAll()) {

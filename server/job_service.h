@@ -97,6 +97,8 @@ public:
     Metrics& metrics() { return metrics_; }
     const Limits& limits() const { return limits_; }
     std::map<JobStatus, int> jobCounts() const { return table_.countByStatus(); }
+    // The render farm's figures; nullopt without one (or while Redis cannot be reached).
+    std::optional<FarmFigures> farmFigures();
 
     // Ends every event stream (so the HTTP server can stop), then stops the workers;
     // renders in flight are interrupted and resume on the next start.

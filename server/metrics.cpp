@@ -33,7 +33,8 @@ void Metrics::countRequest(const std::string& route, int status) {
     ++requests_[{route, status}];
 }
 
-std::string Metrics::prometheusText(const std::map<JobStatus, int>& jobsByStatus) const {
+std::string Metrics::prometheusText(const std::map<JobStatus, int>& jobsByStatus,
+                                    const std::optional<FarmFigures>& farm) const {
     std::ostringstream out;
     out << "# HELP photon_jobs Jobs known to the server, by status.\n# TYPE photon_jobs gauge\n";
     for (const auto& [status, count] : jobsByStatus)
@@ -50,6 +51,33 @@ std::string Metrics::prometheusText(const std::map<JobStatus, int>& jobsByStatus
     for (const auto& [key, count] : requests_)
         out << "photon_http_requests_total{route=\"" << escapeLabel(key.first) << "\",code=\"" << key.second
             << "\"} " << count << "\n";
+    if (farm) {
+        out << "# HELP photon_farm_queue_depth Render farm work items waiting or being rendered.\n"
+            << "# TYPE photon_farm_queue_depth gauge\nphoton_farm_queue_depth " << farm->queueDepth << "\n";
+        out << "# HELP photon_farm_batch_seconds Render farm batches merged: latency from submission to result.\n"
+            << "# TYPE photon_farm_batch_seconds summary\nphoton_farm_batch_seconds_sum " << farm->batchSeconds
+            << "\nphoton_farm_batch_seconds_count " << farm->batches << "\n";
+        out << "# HELP photon_farm_duplicate_results_total Batch results received again (re-delivered work).\n"
+            << "# TYPE photon_farm_duplicate_results_total counter\nphoton_farm_duplicate_results_total "
+            << farm->duplicates << "\n";
+        out << "# HELP photon_farm_stale_results_total Results of a job's earlier round, dropped.\n"
+            << "# TYPE photon_farm_stale_results_total counter\nphoton_farm_stale_results_total " << farm->stale << "\n";
+        out << "# HELP photon_farm_workers Render farm workers alive.\n# TYPE photon_farm_workers gauge\n"
+            << "photon_farm_workers " << farm->workers.size() << "\n";
+        out << "# HELP photon_farm_worker_passes_per_second A worker's passes per second in its last batch.\n"
+            << "# TYPE photon_farm_worker_passes_per_second gauge\n";
+        for (const FarmFigures::Worker& w : farm->workers)
+            out << "photon_farm_worker_passes_per_second{worker=\"" << escapeLabel(w.name) << "\",host=\""
+                << escapeLabel(w.host) << "\"} " << w.passesPerSecond << "\n";
+        out << "# HELP photon_farm_worker_batches A worker's batches rendered since it started.\n"
+            << "# TYPE photon_farm_worker_batches gauge\n";
+        for (const FarmFigures::Worker& w : farm->workers)
+            out << "photon_farm_worker_batches{worker=\"" << escapeLabel(w.name) << "\"} " << w.batches << "\n";
+        out << "# HELP photon_farm_worker_redeliveries Items a worker took over from a dead or hung one.\n"
+            << "# TYPE photon_farm_worker_redeliveries gauge\n";
+        for (const FarmFigures::Worker& w : farm->workers)
+            out << "photon_farm_worker_redeliveries{worker=\"" << escapeLabel(w.name) << "\"} " << w.claimed << "\n";
+    }
     return out.str();
 }
 

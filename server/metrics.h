@@ -3,6 +3,8 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <vector>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -10,13 +12,30 @@
 
 namespace photon::server {
 
+// The render farm's figures when the server uses one (docs/scale-out.md).
+struct FarmFigures {
+    int64_t queueDepth = 0;                 // work items waiting or being rendered
+    int64_t results = 0, duplicates = 0, stale = 0;
+    int64_t batches = 0;                    // merged
+    double batchSeconds = 0;                // their latencies summed, submission to result
+    struct Worker {
+        std::string name, host;
+        int threads = 0;
+        double passesPerSecond = 0;
+        int64_t batches = 0, claimed = 0;
+        bool busy = false;
+    };
+    std::vector<Worker> workers;            // alive (heartbeat not expired)
+};
+
 class Metrics {
 public:
     void addPass(int64_t photons, double renderSeconds);
     // `route` is the route template (e.g. "/api/v1/jobs/{id}"), never the raw path, so the
     // number of series stays bounded whatever clients request.
     void countRequest(const std::string& route, int status);
-    std::string prometheusText(const std::map<JobStatus, int>& jobsByStatus) const;
+    std::string prometheusText(const std::map<JobStatus, int>& jobsByStatus,
+                               const std::optional<FarmFigures>& farm = std::nullopt) const;
 
 private:
     mutable std::mutex mutex_;

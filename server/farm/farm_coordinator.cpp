@@ -17,7 +17,7 @@ void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, con
     dropQueuedItems(job);
     scene.store(redis_, job);
     const std::string round = std::to_string(redis_.command({"INCR", kRoundCounter}).integer);
-    jobs_[job] = Submitted{round, merged};
+    jobs_[job] = Submitted{round, merged, std::chrono::steady_clock::now()};
     for (int64_t b = 0; b < plan.batches(); ++b) {
         if (merged.count(b)) continue;
         redis_.command({"XADD", kWorkStream, "*", "job", job, "round", round, "batch", std::to_string(b), "first",
@@ -55,6 +55,9 @@ size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::funct
                     r.error = std::string("worker ") + r.worker + " sent " + bad.what();
                 }
             }
+            ++counters_.batches;
+            counters_.batchSeconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - known->second.at).count();
             onResult(std::move(r));
             ++handed;
         } else if (known != jobs_.end()) {

@@ -63,6 +63,8 @@ public:
         int64_t results = 0;      // results read
         int64_t duplicates = 0;   // of batches handed on before (re-deliveries)
         int64_t stale = 0;        // of an earlier round of their job
+        int64_t batches = 0;      // handed on
+        double batchSeconds = 0;  // their latencies summed, from submission to result
     };
     const Counters& counters() const { return counters_; }
     // Work items waiting or being rendered.
@@ -78,6 +80,7 @@ private:
     struct Submitted {
         std::string round;
         std::set<int64_t> handedOn;
+        std::chrono::steady_clock::time_point at;  // when its items went out
     };
     std::map<std::string, Submitted> jobs_;
     Counters counters_;

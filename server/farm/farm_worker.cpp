@@ -133,13 +133,13 @@ void FarmWorker::process(const StreamEntry& entry) {
         redis_.command({"XACK", kWorkStream, kWorkersGroup, entry.id});
         redis_.command({"XDEL", kWorkStream, entry.id});
     };
-    heartbeat(jobId + "/" + batch);
     Job* job = redis_.command({"EXISTS", cancelKey(jobId)}).integer > 0 ? nullptr : jobFor(jobId);
     if (!job) {
         ++counters_.dropped;
         finish();
         return;
     }
+    heartbeat(jobId + "/" + batch);  // from here a cancel stops the batch
     const int64_t first = std::stoll(entry.field("first"));
     const int count = std::stoi(entry.field("count"));
     CancelToken cancel;
@@ -156,13 +156,15 @@ void FarmWorker::process(const StreamEntry& entry) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     passesPerSecond_ = seconds > 0 ? count / seconds : 0;
+    // Counted, and told in the heartbeat, before the result goes out: whoever sees the
+    // batch merged sees this worker's count include it.
+    ++counters_.batches;
+    counters_.passes += count;
+    heartbeat("");
     const auto round = entry.fields.find("round");
     redis_.command({"XADD", kResultStream, "*", "job", jobId, "round", round != entry.fields.end() ? round->second : "",
                     "batch", batch, "worker", options_.name, "sums", sums->encode()});
     finish();
-    ++counters_.batches;
-    counters_.passes += count;
-    heartbeat("");
 }
 
 }  // namespace photon::farm

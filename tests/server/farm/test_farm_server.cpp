@@ -3,6 +3,7 @@
 // with per-pixel statistics still renders in the server.
 #include "redis_process.h"
 #include <cstring>
+#include <set>
 #include <thread>
 #include "../server_fixture.h"
 
@@ -37,11 +38,39 @@ TEST_F(FarmServerTest, IndependentPassesRenderOnTheWorkersAsInOneProcess) {
     httplib::Result log = client().Get(("/api/v1/jobs/" + id + "/log").c_str(), auth());
     EXPECT_NE(log->body.find("on the render farm from pass 0, 2 passes a batch"), std::string::npos) << log->body;
 
+    // The workers and the farm's figures.
+    json workers = json::parse(client().Get("/api/v1/workers", auth())->body);
+    EXPECT_EQ(workers["farm"], true);
+    EXPECT_EQ(workers["queue_depth"], 0);
+    std::set<std::string> names;
+    int64_t batches = 0;
+    for (const json& w : workers["workers"]) {
+        names.insert(w["name"].get<std::string>());
+        batches += w["batches"].get<int64_t>();
+        EXPECT_EQ(w["threads"], 1);
+        EXPECT_EQ(w["redeliveries"], 0);
+    }
+    EXPECT_EQ(names, (std::set<std::string>{"a", "b"}));
+    EXPECT_EQ(batches, 3);
+    const std::string metrics = client().Get("/metrics", auth())->body;
+    EXPECT_NE(metrics.find("\nphoton_farm_workers 2\n"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("\nphoton_farm_batch_seconds_count 3\n"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("\nphoton_farm_duplicate_results_total 0\n"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("photon_farm_worker_batches{worker=\"a\"}"), std::string::npos) << metrics;
+
     // Per-pixel statistics cannot be split: rendered here, the same way.
     json perPixel = smallScene(3, 5000, 32);
     const std::string local = submitOk(perPixel);
     ASSERT_EQ(waitForStatus(local, "completed")["pass"], 3);
     EXPECT_TRUE(bitIdentical(servedExr(local), renderInProcess(perPixel)));
+}
+
+TEST_F(FarmServerTest, WithoutAFarmTheWorkerListIsEmpty) {
+    startServer();
+    httplib::Result r = client().Get("/api/v1/workers", auth());
+    ASSERT_EQ(r->status, 200);
+    EXPECT_EQ(json::parse(r->body), json::parse(R"({"farm": false, "queue_depth": 0, "workers": []})"));
+    EXPECT_EQ(client().Get("/metrics", auth())->body.find("photon_farm"), std::string::npos);
 }
 
 // The server is killed (SIGKILL) while the farm renders its job; started again, it asks the
