@@ -208,6 +208,26 @@ export async function listJobs({ status, limit = 50, offset = 0 } = {}) {
   return { jobs, total: num(body && body.total) ?? jobs.length };
 }
 
+// The render farm: { farm, queueDepth, workers: [{ name, host, threads, busy,
+// passesPerSecond, batches, redeliveries }] }; farm is false when the server renders alone.
+export async function getWorkers() {
+  const body = await requestJson('GET', '/workers');
+  const workers = Array.isArray(body && body.workers) ? body.workers : [];
+  return {
+    farm: Boolean(body && body.farm),
+    queueDepth: num(body && body.queue_depth) ?? 0,
+    workers: workers.map((w) => ({
+      name: String(w.name ?? ''),
+      host: String(w.host ?? ''),
+      threads: num(w.threads) ?? 0,
+      busy: Boolean(w.busy),
+      passesPerSecond: num(w.passes_per_second) ?? 0,
+      batches: num(w.batches) ?? 0,
+      redeliveries: num(w.redeliveries) ?? 0,
+    })),
+  };
+}
+
 export async function getJob(id) {
   return normalizeJob(await requestJson('GET', `/jobs/${encodeURIComponent(id)}`));
 }

@@ -6,6 +6,7 @@ import { createJobView } from './job-view.js';
 import { createJobsList } from './jobs-list.js';
 import { createSubmitForm } from './submit-form.js';
 import { createTokenForm } from './token-form.js';
+import { createWorkersPanel } from './workers-panel.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -63,6 +64,7 @@ function start() {
   const initial = jobIdFromHash();
   if (initial) openJob(initial);
   jobs.refresh();
+  createWorkersPanel({ section: $('workers-panel'), summary: $('workers-summary'), rows: $('workers-rows') });
 }
 
 start();

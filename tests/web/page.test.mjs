@@ -97,6 +97,41 @@ test('the page loads with the bundled examples', async () => {
   }
 });
 
+test('the render farm panel stays hidden when the server renders alone', async () => {
+  // The server here runs without --redis: /api/v1/workers says farm: false.
+  await page.waitForResponse((r) => r.url().endsWith('/api/v1/workers'), { timeout: 10_000 }).catch(() => {});
+  const workers = await page.evaluate(async () => (await fetch('/api/v1/workers')).json());
+  assert.deepEqual(workers, { farm: false, queue_depth: 0, workers: [] });
+  assert.equal(await page.locator('#workers-panel').isHidden(), true);
+});
+
+test('the render farm panel lists the workers a farm reports', async () => {
+  // The answer a server started with --redis gives (its shape is held to api/openapi.yaml by
+  // the server's own tests), served here by the browser's request interception.
+  const farm = {
+    farm: true,
+    queue_depth: 3,
+    workers: [
+      { name: 'node-1', host: 'render-a', threads: 16, busy: true, passes_per_second: 2.5, batches: 12, redeliveries: 1 },
+      { name: 'node-2', host: 'render-b', threads: 8, busy: false, passes_per_second: 1.25, batches: 7, redeliveries: 0 },
+    ],
+  };
+  await page.route('**/api/v1/workers', (route) => route.fulfill({ json: farm }));
+  try {
+    await page.locator('#workers-panel').waitFor({ state: 'visible', timeout: 10_000 });
+    assert.equal(await textOf('#workers-summary'), '2 workers, 1 rendering; 3 batches queued or in progress.');
+    const rows = await page.locator('#workers-rows tr').evaluateAll((trs) =>
+      trs.map((tr) => [...tr.children].map((td) => td.textContent)));
+    assert.deepEqual(rows, [
+      ['node-1', 'render-a', '16', 'rendering', '2.50', '12', '1'],
+      ['node-2', 'render-b', '8', 'idle', '1.25', '7', '0'],
+    ]);
+  } finally {
+    await page.unroute('**/api/v1/workers');
+  }
+  await page.locator('#workers-panel').waitFor({ state: 'hidden', timeout: 10_000 });
+});
+
 test('invalid JSON is explained next to the textarea and nothing is sent', async () => {
   let posted = 0;
   const onRequest = (request) => {
