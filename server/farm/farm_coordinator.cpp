@@ -7,6 +7,10 @@ namespace photon::farm {
 
 FarmCoordinator::FarmCoordinator(const RedisAddress& address, std::string name)
     : redis_(address, std::chrono::seconds(5), std::chrono::seconds(60)), name_(std::move(name)) {
+    ensureGroups();
+}
+
+void FarmCoordinator::ensureGroups() {
     ensureGroup(redis_, kWorkStream, kWorkersGroup);
     ensureGroup(redis_, kResultStream, kCoordinatorGroup);
 }

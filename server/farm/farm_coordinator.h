@@ -69,6 +69,9 @@ public:
     const Counters& counters() const { return counters_; }
     // Work items waiting or being rendered.
     int64_t queueDepth();
+    // Makes the consumer groups if Redis has none (started without them, or restarted
+    // without its data).
+    void ensureGroups();
     // Workers whose heartbeat has not expired.
     std::vector<WorkerInfo> workers();
 

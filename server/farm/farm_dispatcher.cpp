@@ -39,8 +39,15 @@ void FarmDispatcher::readResults() {
                 if (job != jobs_.end()) job->second->push(std::move(r));
             });
         } catch (const std::exception& e) {
+            // Redis away: wait, then read again (the client reconnects; the result group is
+            // made again if Redis lost it).
             spdlog::error("render farm: {}", e.what());
             std::this_thread::sleep_for(std::chrono::seconds(1));
+            try {
+                std::lock_guard<std::mutex> lock(mutex_);
+                coordinator_.ensureGroups();
+            } catch (const std::exception&) {
+            }
         }
         std::this_thread::yield();
     }

@@ -3,6 +3,7 @@
 // renders it again: the coordinator merges a batch once however often it arrives.
 #include "farm_worker.h"
 #include <unistd.h>
+#include <cstdio>
 #include <thread>
 #include <photon/render.h>
 #include "farm_keys.h"
@@ -110,8 +111,23 @@ bool FarmWorker::step() {
     return true;
 }
 
+// Redis going away (a restart, the network) is waited out: the item in flight stays pending
+// and is claimed by whoever reaches Redis first after claim-after. A consumer group lost
+// with Redis's data (no append-only file) is made again.
 void FarmWorker::run(const std::atomic<bool>& stop) {
-    while (!stop.load()) step();
+    while (!stop.load()) {
+        try {
+            step();
+        } catch (const RedisError& e) {
+            std::fprintf(stderr, "photon-worker %s: %s; trying again\n", options_.name.c_str(), e.what());
+            std::this_thread::sleep_for(std::chrono::seconds(1));
+            try {
+                ensureGroup(redis_, kWorkStream, kWorkersGroup);
+                redis_.command({"SADD", kWorkerSet, options_.name});
+            } catch (const RedisError&) {
+            }
+        }
+    }
 }
 
 FarmWorker::Job* FarmWorker::jobFor(const std::string& id) {

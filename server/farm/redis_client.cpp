@@ -66,20 +66,36 @@ const RedisReply& RedisReply::at(size_t i) const {
 }
 
 struct RedisClient::Connection {
+    RedisAddress address;
+    std::chrono::milliseconds timeout, readTimeout;
     redisContext* context = nullptr;
-    ~Connection() {
-        if (context) redisFree(context);
+
+    // A new connection in place of the old, or RedisError.
+    void open() {
+        close();
+        context = redisConnectWithTimeout(address.host.c_str(), address.port, toTimeval(timeout));
+        if (!context) throw RedisError("cannot reach Redis at " + address.url());
+        if (context->err) {
+            const std::string why = context->errstr;
+            close();
+            throw RedisError("cannot reach Redis at " + address.url() + ": " + why);
+        }
+        redisSetTimeout(context, toTimeval(readTimeout));
     }
+    void close() {
+        if (context) redisFree(context);
+        context = nullptr;
+    }
+    ~Connection() { close(); }
 };
 
 RedisClient::RedisClient(const RedisAddress& address, std::chrono::milliseconds timeout,
                          std::chrono::milliseconds readTimeout)
     : connection_(std::make_unique<Connection>()) {
-    connection_->context = redisConnectWithTimeout(address.host.c_str(), address.port, toTimeval(timeout));
-    if (!connection_->context) throw RedisError("cannot reach Redis at " + address.url());
-    if (connection_->context->err)
-        throw RedisError("cannot reach Redis at " + address.url() + ": " + connection_->context->errstr);
-    redisSetTimeout(connection_->context, toTimeval(readTimeout));
+    connection_->address = address;
+    connection_->timeout = timeout;
+    connection_->readTimeout = readTimeout;
+    connection_->open();
 }
 
 RedisClient::~RedisClient() = default;
@@ -90,8 +106,10 @@ RedisReply RedisClient::command(const std::vector<std::string>& args) {
     std::vector<const char*> argv;
     std::vector<size_t> lengths;
     for (const std::string& a : args) argv.push_back(a.data()), lengths.push_back(a.size());
+    // A connection that failed before (Redis restarted, the network dropped) is opened
+    // again first; if that fails too, this command fails.
+    if (!connection_->context || connection_->context->err) connection_->open();
     redisContext* c = connection_->context;
-    if (c->err) throw RedisError(std::string("Redis connection failed: ") + c->errstr);
     auto* reply = static_cast<redisReply*>(redisCommandArgv(c, int(argv.size()), argv.data(), lengths.data()));
     if (!reply) throw RedisError(std::string("Redis connection failed: ") + c->errstr);
     std::unique_ptr<redisReply, void (*)(void*)> owned(reply, freeReplyObject);

@@ -49,7 +49,8 @@ public:
     RedisClient& operator=(RedisClient&&) noexcept;
 
     // Sends the command and waits for its reply; throws RedisError if the connection fails
-    // (it is then unusable) or Redis answers with an error.
+    // or Redis answers with an error. After a failed connection the next command connects
+    // again.
     RedisReply command(const std::vector<std::string>& args);
     RedisReply command(std::initializer_list<std::string_view> args);
 

@@ -32,15 +32,29 @@ int freeLoopbackPort() {
 
 }  // namespace
 
-RedisProcess::RedisProcess() {
+RedisProcess::RedisProcess(std::string appendOnlyDir) : appendOnlyDir_(std::move(appendOnlyDir)) {
     address_ = farm::RedisAddress{"127.0.0.1", freeLoopbackPort()};
+    start();
+}
+
+void RedisProcess::restart() {
+    stop();
+    start();
+}
+
+void RedisProcess::start() {
     const std::string port = std::to_string(address_.port);
+    const bool appendOnly = !appendOnlyDir_.empty();
     pid_ = fork();
     if (pid_ == 0) {
         int null = open("/dev/null", O_WRONLY);
         dup2(null, STDOUT_FILENO);
-        execlp("redis-server", "redis-server", "--port", port.c_str(), "--bind", "127.0.0.1", "--save", "",
-               "--appendonly", "no", nullptr);
+        if (appendOnly)
+            execlp("redis-server", "redis-server", "--port", port.c_str(), "--bind", "127.0.0.1", "--save", "",
+                   "--appendonly", "yes", "--dir", appendOnlyDir_.c_str(), nullptr);
+        else
+            execlp("redis-server", "redis-server", "--port", port.c_str(), "--bind", "127.0.0.1", "--save", "",
+                   "--appendonly", "no", nullptr);
         _exit(127);
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
@@ -63,28 +77,36 @@ RedisProcess::RedisProcess() {
     throw std::runtime_error("redis-server did not answer on port " + port);
 }
 
-RedisProcess::~RedisProcess() {
+RedisProcess::~RedisProcess() { stop(); }
+
+void RedisProcess::stop() {
     if (pid_ <= 0) return;
     kill(pid_, SIGTERM);
     for (int i = 0; i < 200; ++i) {
-        if (waitpid(pid_, nullptr, WNOHANG) == pid_) return;
+        if (waitpid(pid_, nullptr, WNOHANG) == pid_) {
+            pid_ = -1;
+            return;
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     kill(pid_, SIGKILL);
     waitpid(pid_, nullptr, 0);
+    pid_ = -1;
 }
 
 }  // namespace photon::test
 
 namespace photon::test {
 
-WorkerProcess::WorkerProcess(const farm::RedisAddress& redis, const std::string& name, const std::string& binary) {
+WorkerProcess::WorkerProcess(const farm::RedisAddress& redis, const std::string& name, const std::string& binary,
+                             const std::string& claimAfterSeconds) {
     const std::string url = redis.url();
     pid_ = fork();
     if (pid_ == 0) {
         int null = open("/dev/null", O_WRONLY);
         dup2(null, STDOUT_FILENO);
-        execl(binary.c_str(), binary.c_str(), "--redis", url.c_str(), "--name", name.c_str(), "--threads", "1", nullptr);
+        execl(binary.c_str(), binary.c_str(), "--redis", url.c_str(), "--name", name.c_str(), "--threads", "1",
+              "--claim-after", claimAfterSeconds.c_str(), nullptr);
         _exit(127);
     }
 }

@@ -3,6 +3,8 @@
 // with per-pixel statistics still renders in the server.
 #include "redis_process.h"
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 #include <set>
 #include <thread>
 #include "../server_fixture.h"
@@ -65,6 +67,34 @@ TEST_F(FarmServerTest, IndependentPassesRenderOnTheWorkersAsInOneProcess) {
     EXPECT_TRUE(bitIdentical(servedExr(local), renderInProcess(perPixel)));
 }
 
+// Many small jobs over three workers: each completes with its one-process image, and the
+// workers rendered each batch once (12 batches, no duplicate results).
+TEST_F(FarmServerTest, ManySmallJobsOverThreeWorkersEachRenderOnce) {
+    WorkerProcess a(redis_.address(), "a", PHOTON_WORKER_BINARY), b(redis_.address(), "b", PHOTON_WORKER_BINARY),
+        c(redis_.address(), "c", PHOTON_WORKER_BINARY);
+    startServer({"--redis", redis_.address().url(), "--farm-batch-passes", "2", "--workers", "3"});
+    std::vector<std::pair<std::string, json>> jobs;
+    for (int seed = 1; seed <= 6; ++seed) {
+        json scene = smallScene(4, 3000, 24);
+        scene["render"]["radius_schedule"] = "global";
+        scene["render"]["seed"] = seed;
+        jobs.emplace_back(submitOk(scene), scene);
+    }
+    for (const auto& [id, scene] : jobs) {
+        json job = waitFor(id, [](const json& j) { return j["status"] == "completed" || j["status"] == "failed"; },
+                           std::chrono::seconds(60));
+        ASSERT_EQ(job["status"], "completed") << job.dump();
+        EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene))) << id;
+    }
+    int64_t batches = 0;
+    const json workers = json::parse(client().Get("/api/v1/workers", auth())->body);
+    for (const json& w : workers["workers"]) batches += w["batches"].get<int64_t>();
+    EXPECT_EQ(batches, 12) << workers.dump();
+    const std::string metrics = client().Get("/metrics", auth())->body;
+    EXPECT_NE(metrics.find("\nphoton_farm_batch_seconds_count 12\n"), std::string::npos) << metrics;
+    EXPECT_NE(metrics.find("\nphoton_farm_duplicate_results_total 0\n"), std::string::npos) << metrics;
+}
+
 TEST_F(FarmServerTest, WithoutAFarmTheWorkerListIsEmpty) {
     startServer();
     httplib::Result r = client().Get("/api/v1/workers", auth());
@@ -98,6 +128,35 @@ TEST_F(FarmServerTest, ARestartedServerReissuesOnlyWhatItHadNotMerged) {
     const int resumedFrom = std::stoi(log.substr(at + second.size()));
     EXPECT_GE(resumedFrom, 10) << log;
     EXPECT_LT(resumedFrom, 120) << log;
+    EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene)));
+}
+
+// Redis (with its append-only file) is restarted while the farm renders a job: the worker
+// and the server wait it out, and the job completes with one process's image.
+class FarmRedisRestartTest : public FarmServerTest {
+protected:
+    static std::filesystem::path appendOnlyDir() {
+        auto dir = std::filesystem::temp_directory_path() / ("photon-aof-" + std::to_string(getpid()));
+        std::filesystem::create_directories(dir);
+        return dir;
+    }
+    ~FarmRedisRestartTest() override { std::filesystem::remove_all(aof_); }
+    std::filesystem::path aof_ = appendOnlyDir();
+    RedisProcess durable_{aof_.string()};
+};
+
+TEST_F(FarmRedisRestartTest, AJobOutlivesARedisRestart) {
+    WorkerProcess worker(durable_.address(), "w", PHOTON_WORKER_BINARY, "1");
+    startServer({"--redis", durable_.address().url(), "--farm-batch-passes", "2"});
+    json scene = smallScene(60, 20000, 32);
+    scene["render"]["radius_schedule"] = "global";
+    const std::string id = submitOk(scene);
+    waitFor(id, [](const json& j) { return j["pass"].get<int>() >= 6; }, std::chrono::seconds(60));
+    durable_.restart();
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed" || j["status"] == "failed"; },
+                       std::chrono::seconds(120));
+    ASSERT_EQ(job["status"], "completed") << job.dump();
+    EXPECT_EQ(job["pass"], 60);
     EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene)));
 }
 
