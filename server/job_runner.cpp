@@ -116,16 +116,16 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
         if (r->sums.first < merged) continue;  // passes merged already
         early.emplace(r->sums.first, std::move(r->sums));
         while (!early.empty() && early.begin()->first == merged) {
-            const PassSums& batch = early.begin()->second;
-            renderer.addPasses(batch);
-            merged += batch.count;
+            const int64_t count = early.begin()->second.count;
+            renderer.addPasses(early.begin()->second);
+            merged += count;
             early.erase(early.begin());
             RenderProgress p = renderer.progress();
             p.elapsedSeconds = elapsedBefore + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             // At the rate of the batches merged since this start.
             p.etaSeconds = (p.elapsedSeconds - elapsedBefore) * double(total - merged) / double(merged - mergedAtStart);
             p.lastPass = PassStats{};
-            p.lastPass.photons = settings.photonsPerPass * batch.count;
+            p.lastPass.photons = settings.photonsPerPass * count;
             double before = elapsedAtLastPass;
             onPass(id, settings, renderer, p, before);
             elapsedAtLastPass = p.elapsedSeconds;
