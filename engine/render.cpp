@@ -28,8 +28,10 @@ Image Renderer::snapshot() const {
 
 LayeredImage Renderer::layers() const { return pendingLayers()->layers(); }
 
-std::shared_ptr<const PendingImage> Renderer::pendingLayers() const {
-    return std::make_shared<const PendingImage>(integrator_->snapshot(), denoiser_, scene_->settings().exposure);
+std::shared_ptr<const PendingImage> Renderer::pendingLayers() const { return pendingLayersOf(integrator_->snapshot()); }
+
+std::shared_ptr<const PendingImage> Renderer::pendingLayersOf(Image raw) const {
+    return std::make_shared<const PendingImage>(std::move(raw), denoiser_, scene_->settings().exposure);
 }
 
 bool Renderer::renderPass(const CancelToken& cancel) {

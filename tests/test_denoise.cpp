@@ -5,6 +5,8 @@
 #include <unistd.h>
 #include <cmath>
 #include <filesystem>
+#include <cstring>
+#include <photon/image_bytes.h>
 #include <photon/image_io.h>
 #include "math/rng.h"
 #include "post/bilateral.h"
@@ -167,6 +169,56 @@ TEST_F(DenoiseCornell, IsCloserToTheReferenceThanTheRawImage) {
                 denoised, denoised / raw, rawAll, denoisedAll, denoisedAll / rawAll);
     EXPECT_LT(denoised, 0.65 * raw);        // measured 0.57x
     EXPECT_LT(denoisedAll, 0.8 * rawAll);  // measured 0.73x
+}
+
+// A render farm worker sends its raw image across processes; the coordinator's Renderer of
+// the same scene filters it. The bytes keep every float, so the layers are the ones the
+// worker's own Renderer would make, bit for bit.
+TEST(DenoiseElsewhere, AnImageSentAsBytesIsFilteredAsWhereItWasRendered) {
+    SceneDescription d = cornell(2, 5000, 3);
+    d.render.denoise.enabled = true;
+    Renderer worker(Scene::build(d));
+    Renderer coordinator(Scene::build(d));
+    CancelToken never;
+    worker.run(never);
+    const std::string bytes = encodeImageBytes(worker.rawSnapshot());
+    EXPECT_LT(bytes.size(), worker.rawSnapshot().rgb.size() * sizeof(float));
+    const LayeredImage here = worker.pendingLayers()->layers();
+    const LayeredImage there = coordinator.pendingLayersOf(decodeImageBytes(bytes))->layers();
+    EXPECT_EQ(there.main.rgb, here.main.rgb);
+    ASSERT_EQ(there.layers.size(), here.layers.size());
+    for (size_t i = 0; i < here.layers.size(); ++i) {
+        EXPECT_EQ(there.layers[i].name, here.layers[i].name);
+        EXPECT_EQ(there.layers[i].image.rgb, here.layers[i].image.rgb);
+    }
+    EXPECT_NE(there.main.rgb, there.layers[0].image.rgb);  // filtered: not the raw layer
+}
+
+TEST(ImageBytes, RefuseWhatTheyDidNotWrite) {
+    Image image(3, 2);
+    image.set(2, 1, Color(1.5f, -0.0f, 3e-39f));  // a negative zero and a denormal kept as they are
+    const std::string bytes = encodeImageBytes(image);
+    const Image back = decodeImageBytes(bytes);
+    EXPECT_EQ(back.width, 3);
+    EXPECT_EQ(back.height, 2);
+    EXPECT_EQ(std::memcmp(back.rgb.data(), image.rgb.data(), image.rgb.size() * sizeof(float)), 0);
+    auto refuses = [](std::string_view b, const std::string& message) {
+        try {
+            decodeImageBytes(b);
+            ADD_FAILURE() << "decoded: " << message;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    };
+    refuses(bytes.substr(0, 10), "image bytes: shorter than their header");
+    refuses("XXXX" + bytes.substr(4), "image bytes: not an image");
+    refuses(bytes.substr(0, bytes.size() - 4), "image bytes: damaged pixels");
+    std::string wrongVersion = bytes;
+    wrongVersion[4] = 7;
+    refuses(wrongVersion, "image bytes: version 7, expected 1");
+    std::string huge = bytes;
+    huge[11] = 0x7f;  // the width's high byte
+    refuses(huge, "image bytes: invalid size");
 }
 
 TEST_F(DenoiseCornell, KeepsEdges) {

@@ -1,9 +1,9 @@
 // PassSums: adding batches, and their binary form. The form: "PHPS", a version, the batch's
 // first pass, pass count, width and height (little-endian), then the values as zlib
-// compresses them. Neighbouring pixels' sums share their high bytes, which is most of what
+// compresses them (film/zlib_block.h). Neighbouring pixels' sums share their high bytes, which is most of what
 // zlib finds to squeeze (measured in tests/test_independent_passes.cpp).
 #include <photon/pass_sums.h>
-#include <zlib.h>
+#include "film/zlib_block.h"
 #include <cstring>
 #include <stdexcept>
 
@@ -40,17 +40,8 @@ std::string PassSums::encode() const {
     std::memcpy(h.magic, kMagic, sizeof kMagic);
     h.version = kVersion;
     h.first = first, h.count = count, h.width = width, h.height = height;
-    const uLong rawBytes = uLong(values.size() * sizeof(int64_t));
-    uLongf packedBytes = compressBound(rawBytes);
-    std::string out(sizeof h + packedBytes, '\0');
-    std::memcpy(out.data(), &h, sizeof h);
-    // Level 1: batches go out once per batch of passes, and the faster levels compress
-    // these sums nearly as well.
-    if (compress2(reinterpret_cast<Bytef*>(out.data() + sizeof h), &packedBytes,
-                  reinterpret_cast<const Bytef*>(values.data()), rawBytes, 1) != Z_OK)
-        throw std::runtime_error("pass sums: compression failed");
-    out.resize(sizeof h + packedBytes);
-    return out;
+    return packZlibBlock(std::string_view(reinterpret_cast<const char*>(&h), sizeof h), values.data(),
+                         values.size() * sizeof(int64_t));
 }
 
 PassSums PassSums::decode(std::string_view bytes) {
@@ -67,11 +58,7 @@ PassSums PassSums::decode(std::string_view bytes) {
     PassSums s;
     s.first = h.first, s.count = h.count, s.width = h.width, s.height = h.height;
     s.values.resize(valueCount(h.width, h.height));
-    uLongf rawBytes = uLongf(s.values.size() * sizeof(int64_t));
-    const uLongf expected = rawBytes;
-    if (uncompress(reinterpret_cast<Bytef*>(s.values.data()), &rawBytes,
-                   reinterpret_cast<const Bytef*>(bytes.data() + sizeof h), uLong(bytes.size() - sizeof h)) != Z_OK ||
-        rawBytes != expected)
+    if (!unpackZlibBlock(bytes, sizeof h, s.values.data(), s.values.size() * sizeof(int64_t)))
         throw std::invalid_argument("pass sums: damaged values");
     return s;
 }

@@ -56,6 +56,9 @@ public:
     // The same, filtered only when first asked for, with the scene's exposure (see
     // PendingImage).
     std::shared_ptr<const PendingImage> pendingLayers() const;
+    // pendingLayers() of an image another Renderer of the same scene made (rawSnapshot() on
+    // a render farm worker): this render's post filter and exposure applied to it.
+    std::shared_ptr<const PendingImage> pendingLayersOf(Image raw) const;
     // The render's whole state after the last finished pass, and its restoration into a
     // new Renderer of the same scene: the passes that follow give the image an
     // uninterrupted render would have. Where the bytes go is the caller's business.
