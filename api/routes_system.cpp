@@ -52,6 +52,7 @@ void listWorkers(RouteContext& ctx, const httplib::Request&, httplib::Response& 
                                {"host", w.host},
                                {"threads", w.threads},
                                {"busy", w.busy},
+                               {"job", w.job.empty() ? nlohmann::json(nullptr) : nlohmann::json(w.job)},
                                {"passes_per_second", w.passesPerSecond},
                                {"batches", w.batches},
                                {"redeliveries", w.claimed}});

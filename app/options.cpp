@@ -27,7 +27,9 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
     app.add_option("--host", o.host, "address to listen on")->capture_default_str();
     app.add_option("--port", o.port, "port; 0 picks a free one")->type_name("N")->check(integerIn(0, 65535))->capture_default_str();
     app.add_option("--data", o.service.dataDir, "folder of the job store, scenes and images")->capture_default_str();
-    app.add_option("--workers", o.service.workers, "jobs rendered at once; 0 stores jobs without rendering")
+    app.add_option("--workers", o.service.workers,
+                   "jobs rendered at once; 0 stores jobs without rendering (with --redis: render farm workers "
+                   "run in this process; 0 renders nothing here)")
         ->type_name("N")->check(integerIn(0, 256))
         ->capture_default_str();
     CLI::Option* token =
@@ -55,8 +57,9 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
     app.add_option_function<std::string>(
            "--redis",
            [&o](const std::string& url) { o.service.redis = farm::RedisAddress::parse(url); },
-           "render jobs whose passes are independent (render.radius_schedule \"global\") on the photon-worker "
-           "processes of the farm at redis://HOST:PORT")
+           "render every job on the render farm at redis://HOST:PORT (photon-worker processes, and --workers "
+           "of this process's own): jobs whose passes are independent (render.radius_schedule \"global\") in "
+           "batches of passes, others whole")
         ->type_name("URL")
         ->check([](const std::string& url) {
             try {
@@ -68,6 +71,9 @@ void declareOptions(CLI::App& app, ServerOptions& o) {
         });
     app.add_option("--farm-batch-passes", o.service.farmBatchPasses, "passes in one work item of the render farm")
         ->type_name("N")->check(integerIn(1, 100000))
+        ->capture_default_str();
+    app.add_option("--farm-jobs", o.service.farmJobs, "jobs on the render farm at once")
+        ->type_name("N")->check(integerIn(1, 4096))
         ->capture_default_str();
     app.add_option("--log-level", o.logLevel, "trace, debug, info (each request), warn, error or off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}))

@@ -1,8 +1,8 @@
-// photon-worker: one machine's share of the render farm (docs/scale-out.md). Takes batches
-// of independent passes from Redis, renders them with the engine and sends their sums back,
+// photon-worker: one machine's share of the render farm (docs/scale-out.md). Takes work
+// items from Redis (batches of independent passes, or whole jobs), renders them with the
+// engine and sends back what they made,
 // until SIGINT or SIGTERM, after which it finishes nothing more: an item it was rendering
 // stays pending and another worker claims it.
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <csignal>
@@ -19,19 +19,13 @@ std::atomic<bool> stopRequested{false};
 
 void requestStop(int) { stopRequested.store(true); }
 
-std::string defaultName() {
-    char host[256] = {};
-    gethostname(host, sizeof host - 1);
-    return std::string(host) + "-" + std::to_string(getpid());
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App cli("Renders batches of passes for a photon-server started with --redis.", "photon-worker");
+    CLI::App cli("Renders jobs and batches of passes for a photon-server started with --redis.", "photon-worker");
     std::string redis;
     photon::farm::WorkerOptions options;
-    options.name = defaultName();
+    options.name = photon::farm::defaultWorkerName();
     double claimAfter = 30;
     cli.add_option("--redis", redis, "the farm's Redis, redis://HOST:PORT")->required();
     cli.add_option("--threads", options.threads, "rendering threads (default: one per core)")->check(CLI::Range(1, 4096));

@@ -49,7 +49,7 @@ LIBRARIES = {
     "httplib.h": {"api", "service-tests", "fuzz"},
     "sqlite3.h": {"server", "service-tests"},
     "hiredis": {"server"},
-    "CLI": {"cli", "app", "engine-tests"},  # photon-bench
+    "CLI": {"cli", "app", "engine-tests", "service-tests"},  # photon-bench, photon-farm-bench
 }
 
 

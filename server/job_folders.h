@@ -27,6 +27,8 @@ public:
 
     std::filesystem::path databaseFile() const { return root_ / "jobs.db"; }
     std::filesystem::path jobDir(const std::string& id) const { return root_ / "jobs" / id; }
+    // Where the render farm workers this server runs unpack the scenes they render.
+    std::filesystem::path farmScratchDir() const { return root_ / "farm-scratch"; }
     // The job's scene file, whichever of sceneFileNames() its folder holds.
     std::filesystem::path sceneFile(const std::string& id) const;
     // The names a job's scene is stored under, one a kind of scene file the service

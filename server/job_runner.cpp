@@ -48,7 +48,7 @@ JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     int resumedAt = renderer.progress().pass;
     appendJobLog(folders_.logFile(id), resumedAt > 0 ? "resumed from its checkpoint after pass " + std::to_string(resumedAt)
                                                      : "started");
-    if (farm_.farm && renderer.independentPasses()) return renderOnFarm(started, renderer);
+    if (farm_.farm) return renderer.independentPasses() ? renderOnFarm(started, renderer) : renderWholeOnFarm(started, renderer);
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
@@ -73,16 +73,11 @@ JobRunner::Ending JobRunner::stopped(const std::string& id, const Renderer& rend
     return table_.pauseRequested(id) ? Ending::Paused : Ending::Interrupted;
 }
 
-// The farm renders batches of passes after the ones the checkpoint holds; they are merged in
-// pass order (a batch that arrives early waits in memory), so the checkpoint's pass count
-// says exactly which are merged and a restart asks the farm for the rest only. The image
-// is the one this process would render, bit for bit (docs/scale-out.md).
-JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Renderer& renderer) {
+// The job's folder as the farm carries it: the scene and what it reads, none of the service's
+// own files, with the job's settings on top.
+farm::FarmScene JobRunner::farmScene(const JobTable::Started& started) const {
     const std::string& id = started.job.id;
     const JobSettings& settings = started.job.settings;
-    const int64_t total = renderer.progress().totalPasses;
-    int64_t merged = renderer.progress().pass;
-    const int64_t mergedAtStart = merged;
     const std::filesystem::path sceneFile = folders_.sceneFile(id);
     farm::FarmScene scene = farm::FarmScene::fromFolder(
         folders_.jobDir(id), sceneFile.filename().string(),
@@ -94,6 +89,20 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
             return name == sceneFile.filename().string() || !JobFolders::isServiceFile(name);
         });
     scene.camera = settings.camera;
+    return scene;
+}
+
+// The farm renders batches of passes after the ones the checkpoint holds; they are merged in
+// pass order (a batch that arrives early waits in memory), so the checkpoint's pass count
+// says exactly which are merged and a restart asks the farm for the rest only. The image
+// is the one this process would render, bit for bit (docs/scale-out.md).
+JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Renderer& renderer) {
+    const std::string& id = started.job.id;
+    const JobSettings& settings = started.job.settings;
+    const int64_t total = renderer.progress().totalPasses;
+    int64_t merged = renderer.progress().pass;
+    const int64_t mergedAtStart = merged;
+    const farm::FarmScene scene = farmScene(started);
     auto results = farm_.farm->start(id, scene, farm::BatchPlan{total - merged, farm_.batchPasses, merged});
     appendJobLog(folders_.logFile(id), "on the render farm from pass " + std::to_string(merged) + ", " +
                                            std::to_string(farm_.batchPasses) + " passes a batch");
@@ -141,6 +150,45 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
     return Ending::Completed;
 }
 
+// One worker at a time renders the job, from the checkpoint this process holds; its passes
+// (at most one a preview interval, the last always) and checkpoints come back here. A worker
+// taking over a dead one's item resumes from the last checkpoint in Redis, so passes come
+// again: only passes after the last shown are shown. Pause and the server stopping keep the
+// last checkpoint received (up to --checkpoint-seconds of passes are rendered again).
+JobRunner::Ending JobRunner::renderWholeOnFarm(const JobTable::Started& started, const Renderer& renderer) {
+    const std::string& id = started.job.id;
+    std::optional<std::string> checkpoint = readWholeFile(folders_.checkpointFile(id));
+    auto results = farm_.farm->startJob(id, farmScene(started), farm::WholeJobPlan{checkpointSeconds_, farm_.previewSeconds},
+                                        checkpoint);
+    int shown = renderer.progress().pass, checkpointed = shown;
+    appendJobLog(folders_.logFile(id), "on the render farm as a whole job from pass " + std::to_string(shown));
+    double elapsedBefore = started.job.progress.elapsedSeconds;
+    while (true) {
+        if (started.cancel->cancelled()) {
+            farm_.farm->stop(id);
+            if (table_.cancelRequested(id)) return Ending::Cancelled;
+            return table_.pauseRequested(id) ? Ending::Paused : Ending::Interrupted;
+        }
+        std::optional<farm::FarmCoordinator::Result> r = results->next(std::chrono::milliseconds(200));
+        if (!r) continue;
+        if (!r->error.empty()) {
+            farm_.farm->stop(id);
+            throw std::runtime_error("worker " + r->worker + ": " + r->error);
+        }
+        using Kind = farm::FarmCoordinator::Result::Kind;
+        if (r->kind == Kind::Pass && r->progress.pass > shown) {
+            shown = r->progress.pass;
+            onPass(id, started.job.settings, renderer.pendingLayersOf(std::move(r->image)), r->progress, elapsedBefore);
+        } else if (r->kind == Kind::Checkpoint && r->progress.pass > checkpointed) {
+            checkpointed = r->progress.pass;
+            writeFileAtomically(folders_.checkpointFile(id), r->checkpoint);
+        } else if (r->kind == Kind::Done) {
+            farm_.farm->stop(id);
+            return Ending::Completed;
+        }
+    }
+}
+
 void JobRunner::saveCheckpoint(const std::string& id, const Renderer& renderer) {
     std::ostringstream bytes;
     renderer.saveCheckpoint(bytes);
@@ -166,9 +214,14 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, const
                        const RenderProgress& p, double& elapsedBefore) {
     // Between passes the snapshot is exactly the image after pass p.pass (denoised, with
     // its raw and guide layers, when the scene asks for it: the engine decides, and does
-    // it when the image is first encoded). Its files say how far the render had got then.
+    // it when the image is first encoded).
+    onPass(id, settings, renderer.pendingLayers(), p, elapsedBefore);
+}
+
+void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::shared_ptr<const PendingImage> image,
+                       const RenderProgress& p, double& elapsedBefore) {
+    // The image's files say how far the render had got then.
     JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
-    std::shared_ptr<const PendingImage> image = renderer.pendingLayers();
     ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
     images_.store(id, p.pass, std::move(image), std::move(metadata));
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);

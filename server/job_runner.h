@@ -11,22 +11,26 @@
 #include "metrics.h"
 
 namespace photon {
+class PendingImage;
 class Renderer;
 struct RenderProgress;
 }  // namespace photon
 
 namespace photon::farm {
 class FarmDispatcher;
+struct FarmScene;
 }  // namespace photon::farm
 
 namespace photon::server {
 
-// With a render farm (photon-server --redis), a job whose passes are independent (render.
-// radius_schedule "global") is rendered by the farm's workers in batches of `batchPasses`,
-// merged here in pass order; other jobs render here as always.
+// With a render farm (photon-server --redis), every job is rendered by the farm's workers:
+// one whose passes are independent (render.radius_schedule "global") in batches of
+// `batchPasses` passes, merged here in pass order; any other whole, by one worker at a time,
+// which reports its passes and checkpoints here.
 struct FarmUse {
     farm::FarmDispatcher* farm = nullptr;  // none: every job renders here
     int batchPasses = 4;
+    double previewSeconds = 1;  // a whole job's image comes at most this often
 };
 
 class JobRunner {
@@ -43,10 +47,15 @@ private:
     enum class Ending { Completed, Cancelled, Paused, Interrupted };
     Ending render(const JobTable::Started& started);
     Ending renderOnFarm(const JobTable::Started& started, Renderer& renderer);
+    Ending renderWholeOnFarm(const JobTable::Started& started, const Renderer& renderer);
+    farm::FarmScene farmScene(const JobTable::Started& started) const;
     // What a stop without completion means: cancelled, paused or the server stopping (the
     // state kept in the checkpoint for the last two).
     Ending stopped(const std::string& id, const Renderer& renderer);
     void onPass(const std::string& id, const JobSettings& settings, const Renderer& renderer,
+                const RenderProgress& progress, double& elapsedBefore);
+    // The same for a pass rendered elsewhere, its image given.
+    void onPass(const std::string& id, const JobSettings& settings, std::shared_ptr<const PendingImage> image,
                 const RenderProgress& progress, double& elapsedBefore);
     void finish(const std::string& id, JobStatus status, const std::string& error);
     void pause(const std::string& id);

@@ -23,7 +23,9 @@ JobService::JobService(const ServiceConfig& config)
       runner_(table_, store_, folders_, images_, hub_, metrics_, config.checkpointSeconds,
               FarmUse{farm_.get(), config.farmBatchPasses}) {
     restore();
-    workers_ = std::make_unique<WorkerPool>(queue_, runner_, config.workers);
+    workers_ = std::make_unique<WorkerPool>(queue_, runner_, farm_ ? config.farmJobs : config.workers);
+    if (farm_ && config.workers > 0)
+        farmWorkers_ = std::make_unique<farm::LocalWorkers>(*config.redis, config.workers, folders_.farmScratchDir());
 }
 
 JobService::~JobService() { shutdown(); }
@@ -37,7 +39,8 @@ std::optional<FarmFigures> JobService::farmFigures() {
         f.results = c.results, f.duplicates = c.duplicates, f.stale = c.stale;
         f.batches = c.batches, f.batchSeconds = c.batchSeconds;
         for (const farm::WorkerInfo& w : farm_->workers())
-            f.workers.push_back({w.name, w.host, w.threads, w.passesPerSecond, w.batches, w.claimed, !w.item.empty()});
+            f.workers.push_back({w.name, w.host, w.threads, w.passesPerSecond, w.batches, w.claimed, !w.item.empty(),
+                                 w.item.substr(0, w.item.find('/'))});
         return f;
     } catch (const std::exception& e) {
         spdlog::warn("render farm: {}", e.what());
@@ -347,6 +350,7 @@ void JobService::shutdown() {
     queue_.close();
     table_.interruptAll();
     if (workers_) workers_->join();
+    farmWorkers_.reset();
 }
 
 }  // namespace photon::server

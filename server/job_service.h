@@ -9,6 +9,7 @@
 #include <string>
 #include "event_hub.h"
 #include "farm/farm_dispatcher.h"
+#include "farm/local_workers.h"
 #include "idempotency.h"
 #include "image_cache.h"
 #include "job_folders.h"
@@ -26,7 +27,9 @@ namespace photon::server {
 
 struct ServiceConfig {
     std::filesystem::path dataDir = "data";
-    int workers = 1;  // 0: accept and store jobs but render none (maintenance, tests)
+    // Jobs rendered at once; 0: accept and store jobs but render none (maintenance, tests).
+    // With a render farm: the farm workers this process runs itself (0: it renders nothing).
+    int workers = 1;
     // A running job's state is saved this often (and when the server stops), so that a
     // crash or restart resumes it from there rather than from pass 0.
     double checkpointSeconds = 10;
@@ -35,6 +38,7 @@ struct ServiceConfig {
     // independent are rendered by photon-worker processes, `farmBatchPasses` passes an item.
     std::optional<farm::RedisAddress> redis;
     int farmBatchPasses = 4;
+    int farmJobs = 16;  // jobs on the farm at once
 };
 
 // A submission as the API layer hands it over: the overrides, who sends it, and how to
@@ -122,6 +126,7 @@ private:
     std::unique_ptr<farm::FarmDispatcher> farm_;  // before runner_, which uses it
     JobRunner runner_;
     std::unique_ptr<WorkerPool> workers_;
+    std::unique_ptr<farm::LocalWorkers> farmWorkers_;  // with a farm: the ones this process runs
     KeyLocks keyLocks_;
     std::mutex admission_;  // the limit checks and the insert they admit happen as one step
 };

@@ -24,6 +24,7 @@ struct FarmFigures {
         double passesPerSecond = 0;
         int64_t batches = 0, claimed = 0;
         bool busy = false;
+        std::string job;  // the job of the item it renders; empty when idle
     };
     std::vector<Worker> workers;            // alive (heartbeat not expired)
 };

@@ -1,6 +1,8 @@
 #include "farm_coordinator.h"
 #include <cstdlib>
+#include <photon/image_bytes.h>
 #include "farm_keys.h"
+#include "progress_fields.h"
 #include "stream_entries.h"
 
 namespace photon::farm {
@@ -15,12 +17,27 @@ void FarmCoordinator::ensureGroups() {
     ensureGroup(redis_, kResultStream, kCoordinatorGroup);
 }
 
-void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
-                             const std::set<int64_t>& merged) {
-    redis_.command({"DEL", cancelKey(job), sceneKey(job)});
+std::string FarmCoordinator::beginRound(const std::string& job, const FarmScene& scene) {
+    redis_.command({"DEL", cancelKey(job), sceneKey(job), checkpointKey(job)});
     dropQueuedItems(job);
     scene.store(redis_, job);
     const std::string round = std::to_string(redis_.command({"INCR", kRoundCounter}).integer);
+    redis_.command({"SET", roundKey(job), round});
+    return round;
+}
+
+void FarmCoordinator::submitJob(const std::string& job, const FarmScene& scene, const WholeJobPlan& plan,
+                                const std::optional<std::string>& checkpoint) {
+    const std::string round = beginRound(job, scene);
+    if (checkpoint) redis_.command({"SET", checkpointKey(job), *checkpoint});
+    jobs_[job] = Submitted{round, {}, std::chrono::steady_clock::now()};
+    redis_.command({"XADD", kWorkStream, "*", "job", job, "round", round, "kind", "job", "checkpoint_seconds",
+                    std::to_string(plan.checkpointSeconds), "preview_seconds", std::to_string(plan.previewSeconds)});
+}
+
+void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
+                             const std::set<int64_t>& merged) {
+    const std::string round = beginRound(job, scene);
     jobs_[job] = Submitted{round, merged, std::chrono::steady_clock::now()};
     for (int64_t b = 0; b < plan.batches(); ++b) {
         if (merged.count(b)) continue;
@@ -44,28 +61,12 @@ size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::funct
         r.job = e.field("job");
         r.worker = e.field("worker");
         auto known = jobs_.find(r.job);
-        const bool hasBatch = !e.field("batch").empty();
-        if (hasBatch) r.batch = std::stoll(e.field("batch"));
         auto round = e.fields.find("round");
         if (known != jobs_.end() && round != e.fields.end() && round->second != known->second.round) {
             ++counters_.stale;
-        } else if (known != jobs_.end() && (!hasBatch || known->second.handedOn.insert(r.batch).second)) {
-            if (auto error = e.fields.find("error"); error != e.fields.end()) {
-                r.error = error->second;
-            } else {
-                try {
-                    r.sums = PassSums::decode(e.field("sums"));
-                } catch (const std::invalid_argument& bad) {
-                    r.error = std::string("worker ") + r.worker + " sent " + bad.what();
-                }
-            }
-            ++counters_.batches;
-            counters_.batchSeconds +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - known->second.at).count();
+        } else if (known != jobs_.end() && readResult(e, known->second, r)) {
             onResult(std::move(r));
             ++handed;
-        } else if (known != jobs_.end()) {
-            ++counters_.duplicates;
         }
         redis_.command({"XACK", kResultStream, kCoordinatorGroup, e.id});
         redis_.command({"XDEL", kResultStream, e.id});
@@ -73,12 +74,54 @@ size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::funct
     return handed;
 }
 
+bool FarmCoordinator::readResult(const StreamEntry& e, Submitted& job, Result& r) {
+    const auto kind = e.fields.find("kind");
+    const bool batch = !e.fields.count("batch") ? false : !e.fields.at("batch").empty();
+    if (batch) {
+        try {
+            r.batch = std::stoll(e.field("batch"));
+        } catch (const std::exception&) {
+            r.error = "worker " + r.worker + " sent a batch number that is not one: " + e.field("batch");
+            return true;
+        }
+        if (!job.handedOn.insert(r.batch).second) {
+            ++counters_.duplicates;
+            return false;
+        }
+        ++counters_.batches;
+        counters_.batchSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - job.at).count();
+    }
+    try {
+        if (auto error = e.fields.find("error"); error != e.fields.end()) {
+            r.error = error->second;
+        } else if (batch) {
+            r.sums = PassSums::decode(e.field("sums"));
+        } else if (kind != e.fields.end() && kind->second == "pass") {
+            r.kind = Result::Kind::Pass;
+            r.progress = progressOfFields(e);
+            r.image = decodeImageBytes(e.field("image"));
+        } else if (kind != e.fields.end() && kind->second == "checkpoint") {
+            r.kind = Result::Kind::Checkpoint;
+            r.progress.pass = std::stoi(e.field("pass"));
+            r.checkpoint = e.field("checkpoint");
+        } else if (kind != e.fields.end() && kind->second == "done") {
+            r.kind = Result::Kind::Done;
+            r.progress.pass = std::stoi(e.field("pass"));
+        } else {
+            r.error = "a result of no known kind";
+        }
+    } catch (const std::exception& bad) {
+        r.error = std::string("worker ") + r.worker + " sent " + bad.what();
+    }
+    return true;
+}
+
 // The mark outlives any batch in flight by far, then goes.
 void FarmCoordinator::cancel(const std::string& job) { redis_.command({"SET", cancelKey(job), "1", "EX", "86400"}); }
 
 void FarmCoordinator::forget(const std::string& job) {
     cancel(job);
-    redis_.command({"DEL", sceneKey(job)});
+    redis_.command({"DEL", sceneKey(job), roundKey(job), checkpointKey(job)});
     jobs_.erase(job);
     dropQueuedItems(job);
 }

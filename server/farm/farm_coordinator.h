@@ -1,7 +1,7 @@
-// The coordinator's side of the render farm: publishes a job's scene and its batches of
-// independent passes as work items, and collects the workers' results, handing each
-// (job, batch) on exactly once however many times workers delivered it (a slow worker's
-// item re-delivered to another). What it hands on is merged by the caller, which keeps the
+// The coordinator's side of the render farm: publishes a job's scene and either its batches
+// of independent passes or the whole job as work items, and collects the workers' results,
+// handing each (job, batch) on exactly once however many times workers delivered it (a slow
+// worker's item re-delivered to another); a whole job's reports are handed on as they come. What it hands on is merged by the caller, which keeps the
 // merged batches in its checkpoint: on a restart it submits again only those not merged.
 #pragma once
 #include <chrono>
@@ -9,7 +9,10 @@
 #include <map>
 #include <set>
 #include <string>
+#include <optional>
+#include <photon/image.h>
 #include <photon/pass_sums.h>
+#include <photon/progress.h>
 #include "farm_scene.h"
 #include "redis_client.h"
 
@@ -26,6 +29,12 @@ struct BatchPlan {
     int count(int64_t batch) const { return int(std::min<int64_t>(batchPasses, firstPass + passes - first(batch))); }
 };
 
+// A job rendered whole by one worker at a time: how often it reports.
+struct WholeJobPlan {
+    double checkpointSeconds = 10;  // a checkpoint (kept in Redis for a worker taking over)
+    double previewSeconds = 1;      // a pass's progress and image, at most this often
+};
+
 // A worker as its heartbeat describes it.
 struct WorkerInfo {
     std::string name, host, item;  // item: JOB/BATCH being rendered, or empty
@@ -35,6 +44,12 @@ struct WorkerInfo {
 };
 
 class FarmCoordinator {
+    struct Submitted {
+        std::string round;
+        std::set<int64_t> handedOn;
+        std::chrono::steady_clock::time_point at;  // when its items went out
+    };
+
 public:
     FarmCoordinator(const RedisAddress& address, std::string name = "coordinator");
 
@@ -44,11 +59,22 @@ public:
     void submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
                 const std::set<int64_t>& merged = {});
 
-    // A result: the batch's sums, or the error that made a worker give it up.
+    // Puts the job on the farm whole, to resume from `checkpoint` (Renderer::saveCheckpoint's
+    // bytes) if given. Earlier submissions of the job are dropped as for batches.
+    void submitJob(const std::string& job, const FarmScene& scene, const WholeJobPlan& plan,
+                   const std::optional<std::string>& checkpoint);
+
+    // A result: a batch's sums, a whole job's pass (progress and raw image), checkpoint or
+    // end, or the error that made a worker give the item up.
     struct Result {
+        enum class Kind { Batch, Pass, Checkpoint, Done };
+        Kind kind = Kind::Batch;
         std::string job, worker, error;
         int64_t batch = 0;
         PassSums sums;
+        RenderProgress progress;  // Pass (Checkpoint and Done: only progress.pass)
+        Image image;              // Pass: the render's raw image after it
+        std::string checkpoint;   // Checkpoint: its bytes
     };
     // Waits up to `wait` for results and hands each new (job, batch) to onResult once; a
     // result of a job not submitted here (or forgotten) is dropped. Returns how many went.
@@ -76,15 +102,15 @@ public:
     std::vector<WorkerInfo> workers();
 
 private:
+    // Drops what an earlier submission of the job left, stores its scene and numbers the
+    // new round, which becomes the job's current one.
+    std::string beginRound(const std::string& job, const FarmScene& scene);
     void dropQueuedItems(const std::string& job);
+    // Reads a result entry of a submitted job into `r`; false for a duplicate batch.
+    bool readResult(const struct StreamEntry& e, Submitted& job, Result& r);
 
     RedisClient redis_;
     std::string name_;
-    struct Submitted {
-        std::string round;
-        std::set<int64_t> handedOn;
-        std::chrono::steady_clock::time_point at;  // when its items went out
-    };
     std::map<std::string, Submitted> jobs_;
     Counters counters_;
 };

@@ -53,13 +53,26 @@ void FarmDispatcher::readResults() {
     }
 }
 
-std::shared_ptr<FarmDispatcher::Results> FarmDispatcher::start(const std::string& job, const FarmScene& scene,
-                                                                 const BatchPlan& plan) {
+// Called with the lock held, after the submission.
+std::shared_ptr<FarmDispatcher::Results> FarmDispatcher::follow(const std::string& job) {
     auto results = std::make_shared<Results>();
-    std::lock_guard<std::mutex> lock(mutex_);
-    coordinator_.submit(job, scene, plan);
     jobs_[job] = results;
     return results;
+}
+
+std::shared_ptr<FarmDispatcher::Results> FarmDispatcher::start(const std::string& job, const FarmScene& scene,
+                                                                 const BatchPlan& plan) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    coordinator_.submit(job, scene, plan);
+    return follow(job);
+}
+
+std::shared_ptr<FarmDispatcher::Results> FarmDispatcher::startJob(const std::string& job, const FarmScene& scene,
+                                                                    const WholeJobPlan& plan,
+                                                                    const std::optional<std::string>& checkpoint) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    coordinator_.submitJob(job, scene, plan, checkpoint);
+    return follow(job);
 }
 
 void FarmDispatcher::stop(const std::string& job) {

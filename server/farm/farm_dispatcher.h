@@ -34,6 +34,9 @@ public:
         std::deque<FarmCoordinator::Result> queue_;
     };
     std::shared_ptr<Results> start(const std::string& job, const FarmScene& scene, const BatchPlan& plan);
+    // Puts the job on the farm whole (FarmCoordinator::submitJob).
+    std::shared_ptr<Results> startJob(const std::string& job, const FarmScene& scene, const WholeJobPlan& plan,
+                                      const std::optional<std::string>& checkpoint);
     // Stops the job's batches and drops its queued items; its results are no longer
     // delivered.
     void stop(const std::string& job);
@@ -46,6 +49,7 @@ public:
 
 private:
     void readResults();
+    std::shared_ptr<Results> follow(const std::string& job);
 
     std::mutex mutex_;  // guards coordinator_ and jobs_
     FarmCoordinator coordinator_;

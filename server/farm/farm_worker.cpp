@@ -4,10 +4,14 @@
 #include "farm_worker.h"
 #include <unistd.h>
 #include <cstdio>
+#include <sstream>
 #include <thread>
+#include <photon/image_bytes.h>
 #include <photon/render.h>
 #include "farm_keys.h"
 #include "farm_scene.h"
+#include "item_watch.h"
+#include "progress_fields.h"
 #include "stream_entries.h"
 
 namespace photon::farm {
@@ -17,40 +21,13 @@ struct FarmWorker::Job {
     Renderer renderer;
 };
 
-namespace {
-
 std::string hostName() {
     char name[256] = {};
     gethostname(name, sizeof name - 1);
     return name;
 }
 
-// Sets `cancel` when the job's cancellation mark appears, polling on its own connection
-// until the batch ends.
-class CancelWatch {
-public:
-    CancelWatch(const RedisAddress& address, const std::string& job, CancelToken& cancel)
-        : thread_([this, address, job, &cancel] {
-              RedisClient redis(address);
-              while (!done_.load()) {
-                  if (redis.command({"EXISTS", cancelKey(job)}).integer > 0) {
-                      cancel.cancel();
-                      return;
-                  }
-                  std::this_thread::sleep_for(std::chrono::milliseconds(50));
-              }
-          }) {}
-    ~CancelWatch() {
-        done_.store(true);
-        thread_.join();
-    }
-
-private:
-    std::atomic<bool> done_{false};
-    std::thread thread_;
-};
-
-}  // namespace
+std::string defaultWorkerName() { return hostName() + "-" + std::to_string(getpid()); }
 
 FarmWorker::FarmWorker(WorkerOptions options)
     : options_(std::move(options)), redis_(options_.redis, std::chrono::seconds(5), options_.block * 2 + std::chrono::seconds(5)) {
@@ -74,9 +51,12 @@ void FarmWorker::heartbeat(const std::string& item) {
                     "item", item, "passes_per_second", std::to_string(passesPerSecond_), "batches",
                     std::to_string(counters_.batches), "claimed", std::to_string(counters_.claimed), "updated",
                     std::to_string(now)});
-    // Three missed beats and the worker is gone from the list.
-    const auto ttl = std::max<int64_t>(3 * options_.block.count(), 3000);
-    redis_.command({"PEXPIRE", workerKey(options_.name), std::to_string(ttl)});
+    redis_.command({"PEXPIRE", workerKey(options_.name), std::to_string(heartbeatTtl().count())});
+}
+
+// Three missed beats and the worker is gone from the list.
+std::chrono::milliseconds FarmWorker::heartbeatTtl() const {
+    return std::max(3 * options_.block, std::chrono::milliseconds(3000));
 }
 
 bool FarmWorker::step() {
@@ -144,17 +124,26 @@ FarmWorker::Job* FarmWorker::jobFor(const std::string& id) {
 
 void FarmWorker::process(const StreamEntry& entry) {
     const std::string& jobId = entry.field("job");
+    const bool cancelled = redis_.command({"EXISTS", cancelKey(jobId)}).integer > 0;
+    const auto kind = entry.fields.find("kind");
+    const bool done = kind != entry.fields.end() && kind->second == "job" ? !cancelled && renderJob(entry)
+                                                                          : !cancelled && renderBatch(entry);
+    if (!done) ++counters_.dropped;
+    redis_.command({"XACK", kWorkStream, kWorkersGroup, entry.id});
+    redis_.command({"XDEL", kWorkStream, entry.id});
+}
+
+WatchedItem FarmWorker::watched(const StreamEntry& entry) const {
+    const auto round = entry.fields.find("round");
+    return WatchedItem{entry.field("job"), round != entry.fields.end() ? round->second : "", entry.id, options_.name,
+                       options_.claimAfter, heartbeatTtl()};
+}
+
+bool FarmWorker::renderBatch(const StreamEntry& entry) {
+    const std::string& jobId = entry.field("job");
     const std::string& batch = entry.field("batch");
-    auto finish = [&] {
-        redis_.command({"XACK", kWorkStream, kWorkersGroup, entry.id});
-        redis_.command({"XDEL", kWorkStream, entry.id});
-    };
-    Job* job = redis_.command({"EXISTS", cancelKey(jobId)}).integer > 0 ? nullptr : jobFor(jobId);
-    if (!job) {
-        ++counters_.dropped;
-        finish();
-        return;
-    }
+    Job* job = jobFor(jobId);
+    if (!job) return false;
     heartbeat(jobId + "/" + batch);  // from here a cancel stops the batch
     const int64_t first = std::stoll(entry.field("first"));
     const int count = std::stoi(entry.field("count"));
@@ -162,13 +151,12 @@ void FarmWorker::process(const StreamEntry& entry) {
     std::optional<PassSums> sums;
     const auto start = std::chrono::steady_clock::now();
     {
-        CancelWatch watch(options_.redis, jobId, cancel);
+        ItemWatch watch(options_.redis, watched(entry), cancel);
         sums = job->renderer.renderPasses(first, count, cancel);
     }
     if (!sums) {  // cancelled (or not independent passes: the coordinator never sends those)
         ++counters_.cancelled;
-        finish();
-        return;
+        return true;
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     passesPerSecond_ = seconds > 0 ? count / seconds : 0;
@@ -177,10 +165,90 @@ void FarmWorker::process(const StreamEntry& entry) {
     ++counters_.batches;
     counters_.passes += count;
     heartbeat("");
-    const auto round = entry.fields.find("round");
-    redis_.command({"XADD", kResultStream, "*", "job", jobId, "round", round != entry.fields.end() ? round->second : "",
-                    "batch", batch, "worker", options_.name, "sums", sums->encode()});
-    finish();
+    redis_.command({"XADD", kResultStream, "*", "job", jobId, "round", watched(entry).round, "batch", batch,
+                    "worker", options_.name, "sums", sums->encode()});
+    return true;
+}
+
+// A whole job: rendered from the last checkpoint in Redis (a worker before this one may
+// have got that far), reporting a pass with its image at most every preview_seconds and
+// the last one always, and a checkpoint every checkpoint_seconds and at the end. The
+// checkpoint is stored for whoever takes the item over only while the item's round is the
+// job's (a script, so that the check and the write are one step).
+bool FarmWorker::renderJob(const StreamEntry& entry) {
+    const std::string& jobId = entry.field("job");
+    const WatchedItem item = watched(entry);
+    const double previewSeconds = std::stod(entry.field("preview_seconds"));
+    const double checkpointSeconds = std::stod(entry.field("checkpoint_seconds"));
+    std::optional<FarmScene> scene = FarmScene::load(redis_, jobId);
+    if (!scene) return false;
+    job_.reset();  // the batches' renderer: this job needs a fresh one
+    const std::filesystem::path folder = options_.scratch / jobId;
+    std::filesystem::remove_all(folder);
+    Renderer renderer(scene->read(scene->unpack(folder)));
+    if (const RedisReply checkpoint = redis_.command({"GET", checkpointKey(jobId)}); !checkpoint.nil()) {
+        std::istringstream in(checkpoint.string);
+        renderer.restoreCheckpoint(in);
+    }
+    heartbeat(jobId);
+    auto publish = [&](std::vector<std::string> fields) {
+        std::vector<std::string> args{"XADD", kResultStream, "*", "job", jobId, "round", item.round, "worker",
+                                      options_.name};
+        for (std::string& f : fields) args.push_back(std::move(f));
+        redis_.command(args);
+    };
+    int64_t photons = 0;  // since the last report
+    int reported = renderer.progress().pass;
+    auto report = [&](const RenderProgress& p) {
+        std::vector<std::string> fields{"kind", "pass", "image", encodeImageBytes(renderer.rawSnapshot())};
+        appendProgressFields(fields, p, photons);
+        publish(std::move(fields));
+        photons = 0;
+        reported = p.pass;
+    };
+    int checkpointed = renderer.progress().pass;
+    auto checkpoint = [&] {
+        std::ostringstream bytes;
+        renderer.saveCheckpoint(bytes);
+        const bool current = redis_.command({"EVAL",
+                                             "if redis.call('GET', KEYS[1]) == ARGV[1] then "
+                                             "redis.call('SET', KEYS[2], ARGV[2]) return 1 end return 0",
+                                             "2", roundKey(jobId), checkpointKey(jobId), item.round, bytes.str()})
+                                 .integer > 0;
+        if (current)
+            publish({"kind", "checkpoint", "pass", std::to_string(renderer.progress().pass), "checkpoint", bytes.str()});
+        checkpointed = renderer.progress().pass;
+    };
+    CancelToken cancel;
+    RenderOutcome outcome;
+    {
+        ItemWatch watch(options_.redis, item, cancel);
+        auto lastReport = std::chrono::steady_clock::now(), lastCheckpoint = lastReport;
+        outcome = renderer.run(cancel, [&](const RenderProgress& p) {
+            photons += p.lastPass.photons;
+            ++counters_.passes;
+            passesPerSecond_ = p.elapsedSeconds > 0 ? p.pass / p.elapsedSeconds : 0;
+            const auto now = std::chrono::steady_clock::now();
+            if (std::chrono::duration<double>(now - lastReport).count() >= previewSeconds) {
+                report(p);
+                lastReport = now;
+            }
+            if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds) {
+                checkpoint();
+                lastCheckpoint = now;
+            }
+        });
+    }
+    if (outcome == RenderOutcome::Cancelled) {
+        ++counters_.cancelled;
+        return true;
+    }
+    if (reported < renderer.progress().pass) report(renderer.progress());
+    if (checkpointed < renderer.progress().pass || renderer.progress().pass == 0) checkpoint();
+    ++counters_.batches;
+    heartbeat("");
+    publish({"kind", "done", "pass", std::to_string(renderer.progress().pass)});
+    return true;
 }
 
 }  // namespace photon::farm

@@ -1,6 +1,7 @@
-// A render farm worker: takes work items (a job's batch of independent passes) from the
-// work stream's consumer group, renders them through the engine's face and publishes the
-// batch's pass sums on the result stream, then acknowledges the item. Items another worker
+// A render farm worker: takes work items from the work stream's consumer group (a job's
+// batch of independent passes, or a whole job), renders them through the engine's face and
+// publishes the batch's pass sums (or the job's passes, checkpoints and end) on the result
+// stream, then acknowledges the item. Items another worker
 // took and left pending longer than `claimAfter` (it died or hangs) are claimed first
 // (XAUTOCLAIM). A job's cancellation mark stops its batch between passes and drops its
 // items. Alive, it keeps a heartbeat hash (farm_keys.h) that expires when it stops.
@@ -10,9 +11,16 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include "item_watch.h"
 #include "redis_client.h"
+#include "stream_entries.h"
 
 namespace photon::farm {
+
+// HOST-PID: a name no other worker process has.
+std::string defaultWorkerName();
+// This machine's name, as heartbeats report it.
+std::string hostName();
 
 struct WorkerOptions {
     RedisAddress redis;
@@ -36,7 +44,7 @@ public:
 
     // Read from other threads while the worker runs.
     struct Counters {
-        std::atomic<int64_t> batches{0}, passes{0};  // rendered and published
+        std::atomic<int64_t> batches{0}, passes{0};  // items (batches, whole jobs) and passes rendered
         std::atomic<int64_t> claimed{0};             // items taken over from another worker
         std::atomic<int64_t> dropped{0};             // items of cancelled or deleted jobs
         std::atomic<int64_t> cancelled{0};           // batches stopped by a cancellation
@@ -46,7 +54,12 @@ public:
 private:
     struct Job;
     void heartbeat(const std::string& item);
-    void process(const struct StreamEntry& entry);
+    std::chrono::milliseconds heartbeatTtl() const;
+    void process(const StreamEntry& entry);
+    // Each renders its item and publishes what it made; false if the job was gone.
+    bool renderBatch(const StreamEntry& entry);
+    bool renderJob(const StreamEntry& entry);
+    WatchedItem watched(const StreamEntry& entry) const;
     Job* jobFor(const std::string& id);
 
     WorkerOptions options_;

@@ -44,6 +44,7 @@ public:
     WorkerProcess(const WorkerProcess&) = delete;
     WorkerProcess& operator=(const WorkerProcess&) = delete;
     void kill();
+    pid_t pid() const { return pid_; }
 
 private:
     pid_t pid_ = -1;

@@ -1,0 +1,17 @@
+// A whole job's progress as the fields of a result entry (farm_keys.h), and back: what the
+// coordinator needs to report the pass as if it had rendered it. Doubles travel with 17
+// significant digits, so they arrive as they left.
+#pragma once
+#include <string>
+#include <vector>
+#include <photon/progress.h>
+#include "stream_entries.h"
+
+namespace photon::farm {
+
+// Appends field, value pairs; `photons` is how many were emitted since the last report.
+void appendProgressFields(std::vector<std::string>& args, const RenderProgress& progress, int64_t photons);
+// Throws std::invalid_argument naming a missing or malformed field.
+RenderProgress progressOfFields(const StreamEntry& entry);
+
+}  // namespace photon::farm
