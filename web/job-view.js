@@ -1,5 +1,5 @@
-// The job view: latest image, progress numbers, the radius/photons plot, Cancel, Delete and
-// downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
+// The job view: latest image (preview-loader.js: whole images only, one load at a time),
+// progress numbers, the radius/photons plot, Cancel, Delete and downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
 // cookie the token was traded for: EventSource cannot send headers); when the stream fails
 // for good, it polls GET /jobs/{id} every second.
 
@@ -17,6 +17,7 @@ import {
   sessionLost,
 } from './api.js';
 import { formatCount, formatDuration, formatPasses, formatRadius, formatRate, formatTime, progressFraction } from './format.js';
+import { createPreviewLoader } from './preview-loader.js';
 import { RadiusPlot } from './radius-plot.js';
 
 const POLL_MS = 1000;
@@ -54,7 +55,7 @@ export function createJobView({ onChanged, onDeleted }) {
     exr: $('download-exr'),
   };
   const plot = new RadiusPlot($('radius-plot'));
-  let session = null; // the job on show: { id, job, source, timer, imagePass, plotPass, objectUrl }
+  let session = null; // the job on show: { id, job, source, timer, plotPass, preview }
 
   function showMessage(text) {
     el.details.hidden = true;
@@ -86,27 +87,21 @@ export function createJobView({ onChanged, onDeleted }) {
     }
   }
 
-  async function showImage(s, pass) {
-    s.imagePass = pass;
-    el.image.dataset.pass = String(pass);
-    el.image.alt = `Image of job ${s.id} after pass ${pass}`;
-    if (!hasToken()) {
-      el.image.src = imageUrl(s.id, 'png', pass);
-    } else {
-      // An <img> cannot send the token: fetch the image and show it from memory.
-      try {
-        const url = URL.createObjectURL(await fetchImage(s.id, 'png'));
-        if (session !== s) return URL.revokeObjectURL(url);
-        if (s.objectUrl) URL.revokeObjectURL(s.objectUrl);
-        s.objectUrl = url;
-        el.image.src = url;
-      } catch (error) {
-        el.actionError.textContent = `The image could not be loaded: ${error.message}`;
-        return;
-      }
-    }
-    el.image.hidden = false;
-    el.placeholder.hidden = true;
+  // The preview of a session's job: images follow the passes one complete image at a time.
+  function previewFor(s) {
+    return createPreviewLoader({
+      img: el.image,
+      load: (pass) => fetchImage(s.id, 'png', pass),
+      onShown: (pass) => {
+        if (session !== s) return;
+        el.image.alt = `Image of job ${s.id} after pass ${pass}`;
+        el.image.hidden = false;
+        el.placeholder.hidden = true;
+      },
+      onError: (error) => {
+        if (session === s) el.actionError.textContent = `The image could not be loaded: ${error.message}`;
+      },
+    });
   }
 
   function render(job) {
@@ -142,7 +137,7 @@ export function createJobView({ onChanged, onDeleted }) {
     if (previous && job.passesDone < previous.passesDone) return;
     s.job = job;
     render(job);
-    if (job.passesDone > 0 && job.passesDone !== s.imagePass) showImage(s, job.passesDone);
+    if (job.passesDone > 0) s.preview.want(job.passesDone);
     if (job.passesDone > s.plotPass) {
       s.plotPass = job.passesDone;
       plot.add({ t: job.elapsedSeconds, radius: job.meanRadius, photons: job.photonsTraced });
@@ -209,13 +204,14 @@ export function createJobView({ onChanged, onDeleted }) {
   function close() {
     if (!session) return;
     stopFollowing(session);
-    if (session.objectUrl) URL.revokeObjectURL(session.objectUrl);
+    session.preview.stop();
     session = null;
   }
 
   function open(id) {
     close();
-    const s = { id, job: null, source: null, timer: null, imagePass: 0, plotPass: 0, objectUrl: null };
+    const s = { id, job: null, source: null, timer: null, plotPass: 0, preview: null };
+    s.preview = previewFor(s);
     session = s;
     el.empty.hidden = true;
     el.details.hidden = false;
@@ -285,7 +281,7 @@ export function createJobView({ onChanged, onDeleted }) {
       if (!session || !hasToken() || !link.href) return;
       event.preventDefault();
       try {
-        const url = URL.createObjectURL(await fetchImage(session.id, format));
+        const url = URL.createObjectURL((await fetchImage(session.id, format)).blob);
         const save = document.createElement('a');
         save.href = url;
         save.download = link.download;

@@ -22,9 +22,11 @@ import {
   countEventStreams,
   launchBrowser,
   occupyWorker,
+  readScene,
   releaseWorker,
   startServer,
   stopServer,
+  submitScene,
   textOf as textIn,
   waitForStatus,
 } from './harness.mjs';
@@ -68,6 +70,13 @@ after(async () => {
 
 // ---- Helpers -----------------------------------------------------------------------
 
+// Screenshots of each state, beside PHOTON_WEB_SCREENSHOT: web-page.png -> web-page-<state>.png.
+async function saveScreenshot(state, options = {}) {
+  const path = SCREENSHOT.replace(/(\.png)?$/, `-${state}.png`);
+  mkdirSync(dirname(path), { recursive: true });
+  await page.screenshot({ path, fullPage: true, ...options });
+}
+
 async function textOf(selector) {
   return textIn(page, selector);
 }
@@ -79,6 +88,46 @@ async function chooseExample(name) {
 
 async function clearOverrides() {
   for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
+}
+
+// Records, in window.__shown, every image the job view puts on show: its pass, whether its
+// src is a blob: URL (whole bytes held in memory), and what its load gave.
+async function watchShownImages() {
+  await page.evaluate(() => {
+    window.__shown = [];
+    const img = document.querySelector('#job-image');
+    if (window.__shownObserver) window.__shownObserver.disconnect();
+    window.__shownObserver = new MutationObserver(() => {
+      if (!img.getAttribute('src')) return;
+      window.__shown.push({ pass: Number(img.dataset.pass), blob: img.src.startsWith('blob:'), loaded: null });
+    });
+    window.__shownObserver.observe(img, { attributes: true, attributeFilter: ['src'] });
+    if (!window.__shownListening) {
+      window.__shownListening = true;
+      const settle = (entry) => {
+        const last = window.__shown.at(-1);
+        if (last && last.loaded === null) Object.assign(last, entry);
+      };
+      img.addEventListener('load', () => settle({ loaded: true, width: img.naturalWidth, height: img.naturalHeight }));
+      img.addEventListener('error', () => settle({ loaded: false }));
+    }
+  });
+}
+
+async function shownImages() {
+  // The last src set may still be loading (from memory: a moment).
+  await page.waitForFunction(() => window.__shown.every((image) => image.loaded !== null));
+  return page.evaluate(() => window.__shown);
+}
+
+// Each image shown was whole: a blob: URL that loaded at the render's size; passes only go up.
+function assertWholeImages(shown, width, height) {
+  assert.ok(shown.length >= 1, 'an image was shown');
+  for (const image of shown) {
+    assert.deepEqual(image, { pass: image.pass, blob: true, loaded: true, width, height });
+  }
+  const passes = shown.map((image) => image.pass);
+  assert.deepEqual([...new Set(passes)].sort((a, b) => a - b), passes, `passes only go up: ${passes}`);
 }
 
 async function submittedJobId() {
@@ -181,16 +230,7 @@ test("a scene error shows the server's message with the JSON path", async () => 
 });
 
 test('a Cornell box render follows its passes to completion', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
-  // Every pass value the job view puts into the image's URL.
-  await page.evaluate(() => {
-    window.__imagePasses = [];
-    const img = document.querySelector('#job-image');
-    const record = () => {
-      const pass = new URL(img.src, location.href).searchParams.get('pass');
-      if (pass && !window.__imagePasses.includes(pass)) window.__imagePasses.push(pass);
-    };
-    new MutationObserver(record).observe(img, { attributes: true, attributeFilter: ['src'] });
-  });
+  await watchShownImages();
   const loadedPasses = new Set(); // image responses that arrived (200)
   page.on('response', (response) => {
     const match = /\/api\/v1\/jobs\/[^/]+\/image\?format=png&pass=(\d+)$/.exec(response.url());
@@ -215,15 +255,16 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await releaseWorker(server, blocker);
 
   await page.waitForFunction(
-    () => document.querySelector('#job-status').textContent === 'completed' && window.__imagePasses.length >= 2,
+    () => document.querySelector('#job-status').textContent === 'completed' && window.__shown.length >= 1 &&
+      window.__shown.at(-1).pass === 4,
     null,
     { timeout: RENDER_TIMEOUT_MS },
   );
-  const passes = await page.evaluate(() => window.__imagePasses.map(Number));
+  const shown = await shownImages();
+  const passes = shown.map((image) => image.pass);
   t.diagnostic(`image passes shown: ${passes.join(', ')}`);
-  assert.ok(passes.length >= 2, `the image should update at least twice, saw passes ${passes}`);
-  assert.deepEqual([...passes].sort((a, b) => a - b), passes, 'pass numbers only go up');
-  assert.equal(passes[passes.length - 1], 4, 'the last image is of pass 4');
+  assertWholeImages(shown, 256, 256);
+  assert.equal(passes.at(-1), 4, 'the last image is of pass 4');
   assert.equal(await textOf('#job-pass'), '4 / 4');
 
   // The final image is really shown, at the scene's resolution.
@@ -258,6 +299,55 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   mkdirSync(dirname(SCREENSHOT), { recursive: true });
   await page.screenshot({ path: SCREENSHOT, fullPage: true });
   screenshotTaken = true;
+});
+
+test('on a slow link the preview shows only whole images and ends on the final pass', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
+  const blocker = await occupyWorker(server);
+  const scene = readScene('cornell-box');
+  scene.camera.resolution = [64, 64];
+  scene.render = { ...scene.render, passes: 12, photons_per_pass: 100000 };
+  const id = await submitScene(server, scene);
+  await countEventStreams(page);
+  await page.evaluate((jobId) => {
+    window.location.hash = `job=${jobId}`;
+  }, id);
+  await page.waitForFunction(
+    (jobId) => document.querySelector('#job-id').textContent === jobId &&
+      document.querySelector('#job-status').textContent === 'queued' && window.__openEventStreams >= 1,
+    id,
+  );
+  await watchShownImages();
+  const failedImages = []; // image requests that did not finish: aborted or cut off
+  const onFailed = (request) => {
+    if (request.url().includes(`/api/v1/jobs/${id}/image`)) failedImages.push(request.url());
+  };
+  page.on('requestfailed', onFailed);
+  // 30 KB/s down and up, 150 ms latency: a 64x64 PNG takes about half a second.
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  await cdp.send('Network.emulateNetworkConditions', {
+    offline: false, latency: 150, downloadThroughput: 30 * 1024, uploadThroughput: 30 * 1024,
+  });
+  try {
+    const started = Date.now();
+    await releaseWorker(server, blocker);
+    await waitForStatus(page, server, id, 'completed', RENDER_TIMEOUT_MS);
+    await page.waitForFunction(() => window.__shown.at(-1)?.pass === 12, null, { timeout: 30_000 });
+    t.diagnostic(`completed and final preview shown after ${Date.now() - started} ms`);
+  } finally {
+    await cdp.send('Network.emulateNetworkConditions', { offline: false, latency: 0, downloadThroughput: -1, uploadThroughput: -1 });
+    await cdp.detach();
+    page.off('requestfailed', onFailed);
+  }
+  const shown = await shownImages();
+  t.diagnostic(`passes shown on the slow link: ${shown.map((image) => image.pass).join(', ')}`);
+  assertWholeImages(shown, 64, 64);
+  const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+  assert.equal(record.total_passes, 12);
+  assert.equal(shown.at(-1).pass, record.total_passes, "the last image shown is the job's final pass");
+  assert.equal(await page.getAttribute('#job-image', 'data-pass'), '12');
+  assert.deepEqual(failedImages, [], 'no image load was aborted');
+  await saveScreenshot('throttled-preview');
 });
 
 test('the method and denoising chosen on the form reach the job', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
