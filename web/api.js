@@ -188,6 +188,8 @@ export function normalizeJob(raw) {
     photonsPerPass: num(s.photons_per_pass, r.photons_per_pass),
     seed: num(s.seed, r.seed),
     integrator: first(s.integrator, r.integrator, null),
+    // Not in the record yet (GET /jobs/{id}/scene has it): null for "not said".
+    denoise: typeof s.denoise === 'boolean' ? s.denoise : null,
     width: num(resolution[0], r.width),
     height: num(resolution[1], r.height),
     photonsTraced,
@@ -209,7 +211,7 @@ export function isFinished(job) {
 // ---- Endpoints -----------------------------------------------------------------------
 
 // status: statuses, comma-separated; name: a part of the name, in any case.
-export async function listJobs({ status, name, limit = 50, offset = 0 } = {}) {
+export async function listJobs({ status, name, limit = 50, offset } = {}) {
   const body = await requestJson('GET', `/jobs${query({ status, name, limit, offset })}`);
   const jobs = Array.isArray(body && body.jobs) ? body.jobs.map(normalizeJob) : [];
   return { jobs, total: num(body && body.total) ?? jobs.length };

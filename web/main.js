@@ -23,6 +23,7 @@ function start() {
   const jobs = createJobsList({
     list: $('job-list'),
     status: $('job-list-status'),
+    filters: { name: $('job-search'), status: $('job-status-filter'), sort: $('job-sort') },
     onSelect: (id) => openJob(id),
     onConnection: (error) => {
       serverStatus.textContent = error ? error.message : '';

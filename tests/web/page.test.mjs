@@ -422,6 +422,81 @@ test('an imported pbrt file is sent as it is and its warnings are shown', { time
   await page.fill('#photons-per-pass', '');
 });
 
+test('the job list tells jobs apart, filters, sorts and follows events without polling', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
+  // The list has listed the jobs and follows the event stream.
+  await page.waitForFunction(() => document.querySelector('#job-list').dataset.following === 'events');
+  const listings = []; // the page's GET /api/v1/jobs requests (listings), by query
+  const onRequest = (request) => {
+    const url = new URL(request.url());
+    if (request.method() === 'GET' && url.pathname === '/api/v1/jobs') listings.push(url.search);
+  };
+  page.on('request', onRequest);
+  try {
+    // Three small jobs, named, one per method, submitted from outside the page.
+    const submitted = {};
+    for (const [name, integrator] of [['kitchen', 'sppm'], ['hall', 'path'], ['attic', 'radiosity']]) {
+      const scene = readScene('cornell-box');
+      scene.camera.resolution = [64, 64];
+      scene.render = { ...scene.render, integrator, passes: 2, photons_per_pass: 2000 };
+      const response = await fetch(new URL(`api/v1/jobs?name=${name}`, server.baseUrl), {
+        method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(scene),
+      });
+      assert.equal(response.status, 201);
+      submitted[name] = (await response.json()).id;
+    }
+    await page.waitForFunction((ids) => ids.every((id) => {
+      const row = document.querySelector(`#job-list li[data-job-id="${id}"]`);
+      return row?.dataset.status === 'completed' && row.querySelector('.job-thumb').naturalWidth > 0;
+    }), Object.values(submitted), { timeout: RENDER_TIMEOUT_MS });
+    assert.deepEqual(listings, [], 'the list followed the events and never asked for the jobs');
+
+    const row = (name) => page.locator(`#job-list li[data-job-id="${submitted[name]}"]`);
+    const detail = async (name) => (await row(name).locator('.job-row-detail').textContent()).replace(/ · \d{4}-.*$/, '');
+    assert.equal(await row('kitchen').locator('.job-row-title').textContent(), 'kitchen');
+    assert.equal(await row('kitchen').locator('.status-badge').textContent(), 'completed');
+    assert.equal(await detail('kitchen'), 'SPPM · 64×64 · pass 2 / 2');
+    assert.equal(await detail('hall'), 'path tracing · 64×64 · pass 2 / 2');
+    assert.equal(await detail('attic'), 'radiosity · 64×64 · pass 2 / 2');
+    // The thumbnail: the image endpoint's 48x48 box, of the last pass.
+    const thumb = await row('hall').locator('.job-thumb').evaluate((img) =>
+      ({ src: new URL(img.src).search, width: img.naturalWidth, height: img.naturalHeight, alt: img.alt }));
+    assert.deepEqual(thumb, { src: '?format=png&pass=2&size=48x48', width: 48, height: 48, alt: 'Job hall after pass 2' });
+
+    const titles = () => page.locator('#job-list .job-row-title').allTextContents();
+    // Search by name: the server filters the listing.
+    await page.fill('#job-search', 'AL');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === '1 job matches.');
+    assert.deepEqual(await titles(), ['hall']);
+    assert.deepEqual(listings, ['?name=AL&limit=100']);
+    await page.fill('#job-search', 't');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === '2 jobs match.');
+    assert.deepEqual(await titles(), ['attic', 'kitchen'], 'newest first');
+    await page.selectOption('#job-sort', 'name');
+    assert.deepEqual(await titles(), ['attic', 'kitchen']);
+    await page.selectOption('#job-sort', 'oldest');
+    assert.deepEqual(await titles(), ['kitchen', 'attic']);
+    // Filter by status: a job that starts running joins the "running" list from its event.
+    await page.fill('#job-search', '');
+    await page.selectOption('#job-status-filter', 'running');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === 'No jobs match.');
+    const blocker = await occupyWorker(server);
+    await page.waitForFunction((id) => document.querySelector(`#job-list li[data-job-id="${id}"]`), blocker);
+    assert.deepEqual(await page.locator('#job-list li').evaluateAll((items) => items.map((li) => li.dataset.jobId)), [blocker]);
+    await saveScreenshot('list-filtered');
+    await releaseWorker(server, blocker);
+    // Cancelled: it leaves the "running" list, again from its event.
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === 'No jobs match.');
+    assert.deepEqual(listings, ['?name=AL&limit=100', '?name=t&limit=100', '?status=running&limit=100']);
+  } finally {
+    page.off('request', onRequest);
+    await page.fill('#job-search', '');
+    await page.selectOption('#job-status-filter', '');
+    await page.selectOption('#job-sort', 'newest');
+  }
+  await page.waitForFunction(() => /^\d+ jobs\.$/.test(document.querySelector('#job-list-status').textContent));
+  await saveScreenshot('list');
+});
+
 test('the page raised no script errors', () => {
   assert.deepEqual(pageErrors, []);
 });
