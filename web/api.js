@@ -259,6 +259,12 @@ export async function submitJob({ sceneText, sceneFile = null, assets = [], para
   return normalizeJob(await requestJson('POST', url, { body: form }));
 }
 
+// The scene as submitted: { type (its Content-Type), text }.
+export async function getScene(id) {
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/scene`);
+  return { type: res.headers.get('Content-Type') || '', text: await res.text() };
+}
+
 export async function cancelJob(id) {
   return normalizeJob(await requestJson('POST', `/jobs/${encodeURIComponent(id)}/cancel`));
 }
@@ -291,4 +297,45 @@ export function serviceEventsUrl() {
 
 export function eventsUrl(id) {
   return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
+}
+
+// The job's progress so far, for a plot that outlives a reload: the job's event stream read
+// from its start (Last-Event-ID: 0 replays the events the server still keeps), as job
+// records, until `untilPass` has been seen, the job's final event, or `timeoutMs`. fetch()
+// rather than EventSource, which cannot send Last-Event-ID on its first connection.
+export async function progressHistory(id, { untilPass, timeoutMs = 5000 } = {}) {
+  const controller = new AbortController();
+  const timer = setTimeout(() => controller.abort(), timeoutMs);
+  const records = [];
+  try {
+    const res = await fetch(eventsUrl(id), {
+      headers: { 'Last-Event-ID': '0', Accept: 'text/event-stream', ...authHeaders() },
+      signal: controller.signal,
+    });
+    if (!res.ok || !res.body) return records;
+    const reader = res.body.pipeThrough(new TextDecoderStream()).getReader();
+    let buffered = '';
+    for (;;) {
+      const { value, done } = await reader.read();
+      if (done) break;
+      buffered += value.replace(/\r\n?/g, '\n');
+      let end;
+      while ((end = buffered.indexOf('\n\n')) >= 0) {
+        const block = buffered.slice(0, end);
+        buffered = buffered.slice(end + 2);
+        const type = /^event: ?(.*)$/m.exec(block)?.[1] ?? 'message';
+        const data = block.split('\n').filter((l) => l.startsWith('data:')).map((l) => l.slice(5).replace(/^ /, '')).join('\n');
+        if (!data) continue;
+        const job = normalizeJob(JSON.parse(data));
+        records.push(job);
+        if (type !== 'progress' || job.passesDone >= untilPass) return records;
+      }
+    }
+    return records;
+  } catch {
+    return records; // cut short (timeout, network): what arrived is still history
+  } finally {
+    clearTimeout(timer);
+    controller.abort();
+  }
 }

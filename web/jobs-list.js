@@ -10,7 +10,7 @@
 // place, so focus and clicks survive.
 
 import { ensureSession, hasToken, imageUrl, isFinished, listJobs, normalizeJob, serviceEventsUrl, sessionLost } from './api.js';
-import { formatPasses, formatTime, progressFraction } from './format.js';
+import { formatPasses, formatTime, methodName, progressFraction } from './format.js';
 
 const POLL_MS = 2000;
 // Events closer together than this are drawn once.
@@ -21,7 +21,6 @@ const THUMBNAIL_BOX = '48x48';
 const RECORD_EVENTS = ['changed', 'progress', 'done', 'failed', 'cancelled'];
 const PAGE_SIZE = 100;
 
-const METHOD_NAMES = { sppm: 'SPPM', photonmap: 'photon map', radiosity: 'radiosity', path: 'path tracing' };
 const STATUS_ORDER = ['running', 'paused', 'queued', 'failed', 'cancelled', 'completed'];
 
 // How the list can be sorted: the select's values -> a comparison of two jobs.
@@ -33,10 +32,6 @@ export const SORTS = {
   status: (a, b) => STATUS_ORDER.indexOf(a.status) - STATUS_ORDER.indexOf(b.status) || byCreated(a, b),
   progress: (a, b) => progressFraction(b.passesDone, b.passes) - progressFraction(a.passesDone, a.passes) || byCreated(a, b),
 };
-
-export function methodName(integrator) {
-  return METHOD_NAMES[integrator] ?? integrator ?? '—';
-}
 
 export function createJobsList({ list, status, filters, onSelect, onConnection }) {
   const rows = new Map(); // id -> { item, button, parts, thumbPass, thumbAt, thumbTimer }

@@ -39,6 +39,7 @@ let context = null; // Playwright persistent browser context
 let page = null;
 let scratch = null; // temp folder: server data + browser profile
 let screenshotTaken = false;
+const namedJobs = {}; // name -> id: the jobs the job list's test submits, one per method
 const pageErrors = [];
 
 // ---- Setup -------------------------------------------------------------------------
@@ -285,7 +286,8 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
     assert.equal(await link.getAttribute('href'), `/api/v1/jobs/${id}/image?format=${format}`);
     assert.equal(await link.getAttribute('download'), `photon-${id}.${format}`);
   }
-  assert.doesNotMatch(await page.getAttribute('#radius-plot', 'aria-label'), /No passes/);
+  assert.equal(await page.getAttribute('#progress-plot', 'data-points'), '4');
+  assert.equal(await page.getAttribute('#progress-plot', 'data-series'), 'passes per second, mean radius, photons traced');
 
   // The list shows the job as completed with a full progress bar (it polls every 2 s).
   const row = page.locator(`#job-list li[data-job-id="${id}"]`);
@@ -299,6 +301,13 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   mkdirSync(dirname(SCREENSHOT), { recursive: true });
   await page.screenshot({ path: SCREENSHOT, fullPage: true });
   screenshotTaken = true;
+
+  // After a reload the plot still has every pass: read back from the job's kept events.
+  await page.reload();
+  await waitForStatus(page, server, id, 'completed', 10_000);
+  await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '4');
+  assert.match(await page.getAttribute('#progress-plot', 'aria-label'),
+    /^Passes per second, mean radius and photons traced over time\. 4 passes plotted\. Latest, pass 4 at \d+:\d\d:\d\d: passes per second [\d.]+\/s, mean radius [\d.e+-]+, photons traced 80\.0 k\.$/);
 });
 
 test('on a slow link the preview shows only whole images and ends on the final pass', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
@@ -444,6 +453,7 @@ test('the job list tells jobs apart, filters, sorts and follows events without p
       assert.equal(response.status, 201);
       submitted[name] = (await response.json()).id;
     }
+    Object.assign(namedJobs, submitted);
     await page.waitForFunction((ids) => ids.every((id) => {
       const row = document.querySelector(`#job-list li[data-job-id="${id}"]`);
       return row?.dataset.status === 'completed' && row.querySelector('.job-thumb').naturalWidth > 0;
@@ -495,6 +505,44 @@ test('the job list tells jobs apart, filters, sorts and follows events without p
   }
   await page.waitForFunction(() => /^\d+ jobs\.$/.test(document.querySelector('#job-list-status').textContent));
   await saveScreenshot('list');
+});
+
+test("the job view shows only the figures of the job's method", async () => {
+  const common = ['Status', 'Pass', 'Method', 'Denoise', 'Passes/s'];
+  const times = ['Elapsed', 'ETA', 'Resolution', 'Seed', 'Created'];
+  const expected = {
+    kitchen: { method: 'SPPM', figures: [...common, 'Photons/s', 'Mean radius', 'Photons traced', 'Photons per pass', ...times],
+      series: 'passes per second, mean radius, photons traced' },
+    hall: { method: 'path tracing', figures: [...common, ...times], series: 'passes per second' },
+    attic: { method: 'radiosity', figures: [...common, ...times], series: 'passes per second' },
+  };
+  assert.deepEqual(Object.keys(namedJobs), Object.keys(expected), 'the job list test submitted the jobs');
+  for (const [name, want] of Object.entries(expected)) {
+    const id = namedJobs[name];
+    await page.click(`#job-list li[data-job-id="${id}"] button`);
+    await waitForStatus(page, server, id, 'completed', 10_000);
+    // Two passes: the first read back from the job's events, the last from the live view.
+    await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '2');
+    await page.waitForFunction(() => document.querySelector('#job-denoise').textContent === 'off');
+    const figures = await page.locator('#job-details .stats > div:not([hidden]) dt').allTextContents();
+    assert.deepEqual(figures, want.figures, `${name}: figures`);
+    assert.equal(await textOf('#job-integrator'), want.method);
+    assert.equal(await page.getAttribute('#progress-plot', 'data-series'), want.series);
+    assert.match(await textOf('#job-pass-rate'), /^[\d.]+\/s$/);
+    if (name === 'hall') await saveScreenshot('path-tracing-job');
+  }
+  // Axis labels step in as many decimals as they need: none repeat.
+  const ticks = await page.evaluate(async () => {
+    const { tickLabels } = await import('/progress-plot.js');
+    return [tickLabels(1), tickLabels(0.02), tickLabels(250000), tickLabels(5, 2), tickLabels(0.025, 2)];
+  });
+  assert.deepEqual(ticks, [
+    ['0', '0.25', '0.5', '0.75', '1'],
+    ['0', '0.005', '0.01', '0.015', '0.02'],
+    ['0', '62.5 k', '125 k', '188 k', '250 k'],
+    ['0', '2.5', '5'],
+    ['0', '0.0125', '0.025'],
+  ]);
 });
 
 test('the page raised no script errors', () => {
