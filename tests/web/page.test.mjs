@@ -131,6 +131,12 @@ function assertWholeImages(shown, width, height) {
   assert.deepEqual([...new Set(passes)].sort((a, b) => a - b), passes, `passes only go up: ${passes}`);
 }
 
+// The scene editor's selection, and whether it has the focus (a selection shows only then).
+async function sceneSelection() {
+  return page.locator('#scene-text').evaluate((area) =>
+    ({ focused: document.activeElement === area, start: area.selectionStart, end: area.selectionEnd }));
+}
+
 async function submittedJobId() {
   await page.waitForFunction(() => /^Submitted job \S+\.$/.test(document.querySelector('#form-status').textContent));
   return /^Submitted job (\S+)\.$/.exec(await textOf('#form-status'))[1];
@@ -200,6 +206,40 @@ test('invalid JSON is explained next to the textarea and nothing is sent', async
   assert.ok(await page.evaluate(() => document.querySelector('#scene-text').nextElementSibling.id === 'scene-error'));
   page.off('request', onRequest);
   assert.equal(posted, 0, 'an unparsable scene must not be sent to the server');
+  // The caret is put where the error is: line 4, column 3 (the '}' after a trailing comma).
+  assert.deepEqual(await sceneSelection(), { focused: true, start: 33, end: 33 });
+  assert.equal('{\n  "camera": {\n    "fov": 40,\n  }\n}'.slice(31, 34), '  }', 'offset 33: line 4, column 3');
+  // Editing the scene takes the error away.
+  await page.press('#scene-text', 'Delete');
+  assert.equal(await textOf('#scene-error'), '');
+  assert.equal(await page.getAttribute('#scene-text', 'aria-invalid'), null);
+});
+
+test('a syntax error far down the scene is scrolled into sight with the caret on it', async () => {
+  await chooseExample('cornell-glass');
+  const good = await page.inputValue('#scene-text');
+  const text = good.replace('"max_depth": 8,', '"max_depth": 8,,');
+  assert.notEqual(text, good);
+  await page.fill('#scene-text', text);
+  await page.click('#submit-button');
+  const offset = text.indexOf(',,') + 1;
+  const lines = text.slice(0, offset).split('\n');
+  const [line, column] = [lines.length, lines.at(-1).length + 1];
+  assert.ok(line > 40, `the error is far down (line ${line})`);
+  await page.locator('#scene-error').filter({ hasText: 'not valid JSON' }).waitFor();
+  assert.equal(await textOf('#scene-error'),
+    `The scene is not valid JSON: expected a property name in double quotes but found ',' at line ${line}, column ${column}.`);
+  assert.deepEqual(await sceneSelection(), { focused: true, start: offset, end: offset });
+  // The line is inside the textarea's visible part.
+  const view = await page.locator('#scene-text').evaluate((area, at) => {
+    const style = getComputedStyle(area);
+    const lineHeight = Number.parseFloat(style.lineHeight);
+    return { top: (at - 1) * lineHeight, lineHeight, scrollTop: area.scrollTop, height: area.clientHeight };
+  }, line);
+  assert.ok(view.scrollTop > 0, 'the textarea scrolled');
+  assert.ok(view.top >= view.scrollTop && view.top + view.lineHeight <= view.scrollTop + view.height,
+    `line ${line} is in sight: ${JSON.stringify(view)}`);
+  await saveScreenshot('syntax-error');
 });
 
 test("a scene error shows the server's message with the JSON path", async () => {
@@ -228,6 +268,16 @@ test("a scene error shows the server's message with the JSON path", async () => 
   await error.filter({ hasText: 'radius' }).waitFor();
   assert.equal((await error.textContent()).trim(), body.error);
   assert.equal(await textOf('#form-error'), '', 'the scene error is shown by the scene, not at the bottom');
+  // The member the error names is selected in the scene text.
+  assert.equal(body.pointer, `/shapes/${sphere}/radius`);
+  const start = text.indexOf('"radius": -1');
+  assert.deepEqual(await sceneSelection(), { focused: true, start, end: start + '"radius": -1'.length });
+  await saveScreenshot('error-highlight');
+  // Editing takes the error away.
+  await page.press('#scene-text', 'End');
+  await page.keyboard.type('0');
+  assert.equal(await textOf('#scene-error'), '');
+  assert.equal(await page.getAttribute('#scene-text', 'aria-invalid'), null);
 });
 
 test('a Cornell box render follows its passes to completion', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
