@@ -304,6 +304,8 @@ export function createJobView({ onChanged, onDeleted }) {
   el.remove.addEventListener('click', async () => {
     const s = session;
     if (!s) return;
+    const name = s.job && s.job.name ? `"${s.job.name}" (${s.id})` : s.id;
+    if (!window.confirm(`Delete job ${name}? Its images, scene and log are removed from the server.`)) return;
     el.remove.disabled = true;
     el.actionError.textContent = '';
     try {

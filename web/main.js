@@ -53,6 +53,8 @@ function start() {
   createSubmitForm({
     onSubmitted: (job) => {
       openJob(job.id);
+      // On a phone the job view is below the form: bring it up to follow the new job.
+      if (window.matchMedia('(max-width: 700px)').matches) $('job-view').scrollIntoView({ block: 'start' });
       jobs.refresh();
     },
   });

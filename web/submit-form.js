@@ -7,6 +7,7 @@
 
 import { ApiError, submitJob } from './api.js';
 import { EXAMPLES, exampleScene } from './examples.js';
+import { rememberForm } from './form-memory.js';
 import { formatJson } from './format.js';
 import { describeJsonError, locateJsonError } from './json-error.js';
 import { locateValue, pathKeys, pointerKeys } from './json-place.js';
@@ -41,6 +42,28 @@ export function createSubmitForm({ onSubmitted }) {
   let importedScene = null; // a chosen .pbrt/.gltf/.glb File: sent as it is, not as the text
 
   for (const example of EXAMPLES) select.add(new Option(example.title, example.name));
+  // What was typed and chosen survives a reload (not the files: a page cannot set those).
+  const memory = rememberForm(
+    form,
+    ['example-select', 'scene-text', 'passes', 'photons-per-pass', 'seed', 'integrator', 'denoise'],
+    'photon.submit-form',
+  );
+
+  // The number fields' placeholders show the scene's own values: what an empty field means.
+  function showSceneSettings() {
+    let render = {};
+    try {
+      const scene = JSON.parse(sceneText.value);
+      if (scene && typeof scene.render === 'object' && scene.render) render = scene.render;
+    } catch {
+      // Not JSON (yet): no values to show.
+    }
+    for (const field of NUMBER_FIELDS) {
+      const value = render[field.param];
+      $(field.input).placeholder = Number.isInteger(value) ? String(value) : '';
+    }
+  }
+  showSceneSettings();
 
   function showError(elementId, message, input) {
     $(elementId).textContent = message;
@@ -108,8 +131,9 @@ export function createSubmitForm({ onSubmitted }) {
 
   function useImported(file) {
     importedScene = file;
-    sceneText.value = '';
+    if (file) sceneText.value = ''; // typing after choosing a file keeps what is typed
     sceneText.placeholder = file ? `${file.name} is sent as it is; the server imports it.` : '';
+    showSceneSettings();
   }
 
   select.addEventListener('change', () => {
@@ -119,10 +143,13 @@ export function createSubmitForm({ onSubmitted }) {
     sceneText.value = formatJson(scene);
     sceneFile.value = '';
     clearErrors();
+    showSceneSettings();
+    memory.save();
   });
 
   sceneText.addEventListener('input', () => {
     if (importedScene) useImported(null);
+    showSceneSettings();
   });
 
   // An error goes as soon as the field it is about is edited: it may no longer hold.
@@ -147,6 +174,8 @@ export function createSubmitForm({ onSubmitted }) {
     try {
       sceneText.value = await file.text();
       select.value = '';
+      showSceneSettings();
+      memory.save();
     } catch {
       showError('scene-error', `Could not read ${file.name}.`, sceneText);
     }

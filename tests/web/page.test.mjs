@@ -41,6 +41,7 @@ let scratch = null; // temp folder: server data + browser profile
 let screenshotTaken = false;
 const namedJobs = {}; // name -> id: the jobs the job list's test submits, one per method
 const pageErrors = [];
+const notFound = []; // URLs the page asked for and got a 404 for
 
 // ---- Setup -------------------------------------------------------------------------
 
@@ -51,6 +52,9 @@ before(async () => {
   context = await launchBrowser(join(scratch, 'profile'));
   page = context.pages()[0] || (await context.newPage());
   page.on('pageerror', (error) => pageErrors.push(String(error)));
+  page.on('response', (response) => {
+    if (response.status() === 404) notFound.push(response.url());
+  });
   const response = await page.goto(server.baseUrl);
   assert.equal(response.status(), 200, 'GET / should serve web/index.html');
 });
@@ -151,6 +155,53 @@ test('the page loads with the bundled examples', async () => {
   for (const id of ['#submit-button', '#job-list', '#scene-text', '#passes', '#photons-per-pass', '#seed']) {
     assert.equal(await page.locator(id).count(), 1, `${id} is on the page`);
   }
+  // The icon: served from the web root as SVG, so the browser's request for it is no 404.
+  assert.equal(await page.getAttribute('link[rel="icon"]', 'href'), 'favicon.svg');
+  const icon = await page.evaluate(async () => {
+    const res = await fetch('/favicon.svg');
+    return { status: res.status, type: res.headers.get('Content-Type'), svg: (await res.text()).startsWith('<svg') };
+  });
+  assert.deepEqual(icon, { status: 200, type: 'image/svg+xml', svg: true });
+  assert.deepEqual(notFound, []);
+});
+
+test("an example's passes, photons and seed are the number fields' placeholders", async () => {
+  await chooseExample('cornell-box');
+  const placeholders = () => page.locator('#passes, #photons-per-pass, #seed').evaluateAll((inputs) => inputs.map((i) => i.placeholder));
+  assert.deepEqual(await placeholders(), ['16', '200000', '1']);
+  // They follow the text: another seed typed into the scene.
+  const text = (await page.inputValue('#scene-text')).replace('"seed": 1', '"seed": 42');
+  await page.fill('#scene-text', text);
+  assert.deepEqual(await placeholders(), ['16', '200000', '42']);
+  await page.fill('#scene-text', '{');
+  assert.deepEqual(await placeholders(), ['', '', '']);
+});
+
+test('the form keeps its contents across a reload', async () => {
+  await chooseExample('point-light-plane');
+  const scene = (await page.inputValue('#scene-text')).replace('"fov": 60', '"fov": 55');
+  await page.fill('#scene-text', scene);
+  await page.fill('#passes', '3');
+  await page.fill('#photons-per-pass', '5000');
+  await page.fill('#seed', '7');
+  await page.selectOption('#integrator', 'photonmap');
+  await page.check('#denoise');
+  await page.reload();
+  const form = await page.evaluate(() => ({
+    example: document.querySelector('#example-select').value,
+    scene: document.querySelector('#scene-text').value,
+    numbers: ['passes', 'photons-per-pass', 'seed'].map((id) => document.getElementById(id).value),
+    integrator: document.querySelector('#integrator').value,
+    denoise: document.querySelector('#denoise').checked,
+    placeholders: ['passes', 'photons-per-pass', 'seed'].map((id) => document.getElementById(id).placeholder),
+  }));
+  assert.deepEqual(form, {
+    example: 'point-light-plane', scene, numbers: ['3', '5000', '7'], integrator: 'photonmap', denoise: true,
+    placeholders: ['16', '200000', '1'],
+  });
+  await clearOverrides();
+  await page.selectOption('#integrator', '');
+  await page.uncheck('#denoise');
 });
 
 test('the render farm panel stays hidden when the server renders alone', async () => {
@@ -437,10 +488,27 @@ test('a running job can be cancelled and a finished one deleted', async () => {
   await page.click('#submit-button');
   const id = await submittedJobId();
   await waitForStatus(page, server, id, 'running', 30_000);
+  await page.waitForFunction(() => Number(document.querySelector('#job-image').dataset.pass) >= 1);
+  await saveScreenshot('running-job');
   await page.click('#cancel-button');
   await waitForStatus(page, server, id, 'cancelled', 30_000);
   await page.waitForFunction(() => !document.querySelector('#delete-button').disabled);
+  // Delete asks first; declined, nothing happens.
+  const question = `Delete job ${id}? Its images, scene and log are removed from the server.`;
+  const answer = (accept) => new Promise((resolveDialog) => {
+    page.once('dialog', async (dialog) => {
+      resolveDialog([dialog.type(), dialog.message()]);
+      await (accept ? dialog.accept() : dialog.dismiss());
+    });
+  });
+  let asked = answer(false);
   await page.click('#delete-button');
+  assert.deepEqual(await asked, ['confirm', question]);
+  assert.equal(await page.isDisabled('#delete-button'), false);
+  assert.equal((await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).status, 200, 'still there');
+  asked = answer(true);
+  await page.click('#delete-button');
+  assert.deepEqual(await asked, ['confirm', question]);
   await page.waitForFunction(
     (jobId) => !document.querySelector(`#job-list li[data-job-id="${jobId}"]`),
     id,
@@ -593,6 +661,22 @@ test("the job view shows only the figures of the job's method", async () => {
     ['0', '2.5', '5'],
     ['0', '0.0125', '0.025'],
   ]);
+});
+
+test('on a phone-width screen the form and the job come before the job list', async () => {
+  await page.setViewportSize({ width: 390, height: 844 });
+  try {
+    await page.reload(); // the address bar keeps the job on show (#job=<id>)
+    await page.waitForFunction(() => !document.querySelector('#job-details').hidden);
+    const tops = await page.evaluate(() =>
+      Object.fromEntries(['submit-panel', 'job-view', 'jobs-panel'].map((id) => [id, document.getElementById(id).getBoundingClientRect().top])));
+    assert.ok(tops['submit-panel'] < tops['job-view'] && tops['job-view'] < tops['jobs-panel'], JSON.stringify(tops));
+    const width = await page.evaluate(() => document.documentElement.scrollWidth);
+    assert.equal(width, 390, 'nothing sticks out sideways');
+    await saveScreenshot('phone');
+  } finally {
+    await page.setViewportSize({ width: 1440, height: 1000 });
+  }
 });
 
 test('the page raised no script errors', () => {
