@@ -196,6 +196,7 @@ export class ProgressPlot {
     ctx.beginPath();
     xy.forEach(([px, py], i) => (i === 0 ? ctx.moveTo(px, py) : ctx.lineTo(px, py)));
     ctx.stroke();
+    if (xy.length > 200) return; // a line is enough: dots would merge
     for (const [px, py] of xy) {
       ctx.beginPath();
       ctx.arc(px, py, 2.5, 0, 2 * Math.PI);

@@ -5,12 +5,17 @@
 //   PHOTON_SERVER_BIN=build/app/photon-server PHOTON_WEB_SCREENSHOT=out/web.png \
 //     node --test tests/web/page.test.mjs
 //
-// Starts the server on a free port with a fresh data folder, opens the page, checks the
-// client-side JSON error, a scene error with its JSON path from the server, renders the
-// Cornell box example (4 passes of 20000 photons) and watches the image follow the passes
-// until the job completes, saves a screenshot, then cancels and deletes jobs from the page.
-// The server and the browser are stopped at the end, also when a check fails. Starting and
-// stopping them, and the helpers that talk to the server from Node, are in harness.mjs.
+// Starts the server on a free port with a fresh data folder, opens the page and checks: the
+// icon and the form (placeholders from the example, contents kept across a reload); JSON
+// syntax and server scene errors (caret, selection, scrolling, cleared on edit); a Cornell
+// box render followed to completion, whole preview images only, the plot's history kept
+// across a reload; the preview on a link throttled to 30 KB/s (CDP); method and denoise
+// choices; cancel and delete (with its confirmation); an imported pbrt file's warnings; the
+// job list (names, methods, thumbnails, search, status filter, sort, events without
+// polling); each method's figures; the phone-width layout. Screenshots of each state go
+// beside PHOTON_WEB_SCREENSHOT. The server and the browser are stopped at the end, also
+// when a check fails. Starting and stopping them, and the helpers that talk to the server
+// from Node, are in harness.mjs.
 
 import assert from 'node:assert/strict';
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
