@@ -8,12 +8,14 @@ const TOKEN_KEY = 'photon.token';
 
 export class ApiError extends Error {
   // status: the HTTP status (0 when the server could not be reached); path: the JSON path
-  // into the scene for scene errors ('' for the document as a whole), else undefined.
-  constructor(message, { status = 0, path } = {}) {
+  // into the scene for scene errors ('' for the document as a whole), else undefined;
+  // pointer: the same place as a JSON Pointer (JSON scenes only), else undefined.
+  constructor(message, { status = 0, path, pointer } = {}) {
     super(message);
     this.name = 'ApiError';
     this.status = status;
     this.path = path;
+    this.pointer = pointer;
   }
 }
 
@@ -109,6 +111,7 @@ async function errorFrom(res) {
   }
   const serverMessage = body && typeof body.error === 'string' ? body.error : '';
   const path = body && typeof body.path === 'string' ? body.path : undefined;
+  const pointer = body && typeof body.pointer === 'string' ? body.pointer : undefined;
   let message = serverMessage || `The server answered ${res.status} ${res.statusText}`.trim();
   if (res.status === 413) {
     message = 'The upload is too large for the server' + (serverMessage ? ` (${serverMessage}).` : '.');
@@ -117,7 +120,7 @@ async function errorFrom(res) {
   } else if (path && !message.startsWith(path)) {
     message = `${path}: ${message}`;
   }
-  return new ApiError(message, { status: res.status, path });
+  return new ApiError(message, { status: res.status, path, pointer });
 }
 
 async function request(method, url, { body, headers = {} } = {}) {
@@ -172,9 +175,12 @@ export function normalizeJob(raw) {
   }
   return {
     id: String(first(r.id, '')),
+    name: typeof r.name === 'string' ? r.name : '',
+    labels: Array.isArray(r.labels) ? r.labels.map(String) : [],
     status: String(first(r.status, 'unknown')),
     priority: num(r.priority),
     createdAt: first(r.created_at, null),
+    updatedAt: first(r.updated_at, null),
     startedAt: first(r.started_at, null),
     finishedAt: first(r.finished_at, null),
     passesDone: num(r.pass, r.passes_done) ?? 0,
@@ -182,6 +188,8 @@ export function normalizeJob(raw) {
     photonsPerPass: num(s.photons_per_pass, r.photons_per_pass),
     seed: num(s.seed, r.seed),
     integrator: first(s.integrator, r.integrator, null),
+    // Not in the record yet (GET /jobs/{id}/scene has it): null for "not said".
+    denoise: typeof s.denoise === 'boolean' ? s.denoise : null,
     width: num(resolution[0], r.width),
     height: num(resolution[1], r.height),
     photonsTraced,
@@ -202,8 +210,9 @@ export function isFinished(job) {
 
 // ---- Endpoints -----------------------------------------------------------------------
 
-export async function listJobs({ status, limit = 50, offset = 0 } = {}) {
-  const body = await requestJson('GET', `/jobs${query({ status, limit, offset })}`);
+// status: statuses, comma-separated; name: a part of the name, in any case.
+export async function listJobs({ status, name, limit = 50, offset } = {}) {
+  const body = await requestJson('GET', `/jobs${query({ status, name, limit, offset })}`);
   const jobs = Array.isArray(body && body.jobs) ? body.jobs.map(normalizeJob) : [];
   return { jobs, total: num(body && body.total) ?? jobs.length };
 }
@@ -250,6 +259,12 @@ export async function submitJob({ sceneText, sceneFile = null, assets = [], para
   return normalizeJob(await requestJson('POST', url, { body: form }));
 }
 
+// The scene as submitted: { type (its Content-Type), text }.
+export async function getScene(id) {
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/scene`);
+  return { type: res.headers.get('Content-Type') || '', text: await res.text() };
+}
+
 export async function cancelJob(id) {
   return normalizeJob(await requestJson('POST', `/jobs/${encodeURIComponent(id)}/cancel`));
 }
@@ -258,15 +273,21 @@ export async function deleteJob(id) {
   await request('DELETE', `/jobs/${encodeURIComponent(id)}`);
 }
 
-// The latest image; `pass` only makes the URL differ per pass so the browser refetches.
-export function imageUrl(id, format = 'png', pass) {
-  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass })}`;
+// The latest image; `pass` only makes the URL differ per pass so the browser refetches;
+// `size` ('64x64') asks for a thumbnail that fits in that box.
+export function imageUrl(id, format = 'png', pass, size) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size })}`;
 }
 
-// The image as a Blob, for when a token is needed (an <img> or <a> cannot send headers).
-export async function fetchImage(id, format = 'png') {
-  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format })}`);
-  return res.blob();
+// The image as a Blob, with the bearer token when there is one (an <img> or <a> cannot
+// send headers). Resolves once the whole body has arrived, to { blob, pass }: pass is the
+// pass the server actually sent (X-Photon-Pass), which may be older than the one asked
+// for (it encodes a running job's image at most every 250 ms); null if not named.
+export async function fetchImage(id, format = 'png', pass) {
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, pass })}`);
+  const blob = await res.blob();
+  const sent = Number.parseInt(res.headers.get('X-Photon-Pass') ?? '', 10);
+  return { blob, pass: Number.isFinite(sent) ? sent : null };
 }
 
 // Every job's changes (GET /api/v1/events), for the job list.
@@ -276,4 +297,45 @@ export function serviceEventsUrl() {
 
 export function eventsUrl(id) {
   return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
+}
+
+// The job's progress so far, for a plot that outlives a reload: the job's event stream read
+// from its start (Last-Event-ID: 0 replays the events the server still keeps), as job
+// records, until `untilPass` has been seen, the job's final event, or `timeoutMs`. fetch()
+// rather than EventSource, which cannot send Last-Event-ID on its first connection.
+export async function progressHistory(id, { untilPass, timeoutMs = 5000 } = {}) {
+  const controller = new AbortController();
+  const timer = setTimeout(() => controller.abort(), timeoutMs);
+  const records = [];
+  try {
+    const res = await fetch(eventsUrl(id), {
+      headers: { 'Last-Event-ID': '0', Accept: 'text/event-stream', ...authHeaders() },
+      signal: controller.signal,
+    });
+    if (!res.ok || !res.body) return records;
+    const reader = res.body.pipeThrough(new TextDecoderStream()).getReader();
+    let buffered = '';
+    for (;;) {
+      const { value, done } = await reader.read();
+      if (done) break;
+      buffered += value.replace(/\r\n?/g, '\n');
+      let end;
+      while ((end = buffered.indexOf('\n\n')) >= 0) {
+        const block = buffered.slice(0, end);
+        buffered = buffered.slice(end + 2);
+        const type = /^event: ?(.*)$/m.exec(block)?.[1] ?? 'message';
+        const data = block.split('\n').filter((l) => l.startsWith('data:')).map((l) => l.slice(5).replace(/^ /, '')).join('\n');
+        if (!data) continue;
+        const job = normalizeJob(JSON.parse(data));
+        records.push(job);
+        if (type !== 'progress' || job.passesDone >= untilPass) return records;
+      }
+    }
+    return records;
+  } catch {
+    return records; // cut short (timeout, network): what arrived is still history
+  } finally {
+    clearTimeout(timer);
+    controller.abort();
+  }
 }

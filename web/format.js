@@ -81,3 +81,10 @@ export function formatJson(value, indent = '') {
   }
   return JSON.stringify(value) ?? 'null';
 }
+
+// A job's method (settings.integrator) in words.
+const METHOD_NAMES = { sppm: 'SPPM', photonmap: 'photon map', radiosity: 'radiosity', path: 'path tracing' };
+
+export function methodName(integrator) {
+  return METHOD_NAMES[integrator] ?? integrator ?? DASH;
+}

@@ -1,4 +1,6 @@
-// The job view: latest image, progress numbers, the radius/photons plot, Cancel, Delete and
+// The job view: latest image (preview-loader.js: whole images only, one load at a time),
+// progress numbers (those the job's method has), the progress plot (progress-plot.js, with
+// the passes before a reload read back from the job's events), Cancel, Delete and
 // downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
 // cookie the token was traded for: EventSource cannot send headers); when the stream fails
 // for good, it polls GET /jobs/{id} every second.
@@ -10,14 +12,26 @@ import {
   eventsUrl,
   fetchImage,
   getJob,
+  getScene,
   hasToken,
   imageUrl,
   isFinished,
   normalizeJob,
+  progressHistory,
   sessionLost,
 } from './api.js';
-import { formatCount, formatDuration, formatPasses, formatRadius, formatRate, formatTime, progressFraction } from './format.js';
-import { RadiusPlot } from './radius-plot.js';
+import {
+  formatCount,
+  formatDuration,
+  formatPasses,
+  formatRadius,
+  formatRate,
+  formatTime,
+  methodName,
+  progressFraction,
+} from './format.js';
+import { createPreviewLoader } from './preview-loader.js';
+import { formatTick, ProgressPlot, seriesFor } from './progress-plot.js';
 
 const POLL_MS = 1000;
 const EVENT_TYPES = ['progress', 'done', 'failed', 'cancelled'];
@@ -42,6 +56,12 @@ export function createJobView({ onChanged, onDeleted }) {
     photonsPerPass: $('job-photons-per-pass'),
     seed: $('job-seed'),
     integrator: $('job-integrator'),
+    denoise: $('job-denoise'),
+    passRate: $('job-pass-rate'),
+    statRate: $('stat-rate'),
+    statRadius: $('stat-radius'),
+    statPhotons: $('stat-photons'),
+    statPhotonsPerPass: $('stat-photons-per-pass'),
     created: $('job-created'),
     progress: $('job-progress'),
     error: $('job-error'),
@@ -53,8 +73,8 @@ export function createJobView({ onChanged, onDeleted }) {
     png: $('download-png'),
     exr: $('download-exr'),
   };
-  const plot = new RadiusPlot($('radius-plot'));
-  let session = null; // the job on show: { id, job, source, timer, imagePass, plotPass, objectUrl }
+  const plot = new ProgressPlot($('progress-plot'));
+  let session = null; // the job on show: { id, job, source, timer, preview }
 
   function showMessage(text) {
     el.details.hidden = true;
@@ -86,27 +106,21 @@ export function createJobView({ onChanged, onDeleted }) {
     }
   }
 
-  async function showImage(s, pass) {
-    s.imagePass = pass;
-    el.image.dataset.pass = String(pass);
-    el.image.alt = `Image of job ${s.id} after pass ${pass}`;
-    if (!hasToken()) {
-      el.image.src = imageUrl(s.id, 'png', pass);
-    } else {
-      // An <img> cannot send the token: fetch the image and show it from memory.
-      try {
-        const url = URL.createObjectURL(await fetchImage(s.id, 'png'));
-        if (session !== s) return URL.revokeObjectURL(url);
-        if (s.objectUrl) URL.revokeObjectURL(s.objectUrl);
-        s.objectUrl = url;
-        el.image.src = url;
-      } catch (error) {
-        el.actionError.textContent = `The image could not be loaded: ${error.message}`;
-        return;
-      }
-    }
-    el.image.hidden = false;
-    el.placeholder.hidden = true;
+  // The preview of a session's job: images follow the passes one complete image at a time.
+  function previewFor(s) {
+    return createPreviewLoader({
+      img: el.image,
+      load: (pass) => fetchImage(s.id, 'png', pass),
+      onShown: (pass) => {
+        if (session !== s) return;
+        el.image.alt = `Image of job ${s.id} after pass ${pass}`;
+        el.image.hidden = false;
+        el.placeholder.hidden = true;
+      },
+      onError: (error) => {
+        if (session === s) el.actionError.textContent = `The image could not be loaded: ${error.message}`;
+      },
+    });
   }
 
   function render(job) {
@@ -121,7 +135,17 @@ export function createJobView({ onChanged, onDeleted }) {
     el.resolution.textContent = job.width && job.height ? `${job.width} × ${job.height}` : '—';
     el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
     el.seed.textContent = job.seed ?? '—';
-    el.integrator.textContent = job.integrator ?? '—';
+    el.integrator.textContent = methodName(job.integrator);
+    el.passRate.textContent = job.elapsedSeconds > 0 && job.passesDone > 0
+      ? `${formatTick(job.passesDone / job.elapsedSeconds)}/s` : '—';
+    // Only the figures the method has: the path tracer and radiosity trace no photons (the
+    // record says 0), and only SPPM has a gather radius and a photon count per pass.
+    const photons = job.integrator === 'sppm' || job.integrator === 'photonmap';
+    el.statRate.hidden = !photons;
+    el.statPhotons.hidden = !photons;
+    el.statRadius.hidden = job.integrator !== 'sppm';
+    el.statPhotonsPerPass.hidden = job.integrator !== 'sppm';
+    plot.setSeries(seriesFor(job.integrator));
     el.created.textContent = formatTime(job.createdAt);
     el.progress.value = progressFraction(job.passesDone, job.passes);
     el.error.hidden = !job.error;
@@ -142,11 +166,8 @@ export function createJobView({ onChanged, onDeleted }) {
     if (previous && job.passesDone < previous.passesDone) return;
     s.job = job;
     render(job);
-    if (job.passesDone > 0 && job.passesDone !== s.imagePass) showImage(s, job.passesDone);
-    if (job.passesDone > s.plotPass) {
-      s.plotPass = job.passesDone;
-      plot.add({ t: job.elapsedSeconds, radius: job.meanRadius, photons: job.photonsTraced });
-    }
+    if (job.passesDone > 0) s.preview.want(job.passesDone);
+    plot.add(job);
     if (isFinished(job)) {
       stopFollowing(s);
       if (!previous || !isFinished(previous)) onChanged();
@@ -206,16 +227,29 @@ export function createJobView({ onChanged, onDeleted }) {
     });
   }
 
+  // Whether the job denoises: the record does not say; its scene's render.denoise does.
+  async function showDenoise(s) {
+    let text = '—';
+    try {
+      const scene = await getScene(s.id);
+      if (scene.type.startsWith('application/json')) text = JSON.parse(scene.text)?.render?.denoise === true ? 'on' : 'off';
+    } catch {
+      // An imported scene, or the scene could not be read: not known.
+    }
+    if (session === s) el.denoise.textContent = text;
+  }
+
   function close() {
     if (!session) return;
     stopFollowing(session);
-    if (session.objectUrl) URL.revokeObjectURL(session.objectUrl);
+    session.preview.stop();
     session = null;
   }
 
   function open(id) {
     close();
-    const s = { id, job: null, source: null, timer: null, imagePass: 0, plotPass: 0, objectUrl: null };
+    const s = { id, job: null, source: null, timer: null, preview: null };
+    s.preview = previewFor(s);
     session = s;
     el.empty.hidden = true;
     el.details.hidden = false;
@@ -232,8 +266,18 @@ export function createJobView({ onChanged, onDeleted }) {
     setDownload(el.exr, id, 'exr', false);
     plot.clear();
     follow(s); // first, so no pass is missed while the GET is on its way
+    el.denoise.textContent = '…';
+    showDenoise(s);
     getJob(id)
-      .then((job) => apply(s, job))
+      .then((job) => {
+        apply(s, job);
+        // The passes before this moment (a reload, a job opened late), for the plot.
+        if (job.passesDone > 0) {
+          progressHistory(id, { untilPass: job.passesDone }).then((records) => {
+            if (session === s) plot.addAll(records);
+          });
+        }
+      })
       .catch((error) => {
         if (session !== s) return;
         close();
@@ -260,6 +304,8 @@ export function createJobView({ onChanged, onDeleted }) {
   el.remove.addEventListener('click', async () => {
     const s = session;
     if (!s) return;
+    const name = s.job && s.job.name ? `"${s.job.name}" (${s.id})` : s.id;
+    if (!window.confirm(`Delete job ${name}? Its images, scene and log are removed from the server.`)) return;
     el.remove.disabled = true;
     el.actionError.textContent = '';
     try {
@@ -285,7 +331,7 @@ export function createJobView({ onChanged, onDeleted }) {
       if (!session || !hasToken() || !link.href) return;
       event.preventDefault();
       try {
-        const url = URL.createObjectURL(await fetchImage(session.id, format));
+        const url = URL.createObjectURL((await fetchImage(session.id, format)).blob);
         const save = document.createElement('a');
         save.href = url;
         save.download = link.download;

@@ -23,6 +23,7 @@ function start() {
   const jobs = createJobsList({
     list: $('job-list'),
     status: $('job-list-status'),
+    filters: { name: $('job-search'), status: $('job-status-filter'), sort: $('job-sort') },
     onSelect: (id) => openJob(id),
     onConnection: (error) => {
       serverStatus.textContent = error ? error.message : '';
@@ -52,6 +53,8 @@ function start() {
   createSubmitForm({
     onSubmitted: (job) => {
       openJob(job.id);
+      // On a phone the job view is below the form: bring it up to follow the new job.
+      if (window.matchMedia('(max-width: 700px)').matches) $('job-view').scrollIntoView({ block: 'start' });
       jobs.refresh();
     },
   });

@@ -7,8 +7,10 @@
 
 import { ApiError, submitJob } from './api.js';
 import { EXAMPLES, exampleScene } from './examples.js';
+import { rememberForm } from './form-memory.js';
 import { formatJson } from './format.js';
-import { describeJsonError } from './json-error.js';
+import { describeJsonError, locateJsonError } from './json-error.js';
+import { locateValue, pathKeys, pointerKeys } from './json-place.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -40,10 +42,54 @@ export function createSubmitForm({ onSubmitted }) {
   let importedScene = null; // a chosen .pbrt/.gltf/.glb File: sent as it is, not as the text
 
   for (const example of EXAMPLES) select.add(new Option(example.title, example.name));
+  // What was typed and chosen survives a reload (not the files: a page cannot set those).
+  const memory = rememberForm(
+    form,
+    ['example-select', 'scene-text', 'passes', 'photons-per-pass', 'seed', 'integrator', 'denoise'],
+    'photon.submit-form',
+  );
+
+  // The number fields' placeholders show the scene's own values: what an empty field means.
+  function showSceneSettings() {
+    let render = {};
+    try {
+      const scene = JSON.parse(sceneText.value);
+      if (scene && typeof scene.render === 'object' && scene.render) render = scene.render;
+    } catch {
+      // Not JSON (yet): no values to show.
+    }
+    for (const field of NUMBER_FIELDS) {
+      const value = render[field.param];
+      $(field.input).placeholder = Number.isInteger(value) ? String(value) : '';
+    }
+  }
+  showSceneSettings();
 
   function showError(elementId, message, input) {
     $(elementId).textContent = message;
     if (input) input.setAttribute('aria-invalid', 'true');
+  }
+
+  // Selects text[start, end) in the scene editor and scrolls it into sight: a textarea does
+  // not scroll to a selection made by a script, so the line's offset is worked out here.
+  function showInScene(start, end = start) {
+    sceneText.focus({ preventScroll: true });
+    sceneText.setSelectionRange(start, end);
+    const style = getComputedStyle(sceneText);
+    const lineHeight = Number.parseFloat(style.lineHeight) || 1.2 * Number.parseFloat(style.fontSize);
+    const line = sceneText.value.slice(0, start).split('\n').length - 1;
+    const top = line * lineHeight;
+    // The line a third of the way down, so what comes before it is in sight too.
+    sceneText.scrollTop = Math.max(0, top - sceneText.clientHeight / 3);
+    sceneText.scrollIntoView({ block: 'nearest' });
+  }
+
+  // The part of the scene a server error names (its JSON Pointer, else its path), selected.
+  function selectErrorPlace(error) {
+    const keys = error.pointer !== undefined ? pointerKeys(error.pointer) : pathKeys(error.path);
+    if (!keys || importedScene) return;
+    const place = locateValue(sceneText.value, keys);
+    if (place) showInScene(place.start, place.end);
   }
 
   function clearErrors() {
@@ -85,8 +131,9 @@ export function createSubmitForm({ onSubmitted }) {
 
   function useImported(file) {
     importedScene = file;
-    sceneText.value = '';
+    if (file) sceneText.value = ''; // typing after choosing a file keeps what is typed
     sceneText.placeholder = file ? `${file.name} is sent as it is; the server imports it.` : '';
+    showSceneSettings();
   }
 
   select.addEventListener('change', () => {
@@ -96,10 +143,22 @@ export function createSubmitForm({ onSubmitted }) {
     sceneText.value = formatJson(scene);
     sceneFile.value = '';
     clearErrors();
+    showSceneSettings();
+    memory.save();
   });
 
   sceneText.addEventListener('input', () => {
     if (importedScene) useImported(null);
+    showSceneSettings();
+  });
+
+  // An error goes as soon as the field it is about is edited: it may no longer hold.
+  form.addEventListener('input', (event) => {
+    const field = event.target;
+    if (!field.hasAttribute('aria-invalid')) return;
+    field.removeAttribute('aria-invalid');
+    const errorId = field.getAttribute('aria-describedby');
+    if (errorId && $(errorId)) $(errorId).textContent = '';
   });
 
   sceneFile.addEventListener('change', async () => {
@@ -115,6 +174,8 @@ export function createSubmitForm({ onSubmitted }) {
     try {
       sceneText.value = await file.text();
       select.value = '';
+      showSceneSettings();
+      memory.save();
     } catch {
       showError('scene-error', `Could not read ${file.name}.`, sceneText);
     }
@@ -126,6 +187,7 @@ export function createSubmitForm({ onSubmitted }) {
       pathInput.type = 'text';
       pathInput.value = guessPath(file.name);
       pathInput.spellcheck = false;
+      pathInput.setAttribute('aria-describedby', 'assets-error');
       assets.push({ file, pathInput });
     }
     assetInput.value = ''; // so the same file can be added again after removing it
@@ -180,6 +242,7 @@ export function createSubmitForm({ onSubmitted }) {
     }
     if (error.path !== undefined) {
       showError('scene-error', message, sceneText);
+      selectErrorPlace(error);
       return;
     }
     for (const field of NUMBER_FIELDS) {
@@ -223,7 +286,8 @@ export function createSubmitForm({ onSubmitted }) {
       if (!importedScene) text = sceneWithChoices(text);
     } catch (parseError) {
       showError('scene-error', describeJsonError(text, parseError), sceneText);
-      sceneText.focus();
+      const found = locateJsonError(text);
+      showInScene(found ? found.offset : 0);
       return;
     }
     const params = readNumbers();

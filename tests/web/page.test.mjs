@@ -5,12 +5,17 @@
 //   PHOTON_SERVER_BIN=build/app/photon-server PHOTON_WEB_SCREENSHOT=out/web.png \
 //     node --test tests/web/page.test.mjs
 //
-// Starts the server on a free port with a fresh data folder, opens the page, checks the
-// client-side JSON error, a scene error with its JSON path from the server, renders the
-// Cornell box example (4 passes of 20000 photons) and watches the image follow the passes
-// until the job completes, saves a screenshot, then cancels and deletes jobs from the page.
-// The server and the browser are stopped at the end, also when a check fails. Starting and
-// stopping them, and the helpers that talk to the server from Node, are in harness.mjs.
+// Starts the server on a free port with a fresh data folder, opens the page and checks: the
+// icon and the form (placeholders from the example, contents kept across a reload); JSON
+// syntax and server scene errors (caret, selection, scrolling, cleared on edit); a Cornell
+// box render followed to completion, whole preview images only, the plot's history kept
+// across a reload; the preview on a link throttled to 30 KB/s (CDP); method and denoise
+// choices; cancel and delete (with its confirmation); an imported pbrt file's warnings; the
+// job list (names, methods, thumbnails, search, status filter, sort, events without
+// polling); each method's figures; the phone-width layout. Screenshots of each state go
+// beside PHOTON_WEB_SCREENSHOT. The server and the browser are stopped at the end, also
+// when a check fails. Starting and stopping them, and the helpers that talk to the server
+// from Node, are in harness.mjs.
 
 import assert from 'node:assert/strict';
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
@@ -22,9 +27,11 @@ import {
   countEventStreams,
   launchBrowser,
   occupyWorker,
+  readScene,
   releaseWorker,
   startServer,
   stopServer,
+  submitScene,
   textOf as textIn,
   waitForStatus,
 } from './harness.mjs';
@@ -37,7 +44,9 @@ let context = null; // Playwright persistent browser context
 let page = null;
 let scratch = null; // temp folder: server data + browser profile
 let screenshotTaken = false;
+const namedJobs = {}; // name -> id: the jobs the job list's test submits, one per method
 const pageErrors = [];
+const notFound = []; // URLs the page asked for and got a 404 for
 
 // ---- Setup -------------------------------------------------------------------------
 
@@ -48,6 +57,9 @@ before(async () => {
   context = await launchBrowser(join(scratch, 'profile'));
   page = context.pages()[0] || (await context.newPage());
   page.on('pageerror', (error) => pageErrors.push(String(error)));
+  page.on('response', (response) => {
+    if (response.status() === 404) notFound.push(response.url());
+  });
   const response = await page.goto(server.baseUrl);
   assert.equal(response.status(), 200, 'GET / should serve web/index.html');
 });
@@ -68,6 +80,13 @@ after(async () => {
 
 // ---- Helpers -----------------------------------------------------------------------
 
+// Screenshots of each state, beside PHOTON_WEB_SCREENSHOT: web-page.png -> web-page-<state>.png.
+async function saveScreenshot(state, options = {}) {
+  const path = SCREENSHOT.replace(/(\.png)?$/, `-${state}.png`);
+  mkdirSync(dirname(path), { recursive: true });
+  await page.screenshot({ path, fullPage: true, ...options });
+}
+
 async function textOf(selector) {
   return textIn(page, selector);
 }
@@ -79,6 +98,52 @@ async function chooseExample(name) {
 
 async function clearOverrides() {
   for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
+}
+
+// Records, in window.__shown, every image the job view puts on show: its pass, whether its
+// src is a blob: URL (whole bytes held in memory), and what its load gave.
+async function watchShownImages() {
+  await page.evaluate(() => {
+    window.__shown = [];
+    const img = document.querySelector('#job-image');
+    if (window.__shownObserver) window.__shownObserver.disconnect();
+    window.__shownObserver = new MutationObserver(() => {
+      if (!img.getAttribute('src')) return;
+      window.__shown.push({ pass: Number(img.dataset.pass), blob: img.src.startsWith('blob:'), loaded: null });
+    });
+    window.__shownObserver.observe(img, { attributes: true, attributeFilter: ['src'] });
+    if (!window.__shownListening) {
+      window.__shownListening = true;
+      const settle = (entry) => {
+        const last = window.__shown.at(-1);
+        if (last && last.loaded === null) Object.assign(last, entry);
+      };
+      img.addEventListener('load', () => settle({ loaded: true, width: img.naturalWidth, height: img.naturalHeight }));
+      img.addEventListener('error', () => settle({ loaded: false }));
+    }
+  });
+}
+
+async function shownImages() {
+  // The last src set may still be loading (from memory: a moment).
+  await page.waitForFunction(() => window.__shown.every((image) => image.loaded !== null));
+  return page.evaluate(() => window.__shown);
+}
+
+// Each image shown was whole: a blob: URL that loaded at the render's size; passes only go up.
+function assertWholeImages(shown, width, height) {
+  assert.ok(shown.length >= 1, 'an image was shown');
+  for (const image of shown) {
+    assert.deepEqual(image, { pass: image.pass, blob: true, loaded: true, width, height });
+  }
+  const passes = shown.map((image) => image.pass);
+  assert.deepEqual([...new Set(passes)].sort((a, b) => a - b), passes, `passes only go up: ${passes}`);
+}
+
+// The scene editor's selection, and whether it has the focus (a selection shows only then).
+async function sceneSelection() {
+  return page.locator('#scene-text').evaluate((area) =>
+    ({ focused: document.activeElement === area, start: area.selectionStart, end: area.selectionEnd }));
 }
 
 async function submittedJobId() {
@@ -95,6 +160,53 @@ test('the page loads with the bundled examples', async () => {
   for (const id of ['#submit-button', '#job-list', '#scene-text', '#passes', '#photons-per-pass', '#seed']) {
     assert.equal(await page.locator(id).count(), 1, `${id} is on the page`);
   }
+  // The icon: served from the web root as SVG, so the browser's request for it is no 404.
+  assert.equal(await page.getAttribute('link[rel="icon"]', 'href'), 'favicon.svg');
+  const icon = await page.evaluate(async () => {
+    const res = await fetch('/favicon.svg');
+    return { status: res.status, type: res.headers.get('Content-Type'), svg: (await res.text()).startsWith('<svg') };
+  });
+  assert.deepEqual(icon, { status: 200, type: 'image/svg+xml', svg: true });
+  assert.deepEqual(notFound, []);
+});
+
+test("an example's passes, photons and seed are the number fields' placeholders", async () => {
+  await chooseExample('cornell-box');
+  const placeholders = () => page.locator('#passes, #photons-per-pass, #seed').evaluateAll((inputs) => inputs.map((i) => i.placeholder));
+  assert.deepEqual(await placeholders(), ['16', '200000', '1']);
+  // They follow the text: another seed typed into the scene.
+  const text = (await page.inputValue('#scene-text')).replace('"seed": 1', '"seed": 42');
+  await page.fill('#scene-text', text);
+  assert.deepEqual(await placeholders(), ['16', '200000', '42']);
+  await page.fill('#scene-text', '{');
+  assert.deepEqual(await placeholders(), ['', '', '']);
+});
+
+test('the form keeps its contents across a reload', async () => {
+  await chooseExample('point-light-plane');
+  const scene = (await page.inputValue('#scene-text')).replace('"fov": 60', '"fov": 55');
+  await page.fill('#scene-text', scene);
+  await page.fill('#passes', '3');
+  await page.fill('#photons-per-pass', '5000');
+  await page.fill('#seed', '7');
+  await page.selectOption('#integrator', 'photonmap');
+  await page.check('#denoise');
+  await page.reload();
+  const form = await page.evaluate(() => ({
+    example: document.querySelector('#example-select').value,
+    scene: document.querySelector('#scene-text').value,
+    numbers: ['passes', 'photons-per-pass', 'seed'].map((id) => document.getElementById(id).value),
+    integrator: document.querySelector('#integrator').value,
+    denoise: document.querySelector('#denoise').checked,
+    placeholders: ['passes', 'photons-per-pass', 'seed'].map((id) => document.getElementById(id).placeholder),
+  }));
+  assert.deepEqual(form, {
+    example: 'point-light-plane', scene, numbers: ['3', '5000', '7'], integrator: 'photonmap', denoise: true,
+    placeholders: ['16', '200000', '1'],
+  });
+  await clearOverrides();
+  await page.selectOption('#integrator', '');
+  await page.uncheck('#denoise');
 });
 
 test('the render farm panel stays hidden when the server renders alone', async () => {
@@ -150,6 +262,40 @@ test('invalid JSON is explained next to the textarea and nothing is sent', async
   assert.ok(await page.evaluate(() => document.querySelector('#scene-text').nextElementSibling.id === 'scene-error'));
   page.off('request', onRequest);
   assert.equal(posted, 0, 'an unparsable scene must not be sent to the server');
+  // The caret is put where the error is: line 4, column 3 (the '}' after a trailing comma).
+  assert.deepEqual(await sceneSelection(), { focused: true, start: 33, end: 33 });
+  assert.equal('{\n  "camera": {\n    "fov": 40,\n  }\n}'.slice(31, 34), '  }', 'offset 33: line 4, column 3');
+  // Editing the scene takes the error away.
+  await page.press('#scene-text', 'Delete');
+  assert.equal(await textOf('#scene-error'), '');
+  assert.equal(await page.getAttribute('#scene-text', 'aria-invalid'), null);
+});
+
+test('a syntax error far down the scene is scrolled into sight with the caret on it', async () => {
+  await chooseExample('cornell-glass');
+  const good = await page.inputValue('#scene-text');
+  const text = good.replace('"max_depth": 8,', '"max_depth": 8,,');
+  assert.notEqual(text, good);
+  await page.fill('#scene-text', text);
+  await page.click('#submit-button');
+  const offset = text.indexOf(',,') + 1;
+  const lines = text.slice(0, offset).split('\n');
+  const [line, column] = [lines.length, lines.at(-1).length + 1];
+  assert.ok(line > 40, `the error is far down (line ${line})`);
+  await page.locator('#scene-error').filter({ hasText: 'not valid JSON' }).waitFor();
+  assert.equal(await textOf('#scene-error'),
+    `The scene is not valid JSON: expected a property name in double quotes but found ',' at line ${line}, column ${column}.`);
+  assert.deepEqual(await sceneSelection(), { focused: true, start: offset, end: offset });
+  // The line is inside the textarea's visible part.
+  const view = await page.locator('#scene-text').evaluate((area, at) => {
+    const style = getComputedStyle(area);
+    const lineHeight = Number.parseFloat(style.lineHeight);
+    return { top: (at - 1) * lineHeight, lineHeight, scrollTop: area.scrollTop, height: area.clientHeight };
+  }, line);
+  assert.ok(view.scrollTop > 0, 'the textarea scrolled');
+  assert.ok(view.top >= view.scrollTop && view.top + view.lineHeight <= view.scrollTop + view.height,
+    `line ${line} is in sight: ${JSON.stringify(view)}`);
+  await saveScreenshot('syntax-error');
 });
 
 test("a scene error shows the server's message with the JSON path", async () => {
@@ -178,19 +324,20 @@ test("a scene error shows the server's message with the JSON path", async () => 
   await error.filter({ hasText: 'radius' }).waitFor();
   assert.equal((await error.textContent()).trim(), body.error);
   assert.equal(await textOf('#form-error'), '', 'the scene error is shown by the scene, not at the bottom');
+  // The member the error names is selected in the scene text.
+  assert.equal(body.pointer, `/shapes/${sphere}/radius`);
+  const start = text.indexOf('"radius": -1');
+  assert.deepEqual(await sceneSelection(), { focused: true, start, end: start + '"radius": -1'.length });
+  await saveScreenshot('error-highlight');
+  // Editing takes the error away.
+  await page.press('#scene-text', 'End');
+  await page.keyboard.type('0');
+  assert.equal(await textOf('#scene-error'), '');
+  assert.equal(await page.getAttribute('#scene-text', 'aria-invalid'), null);
 });
 
 test('a Cornell box render follows its passes to completion', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
-  // Every pass value the job view puts into the image's URL.
-  await page.evaluate(() => {
-    window.__imagePasses = [];
-    const img = document.querySelector('#job-image');
-    const record = () => {
-      const pass = new URL(img.src, location.href).searchParams.get('pass');
-      if (pass && !window.__imagePasses.includes(pass)) window.__imagePasses.push(pass);
-    };
-    new MutationObserver(record).observe(img, { attributes: true, attributeFilter: ['src'] });
-  });
+  await watchShownImages();
   const loadedPasses = new Set(); // image responses that arrived (200)
   page.on('response', (response) => {
     const match = /\/api\/v1\/jobs\/[^/]+\/image\?format=png&pass=(\d+)$/.exec(response.url());
@@ -215,15 +362,16 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await releaseWorker(server, blocker);
 
   await page.waitForFunction(
-    () => document.querySelector('#job-status').textContent === 'completed' && window.__imagePasses.length >= 2,
+    () => document.querySelector('#job-status').textContent === 'completed' && window.__shown.length >= 1 &&
+      window.__shown.at(-1).pass === 4,
     null,
     { timeout: RENDER_TIMEOUT_MS },
   );
-  const passes = await page.evaluate(() => window.__imagePasses.map(Number));
+  const shown = await shownImages();
+  const passes = shown.map((image) => image.pass);
   t.diagnostic(`image passes shown: ${passes.join(', ')}`);
-  assert.ok(passes.length >= 2, `the image should update at least twice, saw passes ${passes}`);
-  assert.deepEqual([...passes].sort((a, b) => a - b), passes, 'pass numbers only go up');
-  assert.equal(passes[passes.length - 1], 4, 'the last image is of pass 4');
+  assertWholeImages(shown, 256, 256);
+  assert.equal(passes.at(-1), 4, 'the last image is of pass 4');
   assert.equal(await textOf('#job-pass'), '4 / 4');
 
   // The final image is really shown, at the scene's resolution.
@@ -244,7 +392,8 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
     assert.equal(await link.getAttribute('href'), `/api/v1/jobs/${id}/image?format=${format}`);
     assert.equal(await link.getAttribute('download'), `photon-${id}.${format}`);
   }
-  assert.doesNotMatch(await page.getAttribute('#radius-plot', 'aria-label'), /No passes/);
+  assert.equal(await page.getAttribute('#progress-plot', 'data-points'), '4');
+  assert.equal(await page.getAttribute('#progress-plot', 'data-series'), 'passes per second, mean radius, photons traced');
 
   // The list shows the job as completed with a full progress bar (it polls every 2 s).
   const row = page.locator(`#job-list li[data-job-id="${id}"]`);
@@ -258,6 +407,62 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   mkdirSync(dirname(SCREENSHOT), { recursive: true });
   await page.screenshot({ path: SCREENSHOT, fullPage: true });
   screenshotTaken = true;
+
+  // After a reload the plot still has every pass: read back from the job's kept events.
+  await page.reload();
+  await waitForStatus(page, server, id, 'completed', 10_000);
+  await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '4');
+  assert.match(await page.getAttribute('#progress-plot', 'aria-label'),
+    /^Passes per second, mean radius and photons traced over time\. 4 passes plotted\. Latest, pass 4 at \d+:\d\d:\d\d: passes per second [\d.]+\/s, mean radius [\d.e+-]+, photons traced 80\.0 k\.$/);
+});
+
+test('on a slow link the preview shows only whole images and ends on the final pass', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
+  const blocker = await occupyWorker(server);
+  const scene = readScene('cornell-box');
+  scene.camera.resolution = [64, 64];
+  scene.render = { ...scene.render, passes: 12, photons_per_pass: 100000 };
+  const id = await submitScene(server, scene);
+  await countEventStreams(page);
+  await page.evaluate((jobId) => {
+    window.location.hash = `job=${jobId}`;
+  }, id);
+  await page.waitForFunction(
+    (jobId) => document.querySelector('#job-id').textContent === jobId &&
+      document.querySelector('#job-status').textContent === 'queued' && window.__openEventStreams >= 1,
+    id,
+  );
+  await watchShownImages();
+  const failedImages = []; // image requests that did not finish: aborted or cut off
+  const onFailed = (request) => {
+    if (request.url().includes(`/api/v1/jobs/${id}/image`)) failedImages.push(request.url());
+  };
+  page.on('requestfailed', onFailed);
+  // 30 KB/s down and up, 150 ms latency: a 64x64 PNG takes about half a second.
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  await cdp.send('Network.emulateNetworkConditions', {
+    offline: false, latency: 150, downloadThroughput: 30 * 1024, uploadThroughput: 30 * 1024,
+  });
+  try {
+    const started = Date.now();
+    await releaseWorker(server, blocker);
+    await waitForStatus(page, server, id, 'completed', RENDER_TIMEOUT_MS);
+    await page.waitForFunction(() => window.__shown.at(-1)?.pass === 12, null, { timeout: 30_000 });
+    t.diagnostic(`completed and final preview shown after ${Date.now() - started} ms`);
+  } finally {
+    await cdp.send('Network.emulateNetworkConditions', { offline: false, latency: 0, downloadThroughput: -1, uploadThroughput: -1 });
+    await cdp.detach();
+    page.off('requestfailed', onFailed);
+  }
+  const shown = await shownImages();
+  t.diagnostic(`passes shown on the slow link: ${shown.map((image) => image.pass).join(', ')}`);
+  assertWholeImages(shown, 64, 64);
+  const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+  assert.equal(record.total_passes, 12);
+  assert.equal(shown.at(-1).pass, record.total_passes, "the last image shown is the job's final pass");
+  assert.equal(await page.getAttribute('#job-image', 'data-pass'), '12');
+  assert.deepEqual(failedImages, [], 'no image load was aborted');
+  await saveScreenshot('throttled-preview');
 });
 
 test('the method and denoising chosen on the form reach the job', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
@@ -288,10 +493,27 @@ test('a running job can be cancelled and a finished one deleted', async () => {
   await page.click('#submit-button');
   const id = await submittedJobId();
   await waitForStatus(page, server, id, 'running', 30_000);
+  await page.waitForFunction(() => Number(document.querySelector('#job-image').dataset.pass) >= 1);
+  await saveScreenshot('running-job');
   await page.click('#cancel-button');
   await waitForStatus(page, server, id, 'cancelled', 30_000);
   await page.waitForFunction(() => !document.querySelector('#delete-button').disabled);
+  // Delete asks first; declined, nothing happens.
+  const question = `Delete job ${id}? Its images, scene and log are removed from the server.`;
+  const answer = (accept) => new Promise((resolveDialog) => {
+    page.once('dialog', async (dialog) => {
+      resolveDialog([dialog.type(), dialog.message()]);
+      await (accept ? dialog.accept() : dialog.dismiss());
+    });
+  });
+  let asked = answer(false);
   await page.click('#delete-button');
+  assert.deepEqual(await asked, ['confirm', question]);
+  assert.equal(await page.isDisabled('#delete-button'), false);
+  assert.equal((await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).status, 200, 'still there');
+  asked = answer(true);
+  await page.click('#delete-button');
+  assert.deepEqual(await asked, ['confirm', question]);
   await page.waitForFunction(
     (jobId) => !document.querySelector(`#job-list li[data-job-id="${jobId}"]`),
     id,
@@ -330,6 +552,136 @@ test('an imported pbrt file is sent as it is and its warnings are shown', { time
   await waitForStatus(page, server, id, 'completed', RENDER_TIMEOUT_MS);
   await page.fill('#passes', '');
   await page.fill('#photons-per-pass', '');
+});
+
+test('the job list tells jobs apart, filters, sorts and follows events without polling', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async () => {
+  // The list has listed the jobs and follows the event stream.
+  await page.waitForFunction(() => document.querySelector('#job-list').dataset.following === 'events');
+  const listings = []; // the page's GET /api/v1/jobs requests (listings), by query
+  const onRequest = (request) => {
+    const url = new URL(request.url());
+    if (request.method() === 'GET' && url.pathname === '/api/v1/jobs') listings.push(url.search);
+  };
+  page.on('request', onRequest);
+  try {
+    // Three small jobs, named, one per method, submitted from outside the page.
+    const submitted = {};
+    for (const [name, integrator] of [['kitchen', 'sppm'], ['hall', 'path'], ['attic', 'radiosity']]) {
+      const scene = readScene('cornell-box');
+      scene.camera.resolution = [64, 64];
+      scene.render = { ...scene.render, integrator, passes: 2, photons_per_pass: 2000 };
+      const response = await fetch(new URL(`api/v1/jobs?name=${name}`, server.baseUrl), {
+        method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(scene),
+      });
+      assert.equal(response.status, 201);
+      submitted[name] = (await response.json()).id;
+    }
+    Object.assign(namedJobs, submitted);
+    await page.waitForFunction((ids) => ids.every((id) => {
+      const row = document.querySelector(`#job-list li[data-job-id="${id}"]`);
+      return row?.dataset.status === 'completed' && row.querySelector('.job-thumb').naturalWidth > 0;
+    }), Object.values(submitted), { timeout: RENDER_TIMEOUT_MS });
+    assert.deepEqual(listings, [], 'the list followed the events and never asked for the jobs');
+
+    const row = (name) => page.locator(`#job-list li[data-job-id="${submitted[name]}"]`);
+    const detail = async (name) => (await row(name).locator('.job-row-detail').textContent()).replace(/ · \d{4}-.*$/, '');
+    assert.equal(await row('kitchen').locator('.job-row-title').textContent(), 'kitchen');
+    assert.equal(await row('kitchen').locator('.status-badge').textContent(), 'completed');
+    assert.equal(await detail('kitchen'), 'SPPM · 64×64 · pass 2 / 2');
+    assert.equal(await detail('hall'), 'path tracing · 64×64 · pass 2 / 2');
+    assert.equal(await detail('attic'), 'radiosity · 64×64 · pass 2 / 2');
+    // The thumbnail: the image endpoint's 48x48 box, of the last pass.
+    const thumb = await row('hall').locator('.job-thumb').evaluate((img) =>
+      ({ src: new URL(img.src).search, width: img.naturalWidth, height: img.naturalHeight, alt: img.alt }));
+    assert.deepEqual(thumb, { src: '?format=png&pass=2&size=48x48', width: 48, height: 48, alt: 'Job hall after pass 2' });
+
+    const titles = () => page.locator('#job-list .job-row-title').allTextContents();
+    // Search by name: the server filters the listing.
+    await page.fill('#job-search', 'AL');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === '1 job matches.');
+    assert.deepEqual(await titles(), ['hall']);
+    assert.deepEqual(listings, ['?name=AL&limit=100']);
+    await page.fill('#job-search', 't');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === '2 jobs match.');
+    assert.deepEqual(await titles(), ['attic', 'kitchen'], 'newest first');
+    await page.selectOption('#job-sort', 'name');
+    assert.deepEqual(await titles(), ['attic', 'kitchen']);
+    await page.selectOption('#job-sort', 'oldest');
+    assert.deepEqual(await titles(), ['kitchen', 'attic']);
+    // Filter by status: a job that starts running joins the "running" list from its event.
+    await page.fill('#job-search', '');
+    await page.selectOption('#job-status-filter', 'running');
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === 'No jobs match.');
+    const blocker = await occupyWorker(server);
+    await page.waitForFunction((id) => document.querySelector(`#job-list li[data-job-id="${id}"]`), blocker);
+    assert.deepEqual(await page.locator('#job-list li').evaluateAll((items) => items.map((li) => li.dataset.jobId)), [blocker]);
+    await saveScreenshot('list-filtered');
+    await releaseWorker(server, blocker);
+    // Cancelled: it leaves the "running" list, again from its event.
+    await page.waitForFunction(() => document.querySelector('#job-list-status').textContent === 'No jobs match.');
+    assert.deepEqual(listings, ['?name=AL&limit=100', '?name=t&limit=100', '?status=running&limit=100']);
+  } finally {
+    page.off('request', onRequest);
+    await page.fill('#job-search', '');
+    await page.selectOption('#job-status-filter', '');
+    await page.selectOption('#job-sort', 'newest');
+  }
+  await page.waitForFunction(() => /^\d+ jobs\.$/.test(document.querySelector('#job-list-status').textContent));
+  await saveScreenshot('list');
+});
+
+test("the job view shows only the figures of the job's method", async () => {
+  const common = ['Status', 'Pass', 'Method', 'Denoise', 'Passes/s'];
+  const times = ['Elapsed', 'ETA', 'Resolution', 'Seed', 'Created'];
+  const expected = {
+    kitchen: { method: 'SPPM', figures: [...common, 'Photons/s', 'Mean radius', 'Photons traced', 'Photons per pass', ...times],
+      series: 'passes per second, mean radius, photons traced' },
+    hall: { method: 'path tracing', figures: [...common, ...times], series: 'passes per second' },
+    attic: { method: 'radiosity', figures: [...common, ...times], series: 'passes per second' },
+  };
+  assert.deepEqual(Object.keys(namedJobs), Object.keys(expected), 'the job list test submitted the jobs');
+  for (const [name, want] of Object.entries(expected)) {
+    const id = namedJobs[name];
+    await page.click(`#job-list li[data-job-id="${id}"] button`);
+    await waitForStatus(page, server, id, 'completed', 10_000);
+    // Two passes: the first read back from the job's events, the last from the live view.
+    await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '2');
+    await page.waitForFunction(() => document.querySelector('#job-denoise').textContent === 'off');
+    const figures = await page.locator('#job-details .stats > div:not([hidden]) dt').allTextContents();
+    assert.deepEqual(figures, want.figures, `${name}: figures`);
+    assert.equal(await textOf('#job-integrator'), want.method);
+    assert.equal(await page.getAttribute('#progress-plot', 'data-series'), want.series);
+    assert.match(await textOf('#job-pass-rate'), /^[\d.]+\/s$/);
+    if (name === 'hall') await saveScreenshot('path-tracing-job');
+  }
+  // Axis labels step in as many decimals as they need: none repeat.
+  const ticks = await page.evaluate(async () => {
+    const { tickLabels } = await import('/progress-plot.js');
+    return [tickLabels(1), tickLabels(0.02), tickLabels(250000), tickLabels(5, 2), tickLabels(0.025, 2)];
+  });
+  assert.deepEqual(ticks, [
+    ['0', '0.25', '0.5', '0.75', '1'],
+    ['0', '0.005', '0.01', '0.015', '0.02'],
+    ['0', '62.5 k', '125 k', '188 k', '250 k'],
+    ['0', '2.5', '5'],
+    ['0', '0.0125', '0.025'],
+  ]);
+});
+
+test('on a phone-width screen the form and the job come before the job list', async () => {
+  await page.setViewportSize({ width: 390, height: 844 });
+  try {
+    await page.reload(); // the address bar keeps the job on show (#job=<id>)
+    await page.waitForFunction(() => !document.querySelector('#job-details').hidden);
+    const tops = await page.evaluate(() =>
+      Object.fromEntries(['submit-panel', 'job-view', 'jobs-panel'].map((id) => [id, document.getElementById(id).getBoundingClientRect().top])));
+    assert.ok(tops['submit-panel'] < tops['job-view'] && tops['job-view'] < tops['jobs-panel'], JSON.stringify(tops));
+    const width = await page.evaluate(() => document.documentElement.scrollWidth);
+    assert.equal(width, 390, 'nothing sticks out sideways');
+    await saveScreenshot('phone');
+  } finally {
+    await page.setViewportSize({ width: 1440, height: 1000 });
+  }
 });
 
 test('the page raised no script errors', () => {
