@@ -43,12 +43,14 @@ void JobRunner::run(const std::string& id) {
 JobRunner::Ending JobRunner::render(const JobTable::Started& started) {
     const std::string& id = started.job.id;
     SceneFile scene = readJobScene(folders_.sceneFile(id), started.job.settings);
+    const double timeLimit = scene.render().timeLimitSeconds;
     Renderer renderer(std::move(scene));
     resumeFromCheckpoint(id, renderer);
     int resumedAt = renderer.progress().pass;
     appendJobLog(folders_.logFile(id), resumedAt > 0 ? "resumed from its checkpoint after pass " + std::to_string(resumedAt)
                                                      : "started");
-    if (farm_.farm) return renderer.independentPasses() ? renderOnFarm(started, renderer) : renderWholeOnFarm(started, renderer);
+    if (farm_.farm)
+        return renderer.independentPasses() ? renderOnFarm(started, renderer, timeLimit) : renderWholeOnFarm(started, renderer);
     double elapsedBefore = renderer.progress().elapsedSeconds;
     auto lastCheckpoint = std::chrono::steady_clock::now();
     RenderOutcome outcome = renderer.run(*started.cancel, [&](const RenderProgress& p) {
@@ -96,7 +98,7 @@ farm::FarmScene JobRunner::farmScene(const JobTable::Started& started) const {
 // pass order (a batch that arrives early waits in memory), so the checkpoint's pass count
 // says exactly which are merged and a restart asks the farm for the rest only. The image
 // is the one this process would render, bit for bit (docs/scale-out.md).
-JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Renderer& renderer) {
+JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Renderer& renderer, double timeLimit) {
     const std::string& id = started.job.id;
     const JobSettings& settings = started.job.settings;
     const int64_t total = renderer.progress().totalPasses;
@@ -111,7 +113,10 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
     double elapsedAtLastPass = elapsedBefore;
     const auto start = std::chrono::steady_clock::now();
     auto lastCheckpoint = start;
-    while (merged < total) {
+    // The time limit ends the render after the batch that crosses it, as a local render
+    // ends after the pass that crosses it; the batches in flight are dropped.
+    bool timeUp = false;
+    while (merged < total && !timeUp) {
         if (started.cancel->cancelled()) {
             farm_.farm->stop(id);
             return stopped(id, renderer);
@@ -124,7 +129,7 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
         }
         if (r->sums.first < merged) continue;  // passes merged already
         early.emplace(r->sums.first, std::move(r->sums));
-        while (!early.empty() && early.begin()->first == merged) {
+        while (!early.empty() && early.begin()->first == merged && !timeUp) {
             const int64_t count = early.begin()->second.count;
             renderer.addPasses(early.begin()->second);
             merged += count;
@@ -138,6 +143,7 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
             double before = elapsedAtLastPass;
             onPass(id, settings, renderer, p, before);
             elapsedAtLastPass = p.elapsedSeconds;
+            timeUp = timeLimit > 0 && p.elapsedSeconds >= timeLimit;
             const auto now = std::chrono::steady_clock::now();
             if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
                 saveCheckpoint(id, renderer);

@@ -46,7 +46,7 @@ public:
 private:
     enum class Ending { Completed, Cancelled, Paused, Interrupted };
     Ending render(const JobTable::Started& started);
-    Ending renderOnFarm(const JobTable::Started& started, Renderer& renderer);
+    Ending renderOnFarm(const JobTable::Started& started, Renderer& renderer, double timeLimit);
     Ending renderWholeOnFarm(const JobTable::Started& started, const Renderer& renderer);
     farm::FarmScene farmScene(const JobTable::Started& started) const;
     // What a stop without completion means: cancelled, paused or the server stopping (the

@@ -54,7 +54,7 @@ std::string Metrics::prometheusText(const std::map<JobStatus, int>& jobsByStatus
     if (farm) {
         out << "# HELP photon_farm_queue_depth Render farm work items waiting or being rendered.\n"
             << "# TYPE photon_farm_queue_depth gauge\nphoton_farm_queue_depth " << farm->queueDepth << "\n";
-        out << "# HELP photon_farm_batch_seconds Render farm batches merged: latency from submission to result.\n"
+        out << "# HELP photon_farm_batch_seconds Render farm batches merged: latency from queueing to result.\n"
             << "# TYPE photon_farm_batch_seconds summary\nphoton_farm_batch_seconds_sum " << farm->batchSeconds
             << "\nphoton_farm_batch_seconds_count " << farm->batches << "\n";
         out << "# HELP photon_farm_duplicate_results_total Batch results received again (re-delivered work).\n"

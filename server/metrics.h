@@ -17,7 +17,7 @@ struct FarmFigures {
     int64_t queueDepth = 0;                 // work items waiting or being rendered
     int64_t results = 0, duplicates = 0, stale = 0;
     int64_t batches = 0;                    // merged
-    double batchSeconds = 0;                // their latencies summed, submission to result
+    double batchSeconds = 0;                // their latencies summed, queueing to result
     struct Worker {
         std::string name, host;
         int threads = 0;

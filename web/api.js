@@ -230,6 +230,7 @@ export async function getWorkers() {
       host: String(w.host ?? ''),
       threads: num(w.threads) ?? 0,
       busy: Boolean(w.busy),
+      job: w.job == null ? null : String(w.job),
       passesPerSecond: num(w.passes_per_second) ?? 0,
       batches: num(w.batches) ?? 0,
       redeliveries: num(w.redeliveries) ?? 0,

@@ -25,10 +25,10 @@ export function createWorkersPanel({ section, summary, rows }) {
     if (!farm.farm) return;
     const busy = farm.workers.filter((w) => w.busy).length;
     summary.textContent = `${farm.workers.length} worker${farm.workers.length === 1 ? '' : 's'}, ${busy} rendering; ` +
-      `${farm.queueDepth} batch${farm.queueDepth === 1 ? '' : 'es'} queued or in progress.`;
+      `${farm.queueDepth} item${farm.queueDepth === 1 ? '' : 's'} queued or in progress.`;
     rows.replaceChildren(...farm.workers.map((w) => {
       const tr = document.createElement('tr');
-      tr.append(cell(w.name), cell(w.host), cell(String(w.threads)), cell(w.busy ? 'rendering' : 'idle'),
+      tr.append(cell(w.name), cell(w.host), cell(String(w.threads)), cell(w.busy ? (w.job ? `job ${w.job}` : 'rendering') : 'idle'),
         cell(w.passesPerSecond.toFixed(2)), cell(String(w.batches)), cell(String(w.redeliveries)));
       return tr;
     }));

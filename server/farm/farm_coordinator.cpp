@@ -30,7 +30,7 @@ void FarmCoordinator::submitJob(const std::string& job, const FarmScene& scene, 
                                 const std::optional<std::string>& checkpoint) {
     const std::string round = beginRound(job, scene);
     if (checkpoint) redis_.command({"SET", checkpointKey(job), *checkpoint});
-    jobs_[job] = Submitted{round, {}, std::chrono::steady_clock::now()};
+    jobs_[job] = Submitted{round, {}, std::chrono::steady_clock::now(), {}, 0, {}};
     redis_.command({"XADD", kWorkStream, "*", "job", job, "round", round, "kind", "job", "checkpoint_seconds",
                     std::to_string(plan.checkpointSeconds), "preview_seconds", std::to_string(plan.previewSeconds)});
 }
@@ -38,12 +38,17 @@ void FarmCoordinator::submitJob(const std::string& job, const FarmScene& scene, 
 void FarmCoordinator::submit(const std::string& job, const FarmScene& scene, const BatchPlan& plan,
                              const std::set<int64_t>& merged) {
     const std::string round = beginRound(job, scene);
-    jobs_[job] = Submitted{round, merged, std::chrono::steady_clock::now()};
-    for (int64_t b = 0; b < plan.batches(); ++b) {
-        if (merged.count(b)) continue;
-        redis_.command({"XADD", kWorkStream, "*", "job", job, "round", round, "batch", std::to_string(b), "first",
-                        std::to_string(plan.first(b)), "count", std::to_string(plan.count(b))});
-    }
+    Submitted& s = jobs_[job] = Submitted{round, merged, std::chrono::steady_clock::now(), plan, 0, {}};
+    for (int64_t i = 0; i < plan.ahead; ++i) queueNext(job, s);
+}
+
+void FarmCoordinator::queueNext(const std::string& job, Submitted& s) {
+    while (s.next < s.plan.batches() && s.handedOn.count(s.next)) ++s.next;
+    if (s.next >= s.plan.batches()) return;
+    const int64_t b = s.next++;
+    s.queuedAt[b] = std::chrono::steady_clock::now();
+    redis_.command({"XADD", kWorkStream, "*", "job", job, "round", s.round, "batch", std::to_string(b), "first",
+                    std::to_string(s.plan.first(b)), "count", std::to_string(s.plan.count(b))});
 }
 
 size_t FarmCoordinator::collect(std::chrono::milliseconds wait, const std::function<void(Result&&)>& onResult) {
@@ -89,7 +94,12 @@ bool FarmCoordinator::readResult(const StreamEntry& e, Submitted& job, Result& r
             return false;
         }
         ++counters_.batches;
-        counters_.batchSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - job.at).count();
+        const auto queued = job.queuedAt.find(r.batch);
+        counters_.batchSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                                (queued != job.queuedAt.end() ? queued->second : job.at))
+                                      .count();
+        if (queued != job.queuedAt.end()) job.queuedAt.erase(queued);
+        queueNext(r.job, job);
     }
     try {
         if (auto error = e.fields.find("error"); error != e.fields.end()) {

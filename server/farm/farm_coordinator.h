@@ -19,11 +19,14 @@
 namespace photon::farm {
 
 // The batches of `passes` passes from pass `firstPass` on, `batchPasses` each (the last may
-// be shorter).
+// be shorter). At most `ahead` of them are queued at a time, one more as each comes back, so
+// a job of many passes keeps Redis small and one that ends early (a time limit, a cancel)
+// leaves little to drop.
 struct BatchPlan {
     int64_t passes = 0;
     int batchPasses = 1;
     int64_t firstPass = 0;
+    int64_t ahead = 64;
     int64_t batches() const { return (passes + batchPasses - 1) / batchPasses; }
     int64_t first(int64_t batch) const { return firstPass + batch * batchPasses; }
     int count(int64_t batch) const { return int(std::min<int64_t>(batchPasses, firstPass + passes - first(batch))); }
@@ -47,7 +50,10 @@ class FarmCoordinator {
     struct Submitted {
         std::string round;
         std::set<int64_t> handedOn;
-        std::chrono::steady_clock::time_point at;  // when its items went out
+        std::chrono::steady_clock::time_point at;  // when it was submitted
+        BatchPlan plan;
+        int64_t next = 0;  // the next batch to queue
+        std::map<int64_t, std::chrono::steady_clock::time_point> queuedAt;  // batches out, when queued
     };
 
 public:
@@ -90,7 +96,7 @@ public:
         int64_t duplicates = 0;   // of batches handed on before (re-deliveries)
         int64_t stale = 0;        // of an earlier round of their job
         int64_t batches = 0;      // handed on
-        double batchSeconds = 0;  // their latencies summed, from submission to result
+        double batchSeconds = 0;  // their latencies summed, from queueing to result
     };
     const Counters& counters() const { return counters_; }
     // Work items waiting or being rendered.
@@ -102,6 +108,8 @@ public:
     std::vector<WorkerInfo> workers();
 
 private:
+    // Queues the job's next batch not handed on yet, if any.
+    void queueNext(const std::string& job, Submitted& s);
     // Drops what an earlier submission of the job left, stores its scene and numbers the
     // new round, which becomes the job's current one.
     std::string beginRound(const std::string& job, const FarmScene& scene);

@@ -6,6 +6,7 @@
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
+//                [--compare-schedules SECONDS]
 //                [--instancing]
 // With --instancing it instead times loading and building 10,000 instances of a 10k-triangle
 // mesh, and their memory, against the mesh placed once.
@@ -19,6 +20,7 @@
 #include <optional>
 #include <string>
 #include "embree_throughput.h"
+#include "schedule_comparison.h"
 #include "instancing_load.h"
 #include "integrator_comparison.h"
 #include "projection_misses.h"
@@ -42,6 +44,7 @@ struct Options {
     bool rssCheck = true;
     double compareSeconds = 0;    // > 0: compare the integrators instead
     double referenceSeconds = 0;  // 0: 10x compareSeconds
+    double compareSchedulesSeconds = 0;  // > 0: compare SPPM's radius schedules instead
     bool instancing = false;      // time instanced loading instead
 };
 
@@ -61,6 +64,8 @@ void declareOptions(CLI::App& app, Options& o) {
         ->capture_default_str();
     app.add_option("--compare", o.compareSeconds, "compare the integrators at this many seconds each instead")
         ->check(CLI::PositiveNumber);
+    app.add_option("--compare-schedules", o.compareSchedulesSeconds,
+                   "compare SPPM's per-pixel and global radius schedules at this many seconds each instead");
     app.add_option("--reference-seconds", o.referenceSeconds, "the SPPM reference's seconds (default 10x --compare)")
         ->check(CLI::PositiveNumber);
 }
@@ -183,6 +188,12 @@ int main(int argc, char** argv) {
         if (o.threads > 0) limit.emplace(size_t(o.threads));
         if (o.instancing) {
             std::cout << photon::bench::instancingLoad(10000, 10000).dump(2) << std::endl;
+            return 0;
+        }
+        if (o.compareSchedulesSeconds > 0) {
+            double reference = o.referenceSeconds > 0 ? o.referenceSeconds : 10 * o.compareSchedulesSeconds;
+            std::cout << photon::bench::compareRadiusSchedules(o.scene, o.compareSchedulesSeconds, reference).dump(2)
+                      << std::endl;
             return 0;
         }
         if (o.compareSeconds > 0) {

@@ -224,18 +224,18 @@ test('the render farm panel lists the workers a farm reports', async () => {
     farm: true,
     queue_depth: 3,
     workers: [
-      { name: 'node-1', host: 'render-a', threads: 16, busy: true, passes_per_second: 2.5, batches: 12, redeliveries: 1 },
-      { name: 'node-2', host: 'render-b', threads: 8, busy: false, passes_per_second: 1.25, batches: 7, redeliveries: 0 },
+      { name: 'node-1', host: 'render-a', threads: 16, busy: true, job: '0123456789abcdef', passes_per_second: 2.5, batches: 12, redeliveries: 1 },
+      { name: 'node-2', host: 'render-b', threads: 8, busy: false, job: null, passes_per_second: 1.25, batches: 7, redeliveries: 0 },
     ],
   };
   await page.route('**/api/v1/workers', (route) => route.fulfill({ json: farm }));
   try {
     await page.locator('#workers-panel').waitFor({ state: 'visible', timeout: 10_000 });
-    assert.equal(await textOf('#workers-summary'), '2 workers, 1 rendering; 3 batches queued or in progress.');
+    assert.equal(await textOf('#workers-summary'), '2 workers, 1 rendering; 3 items queued or in progress.');
     const rows = await page.locator('#workers-rows tr').evaluateAll((trs) =>
       trs.map((tr) => [...tr.children].map((td) => td.textContent)));
     assert.deepEqual(rows, [
-      ['node-1', 'render-a', '16', 'rendering', '2.50', '12', '1'],
+      ['node-1', 'render-a', '16', 'job 0123456789abcdef', '2.50', '12', '1'],
       ['node-2', 'render-b', '8', 'idle', '1.25', '7', '0'],
     ]);
   } finally {

@@ -112,8 +112,8 @@ private:
 
 TEST_F(FarmTest, WorkersRenderAJobBitForBitAsOneProcess) {
     FarmCoordinator coordinator(redis_.address());
-    coordinator.submit("job1", scene(12), BatchPlan{12, 3});
-    EXPECT_EQ(coordinator.queueDepth(), 4);
+    coordinator.submit("job1", scene(12), BatchPlan{12, 3, 0, 2});
+    EXPECT_EQ(coordinator.queueDepth(), 2);  // two batches ahead; one more as each comes back
     Renderer merged = renderer(12);
     {
         WorkerThread a(workerOptions("a")), b(workerOptions("b"));

@@ -219,6 +219,23 @@ TEST_F(FarmServerTest, AServerWithItsOwnWorkersIsAFarmOfOne) {
     EXPECT_EQ(workers[0]["batches"], 1 + 1);  // one batch of 4 passes (the default), one whole job
 }
 
+// A job of batches ends at its time limit as a local render does, after the batch that
+// crosses it; the batches still on the farm are dropped.
+TEST_F(FarmServerTest, AJobOfBatchesStopsAtItsTimeLimit) {
+    startServer({"--redis", redis_.address().url(), "--workers", "1", "--farm-batch-passes", "1"});
+    json scene = smallScene(100000, 3000, 32);
+    scene["render"]["radius_schedule"] = "global";
+    scene["render"]["time_limit"] = 1.5;
+    const std::string id = submitOk(scene);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed" || j["status"] == "failed"; },
+                       std::chrono::seconds(60));
+    ASSERT_EQ(job["status"], "completed") << job.dump();
+    EXPECT_GT(job["pass"].get<int>(), 0);
+    EXPECT_LT(job["pass"].get<int>(), 100000);
+    EXPECT_GE(job["elapsed_seconds"].get<double>(), 1.5);
+    EXPECT_EQ(json::parse(client().Get("/api/v1/workers", auth())->body)["queue_depth"], 0);
+}
+
 // Redis (with its append-only file) is restarted while the farm renders a job: the worker
 // and the server wait it out, and the job completes with one process's image.
 class FarmRedisRestartTest : public FarmServerTest {
