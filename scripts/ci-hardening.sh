@@ -147,8 +147,8 @@ step "asan+ubsan: tests" san_tests
 #  - ignore_noninstrumented_modules: memory functions (memcpy, send, ...) called from inside
 #    those libraries are not checked, e.g. httplib's function-local static strings, whose
 #    initialisation guard is read in uninstrumented code. Our code's accesses still are.
-# Left out: CrashTest, FarmServerTest.ARestartedServer... and FarmRedisRestartTest (render
-# for seconds to be interrupted halfway, many times slower under TSan on one CPU; the restart path is covered by the other
+# Left out: CrashTest, FarmServerTest.ARestartedServer..., FarmServerTest.AWholeJob... and
+# FarmRedisRestartTest (render for seconds to be interrupted halfway, many times slower under TSan on one CPU; the restart path is covered by the other
 # restart tests) and the slowloris test
 # (it times answers to a second while 400 connections trickle bytes: a timing test on one CPU
 # under TSan says nothing; the guard's thread is exercised by the other connection tests).
@@ -162,7 +162,7 @@ tsan_build() {
 tsan_tests() {
     local launcher=(taskset -c 0)
     TSAN_OPTIONS="ignore_noninstrumented_modules=1:log_path=$tsan/sanitizer-logs/tsan:second_deadlock_stack=1" \
-        GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*:FarmServerTest.ARestartedServer*:FarmRedisRestartTest.*' run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
+        GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*' run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
 }
 step "tsan: build" tsan_build
 step "tsan: tests" tsan_tests
