@@ -274,10 +274,11 @@ export async function deleteJob(id) {
   await request('DELETE', `/jobs/${encodeURIComponent(id)}`);
 }
 
-// The latest image; `pass` only makes the URL differ per pass so the browser refetches;
+// The latest image; `pass` only makes the URL differ per pass so the browser refetches (as
+// ?after=N: the server ignores it, where ?pass=N would ask for a kept earlier pass);
 // `size` ('64x64') asks for a thumbnail that fits in that box.
 export function imageUrl(id, format = 'png', pass, size) {
-  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size })}`;
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, after: pass, size })}`;
 }
 
 // The image as a Blob, with the bearer token when there is one (an <img> or <a> cannot
@@ -285,7 +286,7 @@ export function imageUrl(id, format = 'png', pass, size) {
 // pass the server actually sent (X-Photon-Pass), which may be older than the one asked
 // for (it encodes a running job's image at most every 250 ms); null if not named.
 export async function fetchImage(id, format = 'png', pass) {
-  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, pass })}`);
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, after: pass })}`);
   const blob = await res.blob();
   const sent = Number.parseInt(res.headers.get('X-Photon-Pass') ?? '', 10);
   return { blob, pass: Number.isFinite(sent) ? sent : null };

@@ -340,7 +340,7 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await watchShownImages();
   const loadedPasses = new Set(); // image responses that arrived (200)
   page.on('response', (response) => {
-    const match = /\/api\/v1\/jobs\/[^/]+\/image\?format=png&pass=(\d+)$/.exec(response.url());
+    const match = /\/api\/v1\/jobs\/[^/]+\/image\?format=png&after=(\d+)$/.exec(response.url());
     if (match && response.status() === 200) loadedPasses.add(match[1]);
   });
 
@@ -593,7 +593,7 @@ test('the job list tells jobs apart, filters, sorts and follows events without p
     // The thumbnail: the image endpoint's 48x48 box, of the last pass.
     const thumb = await row('hall').locator('.job-thumb').evaluate((img) =>
       ({ src: new URL(img.src).search, width: img.naturalWidth, height: img.naturalHeight, alt: img.alt }));
-    assert.deepEqual(thumb, { src: '?format=png&pass=2&size=48x48', width: 48, height: 48, alt: 'Job hall after pass 2' });
+    assert.deepEqual(thumb, { src: '?format=png&after=2&size=48x48', width: 48, height: 48, alt: 'Job hall after pass 2' });
 
     const titles = () => page.locator('#job-list .job-row-title').allTextContents();
     // Search by name: the server filters the listing.
