@@ -211,8 +211,13 @@ TEST_F(FarmServerTest, AServerWithItsOwnWorkersIsAFarmOfOne) {
     json whole = smallScene(3, 3000, 24);
     whole["render"]["integrator"] = "path";
     const std::string a = submitOk(batches), b = submitOk(whole);
-    ASSERT_EQ(waitForStatus(a, "completed")["pass"], 4);
-    ASSERT_EQ(waitForStatus(b, "completed")["pass"], 3);
+    const json batchJob = waitForStatus(a, "completed"), wholeJob = waitForStatus(b, "completed");
+    ASSERT_EQ(batchJob["pass"], 4);
+    ASSERT_EQ(wholeJob["pass"], 3);
+    // Kept passes: a batch of four merges as pass 4; a whole job reports passes 1, 2, 4, ...
+    EXPECT_EQ(batchJob["kept_passes"], json::parse("[4]"));
+    EXPECT_EQ(wholeJob["kept_passes"], json::parse("[1, 2]"));
+    EXPECT_EQ(wholeJob["figures"]["samples_per_pixel"], 3);
     EXPECT_TRUE(bitIdentical(servedExr(a), renderInProcess(batches)));
     EXPECT_TRUE(bitIdentical(servedExr(b), renderInProcess(whole)));
     const json workers = json::parse(client().Get("/api/v1/workers", auth())->body)["workers"];
