@@ -6,7 +6,7 @@
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
-//                [--compare-schedules SECONDS]
+//                [--compare-schedules SECONDS] [--compare-reference FILE [--seconds S,S...]]
 //                [--instancing]
 // With --instancing it instead times loading and building 10,000 instances of a 10k-triangle
 // mesh, and their memory, against the mesh placed once.
@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include "embree_throughput.h"
+#include "reference_comparison.h"
 #include "schedule_comparison.h"
 #include "instancing_load.h"
 #include "integrator_comparison.h"
@@ -45,6 +46,8 @@ struct Options {
     double compareSeconds = 0;    // > 0: compare the integrators instead
     double referenceSeconds = 0;  // 0: 10x compareSeconds
     double compareSchedulesSeconds = 0;  // > 0: compare SPPM's radius schedules instead
+    std::string compareReference;        // set: SPPM against this reference image instead
+    std::vector<double> referenceRuns{10, 30};
     bool instancing = false;      // time instanced loading instead
 };
 
@@ -66,6 +69,13 @@ void declareOptions(CLI::App& app, Options& o) {
         ->check(CLI::PositiveNumber);
     app.add_option("--compare-schedules", o.compareSchedulesSeconds,
                    "compare SPPM's per-pixel and global radius schedules at this many seconds each instead");
+    app.add_option("--compare-reference", o.compareReference,
+                   "render the scene with SPPM for --seconds each (two seeds) and compare with this reference image "
+                   "instead: relative noise, bias, RMSE")
+        ->check(CLI::ExistingFile);
+    app.add_option("--seconds", o.referenceRuns, "the render times for --compare-reference")
+        ->delimiter(',')
+        ->capture_default_str();
     app.add_option("--reference-seconds", o.referenceSeconds, "the SPPM reference's seconds (default 10x --compare)")
         ->check(CLI::PositiveNumber);
 }
@@ -188,6 +198,11 @@ int main(int argc, char** argv) {
         if (o.threads > 0) limit.emplace(size_t(o.threads));
         if (o.instancing) {
             std::cout << photon::bench::instancingLoad(10000, 10000).dump(2) << std::endl;
+            return 0;
+        }
+        if (!o.compareReference.empty()) {
+            std::cout << photon::bench::compareWithReference(o.scene, o.compareReference, o.referenceRuns).dump(2)
+                      << std::endl;
             return 0;
         }
         if (o.compareSchedulesSeconds > 0) {

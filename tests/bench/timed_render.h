@@ -1,0 +1,26 @@
+// Renders for a fixed time and the figures equal-time comparisons read off them: what
+// photon-bench's comparisons (--compare, --compare-schedules, --compare-reference) share.
+#pragma once
+#include <string>
+#include <photon/image.h>
+#include "description/scene_description.h"
+
+namespace photon::bench {
+
+struct TimedRender {
+    Image image;
+    int passes = 0;
+    double seconds = 0;
+};
+
+// The scene file in any format photon reads, as a description to adjust.
+SceneDescription describeScene(const std::string& sceneFile);
+// Renders `d` until `seconds` have passed (the pass that crosses it is finished), without
+// the denoiser: the estimators themselves are compared.
+TimedRender renderFor(SceneDescription d, double seconds);
+double meanOf(const Image& image);
+// One render's relative noise from two renders with different seeds: RMS of their
+// difference / sqrt 2 / their mean.
+double relativeNoise(const Image& a, const Image& b);
+
+}  // namespace photon::bench
