@@ -275,17 +275,19 @@ export async function deleteJob(id) {
 }
 
 // The latest image; `pass` only makes the URL differ per pass so the browser refetches;
-// `size` ('64x64') asks for a thumbnail that fits in that box.
-export function imageUrl(id, format = 'png', pass, size) {
-  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size })}`;
+// `size` ('64x64') asks for a thumbnail that fits in that box; `exposure` (stops, PNG only)
+// tone-maps at that exposure instead of the render's own (null: the render's).
+export function imageUrl(id, format = 'png', pass, size, { exposure = null } = {}) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size, exposure })}`;
 }
 
 // The image as a Blob, with the bearer token when there is one (an <img> or <a> cannot
 // send headers). Resolves once the whole body has arrived, to { blob, pass }: pass is the
 // pass the server actually sent (X-Photon-Pass), which may be older than the one asked
 // for (it encodes a running job's image at most every 250 ms); null if not named.
-export async function fetchImage(id, format = 'png', pass) {
-  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, pass })}`);
+// `exposure` as for imageUrl().
+export async function fetchImage(id, format = 'png', pass, { exposure = null } = {}) {
+  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, pass, exposure })}`);
   const blob = await res.blob();
   const sent = Number.parseInt(res.headers.get('X-Photon-Pass') ?? '', 10);
   return { blob, pass: Number.isFinite(sent) ? sent : null };

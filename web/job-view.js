@@ -1,4 +1,6 @@
 // The job view: latest image (preview-loader.js: whole images only, one load at a time),
+// zoomed and panned in its frame (image-viewport.js), at the exposure chosen
+// (exposure-control.js),
 // progress numbers (those the job's method has), the progress plot (progress-plot.js, with
 // the passes before a reload read back from the job's events), Cancel, Delete and
 // downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
@@ -30,6 +32,8 @@ import {
   methodName,
   progressFraction,
 } from './format.js';
+import { createExposureControl } from './exposure-control.js';
+import { createImageViewport } from './image-viewport.js';
 import { createPreviewLoader } from './preview-loader.js';
 import { formatTick, ProgressPlot, seriesFor } from './progress-plot.js';
 
@@ -44,6 +48,7 @@ export function createJobView({ onChanged, onDeleted }) {
     details: $('job-details'),
     id: $('job-id'),
     image: $('job-image'),
+    frame: $('image-frame'),
     placeholder: $('job-image-placeholder'),
     status: $('job-status'),
     pass: $('job-pass'),
@@ -76,6 +81,26 @@ export function createJobView({ onChanged, onDeleted }) {
   const plot = new ProgressPlot($('progress-plot'));
   let session = null; // the job on show: { id, job, source, timer, preview }
 
+  const viewport = createImageViewport({ frame: el.frame, images: [el.image], zoomLabel: $('zoom-level') });
+  $('zoom-in').addEventListener('click', () => viewport.zoomIn());
+  $('zoom-out').addEventListener('click', () => viewport.zoomOut());
+  $('zoom-fit').addEventListener('click', () => viewport.fit());
+  $('zoom-one').addEventListener('click', () => viewport.oneToOne());
+  // A new pass has the size of the last one, so the zoom stays; another job's may differ.
+  el.image.addEventListener('load', () => viewport.setImageSize(el.image.naturalWidth, el.image.naturalHeight));
+
+  // The image at another exposure: the pass on show is loaded again, once, with it.
+  const exposure = createExposureControl({
+    slider: $('exposure'),
+    label: $('exposure-value'),
+    reset: $('exposure-reset'),
+    onChange: () => {
+      if (!session) return;
+      session.preview.reload();
+      if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
+    },
+  });
+
   function showMessage(text) {
     el.details.hidden = true;
     el.empty.hidden = false;
@@ -97,7 +122,8 @@ export function createJobView({ onChanged, onDeleted }) {
 
   function setDownload(link, id, format, ready) {
     if (ready) {
-      link.href = imageUrl(id, format);
+      // The PNG as shown: at the exposure chosen.
+      link.href = imageUrl(id, format, undefined, undefined, { exposure: format === 'png' ? exposure.value() : null });
       link.download = `photon-${id}.${format}`;
       link.removeAttribute('aria-disabled');
     } else {
@@ -110,11 +136,12 @@ export function createJobView({ onChanged, onDeleted }) {
   function previewFor(s) {
     return createPreviewLoader({
       img: el.image,
-      load: (pass) => fetchImage(s.id, 'png', pass),
+      load: (pass) => fetchImage(s.id, 'png', pass, { exposure: exposure.value() }),
       onShown: (pass) => {
         if (session !== s) return;
         el.image.alt = `Image of job ${s.id} after pass ${pass}`;
         el.image.hidden = false;
+        el.frame.hidden = false;
         el.placeholder.hidden = true;
       },
       onError: (error) => {
@@ -227,16 +254,24 @@ export function createJobView({ onChanged, onDeleted }) {
     });
   }
 
-  // Whether the job denoises: the record does not say; its scene's render.denoise does.
-  async function showDenoise(s) {
+  // Whether the job denoises and at which exposure it renders: the record does not say;
+  // its scene's render.denoise and render.exposure (default 0) do.
+  async function showSceneSettings(s) {
     let text = '—';
+    let stops = null;
     try {
       const scene = await getScene(s.id);
-      if (scene.type.startsWith('application/json')) text = JSON.parse(scene.text)?.render?.denoise === true ? 'on' : 'off';
+      if (scene.type.startsWith('application/json')) {
+        const render = JSON.parse(scene.text)?.render ?? {};
+        text = render.denoise === true ? 'on' : 'off';
+        stops = typeof render.exposure === 'number' ? render.exposure : 0;
+      }
     } catch {
       // An imported scene, or the scene could not be read: not known.
     }
-    if (session === s) el.denoise.textContent = text;
+    if (session !== s) return;
+    el.denoise.textContent = text;
+    exposure.setRenderExposure(stops);
   }
 
   function close() {
@@ -255,7 +290,10 @@ export function createJobView({ onChanged, onDeleted }) {
     el.details.hidden = false;
     el.id.textContent = id;
     el.image.hidden = true;
+    el.frame.hidden = true;
     el.image.removeAttribute('src');
+    exposure.clear();
+    viewport.clear();
     delete el.image.dataset.pass;
     el.placeholder.hidden = false;
     el.actionError.textContent = '';
@@ -267,7 +305,7 @@ export function createJobView({ onChanged, onDeleted }) {
     plot.clear();
     follow(s); // first, so no pass is missed while the GET is on its way
     el.denoise.textContent = '…';
-    showDenoise(s);
+    showSceneSettings(s);
     getJob(id)
       .then((job) => {
         apply(s, job);
@@ -331,7 +369,8 @@ export function createJobView({ onChanged, onDeleted }) {
       if (!session || !hasToken() || !link.href) return;
       event.preventDefault();
       try {
-        const url = URL.createObjectURL((await fetchImage(session.id, format)).blob);
+        const options = { exposure: format === 'png' ? exposure.value() : null };
+        const url = URL.createObjectURL((await fetchImage(session.id, format, undefined, options)).blob);
         const save = document.createElement('a');
         save.href = url;
         save.download = link.download;

@@ -668,6 +668,159 @@ test("the job view shows only the figures of the job's method", async () => {
   ]);
 });
 
+// ---- The image: zoom, pan, exposure --------------------------------------------------
+
+// The view as the viewport keeps it (scale, the image's exact corner x, y in the frame) and as
+// it is drawn: the transform's translation (the corner on the device pixel grid) and where
+// the image really is on the page, relative to the frame's inside, in CSS px.
+async function imageView() {
+  return page.evaluate(() => {
+    const frame = document.querySelector('#image-frame');
+    const img = document.querySelector('#job-image');
+    const f = frame.getBoundingClientRect();
+    const r = img.getBoundingClientRect();
+    const [, left, top] = /^translate\((-?[\d.]+)px, (-?[\d.]+)px\)/.exec(img.style.transform).map(Number);
+    return {
+      scale: Number(frame.dataset.scale), x: Number(frame.dataset.x), y: Number(frame.dataset.y), mode: frame.dataset.mode,
+      drawn: [left, top], box: [r.left - f.left - frame.clientLeft, r.top - f.top - frame.clientTop, r.width, r.height],
+      frame: [frame.clientWidth, frame.clientHeight], pixelated: getComputedStyle(img).imageRendering === 'pixelated',
+      zoom: document.querySelector('#zoom-level').textContent,
+    };
+  });
+}
+
+// What the viewport must show for scale s and exact corner (x, y), on a screen of ratio dpr.
+function expectedView(scale, x, y, dpr = 1) {
+  const snap = (v) => Math.round(v * dpr) / dpr;
+  return { scale, x, y, drawn: [snap(x), snap(y)] };
+}
+
+const viewOf = ({ scale, x, y, drawn }) => ({ scale, x, y, drawn });
+
+// A job of 64 x 64 pixels that keeps rendering until cancelled, opened in the job view.
+async function openLongJob() {
+  const scene = readScene('cornell-box');
+  scene.camera.resolution = [64, 64];
+  scene.render = { ...scene.render, passes: 100000, photons_per_pass: 20000 };
+  const id = await submitScene(server, scene);
+  await page.evaluate((jobId) => {
+    window.location.hash = `job=${jobId}`;
+  }, id);
+  await page.waitForFunction(() => Number(document.querySelector('#job-image').dataset.pass) >= 1 &&
+    document.querySelector('#job-image').naturalWidth === 64 && !document.querySelector('#image-frame').hidden, null, { timeout: 30_000 });
+  return id;
+}
+
+let inspectedJob = null; // the 64 x 64 job the zoom test renders (cancelled), for the exposure test
+
+test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoom across passes', { timeout: 60_000 }, async () => {
+  const id = await openLongJob();
+  inspectedJob = id;
+  try {
+    // Fit: the whole image, centred in the frame.
+    let view = await imageView();
+    const [w, h] = view.frame;
+    const fitScale = Math.min(w / 64, h / 64);
+    assert.deepEqual(viewOf(view), expectedView(fitScale, (w - 64 * fitScale) / 2, (h - 64 * fitScale) / 2));
+    assert.equal(view.mode, 'fit');
+    assert.deepEqual(view.box, [...view.drawn, 64 * fitScale, 64 * fitScale]);
+
+    // 1:1: one image pixel per CSS pixel on this screen (devicePixelRatio 1), centred.
+    await page.click('#zoom-one');
+    view = await imageView();
+    assert.equal(view.scale, 1);
+    assert.deepEqual(view.box.slice(2), [64, 64], 'a 64 x 64 image is 64 x 64 CSS px at 1:1');
+    assert.equal(view.zoom, '100%');
+    assert.equal(view.pixelated, false, 'not magnified: not pixelated');
+
+    // + and −: steps of √2 through 1:1, 2:1, 4:1, around the frame's centre.
+    await page.click('#zoom-in');
+    await page.click('#zoom-in');
+    view = await imageView();
+    assert.deepEqual(viewOf(view), expectedView(2, w / 2 - 64, h / 2 - 64));
+    assert.equal(view.zoom, '200%');
+    assert.equal(view.pixelated, true, 'magnified: crisp pixels');
+    await page.click('#zoom-out');
+    assert.equal((await imageView()).scale, 2 ** 0.5);
+    await page.click('#zoom-in');
+
+    // The wheel zooms around the cursor: one notch (100 px) in is √2 more, and the image
+    // point under the cursor stays under it.
+    // Where the wheel event is, in the frame's content box (the page rounds mouse positions).
+    await page.evaluate(() => document.querySelector('#image-frame').addEventListener('wheel', (event) => {
+      const frame = event.currentTarget;
+      const rect = frame.getBoundingClientRect();
+      window.__wheelAt = [event.clientX - rect.left - frame.clientLeft, event.clientY - rect.top - frame.clientTop];
+    }, { once: true, capture: true }));
+    const frameBox = await page.locator('#image-frame').boundingBox();
+    await page.mouse.move(frameBox.x + w / 2 + 20, frameBox.y + h / 2 - 12);
+    const before = await imageView();
+    await page.mouse.wheel(0, -100);
+    await page.waitForFunction((old) => Number(document.querySelector('#image-frame').dataset.scale) !== old, before.scale);
+    view = await imageView();
+    const [cx, cy] = await page.evaluate(() => window.__wheelAt);
+    const s = 2 * 2 ** 0.5;
+    const u = (cx - before.x) / 2; // the image point under the cursor
+    const v = (cy - before.y) / 2;
+    assert.deepEqual(viewOf(view), expectedView(s, cx - u * s, cy - v * s));
+    // The box is laid out in single precision, hence "within 1/1000 px" for its size.
+    assert.deepEqual(view.box.slice(0, 2), view.drawn);
+    assert.ok(view.box.slice(2).every((side) => Math.abs(side - 64 * s) < 1e-3), `${view.box} is ${64 * s} px wide`);
+
+    // Dragging pans by exactly the pointer's travel.
+    await page.mouse.down();
+    await page.mouse.move(frameBox.x + w / 2 + 20 - 30, frameBox.y + h / 2 - 12 + 17, { steps: 3 });
+    await page.mouse.up();
+    const dragged = await imageView();
+    assert.deepEqual(viewOf(dragged), expectedView(s, view.x - 30, view.y + 17));
+    assert.equal(dragged.mode, 'free');
+
+    // New passes replace the image but not the view.
+    const pass = Number(await page.getAttribute('#job-image', 'data-pass'));
+    await page.waitForFunction((p) => Number(document.querySelector('#job-image').dataset.pass) >= p + 2, pass, { timeout: 20_000 });
+    const later = await imageView();
+    assert.deepEqual(later, dragged, 'a new pass keeps the zoom and the pan');
+    await saveScreenshot('zoomed-image');
+
+    // Keys on the focused frame: + zooms in, an arrow pans, 0 fits, 1 is 1:1.
+    await page.focus('#image-frame');
+    await page.keyboard.press('Minus');
+    assert.equal((await imageView()).scale, 2);
+    const zoomedOut = await imageView();
+    await page.keyboard.press('ArrowLeft');
+    assert.equal((await imageView()).x, Math.min(w - 128, zoomedOut.x + 40), 'the image moves right, inside the frame');
+    await page.keyboard.press('0');
+    assert.deepEqual((await imageView()).mode, 'fit');
+    assert.equal((await imageView()).scale, fitScale);
+    await page.keyboard.press('1');
+    assert.equal((await imageView()).scale, 1);
+
+    // On a screen of devicePixelRatio 2, 1:1 is one image pixel per device pixel: 32 CSS px.
+    const cdp = await context.newCDPSession(page);
+    try {
+      await cdp.send('Emulation.setDeviceMetricsOverride', { width: 1440, height: 1000, deviceScaleFactor: 2, mobile: false });
+      await page.click('#zoom-one');
+      view = await imageView();
+      assert.deepEqual({ scale: view.scale, size: view.box.slice(2), zoom: view.zoom }, { scale: 0.5, size: [32, 32], zoom: '100%' });
+      await page.click('#zoom-in');
+      assert.equal((await imageView()).scale, 2 ** 0.5 / 2);
+      assert.equal((await imageView()).pixelated, false, '√2 device px per image pixel: smooth, not squares of 1 and 2');
+      await page.click('#zoom-in');
+      view = await imageView();
+      assert.deepEqual({ scale: view.scale, size: view.box.slice(2), pixelated: view.pixelated }, { scale: 1, size: [64, 64], pixelated: true });
+      assert.deepEqual(view.drawn, view.drawn.map((c) => Math.round(c * 2) / 2), 'the corner is on the device pixel grid');
+      assert.deepEqual(view.box, [...view.drawn, 64, 64]);
+    } finally {
+      await cdp.send('Emulation.clearDeviceMetricsOverride');
+      await cdp.detach();
+    }
+    await page.click('#zoom-fit');
+  } finally {
+    await fetch(new URL(`api/v1/jobs/${id}/cancel`, server.baseUrl), { method: 'POST' });
+  }
+  await waitForStatus(page, server, id, 'cancelled', 30_000);
+});
+
 test('on a phone-width screen the form and the job come before the job list', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
   try {
