@@ -821,6 +821,113 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
   await waitForStatus(page, server, id, 'cancelled', 30_000);
 });
 
+// The pixels of the image on show and of the server's PNG at `query`, decoded alike by the
+// browser: { shown, served } as arrays of R, G, B (alpha left out). The request for the PNG
+// is the test's: it is marked, so it is not taken for one of the page's.
+async function shownAndServedPixels(id, query) {
+  return page.evaluate(async ({ jobId, q }) => {
+    const rgb = (source, width, height) => {
+      const canvas = document.createElement('canvas');
+      canvas.width = width;
+      canvas.height = height;
+      const context = canvas.getContext('2d');
+      context.drawImage(source, 0, 0);
+      return Array.from(context.getImageData(0, 0, width, height).data).filter((_, i) => i % 4 !== 3);
+    };
+    const img = document.querySelector('#job-image');
+    const res = await fetch(`/api/v1/jobs/${jobId}/image${q}`, { headers: { 'X-Test-Check': '1' } });
+    const bitmap = await createImageBitmap(await res.blob());
+    return { shown: rgb(img, img.naturalWidth, img.naturalHeight), served: rgb(bitmap, bitmap.width, bitmap.height) };
+  }, { jobId: id, q: query });
+}
+
+// An sRGB-encoded 8-bit value in linear light.
+const linear = (v) => {
+  const c = v / 255;
+  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+};
+
+test('the exposure slider reloads the pass on show once, at the exposure chosen', { timeout: 60_000 }, async () => {
+  const id = inspectedJob;
+  assert.ok(id, 'the zoom test rendered a job');
+  if ((await textOf('#job-id')) !== id) {
+    await page.evaluate((jobId) => {
+      window.location.hash = `job=${jobId}`;
+    }, id);
+  }
+  await waitForStatus(page, server, id, 'cancelled', 10_000);
+  const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+  const pass = record.pass;
+  await page.waitForFunction((p) => document.querySelector('#job-image').dataset.pass === String(p), pass);
+  await page.waitForFunction(() => document.querySelector('#exposure-value').textContent === "±0 EV (render's)");
+  assert.equal(await page.isDisabled('#exposure-reset'), true);
+  // The render's own exposure (the Cornell box's is 0): the plain PNG, same pixels as exposure=0.
+  const plain = await shownAndServedPixels(id, '?format=png&exposure=0');
+  assert.deepEqual(plain.shown, plain.served);
+
+  await page.click('#zoom-in');
+  const zoom = await page.getAttribute('#image-frame', 'data-scale');
+  const requests = []; // the image requests the page makes, by query
+  const onRequest = (request) => {
+    const url = new URL(request.url());
+    if (url.pathname === `/api/v1/jobs/${id}/image` && !request.headers()['x-test-check']) requests.push(url.search);
+  };
+  page.on('request', onRequest);
+  try {
+    // +2 stops: the pass on show, loaded once more at exposure 2, swapped in whole.
+    await watchShownImages();
+    await page.locator('#exposure').evaluate((slider) => {
+      slider.value = '2';
+      slider.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await page.waitForFunction(() => window.__shown.length === 1);
+    assert.deepEqual(await shownImages(), [{ pass, blob: true, loaded: true, width: 64, height: 64 }]);
+    assert.deepEqual(requests, [`?format=png&pass=${pass}&exposure=2`]);
+    assert.equal(await textOf('#exposure-value'), '+2 EV');
+    assert.equal(await page.isDisabled('#exposure-reset'), false);
+    assert.equal(await page.getAttribute('#download-png', 'href'), `/api/v1/jobs/${id}/image?format=png&exposure=2`);
+    assert.equal(await page.getAttribute('#image-frame', 'data-scale'), zoom, 'the zoom stays');
+
+    // What is shown is the server's PNG at exposure 2, pixel for pixel, and 4 times as bright
+    // in linear light wherever neither image is clipped (nor too dark for 8 bits to tell).
+    const bright = await shownAndServedPixels(id, '?format=png&exposure=2');
+    assert.deepEqual(bright.shown, bright.served);
+    let [sumDark, sumBright, used] = [0, 0, 0];
+    plain.shown.forEach((dark, i) => {
+      if (dark < 40 || bright.shown[i] > 250) return;
+      sumDark += linear(dark);
+      sumBright += linear(bright.shown[i]);
+      used++;
+    });
+    assert.ok(used > 1000, `enough unclipped values: ${used}`);
+    const ratio = sumBright / sumDark;
+    assert.ok(Math.abs(ratio - 4) < 0.04, `+2 stops is 4 times the light: ${ratio} over ${used} values`);
+    await saveScreenshot('exposure');
+
+    // The keyboard steps half stops: one more reload, at 1.5.
+    await page.focus('#exposure');
+    await page.keyboard.press('ArrowLeft');
+    await page.waitForFunction(() => window.__shown.length === 2);
+    assert.deepEqual(requests.slice(1), [`?format=png&pass=${pass}&exposure=1.5`]);
+    assert.equal(await textOf('#exposure-value'), '+1.5 EV');
+    const half = await shownAndServedPixels(id, '?format=png&exposure=1.5');
+    assert.deepEqual(half.shown, half.served);
+
+    // Reset: the render's own again, the plain PNG.
+    await page.click('#exposure-reset');
+    await page.waitForFunction(() => window.__shown.length === 3);
+    assert.deepEqual(requests.slice(2), [`?format=png&pass=${pass}`]);
+    assert.equal(await textOf('#exposure-value'), "±0 EV (render's)");
+    assert.equal(await page.inputValue('#exposure'), '0');
+    assert.deepEqual((await shownAndServedPixels(id, '?format=png')).shown, plain.shown);
+    // Each a whole image of the same pass.
+    assert.deepEqual(await shownImages(), [1, 2, 3].map(() => ({ pass, blob: true, loaded: true, width: 64, height: 64 })));
+  } finally {
+    page.off('request', onRequest);
+  }
+  await page.click('#zoom-fit');
+});
+
 test('on a phone-width screen the form and the job come before the job list', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
   try {
