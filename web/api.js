@@ -190,6 +190,9 @@ export function normalizeJob(raw) {
     integrator: first(s.integrator, r.integrator, null),
     // Not in the record yet (GET /jobs/{id}/scene has it): null for "not said".
     denoise: typeof s.denoise === 'boolean' ? s.denoise : null,
+    // The earlier passes the server keeps images of (1, 2, 4, 8, ... and the latest),
+    // ascending; null from a server that keeps none.
+    keptPasses: Array.isArray(r.kept_passes) ? r.kept_passes.filter((p) => Number.isInteger(p) && p > 0) : null,
     width: num(resolution[0], r.width),
     height: num(resolution[1], r.height),
     photonsTraced,

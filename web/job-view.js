@@ -32,6 +32,7 @@ import {
   methodName,
   progressFraction,
 } from './format.js';
+import { createCompareView } from './compare-view.js';
 import { createExposureControl } from './exposure-control.js';
 import { createImageViewport } from './image-viewport.js';
 import { createPreviewLoader } from './preview-loader.js';
@@ -81,7 +82,7 @@ export function createJobView({ onChanged, onDeleted }) {
   const plot = new ProgressPlot($('progress-plot'));
   let session = null; // the job on show: { id, job, source, timer, preview }
 
-  const viewport = createImageViewport({ frame: el.frame, images: [el.image], zoomLabel: $('zoom-level') });
+  const viewport = createImageViewport({ frame: el.frame, images: [el.image, $('compare-image')], zoomLabel: $('zoom-level') });
   $('zoom-in').addEventListener('click', () => viewport.zoomIn());
   $('zoom-out').addEventListener('click', () => viewport.zoomOut());
   $('zoom-fit').addEventListener('click', () => viewport.fit());
@@ -97,7 +98,23 @@ export function createJobView({ onChanged, onDeleted }) {
     onChange: () => {
       if (!session) return;
       session.preview.reload();
+      compare.reload();
       if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
+    },
+  });
+
+  // Another image over the job's, split by a divider: an earlier pass, another job.
+  const compare = createCompareView({
+    frame: el.frame,
+    select: $('compare-select'),
+    layer: $('compare-layer'),
+    image: $('compare-image'),
+    divider: $('compare-divider'),
+    leftLabel: $('compare-left-label'),
+    rightLabel: $('compare-right-label'),
+    settings: () => ({ exposure: exposure.value() }),
+    onError: (error) => {
+      if (session) el.actionError.textContent = `The image to compare with could not be loaded: ${error.message}`;
     },
   });
 
@@ -193,6 +210,8 @@ export function createJobView({ onChanged, onDeleted }) {
     if (previous && job.passesDone < previous.passesDone) return;
     s.job = job;
     render(job);
+    if (previous) compare.update(job);
+    else compare.open(job);
     if (job.passesDone > 0) s.preview.want(job.passesDone);
     plot.add(job);
     if (isFinished(job)) {
@@ -294,6 +313,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.image.removeAttribute('src');
     exposure.clear();
     viewport.clear();
+    compare.open(null);
     delete el.image.dataset.pass;
     el.placeholder.hidden = false;
     el.actionError.textContent = '';

@@ -928,6 +928,133 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
   await page.click('#zoom-fit');
 });
 
+// The compare view's state: what is chosen, the divider, the clip, both images' transforms.
+async function compareState() {
+  return page.evaluate(() => {
+    const frame = document.querySelector('#image-frame');
+    const divider = document.querySelector('#compare-divider');
+    const other = document.querySelector('#compare-image');
+    // inset(top right bottom left), as the browser shortens it ("inset(0px)" when all are 0):
+    // the clip's sides in CSS px, in full.
+    const sides = /^inset\((.*)\)$/.exec(document.querySelector('#compare-layer').style.clipPath)[1].split(' ').map((v) => Number.parseFloat(v));
+    const [top, right = top, bottom = top, left = right] = sides;
+    return {
+      choice: document.querySelector('#compare-select').value, hidden: divider.hidden,
+      split: Number(divider.dataset.split), valuenow: divider.getAttribute('aria-valuenow'),
+      clip: [top, right, bottom, left], left: divider.style.left, width: frame.clientWidth,
+      sameTransform: other.style.transform === document.querySelector('#job-image').style.transform,
+      other: { job: other.dataset.job, pass: other.dataset.pass, width: other.naturalWidth },
+      labels: [document.querySelector('#compare-left-label').textContent, document.querySelector('#compare-right-label').textContent],
+    };
+  });
+}
+
+test('the compare view splits the image and another job of its size at a divider', { timeout: 60_000 }, async () => {
+  const id = inspectedJob;
+  assert.ok(id, 'the zoom test rendered a job');
+  // Another 64 x 64 job, and one of another size that is not offered.
+  const submit = async (name, resolution) => {
+    const scene = readScene('cornell-box');
+    scene.camera.resolution = resolution;
+    scene.render = { ...scene.render, passes: 2, photons_per_pass: 5000, seed: 9 };
+    const response = await fetch(new URL(`api/v1/jobs?name=${name}`, server.baseUrl), {
+      method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(scene),
+    });
+    assert.equal(response.status, 201);
+    return (await response.json()).id;
+  };
+  const other = await submit('porch', [64, 64]);
+  const wider = await submit('wide-porch', [96, 64]);
+  for (const job of [other, wider]) {
+    for (let waited = 0; ; waited += 100) {
+      const record = await (await fetch(new URL(`api/v1/jobs/${job}`, server.baseUrl))).json();
+      if (record.status === 'completed') break;
+      assert.ok(waited < 30_000, `job ${job} did not complete: ${JSON.stringify(record)}`);
+      await new Promise((r) => setTimeout(r, 100));
+    }
+  }
+  await page.evaluate((jobId) => {
+    window.location.hash = `job=${jobId}`;
+  }, id);
+  await waitForStatus(page, server, id, 'cancelled', 10_000);
+  await page.focus('#compare-select'); // the choices are listed anew when the select is opened
+  await page.waitForFunction((o) => document.querySelector(`#compare-select option[value="job:${o}"]`), other);
+  const options = await page.locator('#compare-select option').evaluateAll((items) => items.map((o) => [o.value, o.textContent]));
+  assert.ok(options.some(([value, text]) => value === `job:${other}` && text === 'porch (2 / 2)'), JSON.stringify(options));
+  assert.ok(!options.some(([value]) => value === `job:${wider}`), 'a job of another size is not offered');
+  assert.deepEqual(options[0], ['', 'nothing']);
+
+  const requests = [];
+  const onRequest = (request) => {
+    const url = new URL(request.url());
+    if (url.pathname.endsWith('/image') && !request.headers()['x-test-check']) requests.push(url.pathname.split('/')[4] + url.search);
+  };
+  page.on('request', onRequest);
+  try {
+    await page.selectOption('#compare-select', `job:${other}`);
+    await page.waitForFunction(() => document.querySelector('#compare-image').naturalWidth === 64);
+    assert.deepEqual(requests, [`${other}?format=png&pass=2`]);
+    let state = await compareState();
+    const w = state.width;
+    assert.deepEqual(state, {
+      choice: `job:${other}`, hidden: false, split: 0.5, valuenow: '50',
+      clip: [0, 0, 0, Math.round(w / 2)], left: `${Math.round(w / 2)}px`,
+      width: w, sameTransform: true, other: { job: other, pass: '2', width: 64 }, labels: [`this job, pass ${await textOf('#job-pass').then((t) => t.split(' ')[0])}`, 'porch'],
+    });
+
+    // Dragging the divider: the clip follows it exactly (to the nearest pixel).
+    const box = await page.locator('#image-frame').boundingBox();
+    await page.evaluate(() => document.querySelector('#compare-divider').addEventListener('pointermove', (event) => {
+      const frame = document.querySelector('#image-frame');
+      window.__dividerAt = (event.clientX - frame.getBoundingClientRect().left - frame.clientLeft) / frame.clientWidth;
+    }));
+    await page.mouse.move(box.x + 1 + w / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + 1 + w / 4, box.y + box.height / 3, { steps: 4 });
+    await page.mouse.up();
+    const at = await page.evaluate(() => window.__dividerAt);
+    assert.ok(Math.abs(at - 0.25) < 2 / w, `the divider is where it was dropped: ${at}`);
+    state = await compareState();
+    assert.deepEqual([state.split, state.clip, state.left, state.valuenow],
+      [at, [0, 0, 0, Math.round(at * w)], `${Math.round(at * w)}px`, String(Math.round(at * 100))]);
+    assert.equal(await page.getAttribute('#image-frame', 'data-mode'), 'fit', 'dragging the divider does not pan the image');
+
+    // Keys on the divider: Home, End, arrows by 1 %, Page Up/Down by 10 %.
+    const keys = [['Home', 0], ['ArrowRight', 0.01], ['ArrowRight', 0.02], ['End', 1], ['PageDown', 0.9], ['ArrowLeft', 0.89]];
+    for (const [key, split] of keys) {
+      await page.keyboard.press(key);
+      state = await compareState();
+      assert.deepEqual([key, state.split, state.clip], [key, split, [0, 0, 0, Math.round(split * w)]]);
+    }
+
+    // Zoom applies to both images; another exposure reloads both, once each.
+    await page.click('#zoom-in');
+    assert.equal((await compareState()).sameTransform, true);
+    requests.length = 0;
+    await page.locator('#exposure').evaluate((slider) => {
+      slider.value = '1';
+      slider.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await page.waitForFunction(() => document.querySelector('#compare-image').src && document.querySelector('#job-image').src);
+    await page.waitForFunction(() => performance.getEntriesByType('resource').filter((e) => e.name.includes('exposure=1')).length >= 2);
+    const pass = await page.getAttribute('#job-image', 'data-pass');
+    assert.deepEqual(requests.sort(), [`${id}?format=png&pass=${pass}&exposure=1`, `${other}?format=png&pass=2&exposure=1`].sort());
+    await page.focus('#compare-divider');
+    for (const key of ['Home', 'PageUp', 'PageUp', 'PageUp', 'PageUp', 'PageUp']) await page.keyboard.press(key);
+    assert.equal((await compareState()).split, 0.5);
+    await page.click('#zoom-fit');
+    await saveScreenshot('compare');
+
+    // Nothing: back to the job's image alone.
+    await page.selectOption('#compare-select', '');
+    state = await compareState();
+    assert.deepEqual([state.choice, state.hidden, state.other.job], ['', true, undefined]);
+    await page.click('#exposure-reset');
+  } finally {
+    page.off('request', onRequest);
+  }
+});
+
 test('on a phone-width screen the form and the job come before the job list', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
   try {
