@@ -277,20 +277,23 @@ export async function deleteJob(id) {
   await request('DELETE', `/jobs/${encodeURIComponent(id)}`);
 }
 
-// The latest image; `pass` only makes the URL differ per pass so the browser refetches;
-// `size` ('64x64') asks for a thumbnail that fits in that box; `exposure` (stops, PNG only)
-// tone-maps at that exposure instead of the render's own (null: the render's).
-export function imageUrl(id, format = 'png', pass, size, { exposure = null } = {}) {
-  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size, exposure })}`;
+// The URL of the job's latest image (always the same: the server answers no-cache with an
+// ETag, so a fetch revalidates and gets the newest pass). Options: `pass`, a kept earlier
+// pass (the record's keptPasses; the server has no other passes); `size` ('64x64'), a
+// thumbnail that fits in that box; `layer: 'raw'`, the image before the denoiser (jobs that
+// denoise only); `exposure` (stops, PNG only), tone-mapped at that exposure instead of the
+// render's own (null: the render's).
+export function imageUrl(id, format = 'png', { pass = null, size = null, layer = null, exposure = null } = {}) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size, layer, exposure })}`;
 }
 
 // The image as a Blob, with the bearer token when there is one (an <img> or <a> cannot
 // send headers). Resolves once the whole body has arrived, to { blob, pass }: pass is the
-// pass the server actually sent (X-Photon-Pass), which may be older than the one asked
-// for (it encodes a running job's image at most every 250 ms); null if not named.
-// `exposure` as for imageUrl().
-export async function fetchImage(id, format = 'png', pass, { exposure = null } = {}) {
-  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, pass, exposure })}`);
+// pass the server sent (X-Photon-Pass; the latest encoded one, which may be older than the
+// job's record says: it encodes a running job's image at most every 250 ms); null if not
+// named. Options as for imageUrl().
+export async function fetchImage(id, format = 'png', options = {}) {
+  const res = await request('GET', imageUrl(id, format, options).slice(BASE.length));
   const blob = await res.blob();
   const sent = Number.parseInt(res.headers.get('X-Photon-Pass') ?? '', 10);
   return { blob, pass: Number.isFinite(sent) ? sent : null };

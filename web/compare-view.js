@@ -111,7 +111,8 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     image.dataset.job = id;
     loader = createPreviewLoader({
       img: image,
-      load: (p) => fetchImage(id, 'png', p, settings()),
+      // A kept pass by its number; another job's latest image (the pass its record named).
+      load: () => fetchImage(id, 'png', kind === 'pass' ? { ...settings(), pass } : settings()),
       onShown: () => labels(),
       onError,
     });

@@ -112,11 +112,16 @@ export function createJobView({ onChanged, onDeleted }) {
     divider: $('compare-divider'),
     leftLabel: $('compare-left-label'),
     rightLabel: $('compare-right-label'),
-    settings: () => ({ exposure: exposure.value() }),
+    settings: () => imageSettings(),
     onError: (error) => {
       if (session) el.actionError.textContent = `The image to compare with could not be loaded: ${error.message}`;
     },
   });
+
+  // What the job's image is asked for with: the exposure chosen (null: the render's).
+  function imageSettings() {
+    return { exposure: exposure.value() };
+  }
 
   function showMessage(text) {
     el.details.hidden = true;
@@ -140,7 +145,7 @@ export function createJobView({ onChanged, onDeleted }) {
   function setDownload(link, id, format, ready) {
     if (ready) {
       // The PNG as shown: at the exposure chosen.
-      link.href = imageUrl(id, format, undefined, undefined, { exposure: format === 'png' ? exposure.value() : null });
+      link.href = imageUrl(id, format, format === 'png' ? imageSettings() : {});
       link.download = `photon-${id}.${format}`;
       link.removeAttribute('aria-disabled');
     } else {
@@ -153,7 +158,8 @@ export function createJobView({ onChanged, onDeleted }) {
   function previewFor(s) {
     return createPreviewLoader({
       img: el.image,
-      load: (pass) => fetchImage(s.id, 'png', pass, { exposure: exposure.value() }),
+      // The latest image: the loader asks again while the server's is older than `pass`.
+      load: () => fetchImage(s.id, 'png', imageSettings()),
       onShown: (pass) => {
         if (session !== s) return;
         el.image.alt = `Image of job ${s.id} after pass ${pass}`;
@@ -389,8 +395,7 @@ export function createJobView({ onChanged, onDeleted }) {
       if (!session || !hasToken() || !link.href) return;
       event.preventDefault();
       try {
-        const options = { exposure: format === 'png' ? exposure.value() : null };
-        const url = URL.createObjectURL((await fetchImage(session.id, format, undefined, options)).blob);
+        const url = URL.createObjectURL((await fetchImage(session.id, format, format === 'png' ? imageSettings() : {})).blob);
         const save = document.createElement('a');
         save.href = url;
         save.download = link.download;
