@@ -188,7 +188,8 @@ export function normalizeJob(raw) {
     photonsPerPass: num(s.photons_per_pass, r.photons_per_pass),
     seed: num(s.seed, r.seed),
     integrator: first(s.integrator, r.integrator, null),
-    // Not in the record yet (GET /jobs/{id}/scene has it): null for "not said".
+    // Whether the scene asks for the denoiser, so its images have a raw layer; null from a
+    // server whose record does not say (GET /jobs/{id}/scene has it).
     denoise: typeof s.denoise === 'boolean' ? s.denoise : null,
     // The earlier passes the server keeps images of (1, 2, 4, 8, ... and the latest),
     // ascending; null from a server that keeps none.
@@ -306,6 +307,26 @@ export function serviceEventsUrl() {
 
 export function eventsUrl(id) {
   return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
+}
+
+// The job's progress history as the server keeps it (GET /jobs/{id}/progress: at most 256
+// points, thinned evenly, kept across restarts), as records with the fields the plot reads
+// (passesDone, elapsedSeconds, photonsTraced, meanRadius). null when it cannot be had: a
+// server without the route answers 404, and progressHistory() below replays the events.
+export async function progressPoints(id) {
+  let body;
+  try {
+    body = await requestJson('GET', `/jobs/${encodeURIComponent(id)}/progress`);
+  } catch {
+    return null;
+  }
+  if (!Array.isArray(body?.points)) return null;
+  return body.points.map((p) => ({
+    passesDone: num(p.pass) ?? 0,
+    elapsedSeconds: num(p.elapsed_seconds),
+    photonsTraced: num(p.photons_traced),
+    meanRadius: num(p.mean_radius),
+  }));
 }
 
 // The job's progress so far, for a plot that outlives a reload: the job's event stream read

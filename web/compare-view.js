@@ -107,12 +107,18 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     if (!on) return;
     const [kind, key] = [chosen.slice(0, chosen.indexOf(':')), chosen.slice(chosen.indexOf(':') + 1)];
     const id = kind === 'pass' ? job.id : key;
-    const pass = kind === 'pass' ? Number(key) : others.find((o) => o.id === key)?.passesDone ?? 1;
+    const target = kind === 'pass' ? job : others.find((o) => o.id === key);
+    const pass = kind === 'pass' ? Number(key) : target?.passesDone ?? 1;
     image.dataset.job = id;
+    // The raw layer of a job that has none would be refused (400): its only image instead.
+    const optionsFor = () => {
+      const options = settings();
+      return target?.denoise === true ? options : { ...options, layer: null };
+    };
     loader = createPreviewLoader({
       img: image,
       // A kept pass by its number; another job's latest image (the pass its record named).
-      load: () => fetchImage(id, 'png', kind === 'pass' ? { ...settings(), pass } : settings()),
+      load: () => fetchImage(id, 'png', kind === 'pass' ? { ...optionsFor(), pass } : optionsFor()),
       onShown: () => labels(),
       onError,
     });

@@ -20,6 +20,7 @@ import {
   isFinished,
   normalizeJob,
   progressHistory,
+  progressPoints,
   sessionLost,
 } from './api.js';
 import {
@@ -118,9 +119,27 @@ export function createJobView({ onChanged, onDeleted }) {
     },
   });
 
-  // What the job's image is asked for with: the exposure chosen (null: the render's).
+  // A job that denoises has a raw layer too: the image before the denoiser.
+  const layerChoice = $('layer-choice');
+  const rawLayer = $('layer-raw');
+  for (const radio of layerChoice.querySelectorAll('input')) {
+    radio.addEventListener('change', () => {
+      if (!session) return;
+      session.preview.reload();
+      compare.reload();
+      if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
+    });
+  }
+
+  function showLayerChoice(job) {
+    layerChoice.hidden = job.denoise !== true;
+    if (layerChoice.hidden) $('layer-denoised').checked = true;
+  }
+
+  // What the job's image is asked for with: the layer (raw, or null for the denoised one)
+  // and the exposure chosen (null: the render's).
   function imageSettings() {
-    return { exposure: exposure.value() };
+    return { layer: !layerChoice.hidden && rawLayer.checked ? 'raw' : null, exposure: exposure.value() };
   }
 
   function showMessage(text) {
@@ -186,6 +205,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
     el.seed.textContent = job.seed ?? '—';
     el.integrator.textContent = methodName(job.integrator);
+    if (job.denoise !== null) el.denoise.textContent = job.denoise ? 'on' : 'off';
     el.passRate.textContent = job.elapsedSeconds > 0 && job.passesDone > 0
       ? `${formatTick(job.passesDone / job.elapsedSeconds)}/s` : '—';
     // Only the figures the method has: the path tracer and radiosity trace no photons (the
@@ -216,6 +236,7 @@ export function createJobView({ onChanged, onDeleted }) {
     if (previous && job.passesDone < previous.passesDone) return;
     s.job = job;
     render(job);
+    showLayerChoice(job);
     if (previous) compare.update(job);
     else compare.open(job);
     if (job.passesDone > 0) s.preview.want(job.passesDone);
@@ -295,7 +316,7 @@ export function createJobView({ onChanged, onDeleted }) {
       // An imported scene, or the scene could not be read: not known.
     }
     if (session !== s) return;
-    el.denoise.textContent = text;
+    if (!(s.job && s.job.denoise !== null)) el.denoise.textContent = text; // the record, when it says, wins
     exposure.setRenderExposure(stops);
   }
 
@@ -319,6 +340,8 @@ export function createJobView({ onChanged, onDeleted }) {
     el.image.removeAttribute('src');
     exposure.clear();
     viewport.clear();
+    layerChoice.hidden = true;
+    $('layer-denoised').checked = true;
     compare.open(null);
     delete el.image.dataset.pass;
     el.placeholder.hidden = false;
@@ -335,11 +358,14 @@ export function createJobView({ onChanged, onDeleted }) {
     getJob(id)
       .then((job) => {
         apply(s, job);
-        // The passes before this moment (a reload, a job opened late), for the plot.
+        // The passes before this moment (a reload, a job opened late), for the plot: the
+        // server's kept history, or from a server without it the events it still keeps.
         if (job.passesDone > 0) {
-          progressHistory(id, { untilPass: job.passesDone }).then((records) => {
-            if (session === s) plot.addAll(records);
-          });
+          progressPoints(id)
+            .then((points) => points ?? progressHistory(id, { untilPass: job.passesDone }))
+            .then((records) => {
+              if (session === s) plot.addAll(records);
+            });
         }
       })
       .catch((error) => {
