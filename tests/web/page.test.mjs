@@ -12,7 +12,10 @@
 // across a reload; the preview on a link throttled to 30 KB/s (CDP); method and denoise
 // choices; cancel and delete (with its confirmation); an imported pbrt file's warnings; the
 // job list (names, methods, thumbnails, search, status filter, sort, events without
-// polling); each method's figures; the phone-width layout. Screenshots of each state go
+// polling); each method's figures; the image's zoom and pan (exact transforms after the
+// wheel, buttons, keys and a drag, 1:1 at devicePixelRatio 1 and 2, kept across passes), its
+// exposure (exact requests, the server's pixels, 4 times the light at +2 stops) and the
+// compare view (divider place -> clip); the phone-width layout. Screenshots of each state go
 // beside PHOTON_WEB_SCREENSHOT. The server and the browser are stopped at the end, also
 // when a check fails. Starting and stopping them, and the helpers that talk to the server
 // from Node, are in harness.mjs.
