@@ -21,7 +21,7 @@
 // from Node, are in harness.mjs.
 
 import assert from 'node:assert/strict';
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { after, before, test } from 'node:test';
@@ -31,6 +31,7 @@ import {
   launchBrowser,
   occupyWorker,
   readScene,
+  REPO,
   releaseWorker,
   startServer,
   stopServer,
@@ -1064,6 +1065,122 @@ test('the compare view splits the image and another job of its size at a divider
     page.off('request', onRequest);
   }
 });
+
+// The raw layer, kept passes and the progress history come with the API that describes them
+// (api/openapi.yaml of this checkout): with it, the server built beside it serves them.
+const API_KEEPS_PASSES = readFileSync(join(REPO, 'api', 'openapi.yaml'), 'utf8').includes('/api/v1/jobs/{id}/progress:');
+
+// Submits a Cornell box of `size` pixels from Node and waits for it to complete.
+async function renderJob(name, size, render) {
+  const scene = readScene('cornell-box');
+  scene.camera.resolution = [size, size];
+  scene.render = { ...scene.render, ...render };
+  const response = await fetch(new URL(`api/v1/jobs?name=${name}`, server.baseUrl), {
+    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(scene),
+  });
+  assert.equal(response.status, 201);
+  const { id } = await response.json();
+  for (let waited = 0; ; waited += 100) {
+    const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
+    if (record.status === 'completed') return record;
+    assert.ok(waited < 60_000, `job ${name} did not complete: ${JSON.stringify(record)}`);
+    await new Promise((r) => setTimeout(r, 100));
+  }
+}
+
+test("a denoised job: raw or denoised, its kept passes compared, its plot from the server's history",
+  { timeout: 90_000, skip: !API_KEEPS_PASSES && 'api/openapi.yaml has no kept passes yet' }, async () => {
+    const record = await renderJob('cellar', 32, { passes: 9, photons_per_pass: 2000, denoise: true, seed: 3 });
+    const plain = await renderJob('shed', 32, { passes: 2, photons_per_pass: 2000 });
+    const id = record.id;
+    assert.deepEqual([record.settings.denoise, record.kept_passes, plain.settings.denoise], [true, [1, 2, 4, 8], false]);
+
+    const requests = []; // the page's image and history requests: "<id><query>" or "<id> progress"
+    const onRequest = (request) => {
+      const url = new URL(request.url());
+      const image = /^\/api\/v1\/jobs\/([^/]+)\/(image|progress|events)$/.exec(url.pathname);
+      if (!image || request.headers()['x-test-check']) return;
+      if (image[2] === 'image') requests.push(image[1] + url.search);
+      else if (image[2] === 'progress') requests.push(`${image[1]} progress`);
+      else if (request.headers()['last-event-id'] === '0') requests.push(`${image[1]} events replayed`);
+    };
+    page.on('request', onRequest);
+    try {
+      await page.evaluate((jobId) => {
+        window.location.hash = `job=${jobId}`;
+      }, id);
+      await waitForStatus(page, server, id, 'completed', 10_000);
+      await page.waitForFunction(() => document.querySelector('#job-image').dataset.pass === '9');
+      // The plot's nine passes come from GET /progress, not from replaying the events.
+      await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '9');
+      assert.deepEqual(requests.filter((r) => r.endsWith(' progress') || r.endsWith(' replayed')), [`${id} progress`]);
+      // The list and the figures say it denoises; the choice of layer is there.
+      const detail = await page.locator(`#job-list li[data-job-id="${id}"] .job-row-detail`).textContent();
+      assert.equal(detail.replace(/ · \d{4}-.*$/, ''), 'SPPM · denoised · 32×32 · pass 9 / 9');
+      assert.equal(await textOf('#job-denoise'), 'on');
+      assert.equal(await page.isVisible('#layer-choice'), true);
+      assert.equal(await page.isChecked('#layer-denoised'), true);
+
+      // Raw: the pass on show once more, its raw layer, pixel for pixel the server's.
+      requests.length = 0;
+      await watchShownImages();
+      const denoised = await shownAndServedPixels(id, '?format=png');
+      assert.deepEqual(denoised.shown, denoised.served);
+      await page.check('#layer-raw');
+      await page.waitForFunction(() => window.__shown.length === 1);
+      assert.deepEqual(requests, [`${id}?format=png&layer=raw`]);
+      const raw = await shownAndServedPixels(id, '?format=png&layer=raw');
+      assert.deepEqual(raw.shown, raw.served);
+      assert.notDeepEqual(raw.shown, denoised.shown, 'the raw layer is not the denoised image');
+      // With an exposure: both in the request, and in the PNG download.
+      await page.locator('#exposure').evaluate((slider) => {
+        slider.value = '1';
+        slider.dispatchEvent(new Event('input', { bubbles: true }));
+      });
+      await page.waitForFunction(() => window.__shown.length === 2);
+      assert.deepEqual(requests.slice(1), [`${id}?format=png&layer=raw&exposure=1`]);
+      assert.equal(await page.getAttribute('#download-png', 'href'), `/api/v1/jobs/${id}/image?format=png&layer=raw&exposure=1`);
+
+      // Compare with pass 4, kept by the server: its raw layer at the same exposure.
+      requests.length = 0;
+      const kept = await page.locator('#compare-select optgroup[label="Passes of this job"] option').evaluateAll((items) =>
+        items.map((o) => [o.value, o.textContent]));
+      assert.deepEqual(kept, [['pass:1', 'pass 1'], ['pass:2', 'pass 2'], ['pass:4', 'pass 4'], ['pass:8', 'pass 8']]);
+      await page.selectOption('#compare-select', 'pass:4');
+      await page.waitForFunction(() => document.querySelector('#compare-image').dataset.pass === '4' &&
+        document.querySelector('#compare-image').complete);
+      assert.deepEqual(requests, [`${id}?format=png&pass=4&layer=raw&exposure=1`]);
+      assert.deepEqual((await compareState()).labels, ['this job, pass 9', 'pass 4']);
+      await page.click('#zoom-in');
+      await saveScreenshot('compare-kept-pass');
+
+      // Back to the denoised layer: both images again, without layer=raw.
+      requests.length = 0;
+      await page.check('#layer-denoised');
+      await page.waitForFunction(() => window.__shown.length === 3);
+      await page.waitForFunction(() => document.querySelector('#compare-image').complete);
+      await page.waitForFunction(() => performance.getEntriesByType('resource')
+        .filter((e) => e.name.endsWith('pass=4&exposure=1')).length >= 1);
+      assert.deepEqual(requests.sort(), [`${id}?format=png&exposure=1`, `${id}?format=png&pass=4&exposure=1`].sort());
+
+      // Another 32 x 32 job, which has no raw layer: asked for without one, also under Raw.
+      await page.check('#layer-raw');
+      await page.focus('#compare-select');
+      await page.waitForFunction((o) => document.querySelector(`#compare-select option[value="job:${o}"]`), plain.id);
+      requests.length = 0;
+      await page.selectOption('#compare-select', `job:${plain.id}`);
+      await page.waitForFunction((o) => document.querySelector('#compare-image').dataset.job === o &&
+        document.querySelector('#compare-image').dataset.pass === '2', plain.id);
+      assert.deepEqual(requests.filter((r) => r.startsWith(plain.id)), [`${plain.id}?format=png&exposure=1`]);
+      assert.equal(await textOf('#job-action-error'), '');
+      await page.selectOption('#compare-select', '');
+      await page.click('#exposure-reset');
+      await page.check('#layer-denoised');
+      await page.click('#zoom-fit');
+    } finally {
+      page.off('request', onRequest);
+    }
+  });
 
 test('on a phone-width screen the form and the job come before the job list', async () => {
   await page.setViewportSize({ width: 390, height: 844 });
