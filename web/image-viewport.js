@@ -1,7 +1,7 @@
 // Zoom and pan of the job's image inside a fixed frame (the viewport): mouse wheel around the
-// cursor, buttons and keys in steps of √2, drag to pan, "Fit" (the whole image in the frame)
-// and "1:1" (one image pixel per device pixel: on a screen of devicePixelRatio 2 that is half
-// a CSS pixel, so the render is shown without resampling). Every image of the view (the job's,
+// cursor, buttons and keys in steps of √2, drag to pan, pinch with two fingers, "Fit" (the
+// whole image in the frame) and "1:1" (one image pixel per device pixel: on a screen of
+// devicePixelRatio 2 that is half a CSS pixel, so the render is shown without resampling). Every image of the view (the job's,
 // and the one it is compared with) gets the same transform, so they stay aligned.
 //
 // The transform lives here, not on the <img>'s source: a new pass (the preview loader sets a
@@ -138,27 +138,45 @@ export function createImageViewport({ frame, images, zoomLabel }) {
     zoomTo(scale * 2 ** (-(event.deltaY * unit) / WHEEL_PX_PER_DOUBLING), ...inFrame(event));
   }, { passive: false });
 
-  let drag = null; // { id, lastX, lastY } while a pointer drags the image
+  // The pointers down on the image, by id: their last place in the frame. One drags the
+  // image; two (fingers on a touch screen) also pinch: the zoom follows their distance
+  // around their midpoint, and the midpoint's travel pans.
+  const pointers = new Map();
+  const midpoint = () => {
+    const [a, b] = [...pointers.values()];
+    return { x: (a.x + b.x) / 2, y: (a.y + b.y) / 2, d: Math.hypot(a.x - b.x, a.y - b.y) };
+  };
   frame.addEventListener('pointerdown', (event) => {
-    if (!width || event.button !== 0 || event.target.closest('[data-no-pan]')) return;
+    if (!width || event.button !== 0 || event.target.closest('[data-no-pan]') || pointers.size >= 2) return;
     event.preventDefault(); // no image drag-and-drop, no text selection
-    drag = { id: event.pointerId, lastX: event.clientX, lastY: event.clientY };
-    frame.setPointerCapture(event.pointerId);
+    const [px, py] = inFrame(event);
+    pointers.set(event.pointerId, { x: px, y: py });
+    try {
+      frame.setPointerCapture(event.pointerId); // moves outside the frame still drag
+    } catch {
+      // A pointer the browser no longer tracks: it drags while over the frame.
+    }
     frame.classList.add('dragging');
     frame.focus({ preventScroll: true });
   });
   frame.addEventListener('pointermove', (event) => {
-    if (!drag || event.pointerId !== drag.id) return;
-    const dx = event.clientX - drag.lastX;
-    const dy = event.clientY - drag.lastY;
-    drag.lastX = event.clientX;
-    drag.lastY = event.clientY;
-    panBy(dx, dy);
+    const last = pointers.get(event.pointerId);
+    if (!last) return;
+    const [px, py] = inFrame(event);
+    if (pointers.size === 1) {
+      pointers.set(event.pointerId, { x: px, y: py });
+      panBy(px - last.x, py - last.y);
+      return;
+    }
+    const before = midpoint();
+    pointers.set(event.pointerId, { x: px, y: py });
+    const after = midpoint();
+    if (before.d > 0 && after.d > 0) zoomTo(scale * (after.d / before.d), before.x, before.y);
+    panBy(after.x - before.x, after.y - before.y);
   });
   const endDrag = (event) => {
-    if (!drag || event.pointerId !== drag.id) return;
-    drag = null;
-    frame.classList.remove('dragging');
+    if (!pointers.delete(event.pointerId)) return;
+    if (pointers.size === 0) frame.classList.remove('dragging');
   };
   frame.addEventListener('pointerup', endDrag);
   frame.addEventListener('pointercancel', endDrag);

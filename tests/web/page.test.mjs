@@ -804,7 +804,27 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     assert.deepEqual((await imageView()).mode, 'fit');
     assert.equal((await imageView()).scale, fitScale);
     await page.keyboard.press('1');
-    assert.equal((await imageView()).scale, 1);
+    const single = await imageView();
+    assert.equal(single.scale, 1);
+
+    // Two fingers pinching apart from 100 to 200 px: twice the zoom around their first
+    // midpoint, then panned by the midpoint's travel (50 px right).
+    await page.evaluate(() => {
+      const frame = document.querySelector('#image-frame');
+      const rect = frame.getBoundingClientRect();
+      const at = (id, type, x, y) => frame.dispatchEvent(new PointerEvent(type, {
+        pointerId: id, pointerType: 'touch', isPrimary: id === 11, button: type === 'pointermove' ? -1 : 0, bubbles: true,
+        clientX: rect.left + frame.clientLeft + x, clientY: rect.top + frame.clientTop + y,
+      }));
+      at(11, 'pointerdown', 100, 100);
+      at(12, 'pointerdown', 200, 100);
+      at(12, 'pointermove', 300, 100);
+      at(11, 'pointerup', 100, 100);
+      at(12, 'pointerup', 300, 100);
+    });
+    const pinched = await imageView();
+    assert.deepEqual(viewOf(pinched), expectedView(2, 150 - (150 - single.x) * 2 + 50, 100 - (100 - single.y) * 2));
+    await page.keyboard.press('1');
 
     // On a screen of devicePixelRatio 2, 1:1 is one image pixel per device pixel: 32 CSS px.
     const cdp = await context.newCDPSession(page);
