@@ -801,8 +801,14 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     await page.keyboard.press('ArrowLeft');
     assert.equal((await imageView()).x, Math.min(w - 128, zoomedOut.x + 40), 'the image moves right, inside the frame');
     await page.keyboard.press('0');
-    assert.deepEqual((await imageView()).mode, 'fit');
-    assert.equal((await imageView()).scale, fitScale);
+    const fitted = await imageView();
+    assert.deepEqual([fitted.mode, fitted.scale], ['fit', fitScale]);
+    // A double click goes from Fit to 1:1 around the point clicked, and back to Fit.
+    const frameAt = await page.locator('#image-frame').boundingBox();
+    await page.mouse.dblclick(frameAt.x + w / 2, frameAt.y + h / 2);
+    assert.equal((await imageView()).scale, 1);
+    await page.mouse.dblclick(frameAt.x + w / 2, frameAt.y + h / 2);
+    assert.deepEqual(viewOf(await imageView()), viewOf(fitted));
     await page.keyboard.press('1');
     const single = await imageView();
     assert.equal(single.scale, 1);
