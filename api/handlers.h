@@ -13,6 +13,7 @@ void updateJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void cloneJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void getScene(RouteContext&, const httplib::Request&, httplib::Response&);
 void getLog(RouteContext&, const httplib::Request&, httplib::Response&);
+void getProgressHistory(RouteContext&, const httplib::Request&, httplib::Response&);
 void pauseJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void resumeJob(RouteContext&, const httplib::Request&, httplib::Response&);
 void continueJob(RouteContext&, const httplib::Request&, httplib::Response&);

@@ -1,5 +1,6 @@
 #include "api/image_query.h"
 #include <httplib.h>
+#include <climits>
 #include "api/errors.h"
 #include "api/params.h"
 
@@ -37,6 +38,15 @@ ImageQuery parseImageQuery(const httplib::Request& req) {
         query.exposure = static_cast<float>(*ev) + 0.0f;  // -0 is 0 (one ETag for one image)
     }
     query.box = sizeParam(req);
+    if (std::optional<std::string> layer = stringParam(req, "layer")) {
+        if (*layer != "raw") throwBadRequest("query parameter layer: expected raw");
+        query.raw = true;
+    }
+    if (std::optional<std::string> text = stringParam(req, "pass")) {
+        std::optional<int64_t> pass = parseWhole<int64_t>(*text);
+        if (!pass || *pass < 1 || *pass > INT32_MAX) throwBadRequest("query parameter pass: expected a whole number >= 1");
+        query.pass = int(*pass);
+    }
     return query;
 }
 

@@ -1,4 +1,4 @@
-// What GET /api/v1/jobs/{id}/image asks for (?format=, ?exposure=, ?size=), checked: a bad
+// What GET /api/v1/jobs/{id}/image asks for (?format=, ?exposure=, ?size=, ?layer=, ?pass=), checked: a bad
 // value is a 400 naming its parameter. And the names an answer gives its image: the ETag
 // and the file name of Content-Disposition, which tell every variant apart.
 #pragma once
@@ -18,6 +18,8 @@ struct ImageQuery {
     server::ImageFormat format = server::ImageFormat::Png;
     std::optional<float> exposure;  // stops, PNG only
     std::optional<ImageSize> box;   // ?size=WxH: the box the image must fit in
+    bool raw = false;               // ?layer=raw: the image before the denoiser
+    std::optional<int> pass;        // ?pass=N: a kept earlier pass instead of the latest
 };
 
 ImageQuery parseImageQuery(const httplib::Request& req);

@@ -9,7 +9,7 @@ namespace photon::api {
 
 namespace {
 
-constexpr std::array<Route, 23> kRoutes{{
+constexpr std::array<Route, 24> kRoutes{{
     {"GET", "/", homePage, nullptr},
     {"GET", "/metrics", metrics, nullptr},
     {"GET", "/api/v1/health", health, nullptr},
@@ -29,6 +29,7 @@ constexpr std::array<Route, 23> kRoutes{{
     {"POST", "/api/v1/jobs/{id}/continue", continueJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/scene", getScene, nullptr},
     {"GET", "/api/v1/jobs/{id}/log", getLog, nullptr},
+    {"GET", "/api/v1/jobs/{id}/progress", getProgressHistory, nullptr},
     {"POST", "/api/v1/jobs/{id}/cancel", cancelJob, nullptr},
     {"GET", "/api/v1/jobs/{id}/image", getImage, nullptr},
     {"GET", "/api/v1/jobs/{id}/events", jobEvents, nullptr},

@@ -77,14 +77,21 @@ struct FrameStream {
 void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     std::string id = pathId(req);
     ImageQuery query = parseImageQuery(req);
-    server::ImageVariant variant{query.exposure, std::nullopt};
-    if (query.box) {
-        server::JobSettings settings = ctx.service.get(id).settings;
-        variant = server::variantFor(query.exposure, query.box, {settings.width, settings.height});
-    }
-    // The plain image is served as cached; a variant is made from the same pass's EXR.
+    const server::JobSettings settings = ctx.service.get(id).settings;
+    if (query.raw && !settings.denoise)
+        throwBadRequest("query parameter layer: job " + id + " is not denoised, so its image is the raw one");
+    const server::ImageVariant variant =
+        server::variantFor(query.exposure, query.box, {settings.width, settings.height}, query.raw);
+    // The plain image is served as cached; a variant is made from the same pass's EXR, and
+    // a kept earlier pass is an EXR on disk.
     server::ImageFormat source = variant.isDefault() ? query.format : server::ImageFormat::Exr;
-    std::optional<server::EncodedImage> image = ctx.service.image(id, source);
+    std::optional<server::EncodedImage> image;
+    if (query.pass) {
+        image = ctx.service.keptPass(id, *query.pass);
+        source = server::ImageFormat::Exr;
+    } else {
+        image = ctx.service.image(id, source);
+    }
     if (!image) throw server::ServiceError(server::ErrorKind::NotReady, "job " + id + " has no image yet");
     std::string etag = imageEtag(id, image->pass, query.format, variant);
     res.set_header("ETag", etag);
@@ -97,7 +104,8 @@ void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     res.set_header("Content-Disposition", imageDisposition(id, image->pass, query.format, variant));
     // Serve the shared bytes without copying them into the response.
     std::shared_ptr<const std::string> bytes =
-        variant.isDefault() ? image->bytes : server::encodeVariant(*image->bytes, query.format, variant);
+        source == query.format && variant.isDefault() ? image->bytes
+                                                      : server::encodeVariant(*image->bytes, query.format, variant);
     res.status = 200;
     res.set_content_provider(bytes->size(), server::mimeType(query.format),
                              [bytes](size_t offset, size_t length, httplib::DataSink& sink) {

@@ -188,6 +188,18 @@ void getLog(RouteContext& ctx, const httplib::Request& req, httplib::Response& r
     res.set_content(ctx.service.log(pathId(req)), "text/plain; charset=utf-8");
 }
 
+// GET /api/v1/jobs/{id}/progress: the job's progress over its passes, for plots (at most 256
+// points, thinned evenly; saved at most a second behind the render).
+void getProgressHistory(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const server::ProgressPoint& p : ctx.service.progressHistory(pathId(req)))
+        points.push_back({{"pass", p.pass},
+                          {"elapsed_seconds", p.elapsedSeconds},
+                          {"photons_traced", p.photonsTraced},
+                          {"mean_radius", p.meanRadius}});
+    sendJson(res, 200, {{"points", points}});
+}
+
 void cancelJob(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     server::JobService::CancelResult result = ctx.service.cancel(pathId(req));
     // 202: a running render stops at its next check; the events stream reports the end.

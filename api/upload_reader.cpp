@@ -81,7 +81,7 @@ public:
     void finish(bool readOk, int httplibStatus, bool multipart) {
         digest_.endField();
         if (sceneBytes_ > limits_.maxSceneBytes)
-            server::checkLimit(ErrorKind::PayloadTooLarge, "scene JSON bytes", int64_t(sceneBytes_),
+            server::checkLimit(ErrorKind::PayloadTooLarge, "the scene file's size in bytes", int64_t(sceneBytes_),
                                int64_t(limits_.maxSceneBytes), server::optionOf(&server::Limits::maxSceneBytes));
         if (failure_) std::rethrow_exception(failure_);
         if (!readOk && httplibStatus == 413) throw ServiceError(ErrorKind::PayloadTooLarge, bodyTooLarge());
@@ -118,8 +118,8 @@ private:
         else upload_.sceneText().clear();
     }
     std::string bodyTooLarge() const {
-        return "request body exceeds the server limit of " + std::to_string(limits_.maxBodyBytes) +
-               " bytes (" + server::optionOf(&server::Limits::maxBodyBytes) + ")";
+        return "the request body is larger than this server takes (" + std::to_string(limits_.maxBodyBytes) +
+               " bytes); its administrator sets that limit with " + server::optionOf(&server::Limits::maxBodyBytes);
     }
 
     template <typename Fn>

@@ -1,5 +1,7 @@
 #include "image_variant.h"
+#include <algorithm>
 #include <charconv>
+#include <stdexcept>
 #include <photon/image_io.h>
 #include "image_metadata.h"
 
@@ -18,8 +20,8 @@ float sceneExposure(const ImageMetadata& metadata) {
 
 }  // namespace
 
-ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> box, ImageSize render) {
-    ImageVariant variant{exposure, std::nullopt};
+ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> box, ImageSize render, bool raw) {
+    ImageVariant variant{exposure, std::nullopt, raw};
     if (box) {
         ImageSize fitted = fitWithin(render, *box);
         if (fitted != render) variant.size = fitted;
@@ -30,6 +32,7 @@ ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> 
 std::string variantSuffix(const ImageVariant& variant) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "-" + std::string.
     std::string suffix;
+    if (variant.raw) suffix.append("-raw");
     if (variant.size) {
         suffix.append("-").append(std::to_string(variant.size->width));
         suffix.append("x").append(std::to_string(variant.size->height));
@@ -41,6 +44,12 @@ std::string variantSuffix(const ImageVariant& variant) {
 std::shared_ptr<const std::string> encodeVariant(const std::string& exr, ImageFormat format,
                                                  const ImageVariant& variant) {
     DecodedImage decoded = decodeImageBytes(exr, "exr");
+    if (variant.raw) {
+        auto raw = std::find_if(decoded.image.layers.begin(), decoded.image.layers.end(),
+                                [](const ImageLayer& layer) { return layer.name == "raw"; });
+        if (raw == decoded.image.layers.end()) throw std::runtime_error("the image has no raw layer");
+        decoded.image = LayeredImage{std::move(raw->image), {}};
+    }
     // Resampled in linear light, before tone mapping: averaging sRGB codes would darken
     // every edge between light and dark.
     LayeredImage image = variant.size ? resizeImage(decoded.image, *variant.size) : std::move(decoded.image);

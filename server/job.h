@@ -25,6 +25,7 @@ struct JobSettings {
     std::string integrator;  // "sppm" or "path"
     int width = 0, height = 0;
     std::string camera;  // the imported glTF camera asked for by name; empty: the file's first
+    bool denoise = false;  // the scene asks for the denoiser: its images have a raw layer
 };
 
 struct JobProgress {
@@ -50,6 +51,7 @@ struct JobRecord {
     std::string client; // the submitter's remote address (per-client limits); not served
     int64_t uploadBytes = 0;            // of its scene and assets: the client's disk (not served)
     std::vector<std::string> warnings;  // what was accepted with a change, in plain words
+    std::vector<int> keptPasses;        // earlier passes kept as images (kept_passes.h), ascending
 };
 
 }  // namespace photon::server

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -82,12 +83,33 @@ fs::path JobFolders::sceneFile(const std::string& id) const {
     return dir / sceneFileNames().front();
 }
 
+namespace {
+constexpr const char* kKeptPassesDir = "kept-passes";
+}  // namespace
+
+fs::path JobFolders::keptPassFile(const std::string& id, int pass) const {
+    return jobDir(id) / kKeptPassesDir / ("pass-" + std::to_string(pass) + ".exr");
+}
+
+std::vector<int> JobFolders::keptPasses(const std::string& id) const {
+    std::vector<int> passes;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(jobDir(id) / kKeptPassesDir, ec)) {
+        const std::string name = e.path().filename().string();
+        int pass = 0;
+        if (std::sscanf(name.c_str(), "pass-%d.exr", &pass) == 1 && name == "pass-" + std::to_string(pass) + ".exr")
+            passes.push_back(pass);
+    }
+    std::sort(passes.begin(), passes.end());
+    return passes;
+}
+
 bool JobFolders::isServiceFile(const std::string& name) {
     std::vector<std::string> own = sceneFileNames();
-    own.insert(own.end(), {"image.png", "image.exr", "checkpoint.bin", "job.log"});
+    own.insert(own.end(), {"image.png", "image.exr", "checkpoint.bin", "job.log", "progress.txt"});
     for (const std::string& file : own)
         if (name == file || name == file + ".tmp") return true;
-    return false;
+    return name == kKeptPassesDir || name.rfind(std::string(kKeptPassesDir) + "/", 0) == 0;
 }
 
 fs::path JobFolders::newStagingDir() const {

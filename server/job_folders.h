@@ -44,6 +44,11 @@ public:
     std::filesystem::path checkpointFile(const std::string& id) const { return jobDir(id) / "checkpoint.bin"; }
     std::filesystem::path imageFile(const std::string& id, ImageFormat format) const;
     std::filesystem::path logFile(const std::string& id) const { return jobDir(id) / "job.log"; }
+    // An earlier pass kept for comparison (EXR with every layer), and the passes kept.
+    std::filesystem::path keptPassFile(const std::string& id, int pass) const;
+    std::vector<int> keptPasses(const std::string& id) const;
+    // The job's progress over its passes (progress_history.h).
+    std::filesystem::path progressFile(const std::string& id) const { return jobDir(id) / "progress.txt"; }
     // A name (relative to a job folder, in normal form) that is one of the service's own
     // files above (any of the scene file names), or their temporary copies ("image.png.tmp"): never an asset's.
     static bool isServiceFile(const std::string& name);

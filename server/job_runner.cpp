@@ -5,10 +5,12 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <photon/image_io.h>
 #include <photon/render.h>
 #include "clock.h"
 #include "farm/farm_dispatcher.h"
 #include "image_metadata.h"
+#include "kept_passes.h"
 #include "job_log.h"
 #include "scene_intake.h"
 
@@ -20,7 +22,14 @@ void JobRunner::run(const std::string& id) {
     try {
         store_.update(started->job);
         hub_.publish(started->job, std::nullopt);
-        Ending ending = render(*started);
+        Ending ending;
+        try {
+            ending = render(*started);
+        } catch (...) {
+            saveHistory(id);
+            throw;
+        }
+        saveHistory(id);
         // A stop without a client's cancel is the server shutting down: the store still says
         // "running", so the next start queues the job again.
         if (ending == Ending::Interrupted) {
@@ -228,11 +237,57 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::
                        const RenderProgress& p, double& elapsedBefore) {
     // The image's files say how far the render had got then.
     JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
+    recordPass(id, settings, *image, progress);
     ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
     images_.store(id, p.pass, std::move(image), std::move(metadata));
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);
     metrics_.addPass(p.lastPass.photons, p.elapsedSeconds - elapsedBefore);
     elapsedBefore = p.elapsedSeconds;
+}
+
+void JobRunner::recordPass(const std::string& id, const JobSettings& settings, const PendingImage& image,
+                           const JobProgress& progress) {
+    // Both are for looking back at the render, not the render: one that cannot be written
+    // (a full disk) is left out with a warning, and the checkpoint decides whether the job
+    // can go on.
+    if (isKeptPass(progress.pass, table_.find(id)->keptPasses)) {
+        // Encoded once here (with the denoiser's layers, when it runs): a few passes of a
+        // whole render, 1, 2, 4, ..., so a client can compare how the image settled.
+        try {
+            const std::filesystem::path file = folders_.keptPassFile(id, progress.pass);
+            std::filesystem::create_directories(file.parent_path());
+            const std::vector<uint8_t> exr = encodeExr(image, passMetadata(settings, progress, image.exposure()));
+            writeFileAtomically(file, std::string(exr.begin(), exr.end()));
+            table_.addKeptPass(id, progress.pass);
+        } catch (const std::exception& e) {
+            spdlog::warn("job {}: pass {} not kept: {}", id, progress.pass, e.what());
+        }
+    }
+    std::lock_guard lock(logsMutex_);
+    auto [log, first] = logs_.try_emplace(id);
+    if (first) log->second.history = ProgressHistory::load(folders_.progressFile(id));
+    log->second.history.add(progress);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - log->second.saved >= std::chrono::seconds(1)) {
+        log->second.saved = now;
+        try {
+            log->second.history.save(folders_.progressFile(id));
+        } catch (const std::exception& e) {
+            spdlog::warn("job {}: progress history not saved: {}", id, e.what());
+        }
+    }
+}
+
+void JobRunner::saveHistory(const std::string& id) {
+    std::lock_guard lock(logsMutex_);
+    auto log = logs_.find(id);
+    if (log == logs_.end()) return;
+    try {
+        log->second.history.save(folders_.progressFile(id));
+    } catch (const std::exception& e) {
+        spdlog::warn("job {}: progress history not saved: {}", id, e.what());
+    }
+    logs_.erase(log);
 }
 
 void JobRunner::finish(const std::string& id, JobStatus status, const std::string& error) {

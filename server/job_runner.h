@@ -2,6 +2,9 @@
 // scene with the stored settings, runs the engine pass by pass, publishes every pass
 // (image cache, job table, event hub, metrics) and records the outcome.
 #pragma once
+#include <chrono>
+#include <map>
+#include <mutex>
 #include <string>
 #include "event_hub.h"
 #include "image_cache.h"
@@ -9,6 +12,7 @@
 #include "job_store.h"
 #include "job_table.h"
 #include "metrics.h"
+#include "progress_history.h"
 
 namespace photon {
 class PendingImage;
@@ -63,6 +67,17 @@ private:
     void saveCheckpoint(const std::string& id, const Renderer& renderer);
     void resumeFromCheckpoint(const std::string& id, Renderer& renderer);
 
+    // What a render keeps of its passes besides the latest image: its progress history,
+    // saved at most once a second and when the render stops, and the earlier passes kept as
+    // images (the first pass at or after each power of two: 1, 2, 4, 8, ...).
+    struct PassLog {
+        ProgressHistory history;
+        std::chrono::steady_clock::time_point saved;
+    };
+    void recordPass(const std::string& id, const JobSettings& settings, const PendingImage& image,
+                    const JobProgress& progress);
+    void saveHistory(const std::string& id);  // and forgets the render's log
+
     JobTable& table_;
     JobStore& store_;
     const JobFolders& folders_;
@@ -71,6 +86,8 @@ private:
     Metrics& metrics_;
     double checkpointSeconds_;
     FarmUse farm_;
+    std::mutex logsMutex_;
+    std::map<std::string, PassLog> logs_;  // of the renders in progress
 };
 
 }  // namespace photon::server

@@ -1,4 +1,5 @@
 #include "job_service.h"
+#include <algorithm>
 #include <spdlog/spdlog.h>
 #include "job_labels.h"
 #include "job_log.h"
@@ -57,6 +58,7 @@ void JobService::restore() {
             job.progress = JobProgress{};
             store_.update(job);
         }
+        job.keptPasses = folders_.keptPasses(job.id);
         table_.insert(job);
         hub_.publish(job, std::nullopt);
         if (job.status == JobStatus::Queued) queue_.push(job.id, job.priority, job.seq);
@@ -240,7 +242,8 @@ JobRecord JobService::resume(const std::string& id) {
 JobRecord JobService::continueJob(const std::string& id, int64_t morePasses) {
     JobRecord before = get(id);
     if (morePasses < 1) throw ServiceError(ErrorKind::BadRequest, "passes: must be an integer >= 1");
-    checkLimit(ErrorKind::LimitExceeded, "passes", before.settings.passes + morePasses, limits_, &Limits::maxPasses);
+    checkLimit(ErrorKind::LimitExceeded, "the number of passes, those to come included",
+               before.settings.passes + morePasses, limits_, &Limits::maxPasses);
     std::error_code ec;
     if (before.status == JobStatus::Completed && !std::filesystem::exists(folders_.checkpointFile(id), ec))
         throw ServiceError(ErrorKind::Conflict, "job " + id + " kept no checkpoint to render on from");
@@ -343,6 +346,27 @@ std::optional<EncodedImage> JobService::image(const std::string& id, ImageFormat
     std::optional<std::string> bytes = readWholeFile(folders_.imageFile(id, format));
     if (!bytes) return std::nullopt;
     return EncodedImage{job->progress.pass, std::make_shared<const std::string>(std::move(*bytes)), {}};
+}
+
+EncodedImage JobService::keptPass(const std::string& id, int pass) {
+    std::optional<JobRecord> job = table_.find(id);
+    if (!job) notFound(id);
+    const std::vector<int>& kept = job->keptPasses;
+    std::optional<std::string> bytes;
+    if (std::binary_search(kept.begin(), kept.end(), pass)) bytes = readWholeFile(folders_.keptPassFile(id, pass));
+    if (!bytes) {
+        std::string list;
+        for (int k : kept) list += (list.empty() ? "" : ", ") + std::to_string(k);
+        throw ServiceError(ErrorKind::NotFound, "job " + id + " kept no image of pass " + std::to_string(pass) +
+                                                    " (it keeps the first pass at or after each power of two; kept: " +
+                                                    (list.empty() ? "none yet" : list) + ")");
+    }
+    return EncodedImage{pass, std::make_shared<const std::string>(std::move(*bytes)), {}};
+}
+
+std::vector<ProgressPoint> JobService::progressHistory(const std::string& id) {
+    if (!table_.find(id)) notFound(id);
+    return ProgressHistory::load(folders_.progressFile(id)).points();
 }
 
 void JobService::shutdown() {

@@ -10,6 +10,7 @@
 #include "event_hub.h"
 #include "farm/farm_dispatcher.h"
 #include "farm/local_workers.h"
+#include "progress_history.h"
 #include "idempotency.h"
 #include "image_cache.h"
 #include "job_folders.h"
@@ -96,6 +97,11 @@ public:
     void remove(const std::string& id);
     // The latest image; nullopt while no pass has finished (or none was kept).
     std::optional<EncodedImage> image(const std::string& id, ImageFormat format);
+    // A kept earlier pass (JobRecord::keptPasses) as EXR; NotFound naming the kept passes if
+    // `pass` is not one of them.
+    EncodedImage keptPass(const std::string& id, int pass);
+    // The job's progress over its passes (progress_history.h); NotFound for no such job.
+    std::vector<ProgressPoint> progressHistory(const std::string& id);
 
     EventHub& events() { return hub_; }
     Metrics& metrics() { return metrics_; }

@@ -67,12 +67,20 @@ ALTER TABLE jobs ADD COLUMN camera TEXT;
 PRAGMA user_version = 4;
 COMMIT;
 )sql";
-constexpr int64_t kSchemaVersion = 4;
+// Version 5: whether the job's scene asks for the denoiser (0 for every job before, which is
+// only what the record says: their images are as rendered).
+const char* kMigrateTo5 = R"sql(
+BEGIN IMMEDIATE;
+ALTER TABLE jobs ADD COLUMN denoise INTEGER NOT NULL DEFAULT 0;
+PRAGMA user_version = 5;
+COMMIT;
+)sql";
+constexpr int64_t kSchemaVersion = 5;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client, upload_bytes, warnings, name, labels, updated_at, camera)"
-    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)";
+    " client, upload_bytes, warnings, name, labels, updated_at, camera, denoise)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
@@ -90,7 +98,7 @@ const char* kFindKey =
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
     " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
-    " upload_bytes, warnings, name, labels, updated_at, camera FROM jobs ORDER BY seq";
+    " upload_bytes, warnings, name, labels, updated_at, camera, denoise FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
@@ -135,6 +143,7 @@ sql::Database& withSchema(sql::Database& db) {
     if (version < 2) migrate(db, kMigrateTo2);
     if (version < 3) migrate(db, kMigrateTo3);
     if (version < 4) migrate(db, kMigrateTo4);
+    if (version < 5) migrate(db, kMigrateTo5);
     return db;
 }
 
@@ -183,6 +192,7 @@ JobRecord readRow(const sql::Statement& s) {
     job.labels = splitLines(s.text(23));
     job.updatedAt = s.text(24);
     job.settings.camera = s.text(25);
+    job.settings.denoise = s.integer(26) != 0;
     return job;
 }
 
@@ -211,6 +221,7 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bindTextOrNull(11, job.client).bind(12, job.uploadBytes).bindTextOrNull(13, joinLines(job.warnings));
         insert_.bindTextOrNull(14, job.name).bindTextOrNull(15, joinLines(job.labels));
         insert_.bindTextOrNull(16, job.updatedAt).bindTextOrNull(17, job.settings.camera);
+        insert_.bind(18, int64_t(job.settings.denoise));
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;

@@ -102,6 +102,13 @@ JobRecord JobTable::setProgress(const std::string& id, const JobProgress& progre
     return e.job;
 }
 
+void JobTable::addKeptPass(const std::string& id, int pass) {
+    std::lock_guard lock(mutex_);
+    std::vector<int>& kept = at(id).job.keptPasses;
+    auto at = std::lower_bound(kept.begin(), kept.end(), pass);
+    if (at == kept.end() || *at != pass) kept.insert(at, pass);
+}
+
 JobRecord JobTable::finish(const std::string& id, JobStatus status, const std::string& error, const std::string& now) {
     std::lock_guard lock(mutex_);
     Entry& e = at(id);

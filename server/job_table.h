@@ -50,6 +50,8 @@ public:
     // Queued -> running. nullopt if the job is gone or no longer queued (cancelled meanwhile).
     std::optional<Started> start(const std::string& id, const std::string& now);
     JobRecord setProgress(const std::string& id, const JobProgress& progress);
+    // Notes that the image of `pass` is kept (JobFolders::keptPassFile).
+    void addKeptPass(const std::string& id, int pass);
     // Running -> completed/failed/cancelled.
     JobRecord finish(const std::string& id, JobStatus status, const std::string& error, const std::string& now);
 

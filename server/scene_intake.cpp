@@ -40,11 +40,14 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     if (options.seed) render.seed = *options.seed;
 
     constexpr ErrorKind kOver = ErrorKind::LimitExceeded;
-    checkLimit(kOver, "width*height", int64_t(scene->width()) * scene->height(), limits, &Limits::maxPixels);
-    checkLimit(kOver, "passes", options.passes.value_or(render.passes), limits, &Limits::maxPasses);
-    checkLimit(kOver, "photons_per_pass", render.photonsPerPass, limits, &Limits::maxPhotonsPerPass);
+    checkLimit(kOver,
+               "the image's pixel count (" + std::to_string(scene->width()) + " x " + std::to_string(scene->height()) + ")",
+               int64_t(scene->width()) * scene->height(), limits, &Limits::maxPixels);
+    checkLimit(kOver, "the number of passes", options.passes.value_or(render.passes), limits, &Limits::maxPasses);
+    checkLimit(kOver, "the number of photons per pass", render.photonsPerPass, limits, &Limits::maxPhotonsPerPass);
     // Each mesh file is already held to the loader's per-mesh limit; this bounds the sum.
-    checkLimit(kOver, "triangle count", scene->triangleCount(), limits, &Limits::maxTriangles);
+    checkLimit(kOver, "the triangle count of all the scene's meshes", scene->triangleCount(), limits,
+               &Limits::maxTriangles);
 
     JobSettings s;
     s.passes = render.passes;
@@ -54,6 +57,7 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     s.width = scene->width();
     s.height = scene->height();
     s.camera = options.camera.value_or("");
+    s.denoise = render.denoise.enabled;
     return {s, scene->files(), imported, scene->warnings()};
 }
 

@@ -45,8 +45,8 @@ const char* optionOf(int64_t Limits::*field) {
 
 void checkLimit(ErrorKind kind, const std::string& what, int64_t value, int64_t limit, const char* option) {
     if (value <= limit) return;
-    throw ServiceError(kind, what + " " + std::to_string(value) + " exceeds the server limit of " +
-                                 std::to_string(limit) + " (" + option + ")");
+    throw ServiceError(kind, what + " is " + std::to_string(value) + ", more than this server takes (" +
+                                 std::to_string(limit) + "); its administrator sets that limit with " + option);
 }
 
 void checkLimit(ErrorKind kind, const std::string& what, int64_t value, const Limits& limits,

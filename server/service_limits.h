@@ -48,8 +48,10 @@ const std::vector<LimitOption>& limitOptions();
 // The option that sets `field`, for messages: "--max-pixels" for &Limits::maxPixels.
 const char* optionOf(int64_t Limits::*field);
 
-// Throws ServiceError(kind) "<what> <value> exceeds the server limit of <limit> (<option>)"
-// when value > limit.
+// Throws ServiceError(kind) when value > limit, in words a submitter understands and naming
+// the option for whoever runs the server: "<what> is <value>, more than this server takes
+// (<limit>); its administrator sets that limit with <option>". `what` is a plain phrase,
+// e.g. "the image's pixel count (width x height)".
 void checkLimit(ErrorKind kind, const std::string& what, int64_t value, int64_t limit, const char* option);
 // The same for a limit held in `limits`.
 void checkLimit(ErrorKind kind, const std::string& what, int64_t value, const Limits& limits,

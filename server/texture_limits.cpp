@@ -16,8 +16,8 @@ void checkTextureSizes(const fs::path& folder, const Limits& limits) {
         if (!size) continue;  // not an image, or unreadable: the scene loader reports it if used
         std::string name = it->path().lexically_relative(folder).generic_string();
         checkLimit(ErrorKind::LimitExceeded,
-                   "texture " + name + " (" + std::to_string(size->width) + "x" + std::to_string(size->height) +
-                       ") width*height",
+                   "the pixel count of texture " + name + " (" + std::to_string(size->width) + " x " +
+                       std::to_string(size->height) + ")",
                    int64_t(size->width) * size->height, limits, &Limits::maxTexturePixels);
     }
 }

@@ -55,6 +55,27 @@ TEST(SceneLoaderErrors, MissingRequiredFields) {
     expectError([](Json& d) { d["lights"][0].erase("intensity"); }, "lights[0].intensity", "missing required field");
     expectError([](Json& d) { d["shapes"][2]["transform"]["rotate"].erase("angle"); },
                 "shapes[2].transform.rotate.angle", "missing required field");
+    // A near miss of the missing field is named with it.
+    expectError(
+        [](Json& d) {
+            d["shapes"][3]["raduis"] = d["shapes"][3]["radius"];
+            d["shapes"][3].erase("radius");
+        },
+        "shapes[3].radius",
+        "missing required field; found \"raduis\", which is not a field here: a misspelling of \"radius\"?");
+    expectError(
+        [](Json& d) {
+            d["camera"]["FOV"] = d["camera"]["fov"];
+            d["camera"].erase("fov");
+        },
+        "camera.fov", "missing required field; found \"FOV\", which is not a field here: a misspelling of \"fov\"?");
+    // Nothing near: the plain message.
+    expectError(
+        [](Json& d) {
+            d["shapes"][3]["size"] = 1;
+            d["shapes"][3].erase("radius");
+        },
+        "shapes[3].radius", "missing required field");
 }
 
 TEST(SceneLoaderErrors, RangeChecks) {

@@ -1,4 +1,7 @@
 #include "scene/json_reader.h"
+#include <algorithm>
+#include <cctype>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 #include <unordered_set>
@@ -260,10 +263,41 @@ std::optional<JsonValue> JsonObject::optional(std::string_view key) {
     return JsonValue(*it, childPath(path_, key));
 }
 
+namespace {
+
+// Optimal string alignment distance (Levenshtein plus swaps of neighbours: "raduis" is one
+// step from "radius"), case-insensitive.
+size_t editDistance(std::string_view a, std::string_view b) {
+    auto lower = [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); };
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) && lower(a[i - 2]) == lower(b[j - 1]))
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+}  // namespace
+
 JsonValue JsonObject::required(std::string_view key) {
     auto v = optional(key);
-    if (!v) throw SceneError(childPath(path_, key), "missing required field");
-    return *v;
+    if (v) return *v;
+    // A field not read (yet) that is a near miss of the one wanted is most likely it,
+    // misspelt: say so, since the "unknown field" error it would cause comes only later.
+    std::string nearest;
+    size_t best = std::max<size_t>(1, key.size() / 3) + 1;
+    for (auto it = json_->begin(); it != json_->end(); ++it)
+        if (!read_.contains(it.key()))
+            if (size_t d = editDistance(it.key(), key); d < best) best = d, nearest = it.key();
+    if (nearest.empty()) throw SceneError(childPath(path_, key), "missing required field");
+    throw SceneError(childPath(path_, key), "missing required field; found \"" + nearest +
+                                                "\", which is not a field here: a misspelling of \"" +
+                                                std::string(key) + "\"?");
 }
 
 std::vector<std::pair<std::string, JsonValue>> JsonObject::members() {

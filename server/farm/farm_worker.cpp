@@ -3,6 +3,7 @@
 // renders it again: the coordinator merges a batch once however often it arrives.
 #include "farm_worker.h"
 #include <unistd.h>
+#include <bit>
 #include <cstdio>
 #include <sstream>
 #include <thread>
@@ -171,8 +172,8 @@ bool FarmWorker::renderBatch(const StreamEntry& entry) {
 }
 
 // A whole job: rendered from the last checkpoint in Redis (a worker before this one may
-// have got that far), reporting a pass with its image at most every preview_seconds and
-// the last one always, and a checkpoint every checkpoint_seconds and at the end. The
+// have got that far), reporting a pass with its image at most every preview_seconds, and
+// passes 1, 2, 4, ... and the last one always, and a checkpoint every checkpoint_seconds and at the end. The
 // checkpoint is stored for whoever takes the item over only while the item's round is the
 // job's (a script, so that the check and the write are one step).
 bool FarmWorker::renderJob(const StreamEntry& entry) {
@@ -229,7 +230,9 @@ bool FarmWorker::renderJob(const StreamEntry& entry) {
             ++counters_.passes;
             passesPerSecond_ = p.elapsedSeconds > 0 ? p.pass / p.elapsedSeconds : 0;
             const auto now = std::chrono::steady_clock::now();
-            if (std::chrono::duration<double>(now - lastReport).count() >= previewSeconds) {
+            // Powers of two too: the coordinator keeps those passes' images (kept_passes.h).
+            if (std::chrono::duration<double>(now - lastReport).count() >= previewSeconds ||
+                std::has_single_bit(unsigned(p.pass))) {
                 report(p);
                 lastReport = now;
             }

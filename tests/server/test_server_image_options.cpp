@@ -281,5 +281,81 @@ TEST_F(ImageOptionsTest, BadValuesAreProblemsNamingTheParameter) {
     EXPECT_EQ(getImage("0123456789abcdef", "?exposure=1")->status, 404);
 }
 
+// The first pass at or after each power of two is kept: 1, 2, 4, 8 of 9, each served as
+// the image that pass was (the same pixels as a job of that many passes), in any format and
+// variant; the list and the images survive a restart.
+TEST_F(ImageOptionsTest, EarlierPassesAreKeptAtPowersOfTwo) {
+    startServer();
+    json nine = smallScene(9, 4000, 16);
+    json four = smallScene(4, 4000, 16);
+    const std::string id = finishedJob(nine)["id"];
+    const std::string other = finishedJob(four)["id"];
+    json job = json::parse(client().Get(("/api/v1/jobs/" + id).c_str())->body);
+    EXPECT_EQ(job["kept_passes"], json::parse("[1, 2, 4, 8]"));
+    const Image kept = decodeImage(body(id, "?pass=4&format=exr"), ".exr");
+    EXPECT_EQ(kept.rgb, decodeImage(body(other, "?format=exr"), ".exr").rgb);
+    EXPECT_NE(kept.rgb, decodeImage(body(id, "?format=exr"), ".exr").rgb);
+    httplib::Result png = getImage(id, "?pass=2&size=8x8");
+    ASSERT_EQ(png->status, 200);
+    EXPECT_EQ(png->get_header_value("X-Photon-Pass"), "2");
+    EXPECT_EQ(png->get_header_value("ETag"), "\"" + id + "-2-png-8x8\"");
+    EXPECT_EQ(decodeImage(png->body, ".png").width, 8);
+
+    httplib::Result missing = getImage(id, "?pass=3");
+    EXPECT_EQ(missing->status, 404);
+    EXPECT_EQ(problemOf(missing)["detail"], "job " + id +
+                                                " kept no image of pass 3 (it keeps the first pass at or after each "
+                                                "power of two; kept: 1, 2, 4, 8)");
+    httplib::Result zero = getImage(id, "?pass=0");
+    EXPECT_EQ(zero->status, 400);
+    EXPECT_EQ(problemOf(zero)["detail"], "query parameter pass: expected a whole number >= 1");
+
+    // The progress history: a point a pass, photons adding up.
+    json history = json::parse(client().Get(("/api/v1/jobs/" + id + "/progress").c_str())->body);
+    ASSERT_EQ(history["points"].size(), 9u) << history.dump();
+    for (int i = 0; i < 9; ++i) {
+        EXPECT_EQ(history["points"][i]["pass"], i + 1);
+        EXPECT_EQ(history["points"][i]["photons_traced"], 4000 * (i + 1));
+        EXPECT_GT(history["points"][i]["mean_radius"].get<double>(), 0);
+    }
+    EXPECT_EQ(client().Get("/api/v1/jobs/0123456789abcdef/progress")->status, 404);
+
+    ASSERT_EQ(stopServer(), 0);
+    startServer({"--workers", "0"});
+    job = json::parse(client().Get(("/api/v1/jobs/" + id).c_str())->body);
+    EXPECT_EQ(job["kept_passes"], json::parse("[1, 2, 4, 8]"));
+    EXPECT_EQ(decodeImage(body(id, "?pass=4&format=exr"), ".exr").rgb, kept.rgb);
+    EXPECT_EQ(json::parse(client().Get(("/api/v1/jobs/" + id + "/progress").c_str())->body), history);
+}
+
+// ?layer=raw serves a denoised job's image before the filter, in either format, and is
+// refused for a job without the denoiser.
+TEST_F(ImageOptionsTest, TheRawLayerOfADenoisedJob) {
+    startServer();
+    json scene = smallScene(2, 4000, 16);
+    scene["render"]["denoise"] = true;
+    const json job = finishedJob(scene);
+    const std::string id = job["id"];
+    EXPECT_EQ(job["settings"]["denoise"], true);
+    const DecodedImage plain = decodeImageBytes(body(id, "?format=exr"), "exr");
+    const auto rawLayer = std::find_if(plain.image.layers.begin(), plain.image.layers.end(),
+                                       [](const ImageLayer& l) { return l.name == "raw"; });
+    ASSERT_NE(rawLayer, plain.image.layers.end());
+    const Image raw = decodeImage(body(id, "?format=exr&layer=raw"), ".exr");
+    EXPECT_EQ(raw.rgb, rawLayer->image.rgb);
+    EXPECT_NE(raw.rgb, plain.image.main.rgb);
+    httplib::Result png = getImage(id, "?layer=raw");
+    EXPECT_EQ(png->get_header_value("ETag"), "\"" + id + "-2-png-raw\"");
+    EXPECT_NE(png->body, body(id, ""));  // the plain PNG shows the filtered image
+
+    const json plainJob = finishedJob(smallScene(2, 4000, 16));
+    EXPECT_EQ(plainJob["settings"]["denoise"], false);
+    httplib::Result refused = getImage(plainJob["id"], "?layer=raw");
+    EXPECT_EQ(refused->status, 400);
+    EXPECT_EQ(problemOf(refused)["detail"], "query parameter layer: job " + plainJob["id"].get<std::string>() +
+                                                " is not denoised, so its image is the raw one");
+    EXPECT_EQ(getImage(id, "?layer=albedo")->status, 400);
+}
+
 }  // namespace
 }  // namespace photon::test

@@ -204,7 +204,7 @@ TEST_F(ImportsTest, TheServerLimitsHoldForTheImportedScene) {
     httplib::MultipartFormDataItems items{{"scene", quadGlb(), "quad.glb", ""}};
     json problem = problemOf(client().Post("/api/v1/jobs", items));
     EXPECT_EQ(problem["status"], 422);
-    EXPECT_NE(problem["error"].get<std::string>().find("width*height 518400"), std::string::npos) << problem.dump();
+    EXPECT_NE(problem["error"].get<std::string>().find("pixel count (720 x 720) is 518400"), std::string::npos) << problem.dump();
     EXPECT_TRUE(fs::is_empty(dataDir() / "jobs"));
 }
 

@@ -53,11 +53,14 @@ std::string pngBytes(int width, int height) {
 
 TEST_F(LimitsTest, RenderSizeLimitsNameTheirOption) {
     startServer({"--workers", "0", "--max-pixels", "1000", "--max-passes", "10", "--max-photons", "5000"});
-    expectError(submit(smallScene()), 422, "width*height 1024 exceeds the server limit of 1000 (--max-pixels)");
+    expectError(submit(smallScene()), 422, "the image's pixel count (32 x 32) is 1024, more than this server takes (1000); its "
+                "administrator sets that limit with --max-pixels");
     expectError(submit(smallScene(3, 2000, 30), "?passes=11"), 422,
-                "passes 11 exceeds the server limit of 10 (--max-passes)");
+                "the number of passes is 11, more than this server takes (10); its administrator sets that "
+                "limit with --max-passes");
     expectError(submit(smallScene(3, 6000, 30)), 422,
-                "photons_per_pass 6000 exceeds the server limit of 5000 (--max-photons)");
+                "the number of photons per pass is 6000, more than this server takes (5000); its administrator "
+                "sets that limit with --max-photons");
     EXPECT_EQ(submit(smallScene(10, 5000, 30))->status, 201);
 }
 
@@ -67,7 +70,8 @@ TEST_F(LimitsTest, SceneJsonSizeIs413) {
     const size_t size = scene.dump().size();
     startServer({"--workers", "0", "--max-scene-bytes", "4000"});
     const std::string message =
-        "scene JSON bytes " + std::to_string(size) + " exceeds the server limit of 4000 (--max-scene-bytes)";
+        "the scene file's size in bytes is " + std::to_string(size) +
+        ", more than this server takes (4000); its administrator sets that limit with --max-scene-bytes";
     expectError(submit(scene), 413, message);
     httplib::MultipartFormDataItems items{{"scene", scene.dump(), "", "application/json"}};
     expectError(client().Post("/api/v1/jobs", items), 413, message);
@@ -78,7 +82,8 @@ TEST_F(LimitsTest, BodySizeIs413) {
     startServer({"--workers", "0", "--max-body-bytes", "1000"});
     httplib::MultipartFormDataItems items{{"scene", smallScene().dump(), "", "application/json"}};
     expectError(client().Post("/api/v1/jobs", items), 413,
-                "request body exceeds the server limit of 1000 bytes (--max-body-bytes)");
+                "the request body is larger than this server takes (1000 bytes); its administrator sets that "
+                "limit with --max-body-bytes");
 }
 
 // Each asset part is a file staged on disk: a body of thousands of tiny parts is refused.
@@ -106,8 +111,9 @@ TEST_F(LimitsTest, TrianglesPerSceneAreCountedOverAllMeshes) {
                                           {"a", objStrip(60), "a.obj", "text/plain"},
                                           {"b", objStrip(60), "b.obj", "text/plain"}};
     expectError(client().Post("/api/v1/jobs", items), 422,
-                "triangle count " + std::to_string(total) + " exceeds the server limit of " +
-                    std::to_string(total - 1) + " (--max-triangles)");
+                "the triangle count of all the scene's meshes is " + std::to_string(total) +
+                    ", more than this server takes (" + std::to_string(total - 1) +
+                    "); its administrator sets that limit with --max-triangles");
     items[2].content = objStrip(59);
     EXPECT_EQ(client().Post("/api/v1/jobs", items)->status, 201);
 }
@@ -117,12 +123,12 @@ TEST_F(LimitsTest, TextureSizeIsCheckedFromTheHeader) {
     scene["materials"]["white"]["albedo"] = {{"texture", "textures/t.png"}};
     startServer({"--workers", "0", "--max-texture-pixels", "4096"});
     expectError(postMultipart(scene, "textures/t.png", pngBytes(80, 60)), 422,
-                "texture textures/t.png (80x60) width*height 4800 exceeds the server limit of 4096 "
-                "(--max-texture-pixels)");
+                "the pixel count of texture textures/t.png (80 x 60) is 4800, more than this server takes "
+                "(4096); its administrator sets that limit with --max-texture-pixels");
     // An image the scene does not use is held to the limit too: it was uploaded to the job.
     expectError(postMultipart(smallScene(), "unused.png", pngBytes(65, 64)), 422,
-                "texture unused.png (65x64) width*height 4160 exceeds the server limit of 4096 "
-                "(--max-texture-pixels)");
+                "the pixel count of texture unused.png (65 x 64) is 4160, more than this server takes "
+                "(4096); its administrator sets that limit with --max-texture-pixels");
     EXPECT_EQ(postMultipart(scene, "textures/t.png", pngBytes(64, 64))->status, 201);
 }
 

@@ -37,7 +37,7 @@ JobRecord newJob(const std::string& id) {
     job.status = JobStatus::Queued;
     job.priority = 0;
     job.createdAt = "2024-05-01T09:00:00.000Z";
-    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240};
+    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240, "", true};
     job.client = "127.0.0.1";
     return job;
 }
@@ -64,6 +64,7 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.progress.etaSeconds, expected.progress.etaSeconds);
     EXPECT_EQ(actual.error, expected.error);
     EXPECT_EQ(actual.settings.camera, expected.settings.camera);
+    EXPECT_EQ(actual.settings.denoise, expected.settings.denoise);
     EXPECT_EQ(actual.client, expected.client);
     EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
     EXPECT_EQ(actual.warnings, expected.warnings);
@@ -383,13 +384,13 @@ TEST_F(JobStoreTest, RefusesADatabaseOfANewerSchemaVersion) {
     { JobStore store(dbFile()); }
     {
         sql::Database db(dbFile());
-        db.exec("PRAGMA user_version = 5");
+        db.exec("PRAGMA user_version = 6");
     }
     try {
         JobStore store(dbFile());
-        FAIL() << "opened a version 5 database";
+        FAIL() << "opened a version 6 database";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("newer version (5)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("newer version (6)"), std::string::npos) << e.what();
     }
 }
 
@@ -438,6 +439,7 @@ VALUES ('old', 'queued', 1, '2023-01-01T00:00:00.000Z', 4, 1000, 7, 'path', 64, 
     EXPECT_TRUE(jobs[0].labels.empty());
     EXPECT_EQ(jobs[0].updatedAt, "2023-01-01T00:00:00.000Z");  // its creation
     EXPECT_EQ(jobs[0].settings.camera, "");  // nor versions before 4 this
+    EXPECT_FALSE(jobs[0].settings.denoise);   // nor versions before 5 this
 
     JobRecord fresh = newJob("new");
     EXPECT_EQ(store.insert(fresh, IdempotencyEntry{"k", "0123456789abcdef", "", 1000}), 2);

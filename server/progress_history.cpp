@@ -1,0 +1,46 @@
+#include "progress_history.h"
+#include <fstream>
+#include <sstream>
+#include "job_folders.h"
+
+namespace photon::server {
+
+void ProgressHistory::add(const JobProgress& p) {
+    if (!points_.empty() && p.pass <= points_.back().pass) {
+        // A render that went back (resumed from an earlier checkpoint): the passes after it
+        // are rendered again, and it is their figures that stand.
+        while (!points_.empty() && points_.back().pass >= p.pass) points_.pop_back();
+    }
+    if (!points_.empty() && p.pass - points_.back().pass < stride_) return;
+    points_.push_back({p.pass, p.elapsedSeconds, p.photonsTraced, p.meanRadius});
+    if (points_.size() < kMaxPoints) return;
+    std::vector<ProgressPoint> kept;
+    for (size_t i = 0; i < points_.size(); i += 2) kept.push_back(points_[i]);
+    if (kept.back().pass != points_.back().pass) kept.push_back(points_.back());  // the latest always
+    points_ = std::move(kept);
+    stride_ *= 2;
+}
+
+void ProgressHistory::save(const std::filesystem::path& file) const {
+    std::ostringstream text;
+    text.precision(17);
+    text << "stride " << stride_ << '\n';
+    for (const ProgressPoint& p : points_)
+        text << p.pass << ' ' << p.elapsedSeconds << ' ' << p.photonsTraced << ' ' << p.meanRadius << '\n';
+    writeFileAtomically(file, text.str());
+}
+
+ProgressHistory ProgressHistory::load(const std::filesystem::path& file) {
+    ProgressHistory h;
+    std::ifstream in(file);
+    std::string word;
+    if (!(in >> word >> h.stride_) || word != "stride" || h.stride_ < 1) return {};
+    ProgressPoint p;
+    while (in >> p.pass >> p.elapsedSeconds >> p.photonsTraced >> p.meanRadius) {
+        if (h.points_.size() >= kMaxPoints) break;
+        h.points_.push_back(p);
+    }
+    return h;
+}
+
+}  // namespace photon::server
