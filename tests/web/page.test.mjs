@@ -18,7 +18,7 @@
 // compare view (divider place -> clip); the phone-width layout. Screenshots of each state go
 // beside PHOTON_WEB_SCREENSHOT. The server and the browser are stopped at the end, also
 // when a check fails. Starting and stopping them, and the helpers that talk to the server
-// from Node, are in harness.mjs.
+// from Node, are in harness.mjs; what the image checks read of the page, in image-checks.mjs.
 
 import assert from 'node:assert/strict';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -39,6 +39,7 @@ import {
   textOf as textIn,
   waitForStatus,
 } from './harness.mjs';
+import { compareState, expectedView, imageView, linear, shownAndServedPixels, viewOf } from './image-checks.mjs';
 
 const SCREENSHOT = resolve(process.env.PHOTON_WEB_SCREENSHOT || join(tmpdir(), 'photon-web.png'));
 const RENDER_TIMEOUT_MS = 120_000;
@@ -681,33 +682,6 @@ test("the job view shows only the figures of the job's method", async () => {
 
 // ---- The image: zoom, pan, exposure --------------------------------------------------
 
-// The view as the viewport keeps it (scale, the image's exact corner x, y in the frame) and as
-// it is drawn: the transform's translation (the corner on the device pixel grid) and where
-// the image really is on the page, relative to the frame's inside, in CSS px.
-async function imageView() {
-  return page.evaluate(() => {
-    const frame = document.querySelector('#image-frame');
-    const img = document.querySelector('#job-image');
-    const f = frame.getBoundingClientRect();
-    const r = img.getBoundingClientRect();
-    const [, left, top] = /^translate\((-?[\d.]+)px, (-?[\d.]+)px\)/.exec(img.style.transform).map(Number);
-    return {
-      scale: Number(frame.dataset.scale), x: Number(frame.dataset.x), y: Number(frame.dataset.y), mode: frame.dataset.mode,
-      drawn: [left, top], box: [r.left - f.left - frame.clientLeft, r.top - f.top - frame.clientTop, r.width, r.height],
-      frame: [frame.clientWidth, frame.clientHeight], pixelated: getComputedStyle(img).imageRendering === 'pixelated',
-      zoom: document.querySelector('#zoom-level').textContent,
-    };
-  });
-}
-
-// What the viewport must show for scale s and exact corner (x, y), on a screen of ratio dpr.
-function expectedView(scale, x, y, dpr = 1) {
-  const snap = (v) => Math.round(v * dpr) / dpr;
-  return { scale, x, y, drawn: [snap(x), snap(y)] };
-}
-
-const viewOf = ({ scale, x, y, drawn }) => ({ scale, x, y, drawn });
-
 // A job of 64 x 64 pixels that keeps rendering until cancelled, opened in the job view.
 async function openLongJob() {
   const scene = readScene('cornell-box');
@@ -729,7 +703,7 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
   inspectedJob = id;
   try {
     // Fit: the whole image, centred in the frame.
-    let view = await imageView();
+    let view = await imageView(page);
     const [w, h] = view.frame;
     const fitScale = Math.min(w / 64, h / 64);
     assert.deepEqual(viewOf(view), expectedView(fitScale, (w - 64 * fitScale) / 2, (h - 64 * fitScale) / 2));
@@ -738,7 +712,7 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
 
     // 1:1: one image pixel per CSS pixel on this screen (devicePixelRatio 1), centred.
     await page.click('#zoom-one');
-    view = await imageView();
+    view = await imageView(page);
     assert.equal(view.scale, 1);
     assert.deepEqual(view.box.slice(2), [64, 64], 'a 64 x 64 image is 64 x 64 CSS px at 1:1');
     assert.equal(view.zoom, '100%');
@@ -747,12 +721,12 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     // + and −: steps of √2 through 1:1, 2:1, 4:1, around the frame's centre.
     await page.click('#zoom-in');
     await page.click('#zoom-in');
-    view = await imageView();
+    view = await imageView(page);
     assert.deepEqual(viewOf(view), expectedView(2, w / 2 - 64, h / 2 - 64));
     assert.equal(view.zoom, '200%');
     assert.equal(view.pixelated, true, 'magnified: crisp pixels');
     await page.click('#zoom-out');
-    assert.equal((await imageView()).scale, 2 ** 0.5);
+    assert.equal((await imageView(page)).scale, 2 ** 0.5);
     await page.click('#zoom-in');
 
     // The wheel zooms around the cursor: one notch (100 px) in is √2 more, and the image
@@ -765,10 +739,10 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     }, { once: true, capture: true }));
     const frameBox = await page.locator('#image-frame').boundingBox();
     await page.mouse.move(frameBox.x + w / 2 + 20, frameBox.y + h / 2 - 12);
-    const before = await imageView();
+    const before = await imageView(page);
     await page.mouse.wheel(0, -100);
     await page.waitForFunction((old) => Number(document.querySelector('#image-frame').dataset.scale) !== old, before.scale);
-    view = await imageView();
+    view = await imageView(page);
     const [cx, cy] = await page.evaluate(() => window.__wheelAt);
     const s = 2 * 2 ** 0.5;
     const u = (cx - before.x) / 2; // the image point under the cursor
@@ -782,35 +756,35 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     await page.mouse.down();
     await page.mouse.move(frameBox.x + w / 2 + 20 - 30, frameBox.y + h / 2 - 12 + 17, { steps: 3 });
     await page.mouse.up();
-    const dragged = await imageView();
+    const dragged = await imageView(page);
     assert.deepEqual(viewOf(dragged), expectedView(s, view.x - 30, view.y + 17));
     assert.equal(dragged.mode, 'free');
 
     // New passes replace the image but not the view.
     const pass = Number(await page.getAttribute('#job-image', 'data-pass'));
     await page.waitForFunction((p) => Number(document.querySelector('#job-image').dataset.pass) >= p + 2, pass, { timeout: 20_000 });
-    const later = await imageView();
+    const later = await imageView(page);
     assert.deepEqual(later, dragged, 'a new pass keeps the zoom and the pan');
     await saveScreenshot('zoomed-image');
 
     // Keys on the focused frame: + zooms in, an arrow pans, 0 fits, 1 is 1:1.
     await page.focus('#image-frame');
     await page.keyboard.press('Minus');
-    assert.equal((await imageView()).scale, 2);
-    const zoomedOut = await imageView();
+    assert.equal((await imageView(page)).scale, 2);
+    const zoomedOut = await imageView(page);
     await page.keyboard.press('ArrowLeft');
-    assert.equal((await imageView()).x, Math.min(w - 128, zoomedOut.x + 40), 'the image moves right, inside the frame');
+    assert.equal((await imageView(page)).x, Math.min(w - 128, zoomedOut.x + 40), 'the image moves right, inside the frame');
     await page.keyboard.press('0');
-    const fitted = await imageView();
+    const fitted = await imageView(page);
     assert.deepEqual([fitted.mode, fitted.scale], ['fit', fitScale]);
     // A double click goes from Fit to 1:1 around the point clicked, and back to Fit.
     const frameAt = await page.locator('#image-frame').boundingBox();
     await page.mouse.dblclick(frameAt.x + w / 2, frameAt.y + h / 2);
-    assert.equal((await imageView()).scale, 1);
+    assert.equal((await imageView(page)).scale, 1);
     await page.mouse.dblclick(frameAt.x + w / 2, frameAt.y + h / 2);
-    assert.deepEqual(viewOf(await imageView()), viewOf(fitted));
+    assert.deepEqual(viewOf(await imageView(page)), viewOf(fitted));
     await page.keyboard.press('1');
-    const single = await imageView();
+    const single = await imageView(page);
     assert.equal(single.scale, 1);
 
     // Two fingers pinching apart from 100 to 200 px: twice the zoom around their first
@@ -828,7 +802,7 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
       at(11, 'pointerup', 100, 100);
       at(12, 'pointerup', 300, 100);
     });
-    const pinched = await imageView();
+    const pinched = await imageView(page);
     assert.deepEqual(viewOf(pinched), expectedView(2, 150 - (150 - single.x) * 2 + 50, 100 - (100 - single.y) * 2));
     await page.keyboard.press('1');
 
@@ -837,13 +811,13 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
     try {
       await cdp.send('Emulation.setDeviceMetricsOverride', { width: 1440, height: 1000, deviceScaleFactor: 2, mobile: false });
       await page.click('#zoom-one');
-      view = await imageView();
+      view = await imageView(page);
       assert.deepEqual({ scale: view.scale, size: view.box.slice(2), zoom: view.zoom }, { scale: 0.5, size: [32, 32], zoom: '100%' });
       await page.click('#zoom-in');
-      assert.equal((await imageView()).scale, 2 ** 0.5 / 2);
-      assert.equal((await imageView()).pixelated, false, '√2 device px per image pixel: smooth, not squares of 1 and 2');
+      assert.equal((await imageView(page)).scale, 2 ** 0.5 / 2);
+      assert.equal((await imageView(page)).pixelated, false, '√2 device px per image pixel: smooth, not squares of 1 and 2');
       await page.click('#zoom-in');
-      view = await imageView();
+      view = await imageView(page);
       assert.deepEqual({ scale: view.scale, size: view.box.slice(2), pixelated: view.pixelated }, { scale: 1, size: [64, 64], pixelated: true });
       assert.deepEqual(view.drawn, view.drawn.map((c) => Math.round(c * 2) / 2), 'the corner is on the device pixel grid');
       assert.deepEqual(view.box, [...view.drawn, 64, 64]);
@@ -857,32 +831,6 @@ test('the image zooms around the cursor, pans, fits, shows 1:1 and keeps its zoo
   }
   await waitForStatus(page, server, id, 'cancelled', 30_000);
 });
-
-// The pixels of the image on show and of the server's PNG at `query`, decoded alike by the
-// browser: { shown, served } as arrays of R, G, B (alpha left out). The request for the PNG
-// is the test's: it is marked, so it is not taken for one of the page's.
-async function shownAndServedPixels(id, query) {
-  return page.evaluate(async ({ jobId, q }) => {
-    const rgb = (source, width, height) => {
-      const canvas = document.createElement('canvas');
-      canvas.width = width;
-      canvas.height = height;
-      const context = canvas.getContext('2d');
-      context.drawImage(source, 0, 0);
-      return Array.from(context.getImageData(0, 0, width, height).data).filter((_, i) => i % 4 !== 3);
-    };
-    const img = document.querySelector('#job-image');
-    const res = await fetch(`/api/v1/jobs/${jobId}/image${q}`, { headers: { 'X-Test-Check': '1' } });
-    const bitmap = await createImageBitmap(await res.blob());
-    return { shown: rgb(img, img.naturalWidth, img.naturalHeight), served: rgb(bitmap, bitmap.width, bitmap.height) };
-  }, { jobId: id, q: query });
-}
-
-// An sRGB-encoded 8-bit value in linear light.
-const linear = (v) => {
-  const c = v / 255;
-  return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
-};
 
 test('the exposure slider reloads the pass on show once, at the exposure chosen', { timeout: 60_000 }, async () => {
   const id = inspectedJob;
@@ -899,7 +847,7 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
   await page.waitForFunction(() => document.querySelector('#exposure-value').textContent === "±0 EV (render's)");
   assert.equal(await page.isDisabled('#exposure-reset'), true);
   // The render's own exposure (the Cornell box's is 0): the plain PNG, same pixels as exposure=0.
-  const plain = await shownAndServedPixels(id, '?format=png&exposure=0');
+  const plain = await shownAndServedPixels(page, id, '?format=png&exposure=0');
   assert.deepEqual(plain.shown, plain.served);
 
   await page.click('#zoom-in');
@@ -927,7 +875,7 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
 
     // What is shown is the server's PNG at exposure 2, pixel for pixel, and 4 times as bright
     // in linear light wherever neither image is clipped (nor too dark for 8 bits to tell).
-    const bright = await shownAndServedPixels(id, '?format=png&exposure=2');
+    const bright = await shownAndServedPixels(page, id, '?format=png&exposure=2');
     assert.deepEqual(bright.shown, bright.served);
     let [sumDark, sumBright, used] = [0, 0, 0];
     plain.shown.forEach((dark, i) => {
@@ -947,7 +895,7 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
     await page.waitForFunction(() => window.__shown.length === 2);
     assert.deepEqual(requests.slice(1), [`?format=png&exposure=1.5`]);
     assert.equal(await textOf('#exposure-value'), '+1.5 EV');
-    const half = await shownAndServedPixels(id, '?format=png&exposure=1.5');
+    const half = await shownAndServedPixels(page, id, '?format=png&exposure=1.5');
     assert.deepEqual(half.shown, half.served);
 
     // Reset: the render's own again, the plain PNG.
@@ -956,7 +904,7 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
     assert.deepEqual(requests.slice(2), [`?format=png`]);
     assert.equal(await textOf('#exposure-value'), "±0 EV (render's)");
     assert.equal(await page.inputValue('#exposure'), '0');
-    assert.deepEqual((await shownAndServedPixels(id, '?format=png')).shown, plain.shown);
+    assert.deepEqual((await shownAndServedPixels(page, id, '?format=png')).shown, plain.shown);
     // Each a whole image of the same pass.
     assert.deepEqual(await shownImages(), [1, 2, 3].map(() => ({ pass, blob: true, loaded: true, width: 64, height: 64 })));
   } finally {
@@ -964,27 +912,6 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
   }
   await page.click('#zoom-fit');
 });
-
-// The compare view's state: what is chosen, the divider, the clip, both images' transforms.
-async function compareState() {
-  return page.evaluate(() => {
-    const frame = document.querySelector('#image-frame');
-    const divider = document.querySelector('#compare-divider');
-    const other = document.querySelector('#compare-image');
-    // inset(top right bottom left), as the browser shortens it ("inset(0px)" when all are 0):
-    // the clip's sides in CSS px, in full.
-    const sides = /^inset\((.*)\)$/.exec(document.querySelector('#compare-layer').style.clipPath)[1].split(' ').map((v) => Number.parseFloat(v));
-    const [top, right = top, bottom = top, left = right] = sides;
-    return {
-      choice: document.querySelector('#compare-select').value, hidden: divider.hidden,
-      split: Number(divider.dataset.split), valuenow: divider.getAttribute('aria-valuenow'),
-      clip: [top, right, bottom, left], left: divider.style.left, width: frame.clientWidth,
-      sameTransform: other.style.transform === document.querySelector('#job-image').style.transform,
-      other: { job: other.dataset.job, pass: other.dataset.pass, width: other.naturalWidth },
-      labels: [document.querySelector('#compare-left-label').textContent, document.querySelector('#compare-right-label').textContent],
-    };
-  });
-}
 
 test('the compare view splits the image and another job of its size at a divider', { timeout: 60_000 }, async () => {
   const id = inspectedJob;
@@ -1031,7 +958,7 @@ test('the compare view splits the image and another job of its size at a divider
     await page.selectOption('#compare-select', `job:${other}`);
     await page.waitForFunction(() => document.querySelector('#compare-image').naturalWidth === 64);
     assert.deepEqual(requests, [`${other}?format=png`]);
-    let state = await compareState();
+    let state = await compareState(page);
     const w = state.width;
     assert.deepEqual(state, {
       choice: `job:${other}`, hidden: false, split: 0.5, valuenow: '50',
@@ -1051,7 +978,7 @@ test('the compare view splits the image and another job of its size at a divider
     await page.mouse.up();
     const at = await page.evaluate(() => window.__dividerAt);
     assert.ok(Math.abs(at - 0.25) < 2 / w, `the divider is where it was dropped: ${at}`);
-    state = await compareState();
+    state = await compareState(page);
     assert.deepEqual([state.split, state.clip, state.left, state.valuenow],
       [at, [0, 0, 0, Math.round(at * w)], `${Math.round(at * w)}px`, String(Math.round(at * 100))]);
     assert.equal(await page.getAttribute('#image-frame', 'data-mode'), 'fit', 'dragging the divider does not pan the image');
@@ -1060,13 +987,13 @@ test('the compare view splits the image and another job of its size at a divider
     const keys = [['Home', 0], ['ArrowRight', 0.01], ['ArrowRight', 0.02], ['End', 1], ['PageDown', 0.9], ['ArrowLeft', 0.89]];
     for (const [key, split] of keys) {
       await page.keyboard.press(key);
-      state = await compareState();
+      state = await compareState(page);
       assert.deepEqual([key, state.split, state.clip], [key, split, [0, 0, 0, Math.round(split * w)]]);
     }
 
     // Zoom applies to both images; another exposure reloads both, once each.
     await page.click('#zoom-in');
-    assert.equal((await compareState()).sameTransform, true);
+    assert.equal((await compareState(page)).sameTransform, true);
     requests.length = 0;
     await page.locator('#exposure').evaluate((slider) => {
       slider.value = '1';
@@ -1078,13 +1005,13 @@ test('the compare view splits the image and another job of its size at a divider
     assert.deepEqual(requests.sort(), [`${id}?format=png&exposure=1`, `${other}?format=png&exposure=1`].sort());
     await page.focus('#compare-divider');
     for (const key of ['Home', 'PageUp', 'PageUp', 'PageUp', 'PageUp', 'PageUp']) await page.keyboard.press(key);
-    assert.equal((await compareState()).split, 0.5);
+    assert.equal((await compareState(page)).split, 0.5);
     await page.click('#zoom-fit');
     await saveScreenshot('compare');
 
     // Nothing: back to the job's image alone.
     await page.selectOption('#compare-select', '');
-    state = await compareState();
+    state = await compareState(page);
     assert.deepEqual([state.choice, state.hidden, state.other.job], ['', true, undefined]);
     await page.click('#exposure-reset');
   } finally {
@@ -1150,12 +1077,12 @@ test("a denoised job: raw or denoised, its kept passes compared, its plot from t
       // Raw: the pass on show once more, its raw layer, pixel for pixel the server's.
       requests.length = 0;
       await watchShownImages();
-      const denoised = await shownAndServedPixels(id, '?format=png');
+      const denoised = await shownAndServedPixels(page, id, '?format=png');
       assert.deepEqual(denoised.shown, denoised.served);
       await page.check('#layer-raw');
       await page.waitForFunction(() => window.__shown.length === 1);
       assert.deepEqual(requests, [`${id}?format=png&layer=raw`]);
-      const raw = await shownAndServedPixels(id, '?format=png&layer=raw');
+      const raw = await shownAndServedPixels(page, id, '?format=png&layer=raw');
       assert.deepEqual(raw.shown, raw.served);
       assert.notDeepEqual(raw.shown, denoised.shown, 'the raw layer is not the denoised image');
       // With an exposure: both in the request, and in the PNG download.
@@ -1176,7 +1103,7 @@ test("a denoised job: raw or denoised, its kept passes compared, its plot from t
       await page.waitForFunction(() => document.querySelector('#compare-image').dataset.pass === '4' &&
         document.querySelector('#compare-image').complete);
       assert.deepEqual(requests, [`${id}?format=png&pass=4&layer=raw&exposure=1`]);
-      assert.deepEqual((await compareState()).labels, ['this job, pass 9', 'pass 4']);
+      assert.deepEqual((await compareState(page)).labels, ['this job, pass 9', 'pass 4']);
       await page.click('#zoom-in');
       await saveScreenshot('compare-kept-pass');
 
