@@ -96,12 +96,7 @@ export function createJobView({ onChanged, onDeleted }) {
     slider: $('exposure'),
     label: $('exposure-value'),
     reset: $('exposure-reset'),
-    onChange: () => {
-      if (!session) return;
-      session.preview.reload();
-      compare.reload();
-      if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
-    },
+    onChange: () => settingsChanged(),
   });
 
   // Another image over the job's, split by a divider: an earlier pass, another job.
@@ -123,17 +118,22 @@ export function createJobView({ onChanged, onDeleted }) {
   const layerChoice = $('layer-choice');
   const rawLayer = $('layer-raw');
   for (const radio of layerChoice.querySelectorAll('input')) {
-    radio.addEventListener('change', () => {
-      if (!session) return;
-      session.preview.reload();
-      compare.reload();
-      if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
-    });
+    radio.addEventListener('change', () => settingsChanged());
   }
 
   function showLayerChoice(job) {
     layerChoice.hidden = job.denoise !== true;
     if (layerChoice.hidden) $('layer-denoised').checked = true;
+  }
+
+  // Another exposure or layer: the images on show are loaded again with it (the frame says it
+  // is busy until the job's is in), and the PNG download follows.
+  function settingsChanged() {
+    if (!session) return;
+    if (session.preview.shownPass() > 0) el.frame.setAttribute('aria-busy', 'true');
+    session.preview.reload();
+    compare.reload();
+    if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
   }
 
   // What the job's image is asked for with: the layer (raw, or null for the denoised one)
@@ -184,10 +184,13 @@ export function createJobView({ onChanged, onDeleted }) {
         el.image.alt = `Image of job ${s.id} after pass ${pass}`;
         el.image.hidden = false;
         el.frame.hidden = false;
+        el.frame.removeAttribute('aria-busy');
         el.placeholder.hidden = true;
       },
       onError: (error) => {
-        if (session === s) el.actionError.textContent = `The image could not be loaded: ${error.message}`;
+        if (session !== s) return;
+        el.frame.removeAttribute('aria-busy');
+        el.actionError.textContent = `The image could not be loaded: ${error.message}`;
       },
     });
   }
@@ -337,6 +340,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.id.textContent = id;
     el.image.hidden = true;
     el.frame.hidden = true;
+    el.frame.removeAttribute('aria-busy');
     el.image.removeAttribute('src');
     exposure.clear();
     viewport.clear();

@@ -861,11 +861,14 @@ test('the exposure slider reloads the pass on show once, at the exposure chosen'
   try {
     // +2 stops: the pass on show, loaded once more at exposure 2, swapped in whole.
     await watchShownImages();
-    await page.locator('#exposure').evaluate((slider) => {
+    const busy = await page.locator('#exposure').evaluate((slider) => {
       slider.value = '2';
       slider.dispatchEvent(new Event('input', { bubbles: true }));
+      return document.querySelector('#image-frame').getAttribute('aria-busy');
     });
+    assert.equal(busy, 'true', 'the frame says it is loading');
     await page.waitForFunction(() => window.__shown.length === 1);
+    assert.equal(await page.getAttribute('#image-frame', 'aria-busy'), null, 'and stops saying so once the image is in');
     assert.deepEqual(await shownImages(), [{ pass, blob: true, loaded: true, width: 64, height: 64 }]);
     assert.deepEqual(requests, [`?format=png&exposure=2`]);
     assert.equal(await textOf('#exposure-value'), '+2 EV');
