@@ -85,12 +85,15 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     if (asked === listing && job === forJob) fillSelect();
   }
 
+  // What each side shows, with "raw" where the raw layer is shown.
   function labels() {
-    leftLabel.textContent = job ? `this job, pass ${job.passesDone}` : '';
-    if (chosen.startsWith('pass:')) rightLabel.textContent = `pass ${chosen.slice(5)}`;
-    else if (chosen.startsWith('job:')) {
+    const raw = settings().layer === 'raw';
+    leftLabel.textContent = job ? `this job, pass ${job.passesDone}${raw && job.denoise ? ', raw' : ''}` : '';
+    if (chosen.startsWith('pass:')) {
+      rightLabel.textContent = `pass ${chosen.slice(5)}${raw && job.denoise ? ', raw' : ''}`;
+    } else if (chosen.startsWith('job:')) {
       const other = others.find((o) => o.id === chosen.slice(4));
-      rightLabel.textContent = other ? other.name || other.id : chosen.slice(4);
+      rightLabel.textContent = (other ? other.name || other.id : chosen.slice(4)) + (raw && other?.denoise ? ', raw' : '');
     }
   }
 
@@ -185,6 +188,7 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     // The settings changed (exposure): the chosen image again, with them.
     reload() {
       if (loader) loader.reload();
+      if (chosen) labels();
     },
     refreshChoices,
     choice: () => chosen,

@@ -1106,7 +1106,7 @@ test("a denoised job: raw or denoised, its kept passes compared, its plot from t
       await page.waitForFunction(() => document.querySelector('#compare-image').dataset.pass === '4' &&
         document.querySelector('#compare-image').complete);
       assert.deepEqual(requests, [`${id}?format=png&pass=4&layer=raw&exposure=1`]);
-      assert.deepEqual((await compareState(page)).labels, ['this job, pass 9', 'pass 4']);
+      assert.deepEqual((await compareState(page)).labels, ['this job, pass 9, raw', 'pass 4, raw']);
       await page.click('#zoom-in');
       await saveScreenshot('compare-kept-pass');
 
@@ -1128,6 +1128,7 @@ test("a denoised job: raw or denoised, its kept passes compared, its plot from t
       await page.waitForFunction((o) => document.querySelector('#compare-image').dataset.job === o &&
         document.querySelector('#compare-image').dataset.pass === '2', plain.id);
       assert.deepEqual(requests.filter((r) => r.startsWith(plain.id)), [`${plain.id}?format=png&exposure=1`]);
+      assert.deepEqual((await compareState(page)).labels, ['this job, pass 9, raw', 'shed']);
       assert.equal(await textOf('#job-action-error'), '');
       await page.selectOption('#compare-select', '');
       await page.click('#exposure-reset');
