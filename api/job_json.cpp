@@ -9,6 +9,24 @@ nlohmann::json timestamp(const std::string& iso) { return iso.empty() ? nlohmann
 
 }  // namespace
 
+// Each method's own figures: samples per pixel for the methods that take one camera sample a
+// pixel a pass, the radiosity solve, the photon maps' sizes (SPPM's are the record's photons
+// and radius).
+nlohmann::json figuresOf(const std::string& integrator, const server::JobProgress& p) {
+    nlohmann::json f = nlohmann::json::object();
+    if (integrator != "sppm") f["samples_per_pixel"] = p.pass;
+    if (integrator == "radiosity") {
+        f["patches"] = p.figures.patches;
+        f["solver_iterations"] = p.figures.solverIterations;
+        f["solver_residual"] = p.figures.solverResidual;
+    }
+    if (integrator == "photonmap") {
+        f["global_map_photons"] = p.figures.globalMapPhotons;
+        f["caustic_map_photons"] = p.figures.causticMapPhotons;
+    }
+    return f;
+}
+
 nlohmann::json toJson(const server::JobRecord& job) {
     const server::JobSettings& s = job.settings;
     const server::JobProgress& p = job.progress;
@@ -33,6 +51,7 @@ nlohmann::json toJson(const server::JobRecord& job) {
         {"mean_radius", p.meanRadius},
         {"elapsed_seconds", p.elapsedSeconds},
         {"eta_seconds", p.etaSeconds},
+        {"figures", figuresOf(s.integrator, p)},
         {"error", job.error.empty() ? nlohmann::json() : nlohmann::json(job.error)},
         {"warnings", job.warnings},
         {"kept_passes", job.keptPasses},

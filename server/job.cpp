@@ -32,4 +32,16 @@ bool isFinished(JobStatus status) {
     return status == JobStatus::Completed || status == JobStatus::Failed || status == JobStatus::Cancelled;
 }
 
+void MethodFigures::update(const PassStats& pass) {
+    if (pass.patches > 0) {
+        patches = pass.patches;
+        solverIterations = pass.solverIterations;
+        solverResidual = pass.solverResidual;
+    }
+    if (pass.globalMapPhotons > 0 || pass.causticMapPhotons > 0) {
+        globalMapPhotons = pass.globalMapPhotons;
+        causticMapPhotons = pass.causticMapPhotons;
+    }
+}
+
 }  // namespace photon::server

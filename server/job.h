@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <photon/progress.h>
 
 namespace photon::server {
 
@@ -28,12 +29,23 @@ struct JobSettings {
     bool denoise = false;  // the scene asks for the denoiser: its images have a raw layer
 };
 
+// What a method reports besides passes and photons, as its render last reported it.
+struct MethodFigures {
+    int64_t patches = 0;  // radiosity: patch sides solved for
+    int solverIterations = 0;
+    double solverResidual = 0;
+    int64_t globalMapPhotons = 0, causticMapPhotons = 0;  // photon mapping: photons stored
+    // Takes the figures a pass reports (a pass that built nothing reports none).
+    void update(const PassStats& pass);
+};
+
 struct JobProgress {
     int pass = 0;  // passes finished
     int64_t photonsTraced = 0;
     double meanRadius = 0;
     double elapsedSeconds = 0;
     double etaSeconds = 0;
+    MethodFigures figures;
 };
 
 struct JobRecord {

@@ -236,8 +236,8 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, const
 void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::shared_ptr<const PendingImage> image,
                        const RenderProgress& p, double& elapsedBefore) {
     // The image's files say how far the render had got then.
-    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds};
-    recordPass(id, settings, *image, progress);
+    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds, {}};
+    recordPass(id, settings, *image, progress, p.lastPass);
     ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
     images_.store(id, p.pass, std::move(image), std::move(metadata));
     hub_.publish(table_.setProgress(id, progress), EventType::Progress);
@@ -246,7 +246,7 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::
 }
 
 void JobRunner::recordPass(const std::string& id, const JobSettings& settings, const PendingImage& image,
-                           const JobProgress& progress) {
+                           JobProgress& progress, const PassStats& pass) {
     // Both are for looking back at the render, not the render: one that cannot be written
     // (a full disk) is left out with a warning, and the checkpoint decides whether the job
     // can go on.
@@ -266,6 +266,8 @@ void JobRunner::recordPass(const std::string& id, const JobSettings& settings, c
     std::lock_guard lock(logsMutex_);
     auto [log, first] = logs_.try_emplace(id);
     if (first) log->second.history = ProgressHistory::load(folders_.progressFile(id));
+    log->second.history.figures.update(pass);
+    progress.figures = log->second.history.figures;
     log->second.history.add(progress);
     const auto now = std::chrono::steady_clock::now();
     if (now - log->second.saved >= std::chrono::seconds(1)) {

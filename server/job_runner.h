@@ -74,8 +74,9 @@ private:
         ProgressHistory history;
         std::chrono::steady_clock::time_point saved;
     };
+    // Also gives `progress` the render's figures so far (MethodFigures), `pass` included.
     void recordPass(const std::string& id, const JobSettings& settings, const PendingImage& image,
-                    const JobProgress& progress);
+                    JobProgress& progress, const PassStats& pass);
     void saveHistory(const std::string& id);  // and forgets the render's log
 
     JobTable& table_;

@@ -59,6 +59,7 @@ void JobService::restore() {
             store_.update(job);
         }
         job.keptPasses = folders_.keptPasses(job.id);
+        job.progress.figures = ProgressHistory::load(folders_.progressFile(job.id)).figures;
         table_.insert(job);
         hub_.publish(job, std::nullopt);
         if (job.status == JobStatus::Queued) queue_.push(job.id, job.priority, job.seq);

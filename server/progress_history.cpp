@@ -25,6 +25,8 @@ void ProgressHistory::save(const std::filesystem::path& file) const {
     std::ostringstream text;
     text.precision(17);
     text << "stride " << stride_ << '\n';
+    text << "figures " << figures.patches << ' ' << figures.solverIterations << ' ' << figures.solverResidual << ' '
+         << figures.globalMapPhotons << ' ' << figures.causticMapPhotons << '\n';
     for (const ProgressPoint& p : points_)
         text << p.pass << ' ' << p.elapsedSeconds << ' ' << p.photonsTraced << ' ' << p.meanRadius << '\n';
     writeFileAtomically(file, text.str());
@@ -35,6 +37,11 @@ ProgressHistory ProgressHistory::load(const std::filesystem::path& file) {
     std::ifstream in(file);
     std::string word;
     if (!(in >> word >> h.stride_) || word != "stride" || h.stride_ < 1) return {};
+    MethodFigures& f = h.figures;
+    if (!(in >> word >> f.patches >> f.solverIterations >> f.solverResidual >> f.globalMapPhotons >>
+          f.causticMapPhotons) ||
+        word != "figures")
+        return {};
     ProgressPoint p;
     while (in >> p.pass >> p.elapsedSeconds >> p.photonsTraced >> p.meanRadius) {
         if (h.points_.size() >= kMaxPoints) break;

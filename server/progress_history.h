@@ -22,6 +22,8 @@ public:
     static constexpr size_t kMaxPoints = 256;
 
     void add(const JobProgress& progress);
+    // The method's figures as the render last reported them, kept with the history.
+    MethodFigures figures;
     const std::vector<ProgressPoint>& points() const { return points_; }
 
     // Written through a temporary file; read back as far as it is whole (a file from an

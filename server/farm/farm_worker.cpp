@@ -199,10 +199,11 @@ bool FarmWorker::renderJob(const StreamEntry& entry) {
         redis_.command(args);
     };
     int64_t photons = 0;  // since the last report
+    server::MethodFigures figures;
     int reported = renderer.progress().pass;
     auto report = [&](const RenderProgress& p) {
         std::vector<std::string> fields{"kind", "pass", "image", encodeImageBytes(renderer.rawSnapshot())};
-        appendProgressFields(fields, p, photons);
+        appendProgressFields(fields, p, photons, figures);
         publish(std::move(fields));
         photons = 0;
         reported = p.pass;
@@ -227,6 +228,7 @@ bool FarmWorker::renderJob(const StreamEntry& entry) {
         auto lastReport = std::chrono::steady_clock::now(), lastCheckpoint = lastReport;
         outcome = renderer.run(cancel, [&](const RenderProgress& p) {
             photons += p.lastPass.photons;
+            figures.update(p.lastPass);
             ++counters_.passes;
             passesPerSecond_ = p.elapsedSeconds > 0 ? p.pass / p.elapsedSeconds : 0;
             const auto now = std::chrono::steady_clock::now();

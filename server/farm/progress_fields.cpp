@@ -27,12 +27,17 @@ Number numberOf(const StreamEntry& e, const std::string& name) {
 
 }  // namespace
 
-void appendProgressFields(std::vector<std::string>& args, const RenderProgress& p, int64_t photons) {
+void appendProgressFields(std::vector<std::string>& args, const RenderProgress& p, int64_t photons,
+                          const server::MethodFigures& f) {
     for (std::string s : {std::string("pass"), std::to_string(p.pass), std::string("total_passes"),
                           std::to_string(p.totalPasses), std::string("photons_traced"), std::to_string(p.photonsTraced),
                           std::string("photons"), std::to_string(photons), std::string("mean_radius"),
                           exactly(p.meanRadius), std::string("elapsed"), exactly(p.elapsedSeconds), std::string("eta"),
-                          exactly(p.etaSeconds)})
+                          exactly(p.etaSeconds), std::string("patches"), std::to_string(f.patches),
+                          std::string("solver_iterations"), std::to_string(f.solverIterations),
+                          std::string("solver_residual"), exactly(f.solverResidual), std::string("global_map_photons"),
+                          std::to_string(f.globalMapPhotons), std::string("caustic_map_photons"),
+                          std::to_string(f.causticMapPhotons)})
         args.push_back(std::move(s));
 }
 
@@ -45,6 +50,11 @@ RenderProgress progressOfFields(const StreamEntry& e) {
     p.meanRadius = numberOf<double>(e, "mean_radius");
     p.elapsedSeconds = numberOf<double>(e, "elapsed");
     p.etaSeconds = numberOf<double>(e, "eta");
+    p.lastPass.patches = numberOf<int64_t>(e, "patches");
+    p.lastPass.solverIterations = numberOf<int>(e, "solver_iterations");
+    p.lastPass.solverResidual = numberOf<double>(e, "solver_residual");
+    p.lastPass.globalMapPhotons = numberOf<int64_t>(e, "global_map_photons");
+    p.lastPass.causticMapPhotons = numberOf<int64_t>(e, "caustic_map_photons");
     return p;
 }
 

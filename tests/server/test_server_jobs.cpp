@@ -293,5 +293,40 @@ TEST_F(JobsTest, HealthMetricsAndHomePage) {
     EXPECT_NE(home->body.find("photon render service"), std::string::npos);
 }
 
+// Each method's record carries its own figures, as the engine reports them in process:
+// samples per pixel for those that take one camera sample a pixel a pass, the radiosity
+// solve, the photon maps' sizes; SPPM's are the record's photons and radius.
+TEST_F(JobsTest, EachMethodReportsItsOwnFigures) {
+    startServer();
+    auto firstPass = [](const json& scene) {
+        Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));
+        CancelToken never;
+        EXPECT_TRUE(renderer.renderPass(never));
+        return renderer.progress().lastPass;
+    };
+    for (const char* integrator : {"sppm", "path", "radiosity", "photonmap"}) {
+        json scene = smallScene(2, 3000, 16);
+        scene["render"]["integrator"] = integrator;
+        scene["render"]["photonmap"] = {{"global_photons", 3000}, {"caustic_photons", 2000}};
+        if (std::string(integrator) != "photonmap") scene["render"].erase("photonmap");
+        const json job = waitForStatus(submitOk(scene), "completed");
+        const PassStats stats = firstPass(scene);
+        json expected = json::object();
+        if (std::string(integrator) != "sppm") expected["samples_per_pixel"] = 2;
+        if (std::string(integrator) == "radiosity") {
+            ASSERT_GT(stats.patches, 0);
+            expected["patches"] = stats.patches;
+            expected["solver_iterations"] = stats.solverIterations;
+            expected["solver_residual"] = stats.solverResidual;
+        }
+        if (std::string(integrator) == "photonmap") {
+            ASSERT_GT(stats.globalMapPhotons, 0);
+            expected["global_map_photons"] = stats.globalMapPhotons;
+            expected["caustic_map_photons"] = stats.causticMapPhotons;
+        }
+        EXPECT_EQ(job["figures"], expected) << integrator;
+    }
+}
+
 }  // namespace
 }  // namespace photon::test

@@ -30,6 +30,9 @@ struct PassStats {
     int64_t patches = 0, formFactorRays = 0;
     int solverIterations = 0;
     double solverResidual = 0, solveMs = 0;
+    // Photon mapping: photons stored in the global and caustic maps (every pass that builds
+    // them, a restored render's first included).
+    int64_t globalMapPhotons = 0, causticMapPhotons = 0;
 };
 
 struct RenderProgress {

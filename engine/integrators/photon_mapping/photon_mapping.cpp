@@ -48,6 +48,8 @@ bool PhotonMapIntegrator::buildMaps(const CancelToken& cancel) {
     caustic_.build(std::move(c.photons), c.emitted > 0 ? power / static_cast<float>(c.emitted) : 0.0f);
     if (p.gatherRays > 0 && p.precomputedIrradiance)
         irradiance_ = global_.precomputeIrradiance(g.normals, kIrradianceStride, globalLookup_);
+    stats_.globalMapPhotons = int64_t(global_.size());
+    stats_.causticMapPhotons = int64_t(caustic_.size());
     // Maps rebuilt after a restored checkpoint are not new work.
     if (passesDone() == 0) {
         stats_.photons = g.emitted + c.emitted;

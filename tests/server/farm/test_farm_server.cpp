@@ -94,6 +94,9 @@ TEST_F(FarmServerTest, ManySmallJobsOverThreeWorkersEachRenderOnce) {
                            std::chrono::seconds(60));
         ASSERT_EQ(job["status"], "completed") << job.dump();
         EXPECT_TRUE(bitIdentical(servedExr(id), renderInProcess(scene))) << id;
+        // A whole job's figures come from its worker.
+        if (scene["render"].value("integrator", "") == "photonmap")
+            EXPECT_GT(job["figures"]["global_map_photons"].get<int64_t>(), 0) << job.dump();
     }
     int64_t batches = 0;
     const json workers = json::parse(client().Get("/api/v1/workers", auth())->body);
