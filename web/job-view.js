@@ -1,9 +1,9 @@
 // The job view: latest image (preview-loader.js: whole images only, one load at a time),
 // zoomed and panned in its frame (image-viewport.js), at the exposure chosen
-// (exposure-control.js),
-// progress numbers (those the job's method has), the progress plot (progress-plot.js, with
-// the passes before a reload read back from the job's events), Cancel, Delete and
-// downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
+// (exposure-control.js), raw or denoised, compared with a kept pass or another job
+// (compare-view.js); progress numbers (those the job's method has), the progress plot
+// (progress-plot.js, with the passes before a reload from the server's progress history or
+// its kept events), Cancel, Delete and downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
 // cookie the token was traded for: EventSource cannot send headers); when the stream fails
 // for good, it polls GET /jobs/{id} every second.
 
