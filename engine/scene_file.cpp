@@ -42,4 +42,30 @@ int64_t SceneFile::triangleCount() const {
 
 const std::vector<std::string>& SceneFile::files() const { return description_->files; }
 
+std::vector<std::string> SceneFile::methodWarnings() const {
+    const SceneDescription& d = *description_;
+    if (d.render.integrator != IntegratorKind::Radiosity) return {};
+    std::vector<bool> used(d.materials.size(), false);
+    auto mark = [&](const std::vector<ShapeDescription>& shapes) {
+        for (const ShapeDescription& shape : shapes)
+            if (shape.material < used.size()) used[shape.material] = true;
+    };
+    mark(d.shapes);
+    for (const ObjectDescription& object : d.objects) mark(object.shapes);
+    std::string names;
+    int count = 0;
+    for (size_t i = 0; i < d.materials.size(); ++i)
+        if (used[i] && !d.materials[i]->hasDiffuse()) {
+            names += (names.empty() ? "\"" : ", \"") +
+                     (i < d.materialNames.size() ? d.materialNames[i] : "material " + std::to_string(i)) + "\"";
+            ++count;
+        }
+    if (count == 0) return {};
+    // docs/radiosity.md: patches exist only where a surface reflects diffusely.
+    return {"radiosity renders diffuse interreflection only: the material" + std::string(count > 1 ? "s " : " ") +
+            names + (count > 1 ? " have" : " has") +
+            " no diffuse part, so the light they reflect or refract (caustics, mirror images) is missing and their "
+            "shapes cast full shadows; the sppm, path or photonmap integrator renders it"};
+}
+
 }  // namespace photon

@@ -58,7 +58,9 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     s.height = scene->height();
     s.camera = options.camera.value_or("");
     s.denoise = render.denoise.enabled;
-    return {s, scene->files(), imported, scene->warnings()};
+    std::vector<std::string> warnings = scene->warnings();
+    for (std::string& w : scene->methodWarnings()) warnings.push_back(std::move(w));
+    return {s, scene->files(), imported, std::move(warnings)};
 }
 
 SceneFile readJobScene(const std::filesystem::path& sceneFile, const JobSettings& settings) {

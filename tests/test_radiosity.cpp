@@ -210,6 +210,21 @@ TEST(Radiosity, CancelledFirstPassLeavesNoImageAndStatsReportTheSolve) {
     EXPECT_LT(s.solverResidual, d.render.radiosity.tolerance);
 }
 
+// A scene with materials that have no diffuse part says, when rendered by radiosity, what
+// that leaves out; other methods render it all.
+TEST(Radiosity, SaysWhatItLeavesOutOfAGlassScene) {
+    const std::string glass = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-glass.json";
+    SceneFile radiosity = SceneFile::read(glass, {{"render.integrator", "radiosity"}});
+    EXPECT_EQ(radiosity.methodWarnings(),
+              std::vector<std::string>{
+                  "radiosity renders diffuse interreflection only: the materials \"glass\", \"mirror\" have no "
+                  "diffuse part, so the light they reflect or refract (caustics, mirror images) is missing and their "
+                  "shapes cast full shadows; the sppm, path or photonmap integrator renders it"});
+    EXPECT_TRUE(SceneFile::read(glass).methodWarnings().empty());
+    const std::string box = std::string(PHOTON_SOURCE_DIR) + "/scenes/cornell-box.json";
+    EXPECT_TRUE(SceneFile::read(box, {{"render.integrator", "radiosity"}}).methodWarnings().empty());
+}
+
 TEST(Radiosity, TooManyPatchesGrowThePatchSizeOrAreRefused) {
     SceneDescription d = test::exampleScene("cornell-box", 16, 1, 0, 3);
     d.render.radiosity.maxPatches = 2000;

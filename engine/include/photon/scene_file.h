@@ -63,6 +63,10 @@ public:
     // What an import approximated or left out, each naming where ("scene.pbrt:12: ...");
     // empty for photon's JSON.
     const std::vector<std::string>& warnings() const { return warnings_; }
+    // What the render method (render.integrator) leaves out of this scene, in plain words:
+    // radiosity, diffuse interreflection only, names the materials without a diffuse part
+    // (their caustics and reflections are missing). Empty when the method renders it all.
+    std::vector<std::string> methodWarnings() const;
 
     // The description itself, for the engine.
     SceneDescription& description() { return *description_; }
