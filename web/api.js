@@ -188,8 +188,12 @@ export function normalizeJob(raw) {
     photonsPerPass: num(s.photons_per_pass, r.photons_per_pass),
     seed: num(s.seed, r.seed),
     integrator: first(s.integrator, r.integrator, null),
-    // Not in the record yet (GET /jobs/{id}/scene has it): null for "not said".
+    // Whether the scene asks for the denoiser, so its images have a raw layer; null from a
+    // server whose record does not say (GET /jobs/{id}/scene has it).
     denoise: typeof s.denoise === 'boolean' ? s.denoise : null,
+    // The earlier passes the server keeps images of (1, 2, 4, 8, ... and the latest),
+    // ascending; null from a server that keeps none.
+    keptPasses: Array.isArray(r.kept_passes) ? r.kept_passes.filter((p) => Number.isInteger(p) && p > 0) : null,
     width: num(resolution[0], r.width),
     height: num(resolution[1], r.height),
     photonsTraced,
@@ -274,19 +278,23 @@ export async function deleteJob(id) {
   await request('DELETE', `/jobs/${encodeURIComponent(id)}`);
 }
 
-// The latest image; `pass` only makes the URL differ per pass so the browser refetches (as
-// ?after=N: the server ignores it, where ?pass=N would ask for a kept earlier pass);
-// `size` ('64x64') asks for a thumbnail that fits in that box.
-export function imageUrl(id, format = 'png', pass, size) {
-  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, after: pass, size })}`;
+// The URL of the job's latest image (always the same: the server answers no-cache with an
+// ETag, so a fetch revalidates and gets the newest pass). Options: `pass`, a kept earlier
+// pass (the record's keptPasses; the server has no other passes); `size` ('64x64'), a
+// thumbnail that fits in that box; `layer: 'raw'`, the image before the denoiser (jobs that
+// denoise only); `exposure` (stops, PNG only), tone-mapped at that exposure instead of the
+// render's own (null: the render's).
+export function imageUrl(id, format = 'png', { pass = null, size = null, layer = null, exposure = null } = {}) {
+  return `${BASE}/jobs/${encodeURIComponent(id)}/image${query({ format, pass, size, layer, exposure })}`;
 }
 
 // The image as a Blob, with the bearer token when there is one (an <img> or <a> cannot
 // send headers). Resolves once the whole body has arrived, to { blob, pass }: pass is the
-// pass the server actually sent (X-Photon-Pass), which may be older than the one asked
-// for (it encodes a running job's image at most every 250 ms); null if not named.
-export async function fetchImage(id, format = 'png', pass) {
-  const res = await request('GET', `/jobs/${encodeURIComponent(id)}/image${query({ format, after: pass })}`);
+// pass the server sent (X-Photon-Pass; the latest encoded one, which may be older than the
+// job's record says: it encodes a running job's image at most every 250 ms); null if not
+// named. Options as for imageUrl().
+export async function fetchImage(id, format = 'png', options = {}) {
+  const res = await request('GET', imageUrl(id, format, options).slice(BASE.length));
   const blob = await res.blob();
   const sent = Number.parseInt(res.headers.get('X-Photon-Pass') ?? '', 10);
   return { blob, pass: Number.isFinite(sent) ? sent : null };
@@ -299,6 +307,26 @@ export function serviceEventsUrl() {
 
 export function eventsUrl(id) {
   return `${BASE}/jobs/${encodeURIComponent(id)}/events`;
+}
+
+// The job's progress history as the server keeps it (GET /jobs/{id}/progress: at most 256
+// points, thinned evenly, kept across restarts), as records with the fields the plot reads
+// (passesDone, elapsedSeconds, photonsTraced, meanRadius). null when it cannot be had: a
+// server without the route answers 404, and progressHistory() below replays the events.
+export async function progressPoints(id) {
+  let body;
+  try {
+    body = await requestJson('GET', `/jobs/${encodeURIComponent(id)}/progress`);
+  } catch {
+    return null;
+  }
+  if (!Array.isArray(body?.points)) return null;
+  return body.points.map((p) => ({
+    passesDone: num(p.pass) ?? 0,
+    elapsedSeconds: num(p.elapsed_seconds),
+    photonsTraced: num(p.photons_traced),
+    meanRadius: num(p.mean_radius),
+  }));
 }
 
 // The job's progress so far, for a plot that outlives a reload: the job's event stream read

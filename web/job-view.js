@@ -1,7 +1,9 @@
 // The job view: latest image (preview-loader.js: whole images only, one load at a time),
-// progress numbers (those the job's method has), the progress plot (progress-plot.js, with
-// the passes before a reload read back from the job's events), Cancel, Delete and
-// downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
+// zoomed and panned in its frame (image-viewport.js), at the exposure chosen
+// (exposure-control.js), raw or denoised, compared with a kept pass or another job
+// (compare-view.js); progress numbers (those the job's method has), the progress plot
+// (progress-plot.js, with the passes before a reload from the server's progress history or
+// its kept events), Cancel, Delete and downloads. Follows the job with Server-Sent Events (with a token, authorised by the session
 // cookie the token was traded for: EventSource cannot send headers); when the stream fails
 // for good, it polls GET /jobs/{id} every second.
 
@@ -18,6 +20,7 @@ import {
   isFinished,
   normalizeJob,
   progressHistory,
+  progressPoints,
   sessionLost,
 } from './api.js';
 import {
@@ -30,6 +33,9 @@ import {
   methodName,
   progressFraction,
 } from './format.js';
+import { createCompareView } from './compare-view.js';
+import { createExposureControl } from './exposure-control.js';
+import { createImageViewport } from './image-viewport.js';
 import { createPreviewLoader } from './preview-loader.js';
 import { formatTick, ProgressPlot, seriesFor } from './progress-plot.js';
 
@@ -44,6 +50,7 @@ export function createJobView({ onChanged, onDeleted }) {
     details: $('job-details'),
     id: $('job-id'),
     image: $('job-image'),
+    frame: $('image-frame'),
     placeholder: $('job-image-placeholder'),
     status: $('job-status'),
     pass: $('job-pass'),
@@ -76,6 +83,65 @@ export function createJobView({ onChanged, onDeleted }) {
   const plot = new ProgressPlot($('progress-plot'));
   let session = null; // the job on show: { id, job, source, timer, preview }
 
+  const viewport = createImageViewport({ frame: el.frame, images: [el.image, $('compare-image')], zoomLabel: $('zoom-level') });
+  $('zoom-in').addEventListener('click', () => viewport.zoomIn());
+  $('zoom-out').addEventListener('click', () => viewport.zoomOut());
+  $('zoom-fit').addEventListener('click', () => viewport.fit());
+  $('zoom-one').addEventListener('click', () => viewport.oneToOne());
+  // A new pass has the size of the last one, so the zoom stays; another job's may differ.
+  el.image.addEventListener('load', () => viewport.setImageSize(el.image.naturalWidth, el.image.naturalHeight));
+
+  // The image at another exposure: the pass on show is loaded again, once, with it.
+  const exposure = createExposureControl({
+    slider: $('exposure'),
+    label: $('exposure-value'),
+    reset: $('exposure-reset'),
+    onChange: () => settingsChanged(),
+  });
+
+  // Another image over the job's, split by a divider: an earlier pass, another job.
+  const compare = createCompareView({
+    frame: el.frame,
+    select: $('compare-select'),
+    layer: $('compare-layer'),
+    image: $('compare-image'),
+    divider: $('compare-divider'),
+    leftLabel: $('compare-left-label'),
+    rightLabel: $('compare-right-label'),
+    settings: () => imageSettings(),
+    onError: (error) => {
+      if (session) el.actionError.textContent = `The image to compare with could not be loaded: ${error.message}`;
+    },
+  });
+
+  // A job that denoises has a raw layer too: the image before the denoiser.
+  const layerChoice = $('layer-choice');
+  const rawLayer = $('layer-raw');
+  for (const radio of layerChoice.querySelectorAll('input')) {
+    radio.addEventListener('change', () => settingsChanged());
+  }
+
+  function showLayerChoice(job) {
+    layerChoice.hidden = job.denoise !== true;
+    if (layerChoice.hidden) $('layer-denoised').checked = true;
+  }
+
+  // Another exposure or layer: the images on show are loaded again with it (the frame says it
+  // is busy until the job's is in), and the PNG download follows.
+  function settingsChanged() {
+    if (!session) return;
+    if (session.preview.shownPass() > 0) el.frame.setAttribute('aria-busy', 'true');
+    session.preview.reload();
+    compare.reload();
+    if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
+  }
+
+  // What the job's image is asked for with: the layer (raw, or null for the denoised one)
+  // and the exposure chosen (null: the render's).
+  function imageSettings() {
+    return { layer: !layerChoice.hidden && rawLayer.checked ? 'raw' : null, exposure: exposure.value() };
+  }
+
   function showMessage(text) {
     el.details.hidden = true;
     el.empty.hidden = false;
@@ -97,7 +163,8 @@ export function createJobView({ onChanged, onDeleted }) {
 
   function setDownload(link, id, format, ready) {
     if (ready) {
-      link.href = imageUrl(id, format);
+      // The PNG as shown: at the exposure chosen.
+      link.href = imageUrl(id, format, format === 'png' ? imageSettings() : {});
       link.download = `photon-${id}.${format}`;
       link.removeAttribute('aria-disabled');
     } else {
@@ -110,15 +177,20 @@ export function createJobView({ onChanged, onDeleted }) {
   function previewFor(s) {
     return createPreviewLoader({
       img: el.image,
-      load: (pass) => fetchImage(s.id, 'png', pass),
+      // The latest image: the loader asks again while the server's is older than `pass`.
+      load: () => fetchImage(s.id, 'png', imageSettings()),
       onShown: (pass) => {
         if (session !== s) return;
         el.image.alt = `Image of job ${s.id} after pass ${pass}`;
         el.image.hidden = false;
+        el.frame.hidden = false;
+        el.frame.removeAttribute('aria-busy');
         el.placeholder.hidden = true;
       },
       onError: (error) => {
-        if (session === s) el.actionError.textContent = `The image could not be loaded: ${error.message}`;
+        if (session !== s) return;
+        el.frame.removeAttribute('aria-busy');
+        el.actionError.textContent = `The image could not be loaded: ${error.message}`;
       },
     });
   }
@@ -136,6 +208,7 @@ export function createJobView({ onChanged, onDeleted }) {
     el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
     el.seed.textContent = job.seed ?? '—';
     el.integrator.textContent = methodName(job.integrator);
+    if (job.denoise !== null) el.denoise.textContent = job.denoise ? 'on' : 'off';
     el.passRate.textContent = job.elapsedSeconds > 0 && job.passesDone > 0
       ? `${formatTick(job.passesDone / job.elapsedSeconds)}/s` : '—';
     // Only the figures the method has: the path tracer and radiosity trace no photons (the
@@ -166,6 +239,9 @@ export function createJobView({ onChanged, onDeleted }) {
     if (previous && job.passesDone < previous.passesDone) return;
     s.job = job;
     render(job);
+    showLayerChoice(job);
+    if (previous) compare.update(job);
+    else compare.open(job);
     if (job.passesDone > 0) s.preview.want(job.passesDone);
     plot.add(job);
     if (isFinished(job)) {
@@ -227,16 +303,24 @@ export function createJobView({ onChanged, onDeleted }) {
     });
   }
 
-  // Whether the job denoises: the record does not say; its scene's render.denoise does.
-  async function showDenoise(s) {
+  // Whether the job denoises and at which exposure it renders: the record does not say;
+  // its scene's render.denoise and render.exposure (default 0) do.
+  async function showSceneSettings(s) {
     let text = '—';
+    let stops = null;
     try {
       const scene = await getScene(s.id);
-      if (scene.type.startsWith('application/json')) text = JSON.parse(scene.text)?.render?.denoise === true ? 'on' : 'off';
+      if (scene.type.startsWith('application/json')) {
+        const render = JSON.parse(scene.text)?.render ?? {};
+        text = render.denoise === true ? 'on' : 'off';
+        stops = typeof render.exposure === 'number' ? render.exposure : 0;
+      }
     } catch {
       // An imported scene, or the scene could not be read: not known.
     }
-    if (session === s) el.denoise.textContent = text;
+    if (session !== s) return;
+    if (!(s.job && s.job.denoise !== null)) el.denoise.textContent = text; // the record, when it says, wins
+    exposure.setRenderExposure(stops);
   }
 
   function close() {
@@ -255,7 +339,14 @@ export function createJobView({ onChanged, onDeleted }) {
     el.details.hidden = false;
     el.id.textContent = id;
     el.image.hidden = true;
+    el.frame.hidden = true;
+    el.frame.removeAttribute('aria-busy');
     el.image.removeAttribute('src');
+    exposure.clear();
+    viewport.clear();
+    layerChoice.hidden = true;
+    $('layer-denoised').checked = true;
+    compare.open(null);
     delete el.image.dataset.pass;
     el.placeholder.hidden = false;
     el.actionError.textContent = '';
@@ -267,15 +358,18 @@ export function createJobView({ onChanged, onDeleted }) {
     plot.clear();
     follow(s); // first, so no pass is missed while the GET is on its way
     el.denoise.textContent = '…';
-    showDenoise(s);
+    showSceneSettings(s);
     getJob(id)
       .then((job) => {
         apply(s, job);
-        // The passes before this moment (a reload, a job opened late), for the plot.
+        // The passes before this moment (a reload, a job opened late), for the plot: the
+        // server's kept history, or from a server without it the events it still keeps.
         if (job.passesDone > 0) {
-          progressHistory(id, { untilPass: job.passesDone }).then((records) => {
-            if (session === s) plot.addAll(records);
-          });
+          progressPoints(id)
+            .then((points) => points ?? progressHistory(id, { untilPass: job.passesDone }))
+            .then((records) => {
+              if (session === s) plot.addAll(records);
+            });
         }
       })
       .catch((error) => {
@@ -331,7 +425,7 @@ export function createJobView({ onChanged, onDeleted }) {
       if (!session || !hasToken() || !link.href) return;
       event.preventDefault();
       try {
-        const url = URL.createObjectURL((await fetchImage(session.id, format)).blob);
+        const url = URL.createObjectURL((await fetchImage(session.id, format, format === 'png' ? imageSettings() : {})).blob);
         const save = document.createElement('a');
         save.href = url;
         save.download = link.download;

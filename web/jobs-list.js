@@ -9,7 +9,7 @@
 // once (after a submit, cancel or delete, or a change of filter). Rows are updated in
 // place, so focus and clicks survive.
 
-import { ensureSession, hasToken, imageUrl, isFinished, listJobs, normalizeJob, serviceEventsUrl, sessionLost } from './api.js';
+import { ensureSession, fetchImage, hasToken, isFinished, listJobs, normalizeJob, serviceEventsUrl, sessionLost } from './api.js';
 import { formatPasses, formatTime, methodName, progressFraction } from './format.js';
 
 const POLL_MS = 2000;
@@ -83,7 +83,7 @@ export function createJobsList({ list, status, filters, onSelect, onConnection }
     button.append(thumb, title, badge, detail, bar);
     button.addEventListener('click', () => onSelect(id));
     item.append(button);
-    return { item, button, parts: { thumb, title, badge, detail, bar }, thumbPass: 0, thumbAt: 0, thumbTimer: null };
+    return { item, button, parts: { thumb, title, badge, detail, bar }, thumbPass: 0, thumbAt: 0, thumbTimer: null, thumbUrl: null };
   }
 
   // The thumbnail follows the passes, but a running job's at most every THUMBNAIL_MS.
@@ -98,9 +98,26 @@ export function createJobsList({ list, status, filters, onSelect, onConnection }
     }
     row.thumbPass = job.passesDone;
     row.thumbAt = Date.now();
-    thumb.src = imageUrl(job.id, 'png', job.passesDone, THUMBNAIL_BOX);
-    thumb.alt = `Job ${job.name || job.id} after pass ${job.passesDone}`;
-    thumb.hidden = false;
+    loadThumbnail(row, job);
+  }
+
+  // Fetched (the latest image's URL stays the same from pass to pass, and an <img> would not
+  // load it again), with the token when there is one, and shown once whole.
+  async function loadThumbnail(row, job) {
+    const { thumb } = row.parts;
+    try {
+      const { blob, pass } = await fetchImage(job.id, 'png', { size: THUMBNAIL_BOX });
+      if (rows.get(job.id) !== row) return; // the row was removed meanwhile
+      const url = URL.createObjectURL(blob);
+      if (row.thumbUrl) URL.revokeObjectURL(row.thumbUrl);
+      row.thumbUrl = url;
+      thumb.dataset.pass = String(pass ?? job.passesDone);
+      thumb.src = url;
+      thumb.alt = `Job ${job.name || job.id} after pass ${pass ?? job.passesDone}`;
+      thumb.hidden = false;
+    } catch {
+      // Left out, not shown broken (no token, the job deleted meanwhile); the next pass retries.
+    }
   }
 
   function updateRow(row, job) {
@@ -139,6 +156,7 @@ export function createJobsList({ list, status, filters, onSelect, onConnection }
     for (const [id, row] of rows) {
       if (!seen.has(id)) {
         clearTimeout(row.thumbTimer);
+        if (row.thumbUrl) URL.revokeObjectURL(row.thumbUrl);
         row.item.remove();
         rows.delete(id);
       }

@@ -9,7 +9,11 @@
 //                    its pass may be older than asked while the server catches up.
 //   onShown(pass)    after the <img> shows that pass.
 //   onError(error)   a load failed; the next want() tries again.
-// Returns { want(pass), stop(), shownPass() }.
+// Returns { want(pass), reload(), stop(), shownPass() }.
+//
+// reload(): the image's settings changed (exposure, layer: load() reads them when called), so
+// the pass on show is loaded once more, the same way (off-screen, then swapped). An image
+// that was already on its way with the old settings is not shown.
 
 // The server encodes a running job's image at most every 250 ms and answers with the last
 // one in between: wait that long before asking again for a pass it did not have yet.
@@ -22,6 +26,8 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 export function createPreviewLoader({ img, load, onShown = () => {}, onError = () => {} }) {
   let wanted = 0; // the newest pass asked for
   let shown = 0; // the pass on show
+  let settings = 0; // counts reload()s: the settings load() uses now
+  let shownSettings = 0; // the settings of the image on show
   let shownUrl = null; // its blob: URL, revoked when replaced
   let running = false;
   let stopped = false;
@@ -40,29 +46,39 @@ export function createPreviewLoader({ img, load, onShown = () => {}, onError = (
     }
   }
 
-  function swap(url, pass) {
+  function swap(url, pass, made) {
     if (shownUrl) URL.revokeObjectURL(shownUrl);
     shownUrl = url;
     shown = pass;
+    shownSettings = made;
     // The pass first, so whoever watches src sees which pass it is.
     img.dataset.pass = String(pass);
     img.src = url;
     onShown(pass);
   }
 
+  // A newer pass to show, or the one on show with settings since changed.
+  const behind = () => wanted > shown || (wanted > 0 && shownSettings < settings);
+
   async function run() {
     running = true;
     let lagging = 0;
     try {
-      while (!stopped && wanted > shown && lagging < MAX_LAGGING_TRIES) {
+      while (!stopped && behind() && lagging < MAX_LAGGING_TRIES) {
         const asked = wanted;
+        const made = settings;
         const answer = await load(asked);
         if (stopped) return;
+        if (made !== settings) continue; // settings changed on the way: ask again with them
         const pass = answer.pass ?? asked;
-        if (pass > shown) {
+        if (pass > shown || (pass === shown && shownSettings < made)) {
           const url = await decode(answer.blob);
-          if (stopped) return URL.revokeObjectURL(url);
-          swap(url, pass);
+          if (stopped || made !== settings) {
+            URL.revokeObjectURL(url);
+            if (stopped) return;
+            continue;
+          }
+          swap(url, pass, made);
         }
         if (pass < asked) {
           lagging++;
@@ -83,7 +99,12 @@ export function createPreviewLoader({ img, load, onShown = () => {}, onError = (
     want(pass) {
       if (stopped) return;
       if (pass > wanted) wanted = pass;
-      if (!running && wanted > shown) run();
+      if (!running && behind()) run();
+    },
+    reload() {
+      if (stopped) return;
+      settings++;
+      if (!running && behind()) run();
     },
     stop() {
       stopped = true;
