@@ -15,7 +15,7 @@ struct KindInfo {
 KindInfo kindInfo(server::ErrorKind kind) {
     switch (kind) {
         case server::ErrorKind::BadRequest: return {"bad-request", "Bad request"};
-        case server::ErrorKind::NotFound: return {"not-found", "No such job"};
+        case server::ErrorKind::NotFound: return {"not-found", "Not found"};
         case server::ErrorKind::NotReady: return {"not-ready", "Not ready yet"};
         case server::ErrorKind::Conflict: return {"conflict", "Not possible in the job's state"};
         case server::ErrorKind::PayloadTooLarge: return {"payload-too-large", "Upload too large"};

@@ -3,6 +3,7 @@
 // GET /api/v1/jobs/{id}/stream: multipart/x-mixed-replace, one PNG frame per finished pass
 // (a browser <img> shows it as a live picture), ending when the job finishes.
 #include <httplib.h>
+#include <algorithm>
 #include <memory>
 #include <sstream>
 #include "api/errors.h"
@@ -77,7 +78,8 @@ struct FrameStream {
 void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response& res) {
     std::string id = pathId(req);
     ImageQuery query = parseImageQuery(req);
-    const server::JobSettings settings = ctx.service.get(id).settings;
+    const server::JobRecord job = ctx.service.get(id);
+    const server::JobSettings& settings = job.settings;
     if (query.raw && !settings.denoise)
         throwBadRequest("query parameter layer: job " + id + " is not denoised, so its image is the raw one");
     const server::ImageVariant variant =
@@ -86,8 +88,13 @@ void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     // a kept earlier pass is an EXR on disk.
     server::ImageFormat source = variant.isDefault() ? query.format : server::ImageFormat::Exr;
     std::optional<server::EncodedImage> image;
-    if (query.pass) {
-        image = ctx.service.keptPass(id, *query.pass);
+    const bool kept = query.pass && std::binary_search(job.keptPasses.begin(), job.keptPasses.end(), *query.pass);
+    if (query.pass && !kept && *query.pass == job.progress.pass) {
+        // The latest pass asked for by its number: the latest image, if it is still that pass.
+        image = ctx.service.image(id, source);
+        if (image && image->pass != *query.pass) image = ctx.service.keptPass(id, *query.pass);  // moved on
+    } else if (query.pass) {
+        image = ctx.service.keptPass(id, *query.pass);  // NotFound, naming the kept ones
         source = server::ImageFormat::Exr;
     } else {
         image = ctx.service.image(id, source);

@@ -301,8 +301,11 @@ TEST_F(ImageOptionsTest, EarlierPassesAreKeptAtPowersOfTwo) {
     EXPECT_EQ(png->get_header_value("ETag"), "\"" + id + "-2-png-8x8\"");
     EXPECT_EQ(decodeImage(png->body, ".png").width, 8);
 
+    // The latest pass by its number is the latest image.
+    EXPECT_EQ(body(id, "?pass=9&format=exr"), body(id, "?format=exr"));
     httplib::Result missing = getImage(id, "?pass=3");
     EXPECT_EQ(missing->status, 404);
+    EXPECT_EQ(problemOf(missing)["title"], "Not found");
     EXPECT_EQ(problemOf(missing)["detail"], "job " + id +
                                                 " kept no image of pass 3 (it keeps the first pass at or after each "
                                                 "power of two; kept: 1, 2, 4, 8)");
