@@ -203,6 +203,15 @@ export function normalizeJob(raw) {
     etaSeconds: num(r.eta_seconds, r.eta),
     error: first(r.error, null),
     warnings: Array.isArray(r.warnings) ? r.warnings.map(String) : [],
+    // The method's own figures (null where the method has none).
+    figures: {
+      samplesPerPixel: num(r.figures?.samples_per_pixel),
+      patches: num(r.figures?.patches),
+      solverIterations: num(r.figures?.solver_iterations),
+      solverResidual: num(r.figures?.solver_residual),
+      globalMapPhotons: num(r.figures?.global_map_photons),
+      causticMapPhotons: num(r.figures?.caustic_map_photons),
+    },
   };
 }
 

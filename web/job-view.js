@@ -69,6 +69,14 @@ export function createJobView({ onChanged, onDeleted }) {
     statRadius: $('stat-radius'),
     statPhotons: $('stat-photons'),
     statPhotonsPerPass: $('stat-photons-per-pass'),
+    statSamples: $('stat-samples'),
+    samples: $('job-samples'),
+    statPatches: $('stat-patches'),
+    patches: $('job-patches'),
+    statResidual: $('stat-residual'),
+    residual: $('job-residual'),
+    statMaps: $('stat-maps'),
+    maps: $('job-maps'),
     created: $('job-created'),
     progress: $('job-progress'),
     error: $('job-error'),
@@ -218,6 +226,17 @@ export function createJobView({ onChanged, onDeleted }) {
     el.statPhotons.hidden = !photons;
     el.statRadius.hidden = job.integrator !== 'sppm';
     el.statPhotonsPerPass.hidden = job.integrator !== 'sppm';
+    // The method's own figures, as the record gives them (absent: hidden).
+    const f = job.figures;
+    el.statSamples.hidden = f.samplesPerPixel === null;
+    el.samples.textContent = f.samplesPerPixel ?? '—';
+    el.statPatches.hidden = f.patches === null;
+    el.patches.textContent = f.patches ? formatCount(f.patches) : '—';
+    el.statResidual.hidden = f.solverResidual === null;
+    el.residual.textContent = f.patches ? `${f.solverResidual.toExponential(1)} after ${f.solverIterations} sweeps` : '—';
+    el.statMaps.hidden = f.globalMapPhotons === null;
+    el.maps.textContent = f.globalMapPhotons || f.causticMapPhotons
+      ? `${formatCount(f.globalMapPhotons)} global, ${formatCount(f.causticMapPhotons)} caustic` : '—';
     plot.setSeries(seriesFor(job.integrator));
     el.created.textContent = formatTime(job.createdAt);
     el.progress.value = progressFraction(job.passesDone, job.passes);

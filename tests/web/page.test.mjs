@@ -648,8 +648,9 @@ test("the job view shows only the figures of the job's method", async () => {
   const expected = {
     kitchen: { method: 'SPPM', figures: [...common, 'Photons/s', 'Mean radius', 'Photons traced', 'Photons per pass', ...times],
       series: 'passes per second, mean radius, photons traced' },
-    hall: { method: 'path tracing', figures: [...common, ...times], series: 'passes per second' },
-    attic: { method: 'radiosity', figures: [...common, ...times], series: 'passes per second' },
+    hall: { method: 'path tracing', figures: [...common, 'Samples/pixel', ...times], series: 'passes per second' },
+    attic: { method: 'radiosity', figures: [...common, 'Samples/pixel', 'Patches', 'Solver residual', ...times],
+      series: 'passes per second' },
   };
   assert.deepEqual(Object.keys(namedJobs), Object.keys(expected), 'the job list test submitted the jobs');
   for (const [name, want] of Object.entries(expected)) {
@@ -664,6 +665,14 @@ test("the job view shows only the figures of the job's method", async () => {
     assert.equal(await textOf('#job-integrator'), want.method);
     assert.equal(await page.getAttribute('#progress-plot', 'data-series'), want.series);
     assert.match(await textOf('#job-pass-rate'), /^[\d.]+\/s$/);
+    // The method's own figures, as the record gives them.
+    const record = await (await fetch(`${server.baseUrl}api/v1/jobs/${id}`)).json();
+    if (name !== 'kitchen') assert.equal(await textOf('#job-samples'), String(record.figures.samples_per_pixel));
+    if (name === 'attic') {
+      assert.ok(record.figures.patches > 0);
+      assert.equal(await textOf('#job-residual'),
+        `${record.figures.solver_residual.toExponential(1)} after ${record.figures.solver_iterations} sweeps`);
+    }
     if (name === 'hall') await saveScreenshot('path-tracing-job');
   }
   // Axis labels step in as many decimals as they need: none repeat.
