@@ -6,7 +6,7 @@
 // each against an SPPM reference rendered --reference-seconds (default 10x as long).
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
-//                [--compare-schedules SECONDS] [--compare-reference FILE [--seconds S,S...]]
+//                [--compare-schedules SECONDS] [--compare-reference FILE [--seconds S,S...] [-D KEY=VALUE]...]
 //                [--instancing]
 // With --instancing it instead times loading and building 10,000 instances of a 10k-triangle
 // mesh, and their memory, against the mesh placed once.
@@ -48,6 +48,7 @@ struct Options {
     double compareSchedulesSeconds = 0;  // > 0: compare SPPM's radius schedules instead
     std::string compareReference;        // set: SPPM against this reference image instead
     std::vector<double> referenceRuns{10, 30};
+    std::vector<std::string> settings;  // KEY=VALUE for --compare-reference
     bool instancing = false;      // time instanced loading instead
 };
 
@@ -73,6 +74,9 @@ void declareOptions(CLI::App& app, Options& o) {
                    "render the scene with SPPM for --seconds each (two seeds) and compare with this reference image "
                    "instead: relative noise, bias, RMSE")
         ->check(CLI::ExistingFile);
+    app.add_option("-D", o.settings, "a setting of the scene for --compare-reference, KEY=VALUE (e.g. "
+                                     "render.max_depth=64 to match the reference's); repeatable")
+        ->allow_extra_args(false);
     app.add_option("--seconds", o.referenceRuns, "the render times for --compare-reference")
         ->delimiter(',')
         ->capture_default_str();
@@ -201,7 +205,14 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (!o.compareReference.empty()) {
-            std::cout << photon::bench::compareWithReference(o.scene, o.compareReference, o.referenceRuns).dump(2)
+            std::vector<photon::SettingOverride> overrides;
+            for (const std::string& kv : o.settings) {
+                const size_t eq = kv.find('=');
+                if (eq == std::string::npos) throw std::invalid_argument("-D " + kv + ": expected KEY=VALUE");
+                overrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+            }
+            std::cout << photon::bench::compareWithReference(o.scene, o.compareReference, o.referenceRuns, overrides)
+                             .dump(2)
                       << std::endl;
             return 0;
         }

@@ -7,8 +7,8 @@
 
 namespace photon::bench {
 
-SceneDescription describeScene(const std::string& sceneFile) {
-    SceneFile file = SceneFile::read(sceneFile);
+SceneDescription describeScene(const std::string& sceneFile, const std::vector<SettingOverride>& overrides) {
+    SceneFile file = SceneFile::read(sceneFile, overrides);
     return std::move(file.description());
 }
 

@@ -2,6 +2,8 @@
 // photon-bench's comparisons (--compare, --compare-schedules, --compare-reference) share.
 #pragma once
 #include <string>
+#include <vector>
+#include <photon/scene_file.h>
 #include <photon/image.h>
 #include "description/scene_description.h"
 
@@ -13,8 +15,9 @@ struct TimedRender {
     double seconds = 0;
 };
 
-// The scene file in any format photon reads, as a description to adjust.
-SceneDescription describeScene(const std::string& sceneFile);
+// The scene file in any format photon reads, with `overrides` (KEY=VALUE settings, as
+// photon-render's -D), as a description to adjust.
+SceneDescription describeScene(const std::string& sceneFile, const std::vector<SettingOverride>& overrides = {});
 // Renders `d` until `seconds` have passed (the pass that crosses it is finished), without
 // the denoiser: the estimators themselves are compared.
 TimedRender renderFor(SceneDescription d, double seconds);
