@@ -11,7 +11,7 @@ namespace photon::server {
 // True if no pass in `kept` lies in the same power-of-two range [2^k, 2^(k+1)) as `pass`.
 inline bool isKeptPass(int pass, const std::vector<int>& kept) {
     if (pass < 1) return false;
-    const int range = std::bit_width(unsigned(pass));
+    const auto range = std::bit_width(unsigned(pass));
     return std::none_of(kept.begin(), kept.end(), [&](int k) { return k >= 1 && std::bit_width(unsigned(k)) == range; });
 }
 
