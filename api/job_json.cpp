@@ -51,6 +51,8 @@ nlohmann::json toJson(const server::JobRecord& job) {
         {"mean_radius", p.meanRadius},
         {"elapsed_seconds", p.elapsedSeconds},
         {"eta_seconds", p.etaSeconds},
+        {"relative_error", p.relativeError ? nlohmann::json(*p.relativeError) : nlohmann::json()},
+        {"target_error", p.targetError > 0 ? nlohmann::json(p.targetError) : nlohmann::json()},
         {"figures", figuresOf(s.integrator, p)},
         {"error", job.error.empty() ? nlohmann::json() : nlohmann::json(job.error)},
         {"warnings", job.warnings},

@@ -196,7 +196,8 @@ void getProgressHistory(RouteContext& ctx, const httplib::Request& req, httplib:
         points.push_back({{"pass", p.pass},
                           {"elapsed_seconds", p.elapsedSeconds},
                           {"photons_traced", p.photonsTraced},
-                          {"mean_radius", p.meanRadius}});
+                          {"mean_radius", p.meanRadius},
+                          {"relative_error", p.relativeError ? nlohmann::json(*p.relativeError) : nlohmann::json()}});
     sendJson(res, 200, {{"points", points}});
 }
 

@@ -36,8 +36,10 @@ void printProgress(const photon::RenderProgress& p) {
     int filled = p.totalPasses ? width * p.pass / p.totalPasses : 0;
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::fprintf(stderr, "\r[%s] pass %d/%d  %.3g photons/s  radius %.4g  elapsed %s  ETA %s ", bar.c_str(), p.pass,
-                 p.totalPasses, p.photonsPerSecond, p.meanRadius, formatSeconds(p.elapsedSeconds).c_str(),
+    char error[32] = "";
+    if (p.relativeError) std::snprintf(error, sizeof error, "  error %.2f%%", 100 * *p.relativeError);
+    std::fprintf(stderr, "\r[%s] pass %d/%d  %.3g photons/s  radius %.4g%s  elapsed %s  ETA %s ", bar.c_str(), p.pass,
+                 p.totalPasses, p.photonsPerSecond, p.meanRadius, error, formatSeconds(p.elapsedSeconds).c_str(),
                  formatSeconds(p.etaSeconds).c_str());
     std::fflush(stderr);
 }

@@ -40,6 +40,10 @@ void declareOptions(CLI::App& app, RenderOptions& o) {
     app.add_option("--time-limit", o.timeLimit, "stop after the pass that crosses this many seconds")
         ->type_name("SECONDS")
         ->check(CLI::Range(0.0, 1e9));
+    app.add_option("--target-error", o.targetError,
+                   "stop after the pass whose estimated relative error is at or below this, e.g. 0.02")
+        ->type_name("E")
+        ->check(CLI::Range(0.0, 1e9));
     app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
     app.add_option("--seed", o.seed, "random seed")->type_name("N")->check(integerIn(0, 1LL << 62));
     std::vector<std::string> names(kIntegratorNames.begin(), kIntegratorNames.end());
@@ -64,6 +68,7 @@ std::vector<SettingOverride> RenderOptions::overrides() const {
     if (photons) out.push_back({"render.photons_per_pass", std::to_string(*photons)});
     if (seed) out.push_back({"render.seed", std::to_string(*seed)});
     if (timeLimit) out.push_back({"render.time_limit", std::to_string(*timeLimit)});
+    if (targetError) out.push_back({"render.target_error", std::to_string(*targetError)});
     if (!integrator.empty()) out.push_back({"render.integrator", integrator});
     if (!resolution.empty()) {
         std::string r = resolution;

@@ -16,6 +16,7 @@ struct RenderOptions {
     std::vector<std::string> outputs;  // -o: .exr (linear, every layer) or .png (tone-mapped)
     std::optional<long long> passes, photons, threads, seed;
     std::optional<double> timeLimit;
+    std::optional<double> targetError;
     std::string integrator;
     std::string camera;      // glTF: the camera's name
     std::string resolution;  // "WxH"

@@ -1,6 +1,8 @@
 #include <photon/render.h>
 #include <chrono>
+#include <cmath>
 #include <sstream>
+#include "film/pixel_errors.h"
 #include "integrators/common/checkpoint.h"
 #include "integrator_factory.h"
 #include "post/denoiser.h"
@@ -17,6 +19,7 @@ Image Renderer::rawSnapshot() const { return integrator_->snapshot(); }
 
 Renderer::Renderer(std::shared_ptr<const Scene> scene) : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)) {
     progress_.totalPasses = scene_->settings().passes;
+    progress_.targetError = scene_->settings().targetError;
     const DenoiseSettings& denoise = scene_->settings().denoise;
     if (denoise.enabled) denoiser_ = std::make_shared<const Denoiser>(*scene_, denoise);
 }
@@ -28,7 +31,9 @@ Image Renderer::snapshot() const {
 
 LayeredImage Renderer::layers() const { return pendingLayers()->layers(); }
 
-std::shared_ptr<const PendingImage> Renderer::pendingLayers() const { return pendingLayersOf(integrator_->snapshot()); }
+std::shared_ptr<const PendingImage> Renderer::pendingLayers() const {
+    return std::make_shared<const PendingImage>(integrator_->snapshot(), denoiser_, scene_->settings().exposure, errors_);
+}
 
 std::shared_ptr<const PendingImage> Renderer::pendingLayersOf(Image raw) const {
     return std::make_shared<const PendingImage>(std::move(raw), denoiser_, scene_->settings().exposure);
@@ -45,11 +50,37 @@ bool Renderer::renderPass(const CancelToken& cancel) {
     progress_.meanRadius = s.meanRadius;
     progress_.elapsedSeconds = renderSeconds_;
     progress_.lastPass = s;
+    updateErrorEstimate();
     int left = std::max(0, progress_.totalPasses - progress_.pass);
-    progress_.etaSeconds = renderSeconds_ / progress_.pass * left;
+    const double perPass = renderSeconds_ / progress_.pass;
+    progress_.etaSeconds = perPass * left;
+    if (progress_.passesToTarget) progress_.etaSeconds = std::min(progress_.etaSeconds, perPass * *progress_.passesToTarget);
     double limit = scene_->settings().timeLimitSeconds;
     if (limit > 0) progress_.etaSeconds = std::min(progress_.etaSeconds, std::max(0.0, limit - renderSeconds_));
     return true;
+}
+
+// The error falls as passes^-decay (film/pixel_errors.h), so reaching the target e_t from
+// e after N passes takes N (e / e_t)^(1 / decay) passes in all.
+void Renderer::updateErrorEstimate() {
+    std::optional<PixelErrors> e = integrator_->pixelErrors();
+    progress_.relativeError.reset();
+    progress_.passesToTarget.reset();
+    errors_.reset();
+    if (!e || progress_.pass < 2) return;
+    const double error = relativeErrorOf(*e);
+    progress_.relativeError = error;
+    const double target = scene_->settings().targetError;
+    if (target > 0 && e->decay > 0) {
+        const double passes = progress_.pass;
+        progress_.passesToTarget = error <= target ? 0.0 : passes * std::pow(error / target, 1 / e->decay) - passes;
+    }
+    errors_ = std::make_shared<const PixelErrors>(std::move(*e));
+}
+
+bool Renderer::targetErrorReached() const {
+    const double target = scene_->settings().targetError;
+    return target > 0 && progress_.relativeError && *progress_.relativeError <= target;
 }
 
 bool Renderer::independentPasses() const { return integrator_->independentPasses(); }
@@ -62,6 +93,7 @@ void Renderer::addPasses(const PassSums& sums) {
     integrator_->addPasses(sums);
     progress_.pass = integrator_->passesDone();
     progress_.photonsTraced += sums.count * scene_->settings().photonsPerPass;
+    updateErrorEstimate();
 }
 
 void Renderer::saveCheckpoint(std::ostream& out) const {
@@ -90,6 +122,7 @@ void Renderer::restoreCheckpoint(std::istream& in) {
     progress_.pass = integrator_->passesDone();
     progress_.elapsedSeconds = seconds;
     progress_.photonsPerSecond = seconds > 0 ? static_cast<double>(photons) / seconds : 0;
+    updateErrorEstimate();
 }
 
 RenderOutcome Renderer::run(const CancelToken& cancel, const ProgressFn& onPass) {
@@ -98,6 +131,7 @@ RenderOutcome Renderer::run(const CancelToken& cancel, const ProgressFn& onPass)
         if (cancel.cancelled() || !renderPass(cancel)) return RenderOutcome::Cancelled;
         if (onPass) onPass(progress_);
         if (limit > 0 && renderSeconds_ >= limit) return RenderOutcome::TimeLimit;
+        if (targetErrorReached()) return RenderOutcome::TargetError;
     }
     return RenderOutcome::Completed;
 }

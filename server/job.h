@@ -44,7 +44,11 @@ struct JobProgress {
     int64_t photonsTraced = 0;
     double meanRadius = 0;
     double elapsedSeconds = 0;
-    double etaSeconds = 0;
+    double etaSeconds = 0;  // to the pass count, the time limit or the target error, whichever comes first
+    // The image's estimated relative error (RenderProgress::relativeError), when the method
+    // keeps one, and the scene's render.target_error (0: none).
+    std::optional<double> relativeError;
+    double targetError = 0;
     MethodFigures figures;
 };
 

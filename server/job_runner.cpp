@@ -122,8 +122,8 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
     double elapsedAtLastPass = elapsedBefore;
     const auto start = std::chrono::steady_clock::now();
     auto lastCheckpoint = start;
-    // The time limit ends the render after the batch that crosses it, as a local render
-    // ends after the pass that crosses it; the batches in flight are dropped.
+    // The time limit (or the target error) ends the render after the batch that crosses it,
+    // as a local render ends after the pass that crosses it; the batches in flight are dropped.
     bool timeUp = false;
     while (merged < total && !timeUp) {
         if (started.cancel->cancelled()) {
@@ -146,13 +146,15 @@ JobRunner::Ending JobRunner::renderOnFarm(const JobTable::Started& started, Rend
             RenderProgress p = renderer.progress();
             p.elapsedSeconds = elapsedBefore + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             // At the rate of the batches merged since this start.
-            p.etaSeconds = (p.elapsedSeconds - elapsedBefore) * double(total - merged) / double(merged - mergedAtStart);
+            const double perPass = (p.elapsedSeconds - elapsedBefore) / double(merged - mergedAtStart);
+            p.etaSeconds = perPass * double(total - merged);
+            if (p.passesToTarget) p.etaSeconds = std::min(p.etaSeconds, perPass * *p.passesToTarget);
             p.lastPass = PassStats{};
             p.lastPass.photons = settings.photonsPerPass * count;
             double before = elapsedAtLastPass;
             onPass(id, settings, renderer, p, before);
             elapsedAtLastPass = p.elapsedSeconds;
-            timeUp = timeLimit > 0 && p.elapsedSeconds >= timeLimit;
+            timeUp = (timeLimit > 0 && p.elapsedSeconds >= timeLimit) || renderer.targetErrorReached();
             const auto now = std::chrono::steady_clock::now();
             if (std::chrono::duration<double>(now - lastCheckpoint).count() >= checkpointSeconds_) {
                 saveCheckpoint(id, renderer);
@@ -236,7 +238,8 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, const
 void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::shared_ptr<const PendingImage> image,
                        const RenderProgress& p, double& elapsedBefore) {
     // The image's files say how far the render had got then.
-    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds, {}};
+    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds,
+                         p.relativeError, p.targetError, {}};
     recordPass(id, settings, *image, progress, p.lastPass);
     ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
     images_.store(id, p.pass, std::move(image), std::move(metadata));

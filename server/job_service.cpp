@@ -59,7 +59,10 @@ void JobService::restore() {
             store_.update(job);
         }
         job.keptPasses = folders_.keptPasses(job.id);
-        job.progress.figures = ProgressHistory::load(folders_.progressFile(job.id)).figures;
+        const ProgressHistory history = ProgressHistory::load(folders_.progressFile(job.id));
+        job.progress.figures = history.figures;
+        job.progress.targetError = history.targetError;
+        if (!history.points().empty()) job.progress.relativeError = history.points().back().relativeError;
         table_.insert(job);
         hub_.publish(job, std::nullopt);
         if (job.status == JobStatus::Queued) queue_.push(job.id, job.priority, job.seq);

@@ -12,7 +12,8 @@ void ProgressHistory::add(const JobProgress& p) {
         while (!points_.empty() && points_.back().pass >= p.pass) points_.pop_back();
     }
     if (!points_.empty() && p.pass - points_.back().pass < stride_) return;
-    points_.push_back({p.pass, p.elapsedSeconds, p.photonsTraced, p.meanRadius});
+    points_.push_back({p.pass, p.elapsedSeconds, p.photonsTraced, p.meanRadius, p.relativeError});
+    targetError = p.targetError;
     if (points_.size() < kMaxPoints) return;
     std::vector<ProgressPoint> kept;
     for (size_t i = 0; i < points_.size(); i += 2) kept.push_back(points_[i]);
@@ -27,8 +28,12 @@ void ProgressHistory::save(const std::filesystem::path& file) const {
     text << "stride " << stride_ << '\n';
     text << "figures " << figures.patches << ' ' << figures.solverIterations << ' ' << figures.solverResidual << ' '
          << figures.globalMapPhotons << ' ' << figures.causticMapPhotons << '\n';
+    // Points of five columns, the last the relative error (-1: none); files written before
+    // it have no "target" line and four.
+    text << "target " << targetError << '\n';
     for (const ProgressPoint& p : points_)
-        text << p.pass << ' ' << p.elapsedSeconds << ' ' << p.photonsTraced << ' ' << p.meanRadius << '\n';
+        text << p.pass << ' ' << p.elapsedSeconds << ' ' << p.photonsTraced << ' ' << p.meanRadius << ' '
+             << p.relativeError.value_or(-1) << '\n';
     writeFileAtomically(file, text.str());
 }
 
@@ -42,9 +47,18 @@ ProgressHistory ProgressHistory::load(const std::filesystem::path& file) {
           f.causticMapPhotons) ||
         word != "figures")
         return {};
+    const std::streampos pointsStart = in.tellg();
+    const bool withErrors = (in >> word >> h.targetError) && word == "target";
+    if (!withErrors) {
+        in.clear();
+        in.seekg(pointsStart);
+        h.targetError = 0;
+    }
     ProgressPoint p;
-    while (in >> p.pass >> p.elapsedSeconds >> p.photonsTraced >> p.meanRadius) {
+    double error = -1;
+    while (in >> p.pass >> p.elapsedSeconds >> p.photonsTraced >> p.meanRadius && (!withErrors || in >> error)) {
         if (h.points_.size() >= kMaxPoints) break;
+        p.relativeError = error >= 0 ? std::optional<double>(error) : std::nullopt;
         h.points_.push_back(p);
     }
     return h;

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 #include "job.h"
 
@@ -15,6 +16,7 @@ struct ProgressPoint {
     double elapsedSeconds = 0;
     int64_t photonsTraced = 0;
     double meanRadius = 0;
+    std::optional<double> relativeError;
 };
 
 class ProgressHistory {
@@ -24,6 +26,8 @@ public:
     void add(const JobProgress& progress);
     // The method's figures as the render last reported them, kept with the history.
     MethodFigures figures;
+    // The render's target error (0: none), kept with the history as the figures are.
+    double targetError = 0;
     const std::vector<ProgressPoint>& points() const { return points_; }
 
     // Written through a temporary file; read back as far as it is whole (a file from an

@@ -186,8 +186,11 @@ TEST(DenoiseElsewhere, AnImageSentAsBytesIsFilteredAsWhereItWasRendered) {
     const LayeredImage here = worker.pendingLayers()->layers();
     const LayeredImage there = coordinator.pendingLayersOf(decodeImageBytes(bytes))->layers();
     EXPECT_EQ(there.main.rgb, here.main.rgb);
-    ASSERT_EQ(there.layers.size(), here.layers.size());
-    for (size_t i = 0; i < here.layers.size(); ++i) {
+    // The error heat map is the render's own (its half-images do not travel with the image).
+    ASSERT_EQ(here.layers.size(), 4u);
+    EXPECT_EQ(here.layers.back().name, "error");
+    ASSERT_EQ(there.layers.size(), 3u);
+    for (size_t i = 0; i < there.layers.size(); ++i) {
         EXPECT_EQ(there.layers[i].name, here.layers[i].name);
         EXPECT_EQ(there.layers[i].image.rgb, here.layers[i].image.rgb);
     }
@@ -256,7 +259,8 @@ TEST(Denoise, RendererHandsOutDenoisedRawAndGuideLayers) {
     LayeredImage layers = renderer.layers();
     EXPECT_TRUE(layers.main.rgb == renderer.snapshot().rgb);
     EXPECT_FALSE(layers.main.rgb == renderer.rawSnapshot().rgb);
-    ASSERT_EQ(layers.layers.size(), 3u);
+    ASSERT_EQ(layers.layers.size(), 4u);  // and the raw image's error heat map, last
+    EXPECT_EQ(layers.layers[3].name, "error");
     EXPECT_EQ(layers.layers[0].name, "raw");
     EXPECT_TRUE(layers.layers[0].image.rgb == renderer.rawSnapshot().rgb);
     EXPECT_EQ(layers.layers[1].name, "albedo");
@@ -273,6 +277,8 @@ TEST(Denoise, RendererHandsOutDenoisedRawAndGuideLayers) {
                 layers.layers[1].image.rgb);
     EXPECT_TRUE(readImageChannels(dir / "a.exr", {"normal.X", "normal.Y", "normal.Z"}).rgb ==
                 layers.layers[2].image.rgb);
+    EXPECT_TRUE(readImageChannels(dir / "a.exr", {"error.sd", "error.relative", "error.luminance"}).rgb ==
+                layers.layers[3].image.rgb);
     EXPECT_THROW(readImageChannels(dir / "a.exr", {"Z", "G", "B"}), std::runtime_error);
     std::filesystem::remove_all(dir);
 

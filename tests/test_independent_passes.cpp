@@ -114,7 +114,7 @@ TEST(IndependentPasses, BinaryFormRoundTripsAndRefusesDamage) {
     Renderer renderer = rendererOf(globalCornellBox(4));
     PassSums batch = *renderer.renderPasses(2, 2, never);
     const std::string bytes = batch.encode();
-    const size_t raw = batch.values.size() * sizeof(int64_t);
+    const size_t raw = (batch.values.size() + batch.oddLuminance.size()) * sizeof(int64_t);
     std::printf("  48x48, 2 passes: %zu bytes encoded, %zu raw (%.1f%%)\n", bytes.size(), raw,
                 100.0 * double(bytes.size()) / double(raw));
     EXPECT_LT(bytes.size(), raw);
@@ -124,6 +124,8 @@ TEST(IndependentPasses, BinaryFormRoundTripsAndRefusesDamage) {
     EXPECT_EQ(back.width, 48);
     EXPECT_EQ(back.height, 48);
     EXPECT_EQ(back.values, batch.values);
+    EXPECT_EQ(back.oddCount, 1);  // pass 3
+    EXPECT_EQ(back.oddLuminance, batch.oddLuminance);
 
     auto refuses = [](std::string_view b, const std::string& message) {
         try {
@@ -138,7 +140,7 @@ TEST(IndependentPasses, BinaryFormRoundTripsAndRefusesDamage) {
     refuses(bytes.substr(0, bytes.size() - 8), "pass sums: damaged values");
     std::string wrongVersion = bytes;
     wrongVersion[4] = 9;
-    refuses(wrongVersion, "pass sums: version 9, expected 1");
+    refuses(wrongVersion, "pass sums: version 9, expected 2");
 
     PassSums small;
     small.width = small.height = 2;

@@ -201,6 +201,9 @@ export function normalizeJob(raw) {
     meanRadius: num(r.mean_radius),
     elapsedSeconds,
     etaSeconds: num(r.eta_seconds, r.eta),
+    // The image's estimated relative error and the scene's target (null: none).
+    relativeError: num(r.relative_error),
+    targetError: num(r.target_error),
     error: first(r.error, null),
     warnings: Array.isArray(r.warnings) ? r.warnings.map(String) : [],
     // The method's own figures (null where the method has none).
@@ -320,7 +323,7 @@ export function eventsUrl(id) {
 
 // The job's progress history as the server keeps it (GET /jobs/{id}/progress: at most 256
 // points, thinned evenly, kept across restarts), as records with the fields the plot reads
-// (passesDone, elapsedSeconds, photonsTraced, meanRadius). null when it cannot be had: a
+// (passesDone, elapsedSeconds, photonsTraced, meanRadius, relativeError). null when it cannot be had: a
 // server without the route answers 404, and progressHistory() below replays the events.
 export async function progressPoints(id) {
   let body;
@@ -335,6 +338,7 @@ export async function progressPoints(id) {
     elapsedSeconds: num(p.elapsed_seconds),
     photonsTraced: num(p.photons_traced),
     meanRadius: num(p.mean_radius),
+    relativeError: num(p.relative_error),
   }));
 }
 

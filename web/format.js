@@ -42,6 +42,13 @@ export function formatRadius(radius) {
   return radius >= 0.01 && radius < 1000 ? radius.toPrecision(3) : radius.toExponential(2);
 }
 
+// The estimated relative error against its target: 0.0312, 0.02 -> "3.12% (target 2%)".
+export function formatRelativeError(error, target) {
+  if (!ok(error)) return DASH;
+  const percent = (v) => `${Number((100 * v).toPrecision(3))}%`;
+  return ok(target) && target > 0 ? `${percent(error)} (target ${percent(target)})` : percent(error);
+}
+
 export function formatPasses(done, total) {
   const d = ok(done) ? done : 0;
   return ok(total) ? `${d} / ${total}` : String(d);

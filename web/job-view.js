@@ -28,6 +28,7 @@ import {
   formatDuration,
   formatPasses,
   formatRadius,
+  formatRelativeError,
   formatRate,
   formatTime,
   methodName,
@@ -76,6 +77,8 @@ export function createJobView({ onChanged, onDeleted }) {
     statResidual: $('stat-residual'),
     residual: $('job-residual'),
     statMaps: $('stat-maps'),
+    statRelativeError: $('stat-relative-error'),
+    relativeError: $('job-relative-error'),
     maps: $('job-maps'),
     created: $('job-created'),
     progress: $('job-progress'),
@@ -209,6 +212,8 @@ export function createJobView({ onChanged, onDeleted }) {
     el.pass.textContent = formatPasses(job.passesDone, job.passes);
     el.rate.textContent = formatRate(job.photonsPerSecond);
     el.radius.textContent = formatRadius(job.meanRadius);
+    el.statRelativeError.hidden = job.relativeError === null;
+    el.relativeError.textContent = formatRelativeError(job.relativeError, job.targetError);
     el.photons.textContent = formatCount(job.photonsTraced);
     el.elapsed.textContent = formatDuration(job.elapsedSeconds);
     el.eta.textContent = job.status === 'running' && job.passesDone > 0 ? formatDuration(job.etaSeconds) : '—';

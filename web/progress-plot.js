@@ -2,16 +2,18 @@
 // time axis (elapsed seconds), each with its own vertical scale from zero. Which series
 // depends on the method: passes per second for every method, and for SPPM also the mean
 // gather radius and the photons traced (the other methods have no radius, and the path
-// tracer and radiosity trace no photons). Points are keyed by pass, so a history read
+// tracer and radiosity trace no photons), and the image's estimated relative error for the
+// methods that keep one (all but photon mapping). Points are keyed by pass, so a history read
 // after a reload and the live passes merge in any order; the canvas redraws on resize.
 
-import { formatCount, formatDuration, formatRadius } from './format.js';
+import { formatCount, formatDuration, formatRadius, formatRelativeError } from './format.js';
 
 // Series: key, label, colour (a CSS custom property of the canvas, else the fallback).
 const SERIES = {
   rate: { label: 'passes per second', color: ['--plot-rate', '#15803d'], describe: (v) => `${formatTick(v, v / 10)}/s` },
   radius: { label: 'mean radius', color: ['--plot-radius', '#c2410c'], describe: formatRadius },
   photons: { label: 'photons traced', color: ['--plot-photons', '#1d4ed8'], describe: formatCount },
+  error: { label: 'relative error', color: ['--plot-error', '#7e22ce'], describe: (v) => formatRelativeError(v) },
 };
 const MARGIN = { left: 62, right: 14, top: 8, bottom: 26 };
 const PANEL_HEIGHT = 92; // CSS pixels per series
@@ -19,7 +21,8 @@ const TICKS = 4;
 
 // The series a method has.
 export function seriesFor(integrator) {
-  return integrator === 'sppm' ? ['rate', 'radius', 'photons'] : ['rate'];
+  if (integrator === 'sppm') return ['rate', 'radius', 'photons', 'error'];
+  return integrator === 'photonmap' ? ['rate'] : ['rate', 'error'];
 }
 
 // The smallest "round" number (1, 2, 2.5 or 5 times a power of ten) >= value; 1 for none.
@@ -51,7 +54,7 @@ export class ProgressPlot {
   constructor(canvas) {
     this.canvas = canvas;
     this.series = ['rate'];
-    this.byPass = new Map(); // pass -> { pass, t, radius, photons }
+    this.byPass = new Map(); // pass -> { pass, t, radius, photons, error }
     if (typeof ResizeObserver === 'function') {
       this.observer = new ResizeObserver(() => this.draw());
       this.observer.observe(canvas);
@@ -76,7 +79,9 @@ export class ProgressPlot {
     const t = job.elapsedSeconds;
     if (!(pass > 0) || !Number.isFinite(t) || this.byPass.has(pass)) return;
     const finite = (v) => (Number.isFinite(v) ? v : null);
-    this.byPass.set(pass, { pass, t, radius: finite(job.meanRadius), photons: finite(job.photonsTraced) });
+    this.byPass.set(pass, {
+      pass, t, radius: finite(job.meanRadius), photons: finite(job.photonsTraced), error: finite(job.relativeError),
+    });
     if (redraw) this.draw();
   }
 

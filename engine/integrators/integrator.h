@@ -8,6 +8,7 @@
 #include <photon/image.h>
 #include <photon/pass_sums.h>
 #include <photon/progress.h>
+#include "film/pixel_errors.h"
 
 namespace photon {
 
@@ -37,6 +38,10 @@ public:
     virtual std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) {
         return std::nullopt;
     }
+    // Per-pixel estimates of the image's noise from its two half-images (film/pixel_errors.h),
+    // for integrators whose passes are independent estimates; nullopt for the others, and
+    // for a render resumed from a checkpoint that did not keep its halves.
+    virtual std::optional<PixelErrors> pixelErrors() const { return std::nullopt; }
     virtual void addPasses(const PassSums&) {
         throw std::logic_error("this render's passes are not independent (render.radius_schedule \"global\" makes them so)");
     }

@@ -1,5 +1,7 @@
 // The "camera" and "render" sections.
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
@@ -120,6 +122,12 @@ RenderSettings readRender(const JsonValue& value) {
     r.passes = int(obj.integer("passes", r.passes, 1, 1'000'000));
     r.photonsPerPass = obj.integer("photons_per_pass", r.photonsPerPass, 1, 100'000'000);
     r.timeLimitSeconds = obj.number("time_limit", 0, Range::nonNegative());
+    // Scene numbers are read as floats; the target is shown back to users (the job record),
+    // so it keeps the decimal they wrote (a float's 7 significant digits) rather than 0.15
+    // turning into 0.15000000596.
+    char decimal[32];
+    std::snprintf(decimal, sizeof decimal, "%.7g", double(obj.number("target_error", 0, Range::nonNegative())));
+    r.targetError = std::strtod(decimal, nullptr);
     if (auto radius = obj.optional("initial_radius")) r.initialRadius = readAutoOrPositive(*radius);
     r.autoRadiusPhotons = obj.number("auto_radius_photons", r.autoRadiusPhotons, Range::openClosed(0, 10'000));
     r.alpha = obj.number("alpha", r.alpha, Range::open(0, 1));

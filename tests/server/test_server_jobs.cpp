@@ -142,6 +142,36 @@ TEST_F(JobsTest, TheScenesTimeLimitEndsTheJobAfterThePassThatCrossesIt) {
               std::to_string(job["pass"].get<int>()));
 }
 
+TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
+    startServer();
+    json scene = smallScene(100000, 2000, 16);
+    scene["render"]["target_error"] = 0.15;
+    // In process: the pass at which the estimate first reaches the target, and the estimate.
+    Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));
+    CancelToken cancel;
+    ASSERT_EQ(renderer.run(cancel), RenderOutcome::TargetError);
+    const RenderProgress& engine = renderer.progress();
+
+    std::string id = submitOk(scene);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed"; }, std::chrono::seconds(60));
+    EXPECT_EQ(job["pass"], engine.pass);
+    EXPECT_EQ(job["relative_error"].get<double>(), *engine.relativeError);
+    EXPECT_LE(job["relative_error"].get<double>(), 0.15);
+    EXPECT_EQ(job["target_error"], 0.15);
+    // Each point of the history has the estimate after its pass (none after pass 1).
+    httplib::Result history = client().Get(("/api/v1/jobs/" + id + "/progress").c_str());
+    ASSERT_TRUE(history);
+    const json points = json::parse(history->body)["points"];
+    ASSERT_EQ(points.size(), size_t(engine.pass));
+    EXPECT_TRUE(points[0]["relative_error"].is_null());
+    EXPECT_EQ(points.back()["relative_error"].get<double>(), *engine.relativeError);
+    EXPECT_GT(points[1]["relative_error"].get<double>(), 0.15);
+    // The EXR carries the heat map.
+    httplib::Result exr = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
+    ASSERT_TRUE(exr);
+    EXPECT_NE(exr->body.find("error.relative"), std::string::npos);
+}
+
 TEST_F(JobsTest, QueryParametersOverrideTheRenderBlock) {
     startServer({"--workers", "0"});
     httplib::Result r = submit(smallScene(), "?passes=5&photons_per_pass=1000&seed=42&priority=3");

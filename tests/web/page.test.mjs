@@ -315,7 +315,13 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
     assert.equal(await link.getAttribute('download'), `photon-${id}.${format}`);
   }
   assert.equal(await page.getAttribute('#progress-plot', 'data-points'), '4');
-  assert.equal(await page.getAttribute('#progress-plot', 'data-series'), 'passes per second, mean radius, photons traced');
+  assert.equal(await page.getAttribute('#progress-plot', 'data-series'),
+    'passes per second, mean radius, photons traced, relative error');
+  // The estimated error from pass 2 on, as the record has it.
+  const done = await (await fetch(`${server.baseUrl}api/v1/jobs/${id}`)).json();
+  assert.ok(done.relative_error > 0 && done.relative_error < 1, `relative error ${done.relative_error}`);
+  assert.equal(done.target_error, null);
+  assert.equal(await textOf('#job-relative-error'), `${Number((100 * done.relative_error).toPrecision(3))}%`);
 
   // The list shows the job as completed with a full progress bar (it polls every 2 s).
   const row = page.locator(`#job-list li[data-job-id="${id}"]`);
@@ -335,7 +341,7 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await waitForStatus(page, server, id, 'completed', 10_000);
   await page.waitForFunction(() => document.querySelector('#progress-plot').dataset.points === '4');
   assert.match(await page.getAttribute('#progress-plot', 'aria-label'),
-    /^Passes per second, mean radius and photons traced over time\. 4 passes plotted\. Latest, pass 4 at \d+:\d\d:\d\d: passes per second [\d.]+\/s, mean radius [\d.e+-]+, photons traced 80\.0 k\.$/);
+    /^Passes per second, mean radius, photons traced and relative error over time\. 4 passes plotted\. Latest, pass 4 at \d+:\d\d:\d\d: passes per second [\d.]+\/s, mean radius [\d.e+-]+, photons traced 80\.0 k, relative error [\d.]+%\.$/);
 });
 
 test('on a slow link the preview shows only whole images and ends on the final pass', { timeout: RENDER_TIMEOUT_MS + 30_000 }, async (t) => {
@@ -559,13 +565,13 @@ test('the job list tells jobs apart, filters, sorts and follows events without p
 
 test("the job view shows only the figures of the job's method", async () => {
   const common = ['Status', 'Pass', 'Method', 'Denoise', 'Passes/s'];
-  const times = ['Elapsed', 'ETA', 'Resolution', 'Seed', 'Created'];
+  const times = ['Error', 'Elapsed', 'ETA', 'Resolution', 'Seed', 'Created'];
   const expected = {
     kitchen: { method: 'SPPM', figures: [...common, 'Photons/s', 'Mean radius', 'Photons traced', 'Photons per pass', ...times],
-      series: 'passes per second, mean radius, photons traced' },
-    hall: { method: 'path tracing', figures: [...common, 'Samples/pixel', ...times], series: 'passes per second' },
+      series: 'passes per second, mean radius, photons traced, relative error' },
+    hall: { method: 'path tracing', figures: [...common, 'Samples/pixel', ...times], series: 'passes per second, relative error' },
     attic: { method: 'radiosity', figures: [...common, 'Samples/pixel', 'Patches', 'Solver residual', ...times],
-      series: 'passes per second' },
+      series: 'passes per second, relative error' },
   };
   assert.deepEqual(Object.keys(namedJobs), Object.keys(expected), 'the job list test submitted the jobs');
   for (const [name, want] of Object.entries(expected)) {

@@ -20,6 +20,10 @@ struct PassSums {
     int64_t count = 0;  // passes summed
     int width = 0, height = 0;
     std::vector<int64_t> values;  // R, G, B per pixel, row by row, in units of 1 / kScale
+    // The half of the passes with an odd index, for the error estimate: how many there are,
+    // and per pixel their luminance (Rec. 709 of each pass's fixed-point R, G, B) summed.
+    int64_t oddCount = 0;
+    std::vector<int64_t> oddLuminance;
 
     // Adds another batch of the same image size; throws std::invalid_argument if the sizes
     // differ or a sum would overflow.

@@ -10,11 +10,14 @@
 namespace photon {
 
 class Denoiser;
+struct PixelErrors;
 
 class PendingImage {
 public:
-    // `denoiser` may be null: the raw image is then the main one, with no layers.
-    PendingImage(Image raw, std::shared_ptr<const Denoiser> denoiser, float exposure);
+    // `denoiser` may be null: the raw image is then the main one, with no denoiser layers.
+    // `errors`, when given, adds the error heat map of the raw image as the layer "error".
+    PendingImage(Image raw, std::shared_ptr<const Denoiser> denoiser, float exposure,
+                 std::shared_ptr<const PixelErrors> errors = nullptr);
     ~PendingImage();
 
     // The filtered image with its layers (the denoiser's raw and guide buffers); computed
@@ -26,6 +29,7 @@ public:
 private:
     mutable Image raw_;  // moved into layers_ on first use
     std::shared_ptr<const Denoiser> denoiser_;
+    std::shared_ptr<const PixelErrors> errors_;
     float exposure_ = 0;
     mutable std::once_flag once_;
     mutable LayeredImage layers_;

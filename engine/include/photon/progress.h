@@ -2,6 +2,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <optional>
 
 namespace photon {
 
@@ -38,14 +39,23 @@ struct PassStats {
 struct RenderProgress {
     int pass = 0;               // passes finished
     int totalPasses = 0;
+    double targetError = 0;     // render.target_error (0: none)
     int64_t photonsTraced = 0;  // photons emitted so far
     double photonsPerSecond = 0;
     double meanRadius = 0;      // scene units; 0 for integrators without a gather radius
     double elapsedSeconds = 0;
-    double etaSeconds = 0;      // estimate of the time left
+    double etaSeconds = 0;      // estimate of the time left (to the pass count, the time limit or the target error)
+    // The image's estimated relative error: RMS of the pixels' standard errors over their mean
+    // luminance, from two half-images (docs/error-estimate.md); none for integrators whose
+    // passes are not independent estimates, and before each half has a pass.
+    std::optional<double> relativeError;
+    // With render.target_error: passes still to render until the estimate reaches it, from
+    // the rate the error falls at (passes^-1/2; SPPM's passes^-alpha/2).
+    std::optional<double> passesToTarget;
     PassStats lastPass;
 };
 
-enum class RenderOutcome { Completed, TimeLimit, Cancelled };
+// Completed: the pass count; TargetError: the estimated error reached render.target_error.
+enum class RenderOutcome { Completed, TimeLimit, TargetError, Cancelled };
 
 }  // namespace photon

@@ -30,7 +30,8 @@ public:
     Renderer& operator=(Renderer&&) noexcept;
 
     using ProgressFn = std::function<void(const RenderProgress&)>;
-    // Renders until the scene's pass count or time limit is reached, or `cancel` is set.
+    // Renders until the scene's pass count, time limit or target error is reached, or
+    // `cancel` is set.
     // onPass runs on the rendering thread after every finished pass.
     RenderOutcome run(const CancelToken& cancel, const ProgressFn& onPass = {});
     // Renders one pass; false if cancelled (the image stays as after the last pass).
@@ -44,6 +45,8 @@ public:
     bool independentPasses() const;
     std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel);
     void addPasses(const PassSums& sums);
+    // Whether the estimated error is at or below render.target_error (false without one).
+    bool targetErrorReached() const;
 
     // The image after the passes done so far: denoised when render.denoise is on (the
     // filter runs on every call, so call it once per pass, not per client).
@@ -51,7 +54,8 @@ public:
     // The integrator's own image, never denoised.
     Image rawSnapshot() const;
     // snapshot() as the main image; with denoising on, also the layers "raw", "albedo" and
-    // "normal" (the guides, when guided), for formats that hold them.
+    // "normal" (the guides, when guided); with an error estimate, the layer "error" (its
+    // heat map: film/pixel_errors.h), for formats that hold them.
     LayeredImage layers() const;
     // The same, filtered only when first asked for, with the scene's exposure (see
     // PendingImage).
@@ -69,10 +73,15 @@ public:
     const Scene& scene() const { return *scene_; }
 
 private:
+    // The error estimate after the passes so far: progress_.relativeError, passesToTarget
+    // and the heat map's source.
+    void updateErrorEstimate();
+
     std::shared_ptr<const Scene> scene_;
     std::unique_ptr<Integrator> integrator_;
     std::shared_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
     RenderProgress progress_;
+    std::shared_ptr<const PixelErrors> errors_;  // after the last pass; null without an estimate
     double renderSeconds_ = 0;
 };
 

@@ -71,6 +71,9 @@ struct RenderSettings {
     int passes = 64;                  // SPPM passes, or samples per pixel for the path tracer
     int64_t photonsPerPass = 200000;
     double timeLimitSeconds = 0;      // 0: no limit; otherwise stop after the pass that crosses it
+    // 0: none; otherwise stop after the pass whose estimated relative error
+    // (RenderProgress::relativeError) is at or below it, e.g. 0.02.
+    double targetError = 0;
     float initialRadius = 0;          // 0: "auto", from each pixel's footprint
     // With "auto": photons one pass is to put in a disc (docs/sppm.md, "The auto radius").
     float autoRadiusPhotons = 8;
@@ -90,7 +93,7 @@ struct RenderSettings {
 // Hands `visit` every setting that changes what a render's state becomes, in a fixed
 // order: the one list a fingerprint of the settings (a checkpoint's key) is made from, kept
 // beside the structs so that a new setting is added to it where it is declared. Left out:
-// passes and the time limit (how far a render goes, not what it computes), and exposure and
+// passes, the time limit and the target error (how far a render goes, not what it computes), and exposure and
 // denoise (applied to snapshots, never to the state).
 template <class Visit>
 void visitStateSettings(const RenderSettings& s, Visit&& visit) {

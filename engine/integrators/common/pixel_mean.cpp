@@ -7,7 +7,7 @@ namespace photon {
 
 PixelMeanIntegrator::PixelMeanIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), width_(scene_->camera().width()), height_(scene_->camera().height()),
-      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()) {}
+      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()), halves_(sum_.size()) {}
 
 bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     stats_ = PassStats{};
@@ -22,7 +22,11 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     });
     if (cancel.cancelled()) return false;
     std::lock_guard<std::mutex> lock(mutex_);
-    for (size_t i = 0; i < sum_.size(); ++i) sum_[i] += pass_[i];
+    for (size_t i = 0; i < sum_.size(); ++i) {
+        sum_[i] += pass_[i];
+        halves_.add(passes_, i, luminance(pass_[i]));
+    }
+    halves_.countPass(passes_);
     ++passes_;
     stats_.cameraRays = static_cast<int64_t>(sum_.size());
     stats_.cameraMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -30,8 +34,17 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
 }
 
 Image PixelMeanIntegrator::snapshot() const {
-    Image image(width_, height_);
     std::lock_guard<std::mutex> lock(mutex_);
+    return snapshotLocked();
+}
+
+std::optional<PixelErrors> PixelMeanIntegrator::pixelErrors() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return halves_.errors(snapshotLocked(), 0.5);
+}
+
+Image PixelMeanIntegrator::snapshotLocked() const {
+    Image image(width_, height_);
     if (passes_ == 0) return image;
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x)
@@ -44,6 +57,7 @@ void PixelMeanIntegrator::saveState(std::ostream& out) const {
     writeCheckpointHeader(out, checkpointKey(scene_->settings(), width_, height_));
     writeRaw(out, &passes_, 1);
     writeRaw(out, sum_.data(), sum_.size());
+    halves_.save(out);
 }
 
 void PixelMeanIntegrator::restoreState(std::istream& in) {
@@ -53,8 +67,8 @@ void PixelMeanIntegrator::restoreState(std::istream& in) {
     readRaw(in, sum.data(), sum.size());
     for (Color c : sum)
         if (!isFiniteNonNegative(c)) throw CheckpointError("checkpoint: invalid pixel sum");
-    requireEndOfCheckpoint(in);
     std::lock_guard<std::mutex> lock(mutex_);
+    halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     passes_ = passes;
     sum_ = std::move(sum);
 }

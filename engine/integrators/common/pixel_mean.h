@@ -4,6 +4,7 @@
 #pragma once
 #include <mutex>
 #include <vector>
+#include "integrators/common/pass_halves.h"
 #include "math/rng.h"
 #include "scene/scene.h"
 #include "integrators/integrator.h"
@@ -16,11 +17,12 @@ public:
     Image snapshot() const override;
     const PassStats& lastPassStats() const override { return stats_; }
     int passesDone() const override { return passes_; }
-    size_t bytesPerPixel() const override { return 2 * sizeof(Color); }
-    // The pixel sums and pass count: each pass's samples are keyed by pass and pixel, so
-    // that is the whole state.
+    size_t bytesPerPixel() const override { return 2 * sizeof(Color) + 2 * sizeof(double); }
+    // The pixel sums, their halves and the pass count: each pass's samples are keyed by
+    // pass and pixel, so that is the whole state.
     void saveState(std::ostream& out) const override;
     void restoreState(std::istream& in) override;
+    std::optional<PixelErrors> pixelErrors() const override;
 
 protected:
     explicit PixelMeanIntegrator(std::shared_ptr<const Scene> scene);
@@ -34,7 +36,10 @@ protected:
 
 private:
     int width_, height_;
+    Image snapshotLocked() const;
+
     std::vector<Color> sum_, pass_;
+    PassHalves halves_;
     int passes_ = 0;
     mutable std::mutex mutex_;
 };

@@ -11,15 +11,24 @@ namespace {
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
+
+// Luminance in the pass sums' fixed point, from the fixed-point channels themselves, so
+// that it is exact and the same wherever the pass was rendered.
+int64_t fixedLuminance(const int64_t* rgb) {
+    return std::llround(0.2126 * static_cast<double>(rgb[0]) + 0.7152 * static_cast<double>(rgb[1]) +
+                        0.0722 * static_cast<double>(rgb[2]));
+}
 }  // namespace
 
 SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
-      width_(scene_->camera().width()), height_(scene_->camera().height()) {
+      width_(scene_->camera().width()), height_(scene_->camera().height()),
+      halves_(global() ? 0 : static_cast<size_t>(width_) * height_) {
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
         sums_.width = width_, sums_.height = height_;
         sums_.values.assign(n * 3, 0);
+        sums_.oddLuminance.assign(n, 0);
     } else {
         pixels_.resize(n);
     }
@@ -29,7 +38,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
-    const size_t state = global() ? 3 * sizeof(int64_t) : sizeof(PixelState);
+    const size_t state = global() ? 4 * sizeof(int64_t) : sizeof(PixelState) + 2 * sizeof(double);
     return state + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
 }
 
@@ -62,12 +71,14 @@ std::optional<PassSums> SppmIntegrator::renderPasses(int64_t first, int count, c
     batch.first = first;
     batch.width = width_, batch.height = height_;
     batch.values.assign(static_cast<size_t>(width_) * height_ * 3, 0);
+    batch.oddLuminance.assign(static_cast<size_t>(width_) * height_, 0);
     for (int k = 0; k < count; ++k) {
         passIndex_ = first + k;
         globalShrink_ = static_cast<float>(globalShrinkAt(passIndex_));
         if (!traceOnePass(cancel)) return std::nullopt;
         addPassEstimate(batch);
         ++batch.count;
+        batch.oddCount += passIndex_ & 1;
         double radiusSum = 0;
         size_t withRadius = 0;
         for (const GatherDisc& d : discs_)
@@ -86,20 +97,30 @@ void SppmIntegrator::addPasses(const PassSums& batch) {
 
 // One pass's estimate per pixel: the direct light its camera path found plus the photons'
 // flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
+Color SppmIntegrator::passEstimate(size_t i) const {
+    Color L = passDirect_[i];
+    const VisiblePoint& vp = visible_[i];
+    if (vp.photonCount > 0 && discs_[i].r2 > 0) {
+        const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+        const double emitted = static_cast<double>(settings_.photonsPerPass);
+        const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].r2) * emitted);
+        L += Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
+                   static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
+                   static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
+    }
+    return L;
+}
+
 void SppmIntegrator::addPassEstimate(PassSums& sums) const {
-    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
-    const double emitted = static_cast<double>(settings_.photonsPerPass);
+    const bool odd = passIndex_ & 1;
     tbb::parallel_for(size_t(0), visible_.size(), [&](size_t i) {
-        Color L = passDirect_[i];
-        const VisiblePoint& vp = visible_[i];
-        if (vp.photonCount > 0 && discs_[i].r2 > 0) {
-            const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].r2) * emitted);
-            L += Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
-                       static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
-                       static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
+        const Color L = passEstimate(i);
+        int64_t pass[3];
+        for (int c = 0; c < 3; ++c) {
+            pass[c] = std::llround(static_cast<double>(std::max(L[c], 0.0f)) * PassSums::kScale);
+            sums.values[i * 3 + c] += pass[c];
         }
-        for (int c = 0; c < 3; ++c)
-            sums.values[i * 3 + c] += std::llround(static_cast<double>(std::max(L[c], 0.0f)) * PassSums::kScale);
+        if (odd) sums.oddLuminance[i] += fixedLuminance(pass);
     });
 }
 
@@ -135,6 +156,7 @@ void SppmIntegrator::updateStatistics() {
     const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
     std::lock_guard<std::mutex> lock(stateMutex_);
     tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
+        halves_.add(passIndex_, i, luminance(passEstimate(i)));
         PixelState& px = pixels_[i];
         px.directSum += passDirect_[i];
         if (px.r2 == 0) px.r2 = discs_[i].r2;  // first pass with a visible point sets the start radius
@@ -150,6 +172,7 @@ void SppmIntegrator::updateStatistics() {
         px.r2 *= shrink;
         px.n = nNew;
     });
+    halves_.countPass(passIndex_);
     ++passes_;
     double radiusSum = 0;
     size_t withRadius = 0;
@@ -165,10 +188,16 @@ void SppmIntegrator::saveState(std::ostream& out) const {
     std::lock_guard<std::mutex> lock(stateMutex_);
     writeCheckpointHeader(out, checkpointKey(settings_, width_, height_));
     writeRaw(out, &passes_, 1);
-    if (global())
+    if (global()) {
         writeRaw(out, sums_.values.data(), sums_.values.size());
-    else
+        if (sumsHalfKnown_) {  // the odd half, which checkpoints written before it lack
+            writeRaw(out, &sums_.oddCount, 1);
+            writeRaw(out, sums_.oddLuminance.data(), sums_.oddLuminance.size());
+        }
+    } else {
         writeRaw(out, pixels_.data(), pixels_.size());
+        halves_.save(out);
+    }
 }
 
 void SppmIntegrator::restoreState(std::istream& in) {
@@ -179,11 +208,25 @@ void SppmIntegrator::restoreState(std::istream& in) {
         readRaw(in, values.data(), values.size());
         for (int64_t v : values)
             if (v < 0) throw CheckpointError("checkpoint: invalid pass sums");
+        int64_t oddCount = 0;
+        std::vector<int64_t> odd(sums_.oddLuminance.size(), 0);
+        const bool halfKnown = in.peek() != std::char_traits<char>::eof();
+        in.clear();
+        if (halfKnown) {
+            readRaw(in, &oddCount, 1);
+            readRaw(in, odd.data(), odd.size());
+            if (oddCount < 0 || oddCount > passes) throw CheckpointError("checkpoint: invalid pass sums");
+            for (int64_t v : odd)
+                if (v < 0) throw CheckpointError("checkpoint: invalid pass sums");
+        }
         requireEndOfCheckpoint(in);
         std::lock_guard<std::mutex> lock(stateMutex_);
         passes_ = passes;
         sums_.values = std::move(values);
         sums_.count = passes;
+        sums_.oddCount = oddCount;
+        sums_.oddLuminance = std::move(odd);
+        sumsHalfKnown_ = halfKnown;
         return;
     }
     std::vector<PixelState> pixels(pixels_.size());
@@ -192,16 +235,40 @@ void SppmIntegrator::restoreState(std::istream& in) {
         if (!isFiniteNonNegative(p.directSum) || !isFiniteNonNegative(p.tau) || !isFiniteNonNegative(p.n) ||
             !isFiniteNonNegative(p.r2))
             throw CheckpointError("checkpoint: invalid pixel statistics");
-    requireEndOfCheckpoint(in);
     std::lock_guard<std::mutex> lock(stateMutex_);
+    halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     passes_ = passes;
     pixels_ = std::move(pixels);
 }
 
 // L = direct / passes + tau / (pi R^2 N_emitted) (Hachisuka & Jensen 2009, eq. 12).
 Image SppmIntegrator::snapshot() const {
-    Image image(width_, height_);
     std::lock_guard<std::mutex> lock(stateMutex_);
+    return snapshotLocked();
+}
+
+std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
+    std::lock_guard<std::mutex> lock(stateMutex_);
+    const double decay = settings_.alpha / 2;  // film/pixel_errors.h
+    if (!global()) return halves_.errors(snapshotLocked(), decay);
+    if (!sumsHalfKnown_) return std::nullopt;
+    PixelErrors e;
+    e.width = width_, e.height = height_, e.decay = decay;
+    const size_t n = static_cast<size_t>(width_) * height_;
+    e.luminance.resize(n);
+    e.variance.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double odd = static_cast<double>(sums_.oddLuminance[i]);
+        const double all = static_cast<double>(fixedLuminance(&sums_.values[3 * i]));
+        e.luminance[i] = static_cast<float>(all / (PassSums::kScale * static_cast<double>(std::max<int64_t>(passes_, 1))));
+        e.variance[i] = halfSplitVariance(odd / PassSums::kScale, (all - odd) / PassSums::kScale, sums_.oddCount,
+                                          sums_.count - sums_.oddCount);
+    }
+    return e;
+}
+
+Image SppmIntegrator::snapshotLocked() const {
+    Image image(width_, height_);
     if (passes_ == 0) return image;
     if (global()) {  // the mean of the passes' estimates
         const double unit = 1.0 / (PassSums::kScale * static_cast<double>(passes_));

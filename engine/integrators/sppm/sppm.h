@@ -8,6 +8,7 @@
 #include <vector>
 #include <photon/pass_sums.h>
 #include "accel/hash_grid.h"
+#include "integrators/common/pass_halves.h"
 #include "integrators/common/photon_emitter.h"
 #include "math/octahedral.h"
 #include "math/rng.h"
@@ -31,6 +32,7 @@ public:
     bool independentPasses() const override { return global(); }
     std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) override;
     void addPasses(const PassSums& sums) override;
+    std::optional<PixelErrors> pixelErrors() const override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
     struct PixelState {
@@ -78,8 +80,12 @@ private:
     bool traceOnePass(const CancelToken& cancel);
     // The global schedule's r_i^2 / r_1^2 for the pass with index i (from 0).
     double globalShrinkAt(int64_t i) const;
-    // Adds this pass's estimate, direct + Phi / (pi r_i^2 N_emitted), to `sums` in fixed point.
+    // Pixel i's estimate from this pass alone, direct + Phi / (pi r_i^2 N_emitted).
+    Color passEstimate(size_t i) const;
+    // Adds this pass's estimates to `sums` in fixed point (and their luminance to its odd
+    // half for an odd pass).
     void addPassEstimate(PassSums& sums) const;
+    Image snapshotLocked() const;
     void cameraPass(const CancelToken& cancel);
     void tracePixel(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
@@ -117,6 +123,11 @@ private:
 
     std::vector<PixelState> pixels_;  // the per-pixel schedule's statistics
     PassSums sums_;                    // the global schedule's: its passes' estimates summed
+    bool sumsHalfKnown_ = true;        // false once resumed from a checkpoint without the odd half
+    // The per-pixel schedule's passes' own estimates, summed in halves for the error
+    // estimate: their spread tracks the noise of the progressive estimate, whose radius
+    // shrinks as the global schedule's does (checked against two seeds in the tests).
+    PassHalves halves_;
     std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
     std::vector<Color> passDirect_;      // direct light found by this pass's camera paths

@@ -2,7 +2,9 @@
 // 256 points with the latest always kept; a render that goes back replaces what followed;
 // saved and read back exactly. And which passes are kept as images.
 #include <gtest/gtest.h>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 #include "server/kept_passes.h"
 #include "server/progress_history.h"
@@ -10,7 +12,16 @@
 namespace photon::server {
 namespace {
 
-JobProgress progressAt(int pass) { return JobProgress{pass, int64_t(pass) * 1000, 1.0 / pass, pass * 0.1, 0}; }
+JobProgress progressAt(int pass) {
+    // The relative error from pass 2 on, as renders report it; a target of 1%.
+    return JobProgress{pass,
+                       int64_t(pass) * 1000,
+                       1.0 / pass,
+                       pass * 0.1,
+                       0,
+                       pass >= 2 ? std::optional<double>(0.3 / std::sqrt(pass)) : std::nullopt,
+                       0.01};
+}
 
 TEST(ProgressHistory, KeepsEveryPassWhileThereIsRoomThenThinsEvenly) {
     ProgressHistory h;
@@ -51,7 +62,10 @@ TEST(ProgressHistory, SavedAndReadBackExactly) {
         EXPECT_EQ(back.points()[i].pass, h.points()[i].pass);
         EXPECT_EQ(back.points()[i].elapsedSeconds, h.points()[i].elapsedSeconds);
         EXPECT_EQ(back.points()[i].meanRadius, h.points()[i].meanRadius);
+        EXPECT_EQ(back.points()[i].relativeError, h.points()[i].relativeError);
     }
+    EXPECT_FALSE(back.points()[0].relativeError.has_value());
+    EXPECT_EQ(back.targetError, 0.01);
     // It goes on thinning at the stride it was saved with: pass 301 is skipped, 302 taken.
     back.add(progressAt(301));
     EXPECT_EQ(back.points().back().pass, h.points().back().pass);
@@ -59,6 +73,18 @@ TEST(ProgressHistory, SavedAndReadBackExactly) {
     EXPECT_EQ(back.points().back().pass, 302);
     std::filesystem::remove(file);
     EXPECT_TRUE(ProgressHistory::load(file).points().empty());  // none: an empty history
+}
+
+TEST(ProgressHistory, AFileFromBeforeTheErrorEstimateIsReadWithNone) {
+    const auto file = std::filesystem::temp_directory_path() / ("photon-progress-old-" + std::to_string(getpid()) + ".txt");
+    std::ofstream(file) << "stride 1\nfigures 0 0 0 0 0\n1 0.5 1000 0.25\n2 1 2000 0.125\n";
+    const ProgressHistory h = ProgressHistory::load(file);
+    ASSERT_EQ(h.points().size(), 2u);
+    EXPECT_EQ(h.points()[1].pass, 2);
+    EXPECT_EQ(h.points()[1].meanRadius, 0.125);
+    EXPECT_FALSE(h.points()[1].relativeError.has_value());
+    EXPECT_EQ(h.targetError, 0.0);
+    std::filesystem::remove(file);
 }
 
 TEST(KeptPasses, TheFirstPassAtOrAfterEachPowerOfTwo) {

@@ -1,0 +1,41 @@
+// Luminance summed per pixel over a render's odd-numbered and even-numbered passes apart:
+// what the error estimate (film/pixel_errors.h) reads for integrators that keep their
+// image in floating point (the path tracer, radiosity's camera pass, SPPM with per-pixel
+// radii). 16 bytes a pixel. SPPM with the global schedule keeps its odd half in PassSums
+// instead, in fixed point, so that batches from a farm add exactly.
+#pragma once
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <vector>
+#include <photon/image.h>
+#include "film/pixel_errors.h"
+
+namespace photon {
+
+class PassHalves {
+public:
+    explicit PassHalves(size_t pixels) : sums_(2 * pixels, 0.0) {}
+    // Adds pass `pass`'s luminance at `pixel`; thread-safe across pixels.
+    void add(int64_t pass, size_t pixel, float luminance) { sums_[2 * pixel + (pass & 1)] += luminance; }
+    // Counts pass `pass` as added (once per pass, after its pixels).
+    void countPass(int64_t pass) { ++counts_[pass & 1]; }
+    // The variance estimates of `image` (the render's image after the counted passes);
+    // nullopt for a render resumed from a checkpoint that had no halves.
+    std::optional<PixelErrors> errors(const Image& image, double decay) const;
+
+    // Checkpoints carry the halves after the integrator's own state. A checkpoint written
+    // before they existed has none: the render then resumes without an error estimate.
+    void save(std::ostream& out) const;
+    // Reads the halves if the stream holds them (and nothing else is left), else marks
+    // them unknown; throws CheckpointError, changing nothing, on a damaged or partial block
+    // or one whose pass counts do not add up to `passes`.
+    void restore(std::istream& in, int64_t passes);
+
+private:
+    std::vector<double> sums_;  // per pixel: odd-pass sum, even-pass sum
+    int64_t counts_[2] = {0, 0};
+    bool known_ = true;
+};
+
+}  // namespace photon

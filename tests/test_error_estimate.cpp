@@ -1,0 +1,186 @@
+// The error estimate (film/pixel_errors.h): the relative error a render reports against the
+// true one, measured from two renders with different seeds; render.target_error stopping at
+// it; the heat map layer; the estimate through batches and checkpoints.
+#include <gtest/gtest.h>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <photon/render.h>
+#include "film/pixel_errors.h"
+#include "integrators/integrator.h"
+#include "scene/scene.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+std::vector<float> luminanceOf(const Image& image) {
+    std::vector<float> y(size_t(image.width) * image.height);
+    for (size_t i = 0; i < y.size(); ++i)
+        y[i] = luminance(Color(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]));
+    return y;
+}
+
+// The true relative error of one render, as photon-bench measures it but in luminance:
+// RMS of two seeds' difference / sqrt 2 / mean, over the pixels the estimate is taken over.
+double trueRelativeError(const Image& a, const Image& b) {
+    const std::vector<float> ya = luminanceOf(a), yb = luminanceOf(b);
+    std::vector<float> mean(ya.size());
+    for (size_t i = 0; i < ya.size(); ++i) mean[i] = 0.5f * (ya[i] + yb[i]);
+    const std::vector<bool> keep = errorPixels(mean, a.width, a.height);
+    double sum = 0, d2 = 0;
+    size_t kept = 0;
+    for (size_t i = 0; i < ya.size(); ++i)
+        if (keep[i]) sum += mean[i], d2 += double(ya[i] - yb[i]) * (ya[i] - yb[i]), ++kept;
+    return std::sqrt(d2 / double(kept)) / std::sqrt(2.0) / (sum / double(kept));
+}
+
+struct Estimated {
+    double estimate = 0, truth = 0;
+};
+
+// Renders the Cornell box twice (seeds 1 and 2) and returns the mean of their estimates
+// and the true error.
+Estimated estimateAndTruth(const std::string& integrator, const std::string& schedule, int passes,
+                           int64_t photons) {
+    Image images[2];
+    double estimate = 0;
+    for (uint64_t seed : {1, 2}) {
+        SceneDescription d = test::exampleScene("cornell-box", 48, passes, photons, seed);
+        d.render.integrator = *integratorNamed(integrator);
+        d.render.radiusSchedule = schedule == "global" ? RadiusSchedule::Global : RadiusSchedule::PerPixel;
+        Renderer renderer(Scene::build(std::move(d)));
+        CancelToken cancel;
+        renderer.run(cancel);
+        EXPECT_TRUE(renderer.progress().relativeError.has_value());
+        estimate += 0.5 * renderer.progress().relativeError.value_or(0);
+        images[seed - 1] = renderer.snapshot();
+    }
+    const Estimated e{estimate, trueRelativeError(images[0], images[1])};
+    std::printf("%s %s: estimated %.4f, true %.4f\n", integrator.c_str(), schedule.c_str(), e.estimate, e.truth);
+    return e;
+}
+
+// Two seeds' difference over 2,300 pixels measures the true error within about 3%, and the
+// estimate (the same number of degrees of freedom, twice) within about 2%: 12% holds them
+// apart at about four standard deviations.
+constexpr double kAgreement = 0.12;
+
+TEST(ErrorEstimate, PathTracerMatchesTheTrueError) {
+    const Estimated e = estimateAndTruth("path", "per_pixel", 64, 0);
+    EXPECT_NEAR(e.estimate / e.truth, 1.0, kAgreement) << "estimate " << e.estimate << ", true " << e.truth;
+}
+
+TEST(ErrorEstimate, SppmWithTheGlobalScheduleMatchesTheTrueError) {
+    const Estimated e = estimateAndTruth("sppm", "global", 64, 20000);
+    EXPECT_NEAR(e.estimate / e.truth, 1.0, kAgreement) << "estimate " << e.estimate << ", true " << e.truth;
+}
+
+TEST(ErrorEstimate, SppmWithPerPixelRadiiMatchesTheTrueError) {
+    // The per-pixel schedule's image is not the mean of its passes' estimates, but its
+    // error follows theirs (the radius shrinks alike): held to the same agreement.
+    const Estimated e = estimateAndTruth("sppm", "per_pixel", 64, 20000);
+    EXPECT_NEAR(e.estimate / e.truth, 1.0, kAgreement) << "estimate " << e.estimate << ", true " << e.truth;
+}
+
+TEST(ErrorEstimate, HalfSplitVarianceIsTheMeansVariance) {
+    // Halves of 3 and 5 passes with means 2 and 1: (A - B)^2 n_odd n_even / N^2 = 15 / 64.
+    EXPECT_FLOAT_EQ(halfSplitVariance(6.0, 5.0, 3, 5), 15.0f / 64.0f);
+    EXPECT_EQ(halfSplitVariance(6.0, 0.0, 3, 0), 0.0f);
+}
+
+TEST(ErrorEstimate, TheRenderStopsAtTheTargetError) {
+    SceneDescription d = test::exampleScene("cornell-box", 32, 100000, 5000, 1);
+    d.render.targetError = 0.08;
+    Renderer renderer(Scene::build(std::move(d)));
+    CancelToken cancel;
+    std::vector<RenderProgress> seen;
+    EXPECT_EQ(renderer.run(cancel, [&](const RenderProgress& p) { seen.push_back(p); }), RenderOutcome::TargetError);
+    ASSERT_GE(seen.size(), 3u);
+    EXPECT_FALSE(seen[0].relativeError.has_value());  // one half is still empty after pass 1
+    EXPECT_LE(*seen.back().relativeError, 0.08);
+    EXPECT_EQ(*seen.back().passesToTarget, 0.0);
+    const RenderProgress& before = seen[seen.size() - 2];
+    EXPECT_GT(*before.relativeError, 0.08);
+    EXPECT_GT(*before.passesToTarget, 0.0);
+    // The prediction at half way is within a factor of two of where the render stopped.
+    const RenderProgress& half = seen[seen.size() / 2];
+    const double predicted = half.pass + *half.passesToTarget;
+    EXPECT_NEAR(std::log2(predicted / seen.back().pass), 0.0, 1.0) << predicted << " vs " << seen.back().pass;
+    EXPECT_LE(seen[seen.size() / 2].etaSeconds, seen[seen.size() / 2].elapsedSeconds * 4);
+}
+
+TEST(ErrorEstimate, TheHeatMapLayerHoldsTheEstimate) {
+    SceneDescription d = test::exampleScene("cornell-box", 32, 16, 5000, 1);
+    Renderer renderer(Scene::build(std::move(d)));
+    CancelToken cancel;
+    renderer.run(cancel);
+    const LayeredImage layered = renderer.layers();
+    ASSERT_EQ(layered.layers.size(), 1u);
+    const ImageLayer& error = layered.layers[0];
+    EXPECT_EQ(error.name, "error");
+    EXPECT_EQ(error.channels, (std::array<std::string, 3>{"sd", "relative", "luminance"}));
+    const std::optional<PixelErrors> e = renderer.integrator().pixelErrors();
+    ASSERT_TRUE(e);
+    // Each pixel's sd is the root of its 5 x 5 neighbourhood's mean variance (clipped at the
+    // borders), relative is sd over that neighbourhood's mean luminance, and the luminance
+    // channel is the image's own.
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            double variance = 0, lum = 0;
+            int n = 0;
+            for (int j = std::max(0, y - 2); j <= std::min(31, y + 2); ++j)
+                for (int i = std::max(0, x - 2); i <= std::min(31, x + 2); ++i)
+                    variance += e->variance[j * 32 + i], lum += e->luminance[j * 32 + i], ++n;
+            const float* px = &error.image.rgb[3 * (y * 32 + x)];
+            ASSERT_NEAR(px[0], std::sqrt(variance / n), 1e-5 * (1 + px[0])) << x << "," << y;
+            ASSERT_NEAR(px[1], std::sqrt(variance / n) / (lum / n), 1e-4 * (1 + px[1])) << x << "," << y;
+            ASSERT_EQ(px[2], e->luminance[y * 32 + x]);
+            ASSERT_NEAR(px[2], luminance(layered.main.at(x, y)), 1e-5f * (1 + px[2]));
+        }
+}
+
+TEST(ErrorEstimate, BatchesInAnyOrderGiveTheSameEstimate) {
+    auto renderer = [] {
+        SceneDescription d = test::exampleScene("cornell-box", 24, 8, 3000, 1);
+        d.render.radiusSchedule = RadiusSchedule::Global;
+        return Renderer(Scene::build(std::move(d)));
+    };
+    Renderer whole = renderer(), batched = renderer();
+    CancelToken cancel;
+    whole.run(cancel);
+    std::optional<PassSums> late = batched.renderPasses(3, 5, cancel), early = batched.renderPasses(0, 3, cancel);
+    ASSERT_TRUE(late && early);
+    const PassSums decoded = PassSums::decode(late->encode());
+    EXPECT_EQ(decoded.oddLuminance, late->oddLuminance);
+    EXPECT_EQ(decoded.oddCount, 3);  // passes 3, 5 and 7
+    batched.addPasses(decoded);
+    batched.addPasses(*early);
+    ASSERT_TRUE(whole.progress().relativeError && batched.progress().relativeError);
+    EXPECT_EQ(*whole.progress().relativeError, *batched.progress().relativeError);
+}
+
+TEST(ErrorEstimate, ACheckpointKeepsTheEstimate) {
+    for (const char* integrator : {"sppm", "path"})
+        for (RadiusSchedule schedule : {RadiusSchedule::PerPixel, RadiusSchedule::Global}) {
+            auto build = [&](int passes) {
+                SceneDescription d = test::exampleScene("cornell-box", 24, passes, 3000, 1);
+                d.render.integrator = *integratorNamed(integrator);
+                d.render.radiusSchedule = schedule;
+                return Renderer(Scene::build(std::move(d)));
+            };
+            Renderer first = build(5), whole = build(9), resumed = build(9);
+            CancelToken cancel;
+            first.run(cancel);
+            whole.run(cancel);
+            std::stringstream bytes;
+            first.saveCheckpoint(bytes);
+            resumed.restoreCheckpoint(bytes);
+            EXPECT_EQ(*resumed.progress().relativeError, *first.progress().relativeError) << integrator;
+            resumed.run(cancel);
+            EXPECT_EQ(*resumed.progress().relativeError, *whole.progress().relativeError) << integrator;
+        }
+}
+
+}  // namespace
+}  // namespace photon
