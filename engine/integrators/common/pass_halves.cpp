@@ -34,9 +34,9 @@ void PassHalves::restore(std::istream& in, int64_t passes) {
     int64_t counts[2];
     readRaw(in, counts, 2);
     if (counts[0] < 0 || counts[1] < 0 || counts[0] + counts[1] != passes) throw CheckpointError("checkpoint: invalid pass halves");
-    std::vector<double> sums(sums_.size());
+    std::vector<float> sums(sums_.size());
     readRaw(in, sums.data(), sums.size());
-    for (double s : sums)
+    for (float s : sums)
         if (!(s >= 0 && std::isfinite(s))) throw CheckpointError("checkpoint: invalid pass halves");
     requireEndOfCheckpoint(in);
     sums_ = std::move(sums);

@@ -38,7 +38,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
-    const size_t state = global() ? 4 * sizeof(int64_t) : sizeof(PixelState) + 2 * sizeof(double);
+    const size_t state = global() ? 4 * sizeof(int64_t) : sizeof(PixelState) + 2 * sizeof(float);
     return state + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
 }
 
