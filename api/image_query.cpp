@@ -39,8 +39,18 @@ ImageQuery parseImageQuery(const httplib::Request& req) {
     }
     query.box = sizeParam(req);
     if (std::optional<std::string> layer = stringParam(req, "layer")) {
-        if (*layer != "raw") throwBadRequest("query parameter layer: expected raw");
-        query.raw = true;
+        if (*layer == "raw") {
+            query.raw = true;
+        } else if (*layer == "error") {
+            if (query.format != server::ImageFormat::Png)
+                throwBadRequest("query parameter layer: error is a PNG heat map (the EXR holds the channels error.sd, "
+                                "error.relative and error.luminance)");
+            if (query.exposure)
+                throwBadRequest("query parameter exposure: does not apply to layer=error (its colours are a scale)");
+            query.errorMap = true;
+        } else {
+            throwBadRequest("query parameter layer: expected raw or error");
+        }
     }
     if (std::optional<std::string> text = stringParam(req, "pass")) {
         std::optional<int64_t> pass = parseWhole<int64_t>(*text);

@@ -19,6 +19,7 @@ struct ImageQuery {
     std::optional<float> exposure;  // stops, PNG only
     std::optional<ImageSize> box;   // ?size=WxH: the box the image must fit in
     bool raw = false;               // ?layer=raw: the image before the denoiser
+    bool errorMap = false;          // ?layer=error: the error heat map, a PNG
     std::optional<int> pass;        // ?pass=N: a kept earlier pass instead of the latest
 };
 

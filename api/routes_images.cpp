@@ -83,7 +83,7 @@ void getImage(RouteContext& ctx, const httplib::Request& req, httplib::Response&
     if (query.raw && !settings.denoise)
         throwBadRequest("query parameter layer: job " + id + " is not denoised, so its image is the raw one");
     const server::ImageVariant variant =
-        server::variantFor(query.exposure, query.box, {settings.width, settings.height}, query.raw);
+        server::variantFor(query.exposure, query.box, {settings.width, settings.height}, query.raw, query.errorMap);
     // The plain image is served as cached; a variant is made from the same pass's EXR, and
     // a kept earlier pass is an EXR on disk.
     server::ImageFormat source = variant.isDefault() ? query.format : server::ImageFormat::Exr;

@@ -2,7 +2,9 @@
 #include <algorithm>
 #include <charconv>
 #include <stdexcept>
+#include <photon/error_map.h>
 #include <photon/image_io.h>
+#include "errors.h"
 #include "image_metadata.h"
 
 namespace photon::server {
@@ -20,8 +22,9 @@ float sceneExposure(const ImageMetadata& metadata) {
 
 }  // namespace
 
-ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> box, ImageSize render, bool raw) {
-    ImageVariant variant{exposure, std::nullopt, raw};
+ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> box, ImageSize render, bool raw,
+                        bool errorMap) {
+    ImageVariant variant{exposure, std::nullopt, raw, errorMap};
     if (box) {
         ImageSize fitted = fitWithin(render, *box);
         if (fitted != render) variant.size = fitted;
@@ -33,6 +36,7 @@ std::string variantSuffix(const ImageVariant& variant) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about "-" + std::string.
     std::string suffix;
     if (variant.raw) suffix.append("-raw");
+    if (variant.errorMap) suffix.append("-error");
     if (variant.size) {
         suffix.append("-").append(std::to_string(variant.size->width));
         suffix.append("x").append(std::to_string(variant.size->height));
@@ -55,7 +59,14 @@ std::shared_ptr<const std::string> encodeVariant(const std::string& exr, ImageFo
     LayeredImage image = variant.size ? resizeImage(decoded.image, *variant.size) : std::move(decoded.image);
     ImageMetadata metadata = renderMetadataOf(decoded.metadata);
     std::vector<uint8_t> bytes;
-    if (format == ImageFormat::Png) {
+    if (variant.errorMap) {  // a picture of its own: its colours are final, at exposure 0
+        std::optional<Image> map = errorHeatMap(image);
+        if (!map)
+            throw ServiceError(ErrorKind::NotFound,
+                               "this pass has no error estimate (its method keeps none, or it is the first pass)");
+        setMetadataValue(metadata, metadata_keys::kExposure, metadataNumber(0.0f));
+        bytes = encodePng(*map, 0.0f, metadata);
+    } else if (format == ImageFormat::Png) {
         float exposure = variant.exposure.value_or(sceneExposure(metadata));
         setMetadataValue(metadata, metadata_keys::kExposure, metadataNumber(exposure));
         bytes = encodePng(image.main, exposure, metadata);

@@ -25,21 +25,23 @@ struct ImageVariant {
     std::optional<float> exposure;  // PNG only: stops instead of the scene's
     std::optional<ImageSize> size;  // smaller than the render in at least one side
     bool raw = false;               // the "raw" layer (before the denoiser) as the image
-    bool isDefault() const { return !exposure && !size && !raw; }
+    bool errorMap = false;          // PNG only: the error heat map (photon/error_map.h) as the image
+    bool isDefault() const { return !exposure && !size && !raw && !errorMap; }
 };
 
 // The variant asked for with `box` (or none) for a render of `render`'s size: no size when
 // the box does not make it smaller, so that such a request is the plain image.
 ImageVariant variantFor(std::optional<float> exposure, std::optional<ImageSize> box, ImageSize render,
-                        bool raw = false);
+                        bool raw = false, bool errorMap = false);
 
 // What tells the variant apart in ETags and file names: "" for the default, else e.g.
-// "-raw", "-256x192", "-ev1.5", "-raw-256x192-ev-2" (the exposure in its shortest exact form, so
+// "-raw", "-error", "-256x192", "-ev1.5", "-raw-256x192-ev-2" (the exposure in its shortest exact form, so
 // "1", "1.0" and "1e0" name one entity).
 std::string variantSuffix(const ImageVariant& variant);
 
 // `exr`: the EXR encoding of a pass as the image cache makes it. Throws std::runtime_error
-// for bytes that are no such image, or that have no raw layer when the variant asks for it.
+// for bytes that are no such image, or that have no raw layer when the variant asks for it;
+// ServiceError (NotFound) for an error map of a pass without an error estimate.
 std::shared_ptr<const std::string> encodeVariant(const std::string& exr, ImageFormat format,
                                                  const ImageVariant& variant);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <photon/error_map.h>
 #include <photon/render.h>
 #include "film/pixel_errors.h"
 #include "integrators/integrator.h"
@@ -87,6 +88,28 @@ TEST(ErrorEstimate, HalfSplitVarianceIsTheMeansVariance) {
     // Halves of 3 and 5 passes with means 2 and 1: (A - B)^2 n_odd n_even / N^2 = 15 / 64.
     EXPECT_FLOAT_EQ(halfSplitVariance(6.0, 5.0, 3, 5), 15.0f / 64.0f);
     EXPECT_EQ(halfSplitVariance(6.0, 0.0, 3, 0), 0.0f);
+}
+
+TEST(ErrorEstimate, TheHeatMapsScaleStepsByFactorsOfTen) {
+    // The ramp's stops (sRGB codes, decoded by IEC 61966-2-1) at 0.1%, 1%, 10% and 100%.
+    auto linear = [](float code) {
+        const float v = code / 255.0f;
+        return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    };
+    const float stops[4][3] = {{0, 0, 4}, {120, 28, 109}, {237, 105, 37}, {252, 255, 164}};
+    const float errors[4] = {0.001f, 0.01f, 0.1f, 1.0f};
+    for (int i = 0; i < 4; ++i) {
+        const Color c = errorHeatMapColor(errors[i]);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], linear(stops[i][k]), 1e-4f) << errors[i];
+    }
+    EXPECT_EQ(errorHeatMapColor(1e-6f), errorHeatMapColor(0.001f));  // clamped at both ends
+    EXPECT_EQ(errorHeatMapColor(50.0f), errorHeatMapColor(1.0f));
+    float previous = -1;
+    for (float e = 0.001f; e <= 1.0f; e *= 1.25f) {  // brighter as the error grows
+        EXPECT_GT(luminance(errorHeatMapColor(e)), previous) << e;
+        previous = luminance(errorHeatMapColor(e));
+    }
+    EXPECT_FALSE(errorHeatMap(LayeredImage{Image(2, 2), {}}));
 }
 
 TEST(ErrorEstimate, TheRenderStopsAtTheTargetError) {

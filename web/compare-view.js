@@ -85,15 +85,17 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     if (asked === listing && job === forJob) fillSelect();
   }
 
-  // What each side shows, with "raw" where the raw layer is shown.
+  // What each side shows, with "raw" where the raw layer is shown and "error" where the
+  // error map is.
   function labels() {
-    const raw = settings().layer === 'raw';
-    leftLabel.textContent = job ? `this job, pass ${job.passesDone}${raw && job.denoise ? ', raw' : ''}` : '';
+    const layer = settings().layer;
+    const suffix = (j) => (layer === 'raw' && j?.denoise ? ', raw' : layer === 'error' && j?.relativeError != null ? ', error' : '');
+    leftLabel.textContent = job ? `this job, pass ${job.passesDone}${suffix(job)}` : '';
     if (chosen.startsWith('pass:')) {
-      rightLabel.textContent = `pass ${chosen.slice(5)}${raw && job.denoise ? ', raw' : ''}`;
+      rightLabel.textContent = `pass ${chosen.slice(5)}${suffix(job)}`;
     } else if (chosen.startsWith('job:')) {
       const other = others.find((o) => o.id === chosen.slice(4));
-      rightLabel.textContent = (other ? other.name || other.id : chosen.slice(4)) + (raw && other?.denoise ? ', raw' : '');
+      rightLabel.textContent = (other ? other.name || other.id : chosen.slice(4)) + suffix(other);
     }
   }
 
@@ -113,9 +115,12 @@ export function createCompareView({ frame, select, layer, image, divider, leftLa
     const target = kind === 'pass' ? job : others.find((o) => o.id === key);
     const pass = kind === 'pass' ? Number(key) : target?.passesDone ?? 1;
     image.dataset.job = id;
-    // The raw layer of a job that has none would be refused (400): its only image instead.
+    // The raw layer of a job that has none would be refused (400), the error map of a job
+    // without an estimate too (404): its image instead. A kept first pass has no error map
+    // either, and says so.
     const optionsFor = () => {
       const options = settings();
+      if (options.layer === 'error') return target?.relativeError != null ? options : { ...options, layer: null };
       return target?.denoise === true ? options : { ...options, layer: null };
     };
     loader = createPreviewLoader({

@@ -125,16 +125,23 @@ export function createJobView({ onChanged, onDeleted }) {
     },
   });
 
-  // A job that denoises has a raw layer too: the image before the denoiser.
+  // A job that denoises has a raw layer too: the image before the denoiser; a job whose
+  // method estimates its error has the error heat map (from pass 2 on).
   const layerChoice = $('layer-choice');
   const rawLayer = $('layer-raw');
+  const errorLayer = $('layer-error');
   for (const radio of layerChoice.querySelectorAll('input')) {
     radio.addEventListener('change', () => settingsChanged());
   }
 
   function showLayerChoice(job) {
-    layerChoice.hidden = job.denoise !== true;
-    if (layerChoice.hidden) $('layer-denoised').checked = true;
+    const raw = job.denoise === true;
+    const error = job.relativeError !== null;
+    $('layer-raw-choice').hidden = !raw;
+    $('layer-error-choice').hidden = !error;
+    $('layer-denoised-label').textContent = raw ? 'Denoised' : 'Image';
+    layerChoice.hidden = !raw && !error;
+    if ((rawLayer.checked && !raw) || (errorLayer.checked && !error)) $('layer-denoised').checked = true;
   }
 
   // Another exposure or layer: the images on show are loaded again with it (the frame says it
@@ -147,9 +154,11 @@ export function createJobView({ onChanged, onDeleted }) {
     if (session.job) setDownload(el.png, session.id, 'png', session.job.passesDone > 0);
   }
 
-  // What the job's image is asked for with: the layer (raw, or null for the denoised one)
-  // and the exposure chosen (null: the render's).
+  // What the job's image is asked for with: the layer (raw, error, or null for the image
+  // itself) and the exposure chosen (null: the render's; the error map has none, its
+  // colours are a scale).
   function imageSettings() {
+    if (!layerChoice.hidden && errorLayer.checked) return { layer: 'error', exposure: null };
     return { layer: !layerChoice.hidden && rawLayer.checked ? 'raw' : null, exposure: exposure.value() };
   }
 

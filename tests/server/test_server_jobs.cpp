@@ -1,6 +1,8 @@
 // The job lifecycle over HTTP: submit, follow events, fetch images, cancel, delete.
 #include <atomic>
 #include <thread>
+#include <photon/error_map.h>
+#include <photon/image_io.h>
 #include <photon/render.h>
 #include "server_fixture.h"
 
@@ -169,7 +171,25 @@ TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
     // The EXR carries the heat map.
     httplib::Result exr = client().Get(("/api/v1/jobs/" + id + "/image?format=exr").c_str());
     ASSERT_TRUE(exr);
-    EXPECT_NE(exr->body.find("error.relative"), std::string::npos);
+    const DecodedImage layered = decodeImageBytes(exr->body, "exr");
+    // ?layer=error: the heat map of that layer, as the engine draws it.
+    httplib::Result map = client().Get(("/api/v1/jobs/" + id + "/image?layer=error").c_str());
+    ASSERT_TRUE(map);
+    ASSERT_EQ(map->status, 200) << map->body;
+    EXPECT_EQ(map->get_header_value("ETag"), "\"" + id + "-" + std::to_string(engine.pass) + "-png-error\"");
+    const std::vector<uint8_t> expected = encodePng(*errorHeatMap(layered.image), 0.0f);
+    EXPECT_EQ(decodeImage(map->body, "png").rgb,
+              decodeImage(std::string(expected.begin(), expected.end()), "png").rgb);
+    // Pass 1 has no estimate; the EXR and an exposure are refused.
+    httplib::Result first = client().Get(("/api/v1/jobs/" + id + "/image?layer=error&pass=1").c_str());
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->status, 404) << first->body;
+    EXPECT_NE(first->body.find("this pass has no error estimate"), std::string::npos) << first->body;
+    for (const char* query : {"?layer=error&format=exr", "?layer=error&exposure=1"}) {
+        httplib::Result bad = client().Get(("/api/v1/jobs/" + id + "/image" + query).c_str());
+        ASSERT_TRUE(bad);
+        EXPECT_EQ(bad->status, 400) << query;
+    }
 }
 
 TEST_F(JobsTest, QueryParametersOverrideTheRenderBlock) {

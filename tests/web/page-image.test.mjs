@@ -491,6 +491,46 @@ test("a denoised job: raw or denoised, its kept passes compared, its plot from t
     }
   });
 
+test("the error map: each pixel's estimated error, the server's heat map pixel for pixel", { timeout: 60_000 }, async () => {
+  const record = await renderJob('porch', 32, { passes: 4, photons_per_pass: 2000, seed: 5 });
+  const id = record.id;
+  assert.ok(record.relative_error > 0, `relative error ${record.relative_error}`);
+  const requests = [];
+  const onRequest = (request) => {
+    const url = new URL(request.url());
+    if (url.pathname === `/api/v1/jobs/${id}/image` && !request.headers()['x-test-check']) requests.push(url.search);
+  };
+  page.on('request', onRequest);
+  try {
+    await page.evaluate((jobId) => {
+      window.location.hash = `job=${jobId}`;
+    }, id);
+    await page.waitForFunction(() => document.querySelector('#job-image').dataset.pass === '4');
+    // Not denoised: the image and its error map, no raw layer.
+    assert.equal(await page.isVisible('#layer-choice'), true);
+    assert.equal(await page.isVisible('#layer-raw-choice'), false);
+    assert.equal(await page.isVisible('#layer-error-choice'), true);
+    assert.equal(await textOf('#layer-denoised-label'), 'Image');
+    assert.equal(await textOf('#job-relative-error'), `${Number((100 * record.relative_error).toPrecision(3))}%`);
+    requests.length = 0;
+    await watchShownImages();
+    await page.check('#layer-error');
+    await page.waitForFunction(() => window.__shown.length === 1);
+    assert.deepEqual(requests, ['?format=png&layer=error']);
+    const map = await shownAndServedPixels(page, id, '?format=png&layer=error');
+    assert.deepEqual(map.shown, map.served);
+    const image = await shownAndServedPixels(page, id, '?format=png');
+    assert.notDeepEqual(map.shown, image.served, 'the error map is not the image');
+    assert.equal(await page.getAttribute('#download-png', 'href'), `/api/v1/jobs/${id}/image?format=png&layer=error`);
+    await saveScreenshot('error-map');
+    await page.check('#layer-denoised');
+    await page.waitForFunction(() => window.__shown.length === 2);
+    assert.deepEqual(requests.slice(1), ['?format=png']);
+  } finally {
+    page.off('request', onRequest);
+  }
+});
+
 test('the page raised no script errors', () => {
   assert.deepEqual(pageErrors, []);
 });
