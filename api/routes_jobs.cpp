@@ -25,6 +25,7 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
     o.passes = integerParam(req, "passes", 1, INT64_MAX);
     o.photonsPerPass = integerParam(req, "photons_per_pass", 1, INT64_MAX);
     o.seed = unsignedParam(req, "seed");
+    o.targetError = numberParam(req, "target_error", 0, 1e9);
     o.camera = stringParam(req, "camera");
     o.priority = int(integerParam(req, "priority", INT_MIN, INT_MAX).value_or(0));
     o.name = stringParam(req, "name").value_or("");

@@ -27,6 +27,9 @@ struct JobSettings {
     int width = 0, height = 0;
     std::string camera;  // the imported glTF camera asked for by name; empty: the file's first
     bool denoise = false;  // the scene asks for the denoiser: its images have a raw layer
+    // render.target_error: the render stops at this estimated relative error (0: none); the
+    // scene's, or the submission's target_error.
+    double targetError = 0;
 };
 
 // What a method reports besides passes and photons, as its render last reported it.
@@ -46,9 +49,8 @@ struct JobProgress {
     double elapsedSeconds = 0;
     double etaSeconds = 0;  // to the pass count, the time limit or the target error, whichever comes first
     // The image's estimated relative error (RenderProgress::relativeError), when the method
-    // keeps one, and the scene's render.target_error (0: none).
+    // keeps one.
     std::optional<double> relativeError;
-    double targetError = 0;
     MethodFigures figures;
 };
 

@@ -16,6 +16,17 @@
 
 namespace photon::server {
 
+namespace {
+
+// A setting's number as a scene override's text, round-tripping exactly.
+std::string exactDecimal(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return text;
+}
+
+}  // namespace
+
 void JobRunner::run(const std::string& id) {
     std::optional<JobTable::Started> started = table_.start(id, utcNowIso8601());
     if (!started) return;  // cancelled while it waited in the queue
@@ -94,7 +105,8 @@ farm::FarmScene JobRunner::farmScene(const JobTable::Started& started) const {
         folders_.jobDir(id), sceneFile.filename().string(),
         {{"render.passes", std::to_string(settings.passes)},
          {"render.photons_per_pass", std::to_string(settings.photonsPerPass)},
-         {"render.seed", std::to_string(settings.seed)}},
+         {"render.seed", std::to_string(settings.seed)},
+         {"render.target_error", exactDecimal(settings.targetError)}},
         [&](const std::filesystem::path& relative) {
             const std::string name = relative.generic_string();
             return name == sceneFile.filename().string() || !JobFolders::isServiceFile(name);
@@ -238,8 +250,7 @@ void JobRunner::onPass(const std::string& id, const JobSettings& settings, const
 void JobRunner::onPass(const std::string& id, const JobSettings& settings, std::shared_ptr<const PendingImage> image,
                        const RenderProgress& p, double& elapsedBefore) {
     // The image's files say how far the render had got then.
-    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds,
-                         p.relativeError, p.targetError, {}};
+    JobProgress progress{p.pass, p.photonsTraced, p.meanRadius, p.elapsedSeconds, p.etaSeconds, p.relativeError, {}};
     recordPass(id, settings, *image, progress, p.lastPass);
     ImageMetadata metadata = passMetadata(settings, progress, image->exposure());
     images_.store(id, p.pass, std::move(image), std::move(metadata));

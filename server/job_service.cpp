@@ -61,7 +61,6 @@ void JobService::restore() {
         job.keptPasses = folders_.keptPasses(job.id);
         const ProgressHistory history = ProgressHistory::load(folders_.progressFile(job.id));
         job.progress.figures = history.figures;
-        job.progress.targetError = history.targetError;
         if (!history.points().empty()) job.progress.relativeError = history.points().back().relativeError;
         table_.insert(job);
         hub_.publish(job, std::nullopt);
@@ -247,7 +246,7 @@ JobRecord JobService::continueJob(const std::string& id, int64_t morePasses) {
     JobRecord before = get(id);
     if (morePasses < 1) throw ServiceError(ErrorKind::BadRequest, "passes: must be an integer >= 1");
     checkLimit(ErrorKind::LimitExceeded, "the number of passes, those to come included",
-               before.settings.passes + morePasses, limits_, &Limits::maxPasses);
+               before.progress.pass + morePasses, limits_, &Limits::maxPasses);
     std::error_code ec;
     if (before.status == JobStatus::Completed && !std::filesystem::exists(folders_.checkpointFile(id), ec))
         throw ServiceError(ErrorKind::Conflict, "job " + id + " kept no checkpoint to render on from");

@@ -75,17 +75,24 @@ ALTER TABLE jobs ADD COLUMN denoise INTEGER NOT NULL DEFAULT 0;
 PRAGMA user_version = 5;
 COMMIT;
 )sql";
-constexpr int64_t kSchemaVersion = 5;
+// Version 6: the relative error the render stops at (0, none, for every job before).
+const char* kMigrateTo6 = R"sql(
+BEGIN IMMEDIATE;
+ALTER TABLE jobs ADD COLUMN target_error REAL NOT NULL DEFAULT 0;
+PRAGMA user_version = 6;
+COMMIT;
+)sql";
+constexpr int64_t kSchemaVersion = 6;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client, upload_bytes, warnings, name, labels, updated_at, camera, denoise)"
-    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18)";
+    " client, upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
     " mean_radius = ?7, elapsed_seconds = ?8, eta_seconds = ?9, error = ?10, updated_at = ?11,"
-    " priority = ?12, passes = ?13 WHERE id = ?1";
+    " priority = ?12, passes = ?13, target_error = ?14 WHERE id = ?1";
 
 const char* kRemove = "DELETE FROM jobs WHERE id = ?1";
 const char* kRemoveKeysOf = "DELETE FROM idempotency_keys WHERE job_id = ?1";
@@ -98,7 +105,7 @@ const char* kFindKey =
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
     " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
-    " upload_bytes, warnings, name, labels, updated_at, camera, denoise FROM jobs ORDER BY seq";
+    " upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
@@ -144,6 +151,7 @@ sql::Database& withSchema(sql::Database& db) {
     if (version < 3) migrate(db, kMigrateTo3);
     if (version < 4) migrate(db, kMigrateTo4);
     if (version < 5) migrate(db, kMigrateTo5);
+    if (version < 6) migrate(db, kMigrateTo6);
     return db;
 }
 
@@ -193,6 +201,7 @@ JobRecord readRow(const sql::Statement& s) {
     job.updatedAt = s.text(24);
     job.settings.camera = s.text(25);
     job.settings.denoise = s.integer(26) != 0;
+    job.settings.targetError = s.real(27);
     return job;
 }
 
@@ -221,7 +230,7 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bindTextOrNull(11, job.client).bind(12, job.uploadBytes).bindTextOrNull(13, joinLines(job.warnings));
         insert_.bindTextOrNull(14, job.name).bindTextOrNull(15, joinLines(job.labels));
         insert_.bindTextOrNull(16, job.updatedAt).bindTextOrNull(17, job.settings.camera);
-        insert_.bind(18, int64_t(job.settings.denoise));
+        insert_.bind(18, int64_t(job.settings.denoise)).bind(19, job.settings.targetError);
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;
@@ -252,7 +261,7 @@ void JobStore::update(const JobRecord& job) {
     update_.bind(5, int64_t(job.progress.pass)).bind(6, job.progress.photonsTraced);
     update_.bind(7, job.progress.meanRadius).bind(8, job.progress.elapsedSeconds);
     update_.bind(9, job.progress.etaSeconds).bindTextOrNull(10, job.error).bindTextOrNull(11, job.updatedAt);
-    update_.bind(12, int64_t(job.priority)).bind(13, int64_t(job.settings.passes));
+    update_.bind(12, int64_t(job.priority)).bind(13, int64_t(job.settings.passes)).bind(14, job.settings.targetError);
     update_.run();
 }
 

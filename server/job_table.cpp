@@ -203,7 +203,10 @@ JobTable::ContinueResult JobTable::continueWith(const std::string& id, int moreP
     job = e.job;
     if (e.job.status != JobStatus::Completed) return ContinueResult::NotCompleted;
     e.job.status = JobStatus::Queued;
-    e.job.settings.passes += morePasses;
+    // N more passes after the last one rendered, whatever ended the render (its pass count,
+    // time limit or target error); the target, once reached, no longer stops it.
+    e.job.settings.passes = e.job.progress.pass + morePasses;
+    e.job.settings.targetError = 0;
     e.job.finishedAt.clear();
     e.job.updatedAt = now;
     e.cancelRequested = false;

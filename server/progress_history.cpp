@@ -13,7 +13,6 @@ void ProgressHistory::add(const JobProgress& p) {
     }
     if (!points_.empty() && p.pass - points_.back().pass < stride_) return;
     points_.push_back({p.pass, p.elapsedSeconds, p.photonsTraced, p.meanRadius, p.relativeError});
-    targetError = p.targetError;
     if (points_.size() < kMaxPoints) return;
     std::vector<ProgressPoint> kept;
     for (size_t i = 0; i < points_.size(); i += 2) kept.push_back(points_[i]);
@@ -29,8 +28,8 @@ void ProgressHistory::save(const std::filesystem::path& file) const {
     text << "figures " << figures.patches << ' ' << figures.solverIterations << ' ' << figures.solverResidual << ' '
          << figures.globalMapPhotons << ' ' << figures.causticMapPhotons << '\n';
     // Points of five columns, the last the relative error (-1: none); files written before
-    // it have no "target" line and four.
-    text << "target " << targetError << '\n';
+    // it have no "columns" line and four.
+    text << "columns 5\n";
     for (const ProgressPoint& p : points_)
         text << p.pass << ' ' << p.elapsedSeconds << ' ' << p.photonsTraced << ' ' << p.meanRadius << ' '
              << p.relativeError.value_or(-1) << '\n';
@@ -48,11 +47,11 @@ ProgressHistory ProgressHistory::load(const std::filesystem::path& file) {
         word != "figures")
         return {};
     const std::streampos pointsStart = in.tellg();
-    const bool withErrors = (in >> word >> h.targetError) && word == "target";
+    int columns = 4;
+    const bool withErrors = (in >> word >> columns) && word == "columns" && columns == 5;
     if (!withErrors) {
         in.clear();
         in.seekg(pointsStart);
-        h.targetError = 0;
     }
     ProgressPoint p;
     double error = -1;

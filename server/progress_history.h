@@ -26,8 +26,6 @@ public:
     void add(const JobProgress& progress);
     // The method's figures as the render last reported them, kept with the history.
     MethodFigures figures;
-    // The render's target error (0: none), kept with the history as the figures are.
-    double targetError = 0;
     const std::vector<ProgressPoint>& points() const { return points_; }
 
     // Written through a temporary file; read back as far as it is whole (a file from an

@@ -38,6 +38,7 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     if (options.passes) render.passes = int(std::min<int64_t>(*options.passes, INT32_MAX));
     if (options.photonsPerPass) render.photonsPerPass = *options.photonsPerPass;
     if (options.seed) render.seed = *options.seed;
+    if (options.targetError) render.targetError = *options.targetError;
 
     constexpr ErrorKind kOver = ErrorKind::LimitExceeded;
     checkLimit(kOver,
@@ -58,6 +59,7 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     s.height = scene->height();
     s.camera = options.camera.value_or("");
     s.denoise = render.denoise.enabled;
+    s.targetError = render.targetError;
     std::vector<std::string> warnings = scene->warnings();
     for (std::string& w : scene->methodWarnings()) warnings.push_back(std::move(w));
     return {s, scene->files(), imported, std::move(warnings)};
@@ -73,6 +75,7 @@ void applySettings(const JobSettings& settings, RenderSettings& render) {
     render.passes = settings.passes;
     render.photonsPerPass = settings.photonsPerPass;
     render.seed = settings.seed;
+    render.targetError = settings.targetError;
 }
 
 }  // namespace photon::server

@@ -20,6 +20,7 @@ struct SubmitOptions {
     std::optional<int64_t> passes;
     std::optional<int64_t> photonsPerPass;
     std::optional<uint64_t> seed;
+    std::optional<double> targetError;  // render.target_error instead of the scene's
     std::optional<std::string> camera;  // an imported glTF's camera, by name (default: its first)
     int priority = 0;
     std::string name;                 // see job_labels.h

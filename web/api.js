@@ -259,7 +259,7 @@ export async function getJob(id) {
 }
 
 // sceneText: the scene JSON as text. assets: [{ file: File, path: 'meshes/x.obj' }].
-// params: { passes, photons_per_pass, seed, priority }; empty values are left out.
+// params: { passes, photons_per_pass, seed, target_error, priority }; empty values are left out.
 // sceneFile: a scene file sent as it is (a .pbrt, .gltf or .glb the server imports) instead
 // of sceneText; its name's extension tells the server its kind.
 export async function submitJob({ sceneText, sceneFile = null, assets = [], params = {} }) {

@@ -1,6 +1,7 @@
 // The "New render" form: a scene from the bundled examples, a .json file or pasted text, or
 // a .pbrt, .gltf or .glb file the server imports (sent as it is);
-// asset files with editable relative paths; optional passes, photons per pass and seed;
+// asset files with editable relative paths; optional passes, photons per pass, seed and the
+// error to stop at (a percentage, sent as target_error);
 // the method (render.integrator) and denoising (render.denoise), written into the scene.
 // Checks what it can before sending (JSON syntax, whole numbers) and shows every error,
 // its own or the server's, next to the field at fault.
@@ -45,7 +46,7 @@ export function createSubmitForm({ onSubmitted }) {
   // What was typed and chosen survives a reload (not the files: a page cannot set those).
   const memory = rememberForm(
     form,
-    ['example-select', 'scene-text', 'passes', 'photons-per-pass', 'seed', 'integrator', 'denoise'],
+    ['example-select', 'scene-text', 'passes', 'photons-per-pass', 'seed', 'target-error', 'integrator', 'denoise'],
     'photon.submit-form',
   );
 
@@ -62,6 +63,8 @@ export function createSubmitForm({ onSubmitted }) {
       const value = render[field.param];
       $(field.input).placeholder = Number.isInteger(value) ? String(value) : '';
     }
+    const target = render.target_error;
+    $('target-error').placeholder = typeof target === 'number' && target > 0 ? String(Number((100 * target).toPrecision(6))) : '';
   }
   showSceneSettings();
 
@@ -213,6 +216,15 @@ export function createSubmitForm({ onSubmitted }) {
         }
       }
     }
+    // The error to stop at, a percentage: 2 is target_error=0.02.
+    const target = $('target-error');
+    const percent = target.value.trim();
+    if ((target.validity && target.validity.badInput) || (percent !== '' && !(Number(percent) >= 0))) {
+      showError('target-error-error', 'Stop at error must be a percentage of at least 0.', target);
+      ok = false;
+    } else if (percent !== '') {
+      params.target_error = String(Number(percent) / 100);
+    }
     return ok ? params : null;
   }
 
@@ -243,6 +255,10 @@ export function createSubmitForm({ onSubmitted }) {
     if (error.path !== undefined) {
       showError('scene-error', message, sceneText);
       selectErrorPlace(error);
+      return;
+    }
+    if (/target_error/.test(message) && $('target-error').value.trim() !== '') {
+      showError('target-error-error', message, $('target-error'));
       return;
     }
     for (const field of NUMBER_FIELDS) {

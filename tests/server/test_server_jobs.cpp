@@ -154,8 +154,12 @@ TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
     ASSERT_EQ(renderer.run(cancel), RenderOutcome::TargetError);
     const RenderProgress& engine = renderer.progress();
 
-    std::string id = submitOk(scene);
+    // Submitted without it, the target given as a query parameter instead.
+    json plain = scene;
+    plain["render"].erase("target_error");
+    std::string id = submitOk(plain, "?target_error=0.15");
     json job = waitFor(id, [](const json& j) { return j["status"] == "completed"; }, std::chrono::seconds(60));
+    EXPECT_EQ(job["settings"]["target_error"], 0.15);
     EXPECT_EQ(job["pass"], engine.pass);
     EXPECT_EQ(job["relative_error"].get<double>(), *engine.relativeError);
     EXPECT_LE(job["relative_error"].get<double>(), 0.15);
@@ -190,6 +194,16 @@ TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
         ASSERT_TRUE(bad);
         EXPECT_EQ(bad->status, 400) << query;
     }
+    // Continued, it renders that many passes more: the target, reached, stops it no longer.
+    httplib::Result more = client().Post(("/api/v1/jobs/" + id + "/continue?passes=3").c_str());
+    ASSERT_TRUE(more);
+    ASSERT_EQ(more->status, 200) << more->body;
+    job = waitFor(id, [](const json& j) { return j["status"] == "completed" && j["pass"] > 0; }, std::chrono::seconds(60));
+    job = waitFor(id, [&](const json& j) { return j["status"] == "completed" && j["pass"] == engine.pass + 3; },
+                  std::chrono::seconds(60));
+    EXPECT_EQ(job["settings"]["passes"], engine.pass + 3);
+    EXPECT_TRUE(job["target_error"].is_null());
+    EXPECT_LT(job["relative_error"].get<double>(), *engine.relativeError);
 }
 
 TEST_F(JobsTest, QueryParametersOverrideTheRenderBlock) {

@@ -57,7 +57,7 @@ async function chooseExample(name) {
 }
 
 async function clearOverrides() {
-  for (const id of ['#passes', '#photons-per-pass', '#seed']) await page.fill(id, '');
+  for (const id of ['#passes', '#photons-per-pass', '#seed', '#target-error']) await page.fill(id, '');
 }
 
 // The scene editor's selection, and whether it has the focus (a selection shows only then).
@@ -275,6 +275,7 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   await page.fill('#passes', '4');
   await page.fill('#photons-per-pass', '20000');
   await page.fill('#seed', '');
+  await page.fill('#target-error', '0.001'); // 0.001%: far below what 4 passes reach
   await page.click('#submit-button');
   const id = await submittedJobId();
   assert.equal(await textOf('#job-id'), id, 'the job view opens the submitted job');
@@ -320,8 +321,10 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   // The estimated error from pass 2 on, as the record has it.
   const done = await (await fetch(`${server.baseUrl}api/v1/jobs/${id}`)).json();
   assert.ok(done.relative_error > 0 && done.relative_error < 1, `relative error ${done.relative_error}`);
-  assert.equal(done.target_error, null);
-  assert.equal(await textOf('#job-relative-error'), `${Number((100 * done.relative_error).toPrecision(3))}%`);
+  assert.equal(done.target_error, 0.00001);
+  assert.equal(done.settings.target_error, 0.00001);
+  assert.equal(await textOf('#job-relative-error'), `${Number((100 * done.relative_error).toPrecision(3))}% (target 0.001%)`);
+  await page.fill('#target-error', '');
 
   // The list shows the job as completed with a full progress bar (it polls every 2 s).
   const row = page.locator(`#job-list li[data-job-id="${id}"]`);

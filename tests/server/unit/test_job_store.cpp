@@ -37,7 +37,7 @@ JobRecord newJob(const std::string& id) {
     job.status = JobStatus::Queued;
     job.priority = 0;
     job.createdAt = "2024-05-01T09:00:00.000Z";
-    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240, "", true};
+    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240, "", true, 0.025};
     job.client = "127.0.0.1";
     return job;
 }
@@ -65,6 +65,7 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.error, expected.error);
     EXPECT_EQ(actual.settings.camera, expected.settings.camera);
     EXPECT_EQ(actual.settings.denoise, expected.settings.denoise);
+    EXPECT_EQ(actual.settings.targetError, expected.settings.targetError);
     EXPECT_EQ(actual.client, expected.client);
     EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
     EXPECT_EQ(actual.warnings, expected.warnings);
@@ -197,7 +198,10 @@ TEST_F(JobStoreTest, UpdateDoesNotChangeSubmissionFields) {
     changed.priority = job.priority = 9;
     changed.createdAt = "2030-01-01T00:00:00.000Z";
     changed.settings = JobSettings{1, 1, 1, "path", 1, 1};
-    job.settings.passes = 1;  // the one setting that changes later: more passes of a completed job
+    // The settings that change later: more passes of a completed job, whose target error
+    // then no longer stops it.
+    job.settings.passes = 1;
+    job.settings.targetError = 0;
     changed.client = "10.9.9.9";
     store.update(changed);
     expectSameJob(store.loadAll().at(0), job);
@@ -384,13 +388,13 @@ TEST_F(JobStoreTest, RefusesADatabaseOfANewerSchemaVersion) {
     { JobStore store(dbFile()); }
     {
         sql::Database db(dbFile());
-        db.exec("PRAGMA user_version = 6");
+        db.exec("PRAGMA user_version = 7");
     }
     try {
         JobStore store(dbFile());
-        FAIL() << "opened a version 6 database";
+        FAIL() << "opened a version 7 database";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("newer version (6)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("newer version (7)"), std::string::npos) << e.what();
     }
 }
 
@@ -440,6 +444,7 @@ VALUES ('old', 'queued', 1, '2023-01-01T00:00:00.000Z', 4, 1000, 7, 'path', 64, 
     EXPECT_EQ(jobs[0].updatedAt, "2023-01-01T00:00:00.000Z");  // its creation
     EXPECT_EQ(jobs[0].settings.camera, "");  // nor versions before 4 this
     EXPECT_FALSE(jobs[0].settings.denoise);   // nor versions before 5 this
+    EXPECT_EQ(jobs[0].settings.targetError, 0.0);  // nor versions before 6 this
 
     JobRecord fresh = newJob("new");
     EXPECT_EQ(store.insert(fresh, IdempotencyEntry{"k", "0123456789abcdef", "", 1000}), 2);

@@ -13,14 +13,13 @@ namespace photon::server {
 namespace {
 
 JobProgress progressAt(int pass) {
-    // The relative error from pass 2 on, as renders report it; a target of 1%.
+    // The relative error from pass 2 on, as renders report it.
     return JobProgress{pass,
                        int64_t(pass) * 1000,
                        1.0 / pass,
                        pass * 0.1,
                        0,
-                       pass >= 2 ? std::optional<double>(0.3 / std::sqrt(pass)) : std::nullopt,
-                       0.01};
+                       pass >= 2 ? std::optional<double>(0.3 / std::sqrt(pass)) : std::nullopt};
 }
 
 TEST(ProgressHistory, KeepsEveryPassWhileThereIsRoomThenThinsEvenly) {
@@ -65,7 +64,6 @@ TEST(ProgressHistory, SavedAndReadBackExactly) {
         EXPECT_EQ(back.points()[i].relativeError, h.points()[i].relativeError);
     }
     EXPECT_FALSE(back.points()[0].relativeError.has_value());
-    EXPECT_EQ(back.targetError, 0.01);
     // It goes on thinning at the stride it was saved with: pass 301 is skipped, 302 taken.
     back.add(progressAt(301));
     EXPECT_EQ(back.points().back().pass, h.points().back().pass);
@@ -83,7 +81,6 @@ TEST(ProgressHistory, AFileFromBeforeTheErrorEstimateIsReadWithNone) {
     EXPECT_EQ(h.points()[1].pass, 2);
     EXPECT_EQ(h.points()[1].meanRadius, 0.125);
     EXPECT_FALSE(h.points()[1].relativeError.has_value());
-    EXPECT_EQ(h.targetError, 0.0);
     std::filesystem::remove(file);
 }
 
