@@ -81,6 +81,13 @@ nlohmann::json compareWithReference(const std::string& sceneFile, const std::str
         out["runs"].push_back({{"seconds", s},
                                {"passes", (a.passes + b.passes) / 2},
                                {"relative_noise", masked.rmse(a.image, b.image) / std::sqrt(2.0) / mean},
+                               // The renders' own estimate (the mean of the two) against its true
+                               // value: the same figure in luminance from the two seeds.
+                               {"estimated_relative_error",
+                                a.estimatedError && b.estimatedError
+                                    ? nlohmann::json(0.5 * (*a.estimatedError + *b.estimatedError))
+                                    : nlohmann::json()},
+                               {"true_relative_error", relativeNoiseOfLuminance(a.image, b.image)},
                                {"bias_of_mean", mean / referenceMean - 1},
                                {"relative_rmse", 0.5 * (masked.rmse(a.image, reference) + masked.rmse(b.image, reference)) /
                                                      referenceMean}});

@@ -1,6 +1,7 @@
 // Renders for a fixed time and the figures equal-time comparisons read off them: what
 // photon-bench's comparisons (--compare, --compare-schedules, --compare-reference) share.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 #include <photon/scene_file.h>
@@ -13,6 +14,7 @@ struct TimedRender {
     Image image;
     int passes = 0;
     double seconds = 0;
+    std::optional<double> estimatedError;  // the render's own relative error estimate at its end
 };
 
 // The scene file in any format photon reads, with `overrides` (KEY=VALUE settings, as
@@ -25,5 +27,8 @@ double meanOf(const Image& image);
 // One render's relative noise from two renders with different seeds: RMS of their
 // difference / sqrt 2 / their mean.
 double relativeNoise(const Image& a, const Image& b);
+// The same in luminance, over the pixels the engine's error estimate is taken over
+// (film/pixel_errors.h): the true value of what RenderProgress::relativeError estimates.
+double relativeNoiseOfLuminance(const Image& a, const Image& b);
 
 }  // namespace photon::bench
