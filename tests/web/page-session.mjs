@@ -1,5 +1,5 @@
-// The page test's session, shared by the test files that drive the page (page.test.mjs,
-// page-image.test.mjs): one photon-server on a free port with a fresh data folder and one
+// The page test's session, shared by the test files that drive the page (page-form.test.mjs,
+// page.test.mjs, page-image.test.mjs): one photon-server on a free port with a fresh data folder and one
 // Chromium page on it, started before a file's tests and stopped after them (also when a
 // check fails), the page's script errors and 404s recorded, and the helpers those files share.
 // Each test file runs in a process of its own, so each has a session of its own.
@@ -107,4 +107,15 @@ export function assertWholeImages(shown, width, height) {
   }
   const passes = shown.map((image) => image.pass);
   assert.deepEqual([...new Set(passes)].sort((a, b) => a - b), passes, `passes only go up: ${passes}`);
+}
+
+// ---- The form ----------------------------------------------------------------------
+
+export async function chooseExample(name) {
+  await page.selectOption('#example-select', name);
+  await page.waitForFunction(() => document.querySelector('#scene-text').value.trim().startsWith('{'));
+}
+
+export async function clearOverrides() {
+  for (const id of ['#passes', '#photons-per-pass', '#seed', '#target-error']) await page.fill(id, '');
 }
