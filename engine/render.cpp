@@ -19,7 +19,6 @@ Image Renderer::rawSnapshot() const { return integrator_->snapshot(); }
 
 Renderer::Renderer(std::shared_ptr<const Scene> scene) : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)) {
     progress_.totalPasses = scene_->settings().passes;
-    progress_.targetError = scene_->settings().targetError;
     const DenoiseSettings& denoise = scene_->settings().denoise;
     if (denoise.enabled) denoiser_ = std::make_shared<const Denoiser>(*scene_, denoise);
 }

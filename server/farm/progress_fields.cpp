@@ -37,8 +37,7 @@ void appendProgressFields(std::vector<std::string>& args, const RenderProgress& 
                           std::string("solver_iterations"), std::to_string(f.solverIterations),
                           std::string("solver_residual"), exactly(f.solverResidual), std::string("global_map_photons"),
                           std::to_string(f.globalMapPhotons), std::string("caustic_map_photons"),
-                          std::to_string(f.causticMapPhotons), std::string("target_error"), exactly(p.targetError),
-                          std::string("relative_error"), exactly(p.relativeError.value_or(-1)),
+                          std::to_string(f.causticMapPhotons), std::string("relative_error"), exactly(p.relativeError.value_or(-1)),
                           std::string("passes_to_target"), exactly(p.passesToTarget.value_or(-1))})
         args.push_back(std::move(s));
 }
@@ -57,7 +56,6 @@ RenderProgress progressOfFields(const StreamEntry& e) {
     p.lastPass.solverResidual = numberOf<double>(e, "solver_residual");
     p.lastPass.globalMapPhotons = numberOf<int64_t>(e, "global_map_photons");
     p.lastPass.causticMapPhotons = numberOf<int64_t>(e, "caustic_map_photons");
-    p.targetError = numberOf<double>(e, "target_error");
     // -1: none (RenderProgress's optionals)
     if (const double v = numberOf<double>(e, "relative_error"); v >= 0) p.relativeError = v;
     if (const double v = numberOf<double>(e, "passes_to_target"); v >= 0) p.passesToTarget = v;

@@ -39,7 +39,6 @@ struct PassStats {
 struct RenderProgress {
     int pass = 0;               // passes finished
     int totalPasses = 0;
-    double targetError = 0;     // render.target_error (0: none)
     int64_t photonsTraced = 0;  // photons emitted so far
     double photonsPerSecond = 0;
     double meanRadius = 0;      // scene units; 0 for integrators without a gather radius
