@@ -138,6 +138,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.direct = DirectLighting(obj.choice("direct", 0, {"light_sampling", "photons"}));
     r.projectionMaps = obj.boolean("projection_maps", r.projectionMaps);
     r.radiusSchedule = RadiusSchedule(obj.choice("radius_schedule", 0, {"pixel", "global"}));
+    r.lightweight = obj.boolean("lightweight", r.lightweight);
     if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);

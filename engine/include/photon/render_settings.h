@@ -85,6 +85,9 @@ struct RenderSettings {
     DirectLighting direct = DirectLighting::LightSampling;
     bool projectionMaps = true;       // emit photons only toward geometry (Jensen 2001, 5.1.3)
     RadiusSchedule radiusSchedule = RadiusSchedule::PerPixel;
+    // SPPM only: lightweight photon mapping (docs/sppm.md): camera paths are traced whole
+    // and photons bring only caustics (light after delta bounces) to their first diffuse vertex.
+    bool lightweight = false;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -108,6 +111,7 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Visited only when not the default, so that checkpoints written before it existed keep
     // their key.
     if (s.radiusSchedule != RadiusSchedule::PerPixel) visit(s.radiusSchedule);
+    if (s.lightweight) visit(s.lightweight);
 }
 
 }  // namespace photon

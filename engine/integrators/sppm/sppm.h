@@ -87,7 +87,12 @@ private:
     void addPassEstimate(PassSums& sums) const;
     Image snapshotLocked() const;
     void cameraPass(const CancelToken& cancel);
+    // Clears the pixel's visible point and returns its jittered camera ray.
+    Ray startPixel(size_t index, Rng& rng);
     void tracePixel(size_t index, Rng& rng);
+    // render.lightweight's camera path: a path-traced sample that leaves out the caustics
+    // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
+    void tracePixelLightweight(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,

@@ -9,7 +9,12 @@ namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
-    forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) { tracePixel(index, rng); });
+    forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) {
+        if (settings_.lightweight)
+            tracePixelLightweight(index, rng);
+        else
+            tracePixel(index, rng);
+    });
     stats_.cameraRays = static_cast<int64_t>(pixels_.size());
 }
 
@@ -24,15 +29,19 @@ float SppmIntegrator::autoRadius(float pathLength) const {
     return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
 }
 
+Ray SppmIntegrator::startPixel(size_t index, Rng& rng) {
+    discs_[index] = GatherDisc{};
+    visible_[index] = VisiblePoint{};
+    float px = static_cast<float>(index % width_) + rng.uniform();
+    float py = static_cast<float>(index / width_) + rng.uniform();
+    return scene_->camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
+}
+
 void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
-    discs_[index] = GatherDisc{};
-    visible_[index] = VisiblePoint{};
     Color direct(0.0f), beta(1.0f);
-    float px = static_cast<float>(index % width_) + rng.uniform();
-    float py = static_cast<float>(index / width_) + rng.uniform();
-    Ray ray = scene.camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
+    Ray ray = startPixel(index, rng);
     // Area light is counted where no shadow ray could have found it (after delta bounces);
     // the environment is shared between shadow rays and BSDF samples (BounceSampling).
     BounceSampling bounce;

@@ -35,6 +35,9 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
             PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passIndex_), settings_.maxDepth};
             // Direct light may come from light sampling in the camera pass instead.
             paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
+            // Lightweight photon mapping's photons carry caustics only: they arrive after
+            // one or more delta bounces and end at their first non-delta surface.
+            if (settings_.lightweight) paths.specularOnly = true, paths.firstArrivalDepth = 1;
             PhotonPathCounters pathCounters;
             GatheringSink sink(*this, acc);
             for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)

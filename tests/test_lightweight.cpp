@@ -1,0 +1,68 @@
+// Lightweight photon mapping (render.lightweight): path-traced camera paths, photons for the
+// caustics only. Held to the independent path tracer on the glass-sphere Cornell box, whose
+// caustic under the sphere the path tracer finds only by chance, and to it in noise there.
+#include <gtest/gtest.h>
+#include <cmath>
+#include <cstdio>
+#include "integrators/integrator.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+constexpr int kResolution = 64, kRegion = 16;
+
+Image render(IntegratorKind kind, bool lightweight, int passes, uint64_t seed) {
+    SceneDescription d = test::exampleScene("cornell-glass", kResolution, passes, 50000, seed);
+    d.render.integrator = kind;
+    d.render.lightweight = lightweight;
+    d.render.maxDepth = 64;  // both see the same, practically untruncated, transport
+    return test::renderImage(std::move(d));
+}
+
+// RMS over the image of the two renders' difference / sqrt 2, over the mean: the noise of one.
+double relativeNoise(const Image& a, const Image& b) {
+    double sum = 0, mean = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        const double d = double(a.rgb[i]) - double(b.rgb[i]);
+        sum += d * d, mean += 0.5 * (double(a.rgb[i]) + double(b.rgb[i]));
+    }
+    const double n = double(a.rgb.size());
+    return std::sqrt(sum / n / 2) / (mean / n);
+}
+
+TEST(Lightweight, GlassCornellBoxAgreesWithThePathTracerInMeanAndPerRegion) {
+    const Image path = render(IntegratorKind::Path, false, 2048, 7);
+    const Image lightweight = render(IntegratorKind::Sppm, true, 256, 7);
+    const Color p = test::meanOver(path, 0, 0, kResolution, kResolution);
+    const Color l = test::meanOver(lightweight, 0, 0, kResolution, kResolution);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(l[c], p[c], 0.01f * p[c]) << "channel " << c;
+    for (int y = 0; y < kResolution; y += kRegion)
+        for (int x = 0; x < kResolution; x += kRegion) {
+            const float rp = luminance(test::meanOver(path, x, y, x + kRegion, y + kRegion));
+            const float rl = luminance(test::meanOver(lightweight, x, y, x + kRegion, y + kRegion));
+            std::printf("region %d,%d: path %.4f lightweight %.4f\n", x, y, rp, rl);
+            EXPECT_NEAR(rl, rp, 0.03f * rp) << "region at " << x << "," << y;
+        }
+}
+
+TEST(Lightweight, PhotonsTakeTheCausticsNoiseAway) {
+    constexpr int kPasses = 64;
+    const double path = relativeNoise(render(IntegratorKind::Path, false, kPasses, 1),
+                                      render(IntegratorKind::Path, false, kPasses, 2));
+    const double lightweight = relativeNoise(render(IntegratorKind::Sppm, true, kPasses, 1),
+                                             render(IntegratorKind::Sppm, true, kPasses, 2));
+    std::printf("relative noise at %d passes: path %.4f, lightweight %.4f\n", kPasses, path, lightweight);
+    EXPECT_LT(lightweight, 0.8 * path);
+}
+
+TEST(Lightweight, IsBitIdenticalForASeedAtAnyThreadCount) {
+    SceneDescription d = test::exampleScene("cornell-glass", 24, 4, 20000, 3);
+    d.render.lightweight = true;
+    const Image one = test::renderWithThreads(d, 1), two = test::renderWithThreads(d, 2);
+    EXPECT_EQ(one.rgb, two.rgb);
+    EXPECT_GT(test::meanOver(one, 0, 0, 24, 24).x, 0.0f);
+}
+
+}  // namespace
+}  // namespace photon
