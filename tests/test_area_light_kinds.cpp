@@ -86,6 +86,61 @@ TEST(AreaLightKinds, SphereLightsAreSampledByTheConeTheySubtend) {
     }
 }
 
+// Irradiance at p (normal n) from a uniform polygon of radiance Le, all of it above p's
+// horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's
+// component along the normal of the plane through p and the edge (Arvo 1995).
+double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le) {
+    double sum = 0;
+    for (size_t i = 0; i < corners.size(); ++i) {
+        const Vec3 a = normalize(corners[i] - p), b = normalize(corners[(i + 1) % corners.size()] - p);
+        sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
+    }
+    return le / 2 * std::abs(sum);
+}
+
+// A quad light (two triangles) is sampled by the solid angle it subtends: at any distance,
+// from 2 cm below it to 3 m, light samples give Lambert's irradiance, with the density
+// 1 / solid angle the MIS weights ask for, on the panel. Close to the panel they are less
+// noisy than samples uniform by area, whose weights swing with cos / d^2.
+TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
+    auto scene = sceneWith(panel(Color(2.0f)));
+    const Light& light = scene->lights().light(0);
+    const std::vector<Vec3> corners{{-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}};
+    for (float h : {0.02f, 0.3f, 3.0f}) {
+        SCOPED_TRACE("distance " + std::to_string(h));
+        const Vec3 p(0.2f, 1 - h, 0.1f), n(0, 1, 0);
+        const double expected = polygonIrradiance(p, n, corners, 2.0);
+        Rng rng(5, 0, 0, StreamPurpose::Test);
+        const int samples = 40000;
+        double sum = 0, sumSquares = 0, areaSum = 0, areaSquares = 0;
+        for (int i = 0; i < samples; ++i) {
+            const Vec2 u{rng.uniform(), rng.uniform()};
+            auto ls = light.sampleIncident(p, n, u);
+            ASSERT_TRUE(ls);
+            const double e = ls->weight.x * std::max(0.0f, dot(ls->wi, n));
+            sum += e, sumSquares += e * e;
+            const Vec3 y = p + ls->wi * ls->distance;
+            EXPECT_NEAR(y.y, 1.0f, 1e-4f);
+            EXPECT_LE(std::abs(y.x), 0.5f + 1e-4f);
+            EXPECT_LE(std::abs(y.z), 0.5f + 1e-4f);
+            EXPECT_FLOAT_EQ(light.pdfIncidentFrom(p, y, Vec3(0, -1, 0), ls->wi), ls->pdf);
+            // The same estimate from a point uniform on the panel: Le cos cos' A / d^2.
+            const Vec3 q(-0.5f + u.x, 1, -0.5f + u.y), d = q - p;
+            const double d2 = lengthSquared(d), c = d.y / std::sqrt(d2);
+            const double a = 2.0 * c * c / d2;
+            areaSum += a, areaSquares += a * a;
+        }
+        const double mean = sum / samples, areaMean = areaSum / samples;
+        EXPECT_NEAR(mean, expected, 0.01 * expected);
+        EXPECT_NEAR(areaMean, expected, 0.05 * expected);
+        const double variance = sumSquares / samples - mean * mean;
+        const double areaVariance = areaSquares / samples - areaMean * areaMean;
+        std::printf("h %.2f: irradiance %.5f (Lambert %.5f); variance by solid angle %.5g, by area %.5g\n", h, mean,
+                    expected, variance, areaVariance);
+        if (h < 1) EXPECT_LT(variance, 0.5 * areaVariance);
+    }
+}
+
 TEST(AreaLightKinds, TexturedEmissionFollowsTheTexture) {
     ShapeDescription s = panel(Color(3.0f));
     // Cells of a 2 x 1 checkerboard in u: x < 0 even (black), x > 0 odd.

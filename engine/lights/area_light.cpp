@@ -1,12 +1,14 @@
 // Diffuse area lights on emissive shapes: radiance Le(uv) (a colour, times a texture if any)
-// leaves the side the normal faces, or both sides of a two-sided light. Points are sampled
-// uniformly by area (a triangle picked in proportion to its area), photons leave
+// leaves the side the normal faces, or both sides of a two-sided light. Light samples are
+// uniform by solid angle on spheres and meshes of a few triangles, elsewhere uniform by
+// area (a triangle picked in proportion to its area); photons leave
 // cosine-distributed from a side picked with probability 1 / sides, so each carries
 // Le(uv) pi A sides (Jensen 2001, 5.1.3).
 #include <algorithm>
 #include <vector>
 #include "math/frame.h"
 #include "math/sampling.h"
+#include "math/spherical_triangle.h"
 #include "lights/emission_triangles.h"
 #include "lights/light_factories.h"
 
@@ -88,7 +90,70 @@ public:
 
     const EmissionTriangles* emissionTriangles() const override { return uniformOneSided() ? &triangles_ : nullptr; }
 
+    // A mesh of a few triangles (a quad light's two) is sampled by the solid angle its
+    // triangles subtend from p, each picked in proportion to its own: the density is then
+    // one over the whole solid angle, and a large light close by is sampled without the
+    // 1 / d^2 and cosine factors that area sampling's weights swing with. The irradiance
+    // estimate under a 1 x 1 quad has 16x less variance 3 m away, 24x at 30 cm, 980x at
+    // 2 cm (tests/test_area_light_kinds.cpp). Other meshes, and any mesh one of whose
+    // triangles subtends too little to sample so, are sampled by area.
+    std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
+        std::optional<SolidAngles> angles = solidAnglesFrom(p);
+        if (!angles) return AreaLight::sampleIncident(p, n, u);
+        if (!(angles->total > 0)) return std::nullopt;
+        // The triangle whose share of the solid angle holds u.x, and u.x reused within it.
+        const float x = u.x * angles->total;
+        float below = 0;
+        size_t i = 0;
+        while (i + 1 < triangles_.size() && x >= below + angles->each[i]) below += angles->each[i++];
+        const float uWithin = std::clamp((x - below) / angles->each[i], 0.0f, 0.99999994f);
+        const EmissionTriangles::Triangle& tri = triangles_[i];
+        std::optional<Vec3> wi = sampleSphericalTriangle(p, tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2, {uWithin, u.y});
+        if (!wi) return std::nullopt;
+        const float facing = dot(*wi, tri.frame.n);
+        const float dist = facing != 0 ? dot(tri.p0 - p, tri.frame.n) / facing : 0.0f;
+        if (!(dist > 0) || !std::isfinite(dist)) return std::nullopt;
+        Vec2 uv;
+        if (shape_.emissionTexture) uv = uvOn(i, p + *wi * dist);
+        return LightSample{*wi, dist, shape_.emissionAt(uv) * angles->total, 1.0f / angles->total};
+    }
+
+    float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const override {
+        std::optional<SolidAngles> angles = solidAnglesFrom(p);
+        if (!angles) return AreaLight::pdfIncidentFrom(p, y, ny, wi);
+        return angles->total > 0 ? 1.0f / angles->total : 0.0f;
+    }
+
 private:
+    struct SolidAngles {
+        float each[EmissionTriangles::kFewTriangles] = {};
+        float total = 0;
+    };
+    // The solid angle each triangle's emitting side subtends from p (0 for those p is
+    // behind), if the mesh is sampled so from p.
+    std::optional<SolidAngles> solidAnglesFrom(Vec3 p) const {
+        if (triangles_.size() > EmissionTriangles::kFewTriangles) return std::nullopt;
+        SolidAngles a;
+        for (size_t i = 0; i < triangles_.size(); ++i) {
+            const EmissionTriangles::Triangle& tri = triangles_[i];
+            const float side = dot(p - tri.p0, tri.frame.n);
+            if (side == 0 || (sides_ == 1 && side < 0)) continue;
+            a.each[i] = sphericalTriangleSolidAngle(p, tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2);
+            if (a.each[i] < kMinSphericalTriangleSolidAngle) return std::nullopt;
+            a.total += a.each[i];
+        }
+        return a;
+    }
+    // The texture coordinates at the point q of triangle i.
+    Vec2 uvOn(size_t i, Vec3 q) const {
+        const EmissionTriangles::Triangle& tri = triangles_[i];
+        const Vec3 d = q - tri.p0;
+        const float d11 = dot(tri.e1, tri.e1), d12 = dot(tri.e1, tri.e2), d22 = dot(tri.e2, tri.e2);
+        const float d1 = dot(d, tri.e1), d2 = dot(d, tri.e2), det = d11 * d22 - d12 * d12;
+        if (!(det > 0)) return shape_.mesh.uvAt(i, 0.0f, 0.0f);
+        return shape_.mesh.uvAt(i, (d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det);
+    }
+
     SurfacePoint samplePoint(Vec2 u) const override {
         SurfacePoint s;
         Vec2 barycentric;
