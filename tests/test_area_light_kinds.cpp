@@ -98,10 +98,10 @@ double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, doubl
     return le / 2 * std::abs(sum);
 }
 
-// A quad light (two triangles) is sampled by the solid angle it subtends: at any distance,
-// from 2 cm below it to 3 m, light samples give Lambert's irradiance, with the density
-// 1 / solid angle the MIS weights ask for, on the panel. Close to the panel they are less
-// noisy than samples uniform by area, whose weights swing with cos / d^2.
+// Close to a quad light (two triangles), light samples are uniform in the solid angle it
+// subtends, and less noisy than samples uniform by area, whose weights swing with cos / d^2;
+// far away (3 m) they are uniform by area. Either way they give Lambert's irradiance, on the
+// panel, with the density the MIS weights ask for.
 TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
     auto scene = sceneWith(panel(Color(2.0f)));
     const Light& light = scene->lights().light(0);
@@ -135,7 +135,7 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
         EXPECT_NEAR(areaMean, expected, 0.05 * expected);
         const double variance = sumSquares / samples - mean * mean;
         const double areaVariance = areaSquares / samples - areaMean * areaMean;
-        std::printf("h %.2f: irradiance %.5f (Lambert %.5f); variance by solid angle %.5g, by area %.5g\n", h, mean,
+        std::printf("h %.2f: irradiance %.5f (Lambert %.5f); variance of light samples %.5g, of area samples %.5g\n", h, mean,
                     expected, variance, areaVariance);
         if (h < 1) EXPECT_LT(variance, 0.5 * areaVariance);
     }
