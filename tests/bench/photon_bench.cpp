@@ -49,6 +49,8 @@ struct Options {
     std::string compareReference;        // set: SPPM against this reference image instead
     std::vector<double> referenceRuns{10, 30};
     std::vector<std::string> settings;  // KEY=VALUE for --compare-reference
+    std::vector<std::string> variants;  // NAME:KEY=VALUE for --compare-reference
+    bool markdown = false;              // --compare-reference prints a table instead of JSON
     bool instancing = false;      // time instanced loading instead
 };
 
@@ -77,6 +79,12 @@ void declareOptions(CLI::App& app, Options& o) {
     app.add_option("-D", o.settings, "a setting of the scene for --compare-reference, KEY=VALUE (e.g. "
                                      "render.max_depth=64 to match the reference's); repeatable")
         ->allow_extra_args(false);
+    app.add_option("--variant", o.variants,
+                   "a variant of the scene for --compare-reference, NAME:KEY=VALUE (e.g. lightweight:render.lightweight=true, "
+                   "path:render.integrator=path); repeat a NAME for more settings; each variant is rendered and "
+                   "compared (with the -D settings too)")
+        ->allow_extra_args(false);
+    app.add_flag("--markdown", o.markdown, "--compare-reference: print a Markdown table instead of JSON");
     app.add_option("--seconds", o.referenceRuns, "the render times for --compare-reference")
         ->delimiter(',')
         ->capture_default_str();
@@ -205,15 +213,10 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (!o.compareReference.empty()) {
-            std::vector<photon::SettingOverride> overrides;
-            for (const std::string& kv : o.settings) {
-                const size_t eq = kv.find('=');
-                if (eq == std::string::npos) throw std::invalid_argument("-D " + kv + ": expected KEY=VALUE");
-                overrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
-            }
-            std::cout << photon::bench::compareWithReference(o.scene, o.compareReference, o.referenceRuns, overrides)
-                             .dump(2)
-                      << std::endl;
+            std::vector<photon::bench::SceneVariant> variants = photon::bench::parseVariants(o.settings, o.variants);
+            const json result = photon::bench::compareVariantsWithReference(o.scene, o.compareReference, o.referenceRuns,
+                                                                            variants);
+            std::cout << (o.markdown ? photon::bench::markdownTable(result) : result.dump(2)) << std::endl;
             return 0;
         }
         if (o.compareSchedulesSeconds > 0) {

@@ -1,6 +1,9 @@
 #include "reference_comparison.h"
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <stdexcept>
 #include <photon/image_io.h>
 #include "timed_render.h"
 
@@ -93,6 +96,58 @@ nlohmann::json compareWithReference(const std::string& sceneFile, const std::str
                                                      referenceMean}});
     }
     return out;
+}
+
+namespace {
+SettingOverride parseSetting(const std::string& keyValue) {
+    const size_t eq = keyValue.find('=');
+    if (eq == std::string::npos || eq == 0) throw std::invalid_argument(keyValue + ": expected KEY=VALUE");
+    return {keyValue.substr(0, eq), keyValue.substr(eq + 1)};
+}
+}  // namespace
+
+std::vector<SceneVariant> parseVariants(const std::vector<std::string>& common, const std::vector<std::string>& variants) {
+    std::vector<SettingOverride> shared;
+    for (const std::string& kv : common) shared.push_back(parseSetting(kv));
+    std::vector<SceneVariant> out;
+    for (const std::string& v : variants) {
+        const size_t colon = v.find(':');
+        if (colon == std::string::npos || colon == 0)
+            throw std::invalid_argument("--variant " + v + ": expected NAME:KEY=VALUE");
+        const std::string name = v.substr(0, colon);
+        auto it = std::find_if(out.begin(), out.end(), [&](const SceneVariant& s) { return s.name == name; });
+        if (it == out.end()) it = out.insert(out.end(), SceneVariant{name, shared});
+        it->overrides.push_back(parseSetting(v.substr(colon + 1)));
+    }
+    if (out.empty()) out.push_back({"scene", shared});
+    return out;
+}
+
+nlohmann::json compareVariantsWithReference(const std::string& sceneFile, const std::string& referenceFile,
+                                            const std::vector<double>& seconds,
+                                            const std::vector<SceneVariant>& variants) {
+    nlohmann::json out = {{"scene", sceneFile}, {"reference", referenceFile}, {"variants", nlohmann::json::array()}};
+    for (const SceneVariant& v : variants) {
+        nlohmann::json r = compareWithReference(sceneFile, referenceFile, seconds, v.overrides);
+        r.erase("scene"), r.erase("reference");
+        r["name"] = v.name;
+        for (const SettingOverride& o : v.overrides) r["settings"].push_back(o.key + "=" + o.value);
+        out["variants"].push_back(std::move(r));
+    }
+    return out;
+}
+
+std::string markdownTable(const nlohmann::json& result) {
+    std::string table = "| variant | seconds | passes | relative noise | bias of mean | RMSE / mean |\n|---|---|---|---|---|---|\n";
+    char row[256];
+    for (const nlohmann::json& v : result.at("variants"))
+        for (const nlohmann::json& r : v.at("runs")) {
+            std::snprintf(row, sizeof row, "| %s | %g | %d | %.4f | %+.2f%% | %.4f |\n", v.at("name").get<std::string>().c_str(),
+                          r.at("seconds").get<double>(), r.at("passes").get<int>(), r.at("relative_noise").get<double>(),
+                          100 * r.at("bias_of_mean").get<double>(), r.at("relative_rmse").get<double>());
+            table += row;
+        }
+    return table;
 }
 
 }  // namespace photon::bench

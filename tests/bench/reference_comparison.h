@@ -19,4 +19,21 @@ nlohmann::json compareWithReference(const std::string& sceneFile, const std::str
                                     const std::vector<double>& seconds,
                                     const std::vector<SettingOverride>& overrides = {});
 
+// A named set of settings the scene is rendered with (photon-bench --variant NAME:KEY=VALUE).
+struct SceneVariant {
+    std::string name;
+    std::vector<SettingOverride> overrides;
+};
+// The variants from photon-bench's -D KEY=VALUE settings (every variant's) and --variant
+// NAME:KEY=VALUE ones, in the order their names first appear; with no --variant, one
+// variant, "scene", of the -D settings alone. Throws std::invalid_argument on a malformed one.
+std::vector<SceneVariant> parseVariants(const std::vector<std::string>& common, const std::vector<std::string>& variants);
+// compareWithReference for each variant: {"scene", "reference", "variants": [{"name",
+// "settings", and compareWithReference's fields}]}.
+nlohmann::json compareVariantsWithReference(const std::string& sceneFile, const std::string& referenceFile,
+                                            const std::vector<double>& seconds,
+                                            const std::vector<SceneVariant>& variants);
+// That result as a Markdown table, a row per variant and time.
+std::string markdownTable(const nlohmann::json& result);
+
 }  // namespace photon::bench
