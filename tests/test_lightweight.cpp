@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <cstdio>
+#include <photon/render.h>
 #include "integrators/integrator.h"
+#include "scene/scene.h"
 #include "test_support.h"
 
 namespace photon {
@@ -54,6 +56,26 @@ TEST(Lightweight, PhotonsTakeTheCausticsNoiseAway) {
                                              render(IntegratorKind::Sppm, true, kPasses, 2));
     std::printf("relative noise at %d passes: path %.4f, lightweight %.4f\n", kPasses, path, lightweight);
     EXPECT_LT(lightweight, 0.8 * path);
+}
+
+// In a scene without a delta lobe no photon could carry a caustic: none are traced, and
+// the passes cost what the path tracer's do.
+TEST(Lightweight, TracesNoPhotonsWhereNoMaterialHasADeltaLobe) {
+    SceneDescription d = test::exampleScene("cornell-box", 16, 2, 20000, 3);
+    d.render.lightweight = true;
+    Renderer renderer(Scene::build(std::move(d)));
+    CancelToken cancel;
+    renderer.run(cancel);
+    EXPECT_EQ(renderer.integrator().lastPassStats().photons, 0);
+    EXPECT_EQ(renderer.integrator().lastPassStats().photonRays, 0);
+    EXPECT_EQ(renderer.integrator().lastPassStats().cameraRays, 16 * 16);
+    EXPECT_GT(test::meanOver(renderer.snapshot(), 0, 0, 16, 16).x, 0.0f);
+
+    SceneDescription glass = test::exampleScene("cornell-glass", 16, 2, 20000, 3);
+    glass.render.lightweight = true;
+    Renderer withGlass(Scene::build(std::move(glass)));
+    withGlass.run(cancel);
+    EXPECT_EQ(withGlass.integrator().lastPassStats().photons, 20000);
 }
 
 TEST(Lightweight, IsBitIdenticalForASeedAtAnyThreadCount) {

@@ -35,6 +35,12 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     discs_.resize(n);
     visible_.resize(n);
     passDirect_.resize(n);
+    // Lightweight photon mapping's photons arrive only after a delta bounce: with no
+    // material that has one, none would, and the path tracer has all the light.
+    if (settings_.lightweight) {
+        tracesPhotons_ = false;
+        for (const MaterialPtr& m : scene_->description().materials) tracesPhotons_ |= (m->lobes() & kDeltaLobe) != 0;
+    }
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
@@ -131,6 +137,7 @@ bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     stats_.cameraMs = millisecondsSince(t0);
     if (cancel.cancelled()) return false;
 
+    if (!tracesPhotons_) return true;
     t0 = std::chrono::steady_clock::now();
     buildGrid();
     stats_.gridMs = millisecondsSince(t0);

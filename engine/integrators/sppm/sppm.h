@@ -124,6 +124,7 @@ private:
     int passes_ = 0;
     int64_t passIndex_ = 0;     // the pass being rendered: its random streams' index
     float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
+    bool tracesPhotons_ = true; // false: passes are camera passes alone (sppm.cpp)
     PassStats stats_;
 
     std::vector<PixelState> pixels_;  // the per-pixel schedule's statistics
