@@ -13,9 +13,8 @@ SceneDescription describeScene(const std::string& sceneFile, const std::vector<S
     return std::move(file.description());
 }
 
-TimedRender renderFor(SceneDescription d, double seconds) {
-    d.render.passes = 1'000'000;
-    d.render.timeLimitSeconds = seconds;
+namespace {
+TimedRender render(SceneDescription d) {
     d.render.denoise.enabled = false;
     const auto start = std::chrono::steady_clock::now();
     Renderer renderer(Scene::build(std::move(d)));
@@ -23,6 +22,29 @@ TimedRender renderFor(SceneDescription d, double seconds) {
     renderer.run(cancel);
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return {renderer.rawSnapshot(), renderer.progress().pass, elapsed, renderer.progress().relativeError};
+}
+}  // namespace
+
+TimedRender renderFor(SceneDescription d, double seconds) {
+    d.render.passes = 1'000'000;
+    d.render.timeLimitSeconds = seconds;
+    return render(std::move(d));
+}
+
+TimedRender renderPasses(SceneDescription d, int passes) {
+    d.render.passes = passes;
+    d.render.timeLimitSeconds = 0;
+    d.render.targetError = 0;
+    return render(std::move(d));
+}
+
+RenderPair renderPairFor(SceneDescription d, double seconds) {
+    SceneDescription second = d;
+    d.render.seed = 1, second.render.seed = 2;
+    RenderPair pair;
+    pair.a = renderFor(std::move(d), seconds);
+    pair.b = renderPasses(std::move(second), pair.a.passes);
+    return pair;
 }
 
 double meanOf(const Image& image) {

@@ -23,6 +23,16 @@ SceneDescription describeScene(const std::string& sceneFile, const std::vector<S
 // Renders `d` until `seconds` have passed (the pass that crosses it is finished), without
 // the denoiser: the estimators themselves are compared.
 TimedRender renderFor(SceneDescription d, double seconds);
+// Renders `d` for exactly `passes` passes, without the denoiser.
+TimedRender renderPasses(SceneDescription d, int passes);
+// Two renders of `d` with seeds 1 and 2: the first for `seconds`, the second for as many
+// passes as the first rendered, so that their difference is noise alone (SPPM's radius
+// depends on the pass count: renders that stopped at different passes would differ in blur
+// too).
+struct RenderPair {
+    TimedRender a, b;
+};
+RenderPair renderPairFor(SceneDescription d, double seconds);
 double meanOf(const Image& image);
 // One render's relative noise from two renders with different seeds: RMS of their
 // difference / sqrt 2 / their mean.
