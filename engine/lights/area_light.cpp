@@ -105,10 +105,9 @@ public:
     // estimate's variance is 980x less at 2 cm (tests/test_area_light_kinds.cpp): a light
     // panel against a wall. Farther than a quarter of the radius of a sphere around the mesh
     // from its plane, or where one of its triangles subtends too little, samples are uniform
-    // by area: on the
-    // Bitterli scenes spherical sampling costs more time than it saves in error (a path 1.7x
-    // as slow for 5% less error on the Cornell box used everywhere, 13% slower for 0.4% on
-    // the coffee maker used within the whole radius; docs/path.md).
+    // by area: on the Bitterli scenes spherical sampling costs more time than it saves in
+    // error (a path 1.7x as slow for 5% less error on the Cornell box used everywhere, 13%
+    // slower for 0.4% on the coffee maker used within the whole radius; docs/path.md).
     std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
         std::optional<SolidAngles> angles = solidAnglesFrom(p);
         if (!angles) return AreaLight::sampleIncident(p, n, u);

@@ -55,6 +55,15 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool 
     return true;
 }
 
+// Russian roulette on a camera path's throughput: survives with probability min(1, its
+// largest channel) and is then divided by it; false if the path ends.
+inline bool survivesRoulette(Color& beta, float u) {
+    const float q = std::min(1.0f, maxComponent(beta));
+    if (u >= q) return false;
+    beta /= q;
+    return true;
+}
+
 // How a camera path chose its current ray, for weighting the environment light the ray may
 // find against the light sample taken at the vertex it left (multiple importance sampling,
 // Veach 1997 ch. 9).

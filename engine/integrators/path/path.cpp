@@ -44,11 +44,7 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
         // Russian roulette after a few bounces, on the throughput's largest channel.
-        if (depth >= 3) {
-            float q = std::min(1.0f, maxComponent(beta));
-            if (rng.uniform() >= q) break;
-            beta /= q;
-        }
+        if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     return L;

@@ -80,11 +80,7 @@ void SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         }
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
-        if (depth >= 3) {  // Russian roulette, as the path tracer's
-            float q = std::min(1.0f, maxComponent(beta));
-            if (rng.uniform() >= q) break;
-            beta /= q;
-        }
+        if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;  // as the path tracer
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = L;
