@@ -8,6 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include "scene/obj_mesh.h"
 #include "scene/ply_mesh.h"
 #include "scene/scene_paths.h"
 
@@ -63,7 +64,7 @@ void sanitize(TriangleMesh& mesh) {
     for (Vec3& n : mesh.normals) {
         float len = length(n);
         if (!std::isfinite(len) || len == 0) {
-            mesh.normals.clear();
+            mesh.normals = {};  // freed, not just emptied
             break;
         }
         n = n / len;
@@ -72,19 +73,22 @@ void sanitize(TriangleMesh& mesh) {
         if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {};
 }
 
-bool isPlyFile(const std::filesystem::path& file) {
+std::string lowerCaseExtension(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
-    return extension == ".ply";
+    return extension;
 }
 
-// PLY is read by photon's own reader (ply_mesh.h), which checks every count in the file
-// against its size; it references no other files, so only the file itself is confined.
-TriangleMesh loadPlyFile(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
+// PLY and OBJ are read by the engine's own streaming readers (ply_mesh.h, obj_mesh.h): the
+// PLY reader checks every count in the file against its size, the OBJ reader holds little
+// more than the mesh. Neither opens another file (an OBJ's `mtllib` is not read: the scene
+// gives the mesh its material), so only the file itself is confined.
+TriangleMesh loadOwnFormat(const std::filesystem::path& file, const std::filesystem::path& confineTo, bool ply) {
     if (!confineTo.empty() && !isInsideFolder(file, confineTo))
-        throw std::runtime_error("PLY: " + file.string() + ": the file is outside the folder it must be in");
-    TriangleMesh mesh = readPlyMesh(file);
+        throw std::runtime_error(std::string(ply ? "PLY: " : "OBJ: ") + file.string() +
+                                 ": the file is outside the folder it must be in");
+    TriangleMesh mesh = ply ? readPlyMesh(file) : readObjMesh(file);
     if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
     sanitize(mesh);
     return mesh;
@@ -93,7 +97,8 @@ TriangleMesh loadPlyFile(const std::filesystem::path& file, const std::filesyste
 }  // namespace
 
 TriangleMesh loadMeshFile(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
-    if (isPlyFile(file)) return loadPlyFile(file, confineTo);
+    const std::string extension = lowerCaseExtension(file);
+    if (extension == ".ply" || extension == ".obj") return loadOwnFormat(file, confineTo, extension == ".ply");
     Assimp::Importer importer;
     if (!confineTo.empty()) importer.SetIOHandler(new ConfinedIOSystem(confineTo));  // importer owns it
     // Drop points and lines at SortByPType: the renderer only intersects triangles.

@@ -1,5 +1,5 @@
-// Reads triangle meshes from files: PLY with photon's own reader (ply_mesh.h), OBJ, glTF 2.0
-// and whatever else Assimp knows with Assimp.
+// Reads triangle meshes from files: PLY and OBJ with the engine's own streaming readers
+// (ply_mesh.h, obj_mesh.h), glTF 2.0 and whatever else Assimp knows with Assimp.
 #pragma once
 #include <cstddef>
 #include <filesystem>

@@ -151,7 +151,7 @@ private:
     void readElement(Source& source, const Element& e) {
         checkCount(source, e);
         if (&e == vertex_) {
-            mesh_.positions.reserve(e.count);
+            mesh_.positions.reserve(e.count + 1);  // room for Embree's 16-byte loads (Scene::newMesh)
             if (hasNormals_) mesh_.normals.reserve(e.count);
             if (hasUvs_) mesh_.uvs.reserve(e.count);
         } else if (&e == face_) {

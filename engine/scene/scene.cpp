@@ -21,10 +21,16 @@ std::shared_ptr<const Scene> Scene::build(SceneDescription description) {
 
 Scene::Scene(SceneDescription description) : description_(std::move(description)), camera_(description_.camera) {
     placeInstancedEmitters();
+    for (ShapeDescription& shape : shapes_) padForEmbree(shape.mesh);
+    for (ObjectDescription& object : description_.objects)
+        for (ShapeDescription& shape : object.shapes) padForEmbree(shape.mesh);
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw std::runtime_error("Embree: cannot create device");
     rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
     rtcScene_ = rtcNewScene(device_);
+    // Embree's compact layout (RTC_SCENE_FLAG_COMPACT, leaves that index the shared vertex
+    // buffer) would hold 37 instead of 107 bytes a triangle at the build's peak, but cast
+    // rays at 0.61x the speed on a 1M-triangle mesh (docs/sppm.md, "Memory"): not used.
     rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
     for (uint32_t i = 0; i < shapes_.size(); ++i) {
         addShape(shapes_[i], rtcScene_, i);
@@ -47,19 +53,23 @@ Scene::~Scene() {
     if (device_) rtcReleaseDevice(device_);
 }
 
+// Embree reads each vertex with a 16-byte load, so the last one needs 4 bytes of room past
+// it (rtcSetSharedGeometryBuffer's documentation; Embree checks it). The mesh readers leave
+// that room; a mesh made otherwise (copied, written in a scene) gets it here, which costs
+// one copy of its positions, once.
+void Scene::padForEmbree(TriangleMesh& mesh) {
+    if (mesh.positions.capacity() < mesh.positions.size() + 1) mesh.positions.reserve(mesh.positions.size() + 1);
+}
+
+// The mesh's own arrays are Embree's vertex and index buffers: the scene owns the mesh for
+// as long as Embree's scene lives, and neither changes after the build. Copies into
+// Embree-owned buffers held 18 more bytes a triangle (docs/sppm.md, "Memory").
 RTCGeometry Scene::newMesh(const TriangleMesh& m) {
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // Embree-owned buffers (rtcSetNewGeometryBuffer) come with the padding its SIMD loads need.
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                          3 * sizeof(float), m.positions.size()));
-    for (size_t i = 0; i < m.positions.size(); ++i) {
-        v[3 * i] = m.positions[i].x;
-        v[3 * i + 1] = m.positions[i].y;
-        v[3 * i + 2] = m.positions[i].z;
-    }
-    auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                               3 * sizeof(uint32_t), m.triangleCount()));
-    std::copy(m.indices.begin(), m.indices.end(), idx);
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m.positions.data(), 0, sizeof(Vec3),
+                               m.positions.size());
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m.indices.data(), 0,
+                               3 * sizeof(uint32_t), m.triangleCount());
     return g;
 }
 
@@ -130,14 +140,11 @@ void Scene::prepareHitData() {
         d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture;
         if (shape.kind == ShapeDescription::Kind::Sphere) continue;
         const TriangleMesh& m = shape.mesh;
-        d.faceNormals.reserve(m.triangleCount());
-        for (size_t t = 0; t < m.triangleCount(); ++t) {
+        // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
+        for (size_t t = 0; t < m.triangleCount() && !m.normals.empty() && !d.smoothNormals; ++t) {
             const uint32_t* v = &m.indices[3 * t];
-            Vec3 n = m.faceNormal(t);
-            d.faceNormals.push_back(n * d.normalSign);
-            // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
-            for (int k = 0; k < 3 && !m.normals.empty(); ++k)
-                d.smoothNormals = d.smoothNormals || lengthSquared(m.normals[v[k]] - n) > 1e-10f;
+            const Vec3 n = m.faceNormal(t);
+            for (int k = 0; k < 3; ++k) d.smoothNormals = d.smoothNormals || lengthSquared(m.normals[v[k]] - n) > 1e-10f;
         }
     }
     firstFlatTriangle_.assign(slots_.size(), kNotFlat);
@@ -154,9 +161,8 @@ void Scene::prepareHitData() {
         firstFlatTriangle_[i] = static_cast<uint32_t>(flatTriangles_.size());
         for (size_t t = 0; t < m.triangleCount(); ++t) {
             const uint32_t* v = &m.indices[3 * t];
-            flatTriangles_.push_back({m.positions[v[0]], m.positions[v[1]], m.positions[v[2]], d.faceNormals[t]});
+            flatTriangles_.push_back({m.positions[v[0]], m.positions[v[1]], m.positions[v[2]], m.faceNormal(t) * d.normalSign});
         }
-        d.faceNormals = {};  // in flatTriangles_ now
     }
 }
 
@@ -195,8 +201,11 @@ void Scene::fillTriangleHit(const ShapeDescription& shape, SurfaceHit& hit) cons
     const ShapeHitData& d = hitData_[hit.shape];
     uint32_t i0 = m.indices[3 * prim], i1 = m.indices[3 * prim + 1], i2 = m.indices[3 * prim + 2];
     // p from Embree's barycentrics: more accurate than o + t d far from the origin.
-    hit.p = atBarycentric(m.positions[i0], m.positions[i1], m.positions[i2], u, v);
-    hit.ng = hit.ns = d.faceNormals[prim];
+    const Vec3 p0 = m.positions[i0], p1 = m.positions[i1], p2 = m.positions[i2];
+    hit.p = atBarycentric(p0, p1, p2, u, v);
+    // The face normal from the corners just loaded, as TriangleMesh::faceNormal computes it:
+    // stored per triangle it cost 12 bytes a triangle for a load no faster.
+    hit.ng = hit.ns = normalize(cross(p1 - p0, p2 - p0)) * d.normalSign;
     if (d.smoothNormals) {
         Vec3 ns = atBarycentric(m.normals[i0], m.normals[i1], m.normals[i2], u, v);
         float len = length(ns);

@@ -160,6 +160,7 @@ private:
     // geometry `id`.
     void addShape(const ShapeDescription& shape, RTCScene target, uint32_t id);
     RTCGeometry newMesh(const TriangleMesh& mesh);
+    static void padForEmbree(TriangleMesh& mesh);
     RTCGeometry newSphere(const ShapeDescription& shape);
     // A world-space copy of each emissive shape of each instance, among the world's shapes:
     // a light samples and emits from its surface in the world (scene_instances.cpp).
@@ -224,7 +225,6 @@ private:
     // Per shape, what turning Embree's answer into a SurfaceHit needs, prepared once: a
     // hit is the photon walk's hottest step after the ray itself.
     struct ShapeHitData {
-        std::vector<Vec3> faceNormals;  // unit, per triangle, flip_normals applied
         bool smoothNormals = false;     // vertex normals that bend the shading normal
         bool needsUv = false;           // the material reads a texture
         float normalSign = 1;           // -1 with flip_normals (spheres)

@@ -7,9 +7,10 @@
 //   photon-bench [--scene FILE] [--passes N] [--photons-per-pass N] [--threads N] [--no-rss-check]
 //                [--projection-scene FILE] [--compare SECONDS [--reference-seconds SECONDS]]
 //                [--compare-schedules SECONDS] [--compare-reference FILE [--seconds S,S...] [-D KEY=VALUE]...]
-//                [--instancing]
+//                [--instancing] [--mesh-memory TRIANGLES]
 // With --instancing it instead times loading and building 10,000 instances of a 10k-triangle
-// mesh, and their memory, against the mesh placed once.
+// mesh, and their memory, against the mesh placed once; with --mesh-memory, the peak memory
+// per triangle of a large mesh as OBJ and PLY.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -23,6 +24,7 @@
 #include "reference_comparison.h"
 #include "schedule_comparison.h"
 #include "instancing_load.h"
+#include "mesh_memory.h"
 #include "integrator_comparison.h"
 #include "projection_misses.h"
 #include <photon/render.h>
@@ -52,6 +54,7 @@ struct Options {
     std::vector<std::string> variants;  // NAME:KEY=VALUE for --compare-reference
     bool markdown = false;              // --compare-reference prints a table instead of JSON
     bool instancing = false;      // time instanced loading instead
+    int meshMemoryTriangles = 0;  // > 0: measure a mesh's memory per triangle instead
 };
 
 void declareOptions(CLI::App& app, Options& o) {
@@ -65,6 +68,10 @@ void declareOptions(CLI::App& app, Options& o) {
         ->check(integerIn(1, 100000000));
     app.add_option("--threads", o.threads, "threads (default: one per core)")->type_name("N")->check(integerIn(1, 1024));
     app.add_flag("--instancing", o.instancing, "time loading 10,000 instances of a 10k-triangle mesh instead");
+    app.add_option("--mesh-memory", o.meshMemoryTriangles,
+                   "measure the peak memory per triangle of loading and building a mesh of about N triangles instead")
+        ->type_name("N")
+        ->check(integerIn(1000, 10000000));
     app.add_flag("--no-rss-check", [&o](int64_t) { o.rssCheck = false; }, "skip the peak-memory children");
     app.add_option("--projection-scene", o.projectionScene, "the scene for projection-map misses")
         ->capture_default_str();
@@ -210,6 +217,10 @@ int main(int argc, char** argv) {
         if (o.threads > 0) limit.emplace(size_t(o.threads));
         if (o.instancing) {
             std::cout << photon::bench::instancingLoad(10000, 10000).dump(2) << std::endl;
+            return 0;
+        }
+        if (o.meshMemoryTriangles > 0) {
+            std::cout << photon::bench::meshMemory(o.meshMemoryTriangles, PHOTON_RENDER_BIN).dump(2) << std::endl;
             return 0;
         }
         if (!o.compareReference.empty()) {

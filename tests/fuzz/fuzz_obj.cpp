@@ -1,4 +1,4 @@
-// Fuzzes OBJ mesh input through the engine's Assimp loader (loadMeshFile): the input is
+// Fuzzes OBJ mesh input through the engine's OBJ reader (loadMeshFile): the input is
 // written to an .obj file in a scratch folder and loaded confined to that folder, as a
 // scene's mesh would be. The folder also holds a small .mtl so `mtllib` lines resolve.
 //
