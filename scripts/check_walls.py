@@ -44,6 +44,7 @@ LIBRARIES = {
     "oneapi": {"engine", "engine-tests"},
     "OpenImageIO": {"engine", "engine-tests", "test-support"},
     "assimp": {"engine", "engine-tests", "fuzz"},
+    "tiny_obj_loader.h": {"engine"},
     "nanoflann.hpp": {"engine", "engine-tests"},
     "zlib.h": {"engine", "engine-tests"},
     "httplib.h": {"api", "service-tests", "fuzz"},
