@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <new>
 
 namespace photon {
 
@@ -125,32 +126,45 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     });
     firstKey_[0] = 0;
     for (size_t i = 0; i < count; ++i) firstKey_[i + 1] += firstKey_[i];
-    resizeForOverwrite(keys_, firstKey_[count]);
+    const size_t n = firstKey_[count];
+    if (n > arenaEntries_) {  // the old buffer goes first, and a quarter more room (overwrite_buffer.h)
+        arena_.reset();
+        arenaEntries_ = n + n / 4;
+        arena_.reset(new std::byte[arenaEntries_ * kArenaBytesPerEntry]);
+    }
+    uint64_t* const keys = std::launder(reinterpret_cast<uint64_t*>(arena_.get()));
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         if (!(radii[i] > 0)) return;
-        uint64_t* key = keys_.data() + firstKey_[i];
+        uint64_t* key = keys + firstKey_[i];
         const uint64_t entry = (static_cast<uint64_t>(sphereLevel_[i]) << kSphereBits) | i;
         forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | entry; });
     });
-    radixSortByBits(keys_, sortScratch_, 32, std::countr_zero(mask_ + 1));
+    const uint64_t* sorted = radixSortByBits(keys, keys + arenaEntries_, n, 32, std::countr_zero(mask_ + 1));
 
     // Bucket h starts at its first key; an empty bucket where the next one starts.
-    const size_t n = keys_.size();
-    auto bucketAt = [&](size_t e) { return static_cast<uint32_t>(keys_[e] >> 32); };
-    resizeForOverwrite(spheres_, n);
+    auto bucketAt = [&](size_t e) { return static_cast<uint32_t>(sorted[e] >> 32); };
     resizeForOverwrite(entries_, n);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t e = r.begin(); e < r.end(); ++e) {
-            const uint32_t h = bucketAt(e), entry = static_cast<uint32_t>(keys_[e]), i = sphereOf(entry);
+            const uint32_t h = bucketAt(e);
             for (uint32_t b = e == 0 ? 0 : bucketAt(e - 1) + 1; b <= h; ++b) offsets_[b] = static_cast<uint32_t>(e);
-            entries_[e] = entry;
-            // The same sphere twice in a bucket (two of its cells hashed alike) holds no
-            // point the second time, or a photon there would be added to it twice.
-            const bool repeated = e > 0 && keys_[e] == keys_[e - 1];
-            spheres_[e] = {centers[i], repeated ? -1.0f : radiiSquared[i]};
+            entries_[e] = static_cast<uint32_t>(sorted[e]);
         }
     });
     for (size_t b = n == 0 ? 0 : bucketAt(n - 1) + 1; b < offsets_.size(); ++b) offsets_[b] = static_cast<uint32_t>(n);
+
+    // The keys are spent: the arena now holds the spheres, bucket by bucket.
+    spheres_ = std::launder(reinterpret_cast<Sphere*>(arena_.get()));
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, offsets_.size() - 1), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t h = r.begin(); h < r.end(); ++h)
+            for (uint32_t e = offsets_[h]; e < offsets_[h + 1]; ++e) {
+                const uint32_t i = sphereOf(entries_[e]);
+                // The same sphere twice in a bucket (two of its cells hashed alike) holds no
+                // point the second time, or a photon there would be added to it twice.
+                const bool repeated = e > offsets_[h] && entries_[e] == entries_[e - 1];
+                spheres_[e] = {centers[i], repeated ? -1.0f : radiiSquared[i]};
+            }
+    });
 }
 
 }  // namespace photon

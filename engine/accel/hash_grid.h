@@ -9,7 +9,9 @@
 // one level of mean-radius cells its far points entered hundreds of cells each, and with
 // cells as wide as the largest radius the near ones crowded into a few.) Most scenes need
 // level 0 alone.
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 #include <photon/vec.h>
 
@@ -54,7 +56,7 @@ public:
         uint32_t size = 0;
     };
     Span bucket(uint32_t h) const {
-        return {spheres_.data() + offsets_[h], entries_.data() + offsets_[h], offsets_[h + 1] - offsets_[h]};
+        return {spheres_ + offsets_[h], entries_.data() + offsets_[h], offsets_[h + 1] - offsets_[h]};
     }
     // An entry is its sphere's index and, in the top bits, its level (16384^2 pixels fit).
     static constexpr int kSphereBits = 28;
@@ -64,7 +66,7 @@ public:
     size_t entryCount() const { return entries_.size(); }
     size_t bytes() const {
         return (offsets_.capacity() + entries_.capacity() + firstKey_.capacity()) * sizeof(uint32_t) +
-               spheres_.capacity() * sizeof(Sphere) + (keys_.capacity() + sortScratch_.capacity()) * sizeof(uint64_t);
+               arenaEntries_ * kArenaBytesPerEntry;
     }
 
 private:
@@ -92,11 +94,18 @@ private:
     std::vector<uint8_t> sphereLevel_;    // by sphere: its index in levels_ (build scratch)
     uint32_t mask_ = 0;
     std::vector<uint32_t> offsets_;  // bucket h holds entries [offsets_[h], offsets_[h+1])
-    std::vector<Sphere> spheres_;    // by entry
     std::vector<uint32_t> entries_;  // by entry: the sphere's index and level (sphereOf, levelOf)
-    // Build scratch, kept between passes: each sphere's first key, the (bucket, sphere) keys.
+    // One buffer of 16 bytes an entry, used twice in a build: first as the radix sort's
+    // (bucket, entry) keys and its scratch, 8 bytes an entry each; then, once the entries and
+    // offsets are read off the sorted keys, as the spheres by entry. Apart, the three held
+    // 32 bytes an entry (~42 bytes a pixel more at a frame's peak, docs/sppm.md#memory).
+    static constexpr size_t kArenaBytesPerEntry = 2 * sizeof(uint64_t);
+    static_assert(sizeof(Sphere) == kArenaBytesPerEntry);
+    std::unique_ptr<std::byte[]> arena_;
+    size_t arenaEntries_ = 0;     // the arena's room, in entries
+    Sphere* spheres_ = nullptr;   // in the arena once built
+    // Build scratch, kept between passes: each sphere's first key.
     std::vector<uint32_t> firstKey_;
-    std::vector<uint64_t> keys_, sortScratch_;
 };
 
 }  // namespace photon

@@ -12,9 +12,7 @@ constexpr size_t kDigits = size_t(1) << kDigitBits;
 constexpr size_t kPieces = 32;  // fixed, so that the result does not depend on threads
 }  // namespace
 
-void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch, int lowBit, int bitCount) {
-    const size_t n = keys.size();
-    resizeForOverwrite(scratch, n);
+uint64_t* radixSortByBits(uint64_t* keys, uint64_t* scratch, size_t n, int lowBit, int bitCount) {
     const size_t pieceSize = (n + kPieces - 1) / kPieces;
     std::vector<std::array<uint32_t, kDigits>> counts(kPieces);
     // Equal digits: 18 bits as 9 + 9 scatter to 512 places at a time, not 2048 then 128.
@@ -40,8 +38,14 @@ void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch
             for (size_t i = p * pieceSize, end = std::min(n, (p + 1) * pieceSize); i < end; ++i)
                 scratch[counts[p][digit(keys[i])]++] = keys[i];
         });
-        keys.swap(scratch);
+        std::swap(keys, scratch);
     }
+    return keys;
+}
+
+void radixSortByBits(std::vector<uint64_t>& keys, std::vector<uint64_t>& scratch, int lowBit, int bitCount) {
+    resizeForOverwrite(scratch, keys.size());
+    if (radixSortByBits(keys.data(), scratch.data(), keys.size(), lowBit, bitCount) != keys.data()) keys.swap(scratch);
 }
 
 }  // namespace photon
