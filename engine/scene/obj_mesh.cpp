@@ -99,7 +99,6 @@ private:
         Attributes& first = firstUse_[size_t(position)];
         if (first.uv == Attributes::kUnused) first = a;
         if (first == a) return uint32_t(position);
-        if (firstExtra_.empty()) firstExtra_.assign(positions_.size(), kNone);
         if (firstExtra_.size() < positions_.size()) firstExtra_.resize(positions_.size(), kNone);
         uint32_t& head = firstExtra_[size_t(position)];
         for (uint32_t e = head; e != kNone; e = extras_[e].next)
