@@ -53,7 +53,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
               test_alpha_cutout test_instancing test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_area_light_kinds test_conductor test_rough_dielectric test_coated_diffuse
               test_diffuse_transmission test_texture_channels test_gltf_import test_independent_passes
-              test_error_estimate test_lightweight test_obj_mesh)
+              test_error_estimate test_lightweight test_obj_mesh test_photon_guiding)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head test_progress_history)
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets

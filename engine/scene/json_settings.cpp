@@ -139,6 +139,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.projectionMaps = obj.boolean("projection_maps", r.projectionMaps);
     r.radiusSchedule = RadiusSchedule(obj.choice("radius_schedule", 0, {"pixel", "global"}));
     r.lightweight = obj.boolean("lightweight", r.lightweight);
+    r.photonGuiding = obj.boolean("photon_guiding", r.photonGuiding);
     if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);

@@ -88,6 +88,9 @@ struct RenderSettings {
     // SPPM only: lightweight photon mapping (docs/sppm.md): camera paths are traced whole
     // and photons bring only caustics (light after delta bounces) to their first diffuse vertex.
     bool lightweight = false;
+    // SPPM only, with the per-pixel schedule: photons leave the lights where earlier
+    // passes' photons reached visible points (docs/sppm.md, "Photon guiding").
+    bool photonGuiding = false;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -112,6 +115,7 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // their key.
     if (s.radiusSchedule != RadiusSchedule::PerPixel) visit(s.radiusSchedule);
     if (s.lightweight) visit(s.lightweight);
+    if (s.photonGuiding) visit(s.photonGuiding);
 }
 
 }  // namespace photon

@@ -29,16 +29,32 @@ PhotonEmitter::PhotonEmitter(const Scene& scene, bool projectionMaps, PhotonTarg
 }
 
 std::optional<EmittedPhoton> PhotonEmitter::emit(Rng& rng) const {
-    LightSampler::Pick pick = scene_.lights().pick(rng.uniform());
-    if (!pick.light) {
-        for (int i = 0; i < 4; ++i) rng.uniform();
-        return std::nullopt;
-    }
-    return emitFrom(pick.index, rng);
+    const float uLight = rng.uniform();
+    float u[4];
+    for (float& x : u) x = rng.uniform();
+    return emitFrom(pickLight(uLight), u);
 }
 
-std::optional<EmittedPhoton> PhotonEmitter::emitFrom(size_t light, Rng& rng) const {
-    Vec2 uPos{rng.uniform(), rng.uniform()}, uDir{rng.uniform(), rng.uniform()};
+PhotonEmitter::LightChoice PhotonEmitter::pickLight(float uLight) const {
+    if (guide_) {
+        const EmissionGuide::Choice c = guide_->pick(uLight);
+        return {c.light, true, c.cell, c.weight};
+    }
+    LightSampler::Pick pick = scene_.lights().pick(uLight);
+    return {pick.index, pick.light != nullptr};
+}
+
+std::optional<EmittedPhoton> PhotonEmitter::emitFrom(const LightChoice& choice, float u[4]) const {
+    if (!choice.picked) return std::nullopt;
+    if (!guide_) return emitFrom(choice.light, u);
+    guide_->remap(choice.cell, u);
+    std::optional<EmittedPhoton> e = emitFrom(choice.light, u);
+    if (e) e->beta *= choice.weight, e->cell = choice.cell;
+    return e;
+}
+
+std::optional<EmittedPhoton> PhotonEmitter::emitFrom(size_t light, const float u[4]) const {
+    Vec2 uPos{u[0], u[1]}, uDir{u[2], u[3]};
     std::optional<PhotonEmission> e;
     if (const ProjectionMap* map = projectionMap(light)) {
         // Point lights use only a direction and parallel lights only a position: the pair

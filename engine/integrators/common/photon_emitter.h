@@ -7,6 +7,7 @@
 #include "math/rng.h"
 #include "math/ray.h"
 #include "lights/projection_map.h"
+#include "integrators/common/emission_guide.h"
 
 namespace photon {
 
@@ -17,6 +18,7 @@ struct EmittedPhoton {
     // Flux in units of the lights' mean total power (LightSampler::totalAveragePower), so
     // that without projection maps a photon's flux averages 1.
     Color beta;
+    uint32_t cell = 0;  // the emission guide's cell the photon left from (0 without one)
 };
 
 // What a projection map marks: every shape, or only shapes whose material has a delta
@@ -33,6 +35,11 @@ public:
     // direction), so the streams that follow do not depend on the light picked.
     std::optional<EmittedPhoton> emit(Rng& rng) const;
 
+    // With a guide, its cells pick the light and where in the four numbers the photon
+    // comes from, and the flux carries its weight; null: plain emission. The guide must
+    // outlive the emitter's use of it.
+    void setGuide(const EmissionGuide* guide) { guide_ = guide; }
+
     // Eight photons at once, for the photon walk's lanes: lane i (where want[i]) gets what
     // emit() gives with Rng(stream, index[i]), and the stream as emit() leaves it. Photons
     // from triangle meshes are emitted eight at a time in SIMD, others one by one.
@@ -41,6 +48,7 @@ public:
         alignas(32) float betaR[kLanes], betaG[kLanes], betaB[kLanes];
         alignas(64) uint64_t state[kLanes], increment[kLanes];
         alignas(32) int32_t emitted[kLanes];  // -1 where a photon left a light
+        alignas(32) uint32_t cell[kLanes];    // EmittedPhoton::cell
     };
     void emitLanes(const RngStream& stream, const int64_t* index, const int32_t* want, Lanes& out) const;
 
@@ -50,8 +58,18 @@ public:
     }
 
 private:
-    // emit() after the light is picked: the other four numbers and the photon.
-    std::optional<EmittedPhoton> emitFrom(size_t light, Rng& rng) const;
+    // The light a photon leaves, from the first of its numbers: by power, or by the guide.
+    struct LightChoice {
+        size_t light = 0;
+        bool picked = false;  // false: no light with power
+        uint32_t cell = 0;    // the guide's cell and the flux factor it brings
+        float weight = 1;
+    };
+    LightChoice pickLight(float uLight) const;
+    // The photon from the other four numbers (uPos, uDir), moved into the guide's cell.
+    std::optional<EmittedPhoton> emitFrom(const LightChoice& choice, float u[4]) const;
+    // Without the guide: the photon from light's numbers u as they are.
+    std::optional<EmittedPhoton> emitFrom(size_t light, const float u[4]) const;
 
     const Scene& scene_;
     std::vector<std::optional<ProjectionMap>> maps_;  // by the light sampler's index
@@ -61,6 +79,7 @@ private:
     // their photons are emitted in lanes, each with the flux below.
     std::vector<const EmissionTriangles*> laneTriangles_;
     std::vector<Color> laneFlux_;
+    const EmissionGuide* guide_ = nullptr;
 };
 
 }  // namespace photon

@@ -15,13 +15,25 @@ struct TriangleLanes {
     const EmissionTriangles* shared;  // the lanes' triangles when all are the same light's, else null
     Color beta[kLanes];
     alignas(32) int32_t waiting[kLanes];
+    // The emission guide's cell: number d becomes min(offset[d] + u * scale, limit[d])
+    // (EmissionGuide::cellBounds; unguided 0, 1 and the last float below 1: u itself).
+    alignas(32) float offset[4][kLanes];
+    alignas(32) float limit[4][kLanes];
+    float scale = 1;
 };
 
 PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonEmitter::Lanes& out) {
     const IntLanes waiting = loadLanes<int32_t, IntLanes>(in.waiting);
     // The position's two numbers, then the direction's (PhotonEmitter::emitFrom).
-    FloatLanes u1 = uniformLanes(out.state, out.increment, waiting), u2 = uniformLanes(out.state, out.increment, waiting);
-    FloatLanes u3 = uniformLanes(out.state, out.increment, waiting), u4 = uniformLanes(out.state, out.increment, waiting);
+    // Moved into each lane's guide cell (EmissionGuide::remap).
+    const FloatLanes scale = broadcast<FloatLanes>(in.scale);
+    auto guided = [&](int d) {
+        const FloatLanes v = loadLanes<float, FloatLanes>(in.offset[d]) + uniformLanes(out.state, out.increment, waiting) * scale;
+        const FloatLanes limit = loadLanes<float, FloatLanes>(in.limit[d]);
+        return select(v < limit, v, limit);
+    };
+    FloatLanes u1 = guided(0), u2 = guided(1);
+    FloatLanes u3 = guided(2), u4 = guided(3);
     using T = EmissionTriangles::Triangle;
     const EmissionTriangles::Triangle* tri[kLanes];
     IntLanes picked{};
@@ -103,24 +115,35 @@ void PhotonEmitter::emitLanes(const RngStream& stream, const int64_t* index, con
     bool anyTriangles = false;
     alignas(32) float uLight[kLanes];
     seedLanes(stream.key(), index, out, uLight);
+    if (guide_) fromTriangles.scale = guide_->scale();
     for (int i = 0; i < kLanes; ++i) {
         out.emitted[i] = 0;
+        out.cell[i] = 0;
         fromTriangles.waiting[i] = 0;
         fromTriangles.triangles[i] = nullptr;
+        for (int d = 0; d < 4; ++d) fromTriangles.offset[d][i] = 0, fromTriangles.limit[d][i] = 0x1.fffffep-1f;
         if (!want[i]) continue;
-        LightSampler::Pick pick = scene_.lights().pick(uLight[i]);
-        if (pick.light && laneTriangles_[pick.index]) {
-            fromTriangles.triangles[i] = laneTriangles_[pick.index];
-            fromTriangles.beta[i] = laneFlux_[pick.index];
+        const LightChoice choice = pickLight(uLight[i]);
+        out.cell[i] = choice.cell;
+        if (choice.picked && laneTriangles_[choice.light]) {
+            fromTriangles.triangles[i] = laneTriangles_[choice.light];
+            fromTriangles.beta[i] = laneFlux_[choice.light];
+            if (guide_) {
+                fromTriangles.beta[i] *= choice.weight;
+                float offset[4], limit[4];
+                guide_->cellBounds(choice.cell, offset, limit);
+                for (int d = 0; d < 4; ++d) fromTriangles.offset[d][i] = offset[d], fromTriangles.limit[d][i] = limit[d];
+            }
             fromTriangles.waiting[i] = -1;
             anyTriangles = true;
             continue;
         }
         Rng rng = Rng::resume(out.state[i], out.increment[i]);
-        std::optional<EmittedPhoton> e;
-        if (pick.light) e = emitFrom(pick.index, rng);
+        float u[4];
+        for (float& x : u) x = rng.uniform();
         out.state[i] = rng.state();
         out.increment[i] = rng.increment();
+        std::optional<EmittedPhoton> e = emitFrom(choice, u);
         if (!e) continue;
         out.ox[i] = e->ray.o.x, out.oy[i] = e->ray.o.y, out.oz[i] = e->ray.o.z;
         out.dx[i] = e->ray.d.x, out.dy[i] = e->ray.d.y, out.dz[i] = e->ray.d.z;

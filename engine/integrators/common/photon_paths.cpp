@@ -34,6 +34,7 @@ struct PhotonLanes {
     alignas(32) int32_t depth[kWalkLanes];         // surfaces reached so far
     alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
+    alignas(32) uint32_t cell[kWalkLanes];         // EmittedPhoton::cell
     // A hit waiting for its bounce in lanes, off a Lambertian or a smooth specular surface:
     // which kind, where, the normals (turned toward the photon on two-sided surfaces), the
     // surface colour, and a specular surface's index (0: a mirror).
@@ -249,6 +250,7 @@ private:
                 L.increment[i] = emitted_.increment[k];
                 L.depth[i] = 0;
                 L.onlySpecular[i] = -1;
+                L.cell[i] = emitted_.cell[k];
                 L.alive[i] = -1;
             }
         }
@@ -288,7 +290,7 @@ private:
         if (shape.bounce == Bounce::Lambertian) {
             turnTowardViewer(hit, wi);  // the material is two-sided
             if (depth >= settings_.firstArrivalDepth)
-                sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0});
+                sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0, L.cell[i]});
             if (last) return 0;
             keepHit(i, hit, shape);
             L.lambertian[i] = -1;
@@ -309,7 +311,7 @@ private:
             // samples weigh by), so the arrival carries their ratio (Veach 1997, sec. 5.3).
             Color beta = L.beta(i);
             if (sp.material->bendsNormal()) beta *= shadingCosineRatio(sp.hit, wi);
-            sink_.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, L.onlySpecular[i] != 0});
+            sink_.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, L.onlySpecular[i] != 0, L.cell[i]});
         }
         if (!last) bounce(i, sp, wi);
         return 0;

@@ -20,6 +20,7 @@ struct PhotonArrival {
     Color flux;         // in the emitter's units (photons average 1 without projection maps)
     int depth;          // 0: straight from the light
     bool onlySpecular;  // every bounce before this one was off a delta lobe
+    uint32_t cell;      // the emission guide's cell the photon left from (EmittedPhoton::cell)
 };
 
 // What the integrator does with arriving photons (splat them, store them).

@@ -41,6 +41,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
         tracesPhotons_ = false;
         for (const MaterialPtr& m : scene_->description().materials) tracesPhotons_ |= (m->lobes() & kDeltaLobe) != 0;
     }
+    if (settings_.photonGuiding && tracesPhotons_ && scene_->lights().size() > 0) guide_.emplace(scene_->lights());
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
@@ -131,6 +132,7 @@ void SppmIntegrator::addPassEstimate(PassSums& sums) const {
 }
 
 bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
+    if (guide_ && !guide_->trained() && !trainGuide(cancel)) return false;
     stats_ = PassStats{};
     auto t0 = std::chrono::steady_clock::now();
     cameraPass(cancel);
@@ -144,7 +146,7 @@ bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     stats_.gridEntries = static_cast<int64_t>(grid_.entryCount());
 
     t0 = std::chrono::steady_clock::now();
-    photonPass(cancel);
+    photonPass(cancel, settings_.photonsPerPass);
     stats_.photonMs = millisecondsSince(t0);
     if (cancel.cancelled()) return false;
 
@@ -246,6 +248,7 @@ void SppmIntegrator::restoreState(std::istream& in) {
     halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     passes_ = passes;
     pixels_ = std::move(pixels);
+
 }
 
 // L = direct / passes + tau / (pi R^2 N_emitted) (Hachisuka & Jensen 2009, eq. 12).

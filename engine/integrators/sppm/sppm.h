@@ -5,7 +5,9 @@
 // updated. Photons are never stored, so memory does not grow with their number.
 #pragma once
 #include <mutex>
+#include <optional>
 #include <vector>
+#include <tbb/enumerable_thread_specific.h>
 #include <photon/pass_sums.h>
 #include "accel/hash_grid.h"
 #include "integrators/common/pass_halves.h"
@@ -67,6 +69,9 @@ private:
         uint32_t lambertian : 1 = 0;
         uint32_t transmits : 1 = 0;  // photons arriving on the far side count too
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
+        // With photon guiding: what a photon reaching this point is worth to the guide
+        // (guideWeight(); in what was padding before the flux).
+        uint32_t guideWeight = 0;
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };
 
@@ -100,14 +105,31 @@ private:
     void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
                      Color& direct) const;
     void buildGrid();
-    void photonPass(const CancelToken& cancel);
+    void photonPass(const CancelToken& cancel, int64_t photons);
+    // render.photon_guiding (sppm_guide_training.cpp): before the first pass, kGuidePasses
+    // passes of their own random streams teach the guide, which then stays as it is, so
+    // that every pass after them is drawn alike and independent of the others (the global
+    // schedule's passes too), and the guide is the same wherever the render resumes.
+    static constexpr int kGuidePasses = 4;
+    // Photons a training pass traces: enough that a cell's worth is known from hundreds of
+    // its photons, not the few that a pass of the render's would give it.
+    int64_t guidePhotonsPerPass() const;
+    bool trainGuide(const CancelToken& cancel);
+    // A photon reaching pixel i's visible point is worth 1 / (1 + M) to the guide, M the
+    // photons the pixel gathered in an average training pass so far, in units of 2^-16: a
+    // photon for a pixel short of them counts more than one more for a pixel that has plenty.
+    uint32_t guideWeight(size_t index) const;
+    // The guide learns what a training pass's photons reached.
+    void teachGuide();
     struct PhotonCounters {
         int64_t rays = 0, segments = 0, candidates = 0, accepted = 0;
+        uint64_t* guideWorth = nullptr;  // this thread's guideWeight() sums, by guide cell
     };
     // A photon's arrival on a non-delta surface, waiting to be added to visible points.
     struct PhotonHit {
         Vec3 p, n, wi;  // position, shading normal, direction back toward the photon's origin
         Color flux;
+        uint32_t cell;  // the emission guide's cell the photon left from
     };
     // Photon hits reach their visible points through a pipeline of batches, so that the
     // memory each step needs (grid bucket, entries, discs, visible points) is fetched well
@@ -138,6 +160,13 @@ private:
     std::vector<VisiblePoint> visible_;
     std::vector<Color> passDirect_;      // direct light found by this pass's camera paths
     HashGrid grid_;
+    // render.photon_guiding: where photons leave the lights; while it is trained, each
+    // thread's sums of what the pass's photons were worth, and the photons each pixel has
+    // gathered in the training passes so far.
+    std::optional<EmissionGuide> guide_;
+    int guidePass_ = -1;  // the training pass under way, or -1
+    tbb::enumerable_thread_specific<std::vector<uint64_t>> guideWorth_;
+    std::vector<uint32_t> guidePhotons_;
     mutable std::mutex stateMutex_;      // guards pixels_ and passes_ between update and snapshot
 };
 

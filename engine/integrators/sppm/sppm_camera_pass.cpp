@@ -118,7 +118,8 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     OctahedralVector n(sp.hit.ns);
     Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
     // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
-    float r2 = global() ? 0.0f : pixels_[index].r2;
+    // The guide's training passes start from the first pass's radii, whatever pass follows.
+    float r2 = global() || guidePass_ >= 0 ? 0.0f : pixels_[index].r2;
     if (r2 == 0) {
         float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
         r2 = r * r;
@@ -130,6 +131,7 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
     visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
                                    sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian, sp.material->transmits()};
+    if (guidePass_ >= 0) visible_[index].guideWeight = guideWeight(index);
 }
 
 }  // namespace photon

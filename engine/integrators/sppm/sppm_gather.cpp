@@ -120,6 +120,7 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         c = vp.beta * f;
     }
     ++counters.accepted;
+    if (counters.guideWorth) counters.guideWorth[hit.cell] += vp.guideWeight;
     c *= hit.flux * kernelWeight(settings_.kernel, d2OverR2);
     for (int k = 0; k < 3; ++k) {
         // Scaling by a power of two is exact in float as in double, and the units fit a

@@ -20,15 +20,18 @@ class SppmIntegrator::GatheringSink final : public PhotonArrivalSink {
 public:
     GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters) : pipeline_(sppm, counters) {}
     void flush() { pipeline_.flush(); }
-    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux}); }
+    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux, a.cell}); }
 
 private:
     GatherPipeline pipeline_;
 };
 
-void SppmIntegrator::photonPass(const CancelToken& cancel) {
-    const int64_t total = settings_.photonsPerPass;
+void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
+    const int64_t total = photons;
     const int64_t chunks = (total + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
+    const bool teaching = guidePass_ > 0;  // the first training pass only counts photons
+    if (teaching)
+        for (std::vector<uint64_t>& worth : guideWorth_) std::fill(worth.begin(), worth.end(), 0);
     PhotonCounters counters = tbb::parallel_reduce(
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
@@ -39,6 +42,11 @@ void SppmIntegrator::photonPass(const CancelToken& cancel) {
             // one or more delta bounces and end at their first non-delta surface.
             if (settings_.lightweight) paths.specularOnly = true, paths.firstArrivalDepth = 1;
             PhotonPathCounters pathCounters;
+            if (teaching) {
+                std::vector<uint64_t>& worth = guideWorth_.local();
+                worth.resize(guide_->cellCount());
+                acc.guideWorth = worth.data();
+            }
             GatheringSink sink(*this, acc);
             for (int64_t c = r.begin(); c < r.end() && !cancel.cancelled(); ++c)
                 tracePhotonPaths(*scene_, emitter_, paths, c * kPhotonsPerChunk,
