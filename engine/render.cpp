@@ -62,11 +62,12 @@ bool Renderer::renderPass(const CancelToken& cancel) {
 // The error falls as passes^-decay (film/pixel_errors.h), so reaching the target e_t from
 // e after N passes takes N (e / e_t)^(1 / decay) passes in all.
 void Renderer::updateErrorEstimate() {
-    std::optional<PixelErrors> e = integrator_->pixelErrors();
     progress_.relativeError.reset();
     progress_.passesToTarget.reset();
     errors_.reset();
-    if (!e || progress_.pass < 2) return;
+    if (progress_.pass < 2) return;  // asked for only when there is one (8 bytes a pixel)
+    std::optional<PixelErrors> e = integrator_->pixelErrors();
+    if (!e) return;
     const double error = relativeErrorOf(*e);
     progress_.relativeError = error;
     const double target = scene_->settings().targetError;
@@ -125,6 +126,14 @@ void Renderer::restoreCheckpoint(std::istream& in) {
 }
 
 RenderOutcome Renderer::run(const CancelToken& cancel, const ProgressFn& onPass) {
+    const RenderOutcome outcome = runPasses(cancel, onPass);
+    // The final image and its files are made after this: without the grid a 3840 x 2160
+    // SPPM frame's peak is then well below the one while passes run (docs/sppm.md#memory).
+    integrator_->releasePassBuffers();
+    return outcome;
+}
+
+RenderOutcome Renderer::runPasses(const CancelToken& cancel, const ProgressFn& onPass) {
     const double limit = scene_->settings().timeLimitSeconds;
     while (integrator_->passesDone() < progress_.totalPasses) {
         if (cancel.cancelled() || !renderPass(cancel)) return RenderOutcome::Cancelled;

@@ -30,9 +30,10 @@ Spheres randomSpheres(size_t n) {
 }
 
 HashGrid buildGrid(const Spheres& s) {
+    std::vector<HashGrid::Sphere> spheres;
+    for (size_t i = 0; i < s.centers.size(); ++i) spheres.push_back({s.centers[i], s.radii[i] * s.radii[i]});
     HashGrid grid;
-    grid.build(
-        s.centers.size(), [&](size_t i) { return s.centers[i]; }, [&](size_t i) { return s.radii[i] * s.radii[i]; });
+    grid.build(spheres);
     return grid;
 }
 

@@ -44,5 +44,27 @@ TEST(Determinism, DifferentSeedsGiveDifferentImages) {
     EXPECT_FALSE(render(1).rgb == render(2).rgb);
 }
 
+// run() frees the hash grid when it stops; passes after it build the grid again and give the
+// image of passes that never stopped, on both radius schedules.
+TEST(Determinism, PassesAfterRunStoppedGiveTheUninterruptedImage) {
+    for (RadiusSchedule schedule : {RadiusSchedule::PerPixel, RadiusSchedule::Global}) {
+        SCOPED_TRACE(schedule == RadiusSchedule::Global ? "global" : "per-pixel");
+        SceneDescription d = test::exampleScene("cornell-glass", 32, 2, 20000, 5);
+        d.render.radiusSchedule = schedule;
+        CancelToken cancel;
+        Renderer stopped(Scene::build(SceneDescription(d)));
+        ASSERT_EQ(stopped.run(cancel), RenderOutcome::Completed);
+        Renderer straight(Scene::build(std::move(d)));
+        for (int pass = 0; pass < 2; ++pass) ASSERT_TRUE(straight.renderPass(cancel));
+        for (int pass = 0; pass < 2; ++pass) {
+            ASSERT_TRUE(stopped.renderPass(cancel));
+            ASSERT_TRUE(straight.renderPass(cancel));
+        }
+        EXPECT_EQ(stopped.progress().pass, 4);
+        EXPECT_TRUE(stopped.snapshot().rgb == straight.snapshot().rgb);
+        EXPECT_GT(test::meanOver(stopped.snapshot(), 0, 0, 32, 32).y, 0.05f);
+    }
+}
+
 }  // namespace
 }  // namespace photon

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <new>
+#include <stdexcept>
 
 namespace photon {
 
@@ -20,6 +21,8 @@ struct Extent {
     double radiusSum = 0;
     size_t withRadius = 0;
 };
+// A sphere's radius, 0 for none (also for a NaN radius).
+float radiusOf(const HashGrid::Sphere& s) { return s.radiusSquared > 0 ? std::sqrt(s.radiusSquared) : 0.0f; }
 }  // namespace
 
 bool HashGrid::cellOf(Vec3 p, const Level& l, int& ix, int& iy, int& iz) const {
@@ -41,17 +44,20 @@ HashGrid::CellRange HashGrid::cellsOverlapping(Vec3 c, float r, const Level& l) 
 }
 
 // Each sphere's level: the lowest whose cells are at least as wide as its radius.
-void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, const std::vector<float>& radii) {
+void HashGrid::setLevels(std::span<const Sphere> spheres, Vec3 lo, Vec3 hi, float baseCellSize) {
+    const size_t count = spheres.size();
     resizeForOverwrite(sphereLevel_, count);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
+        const float radius = radiusOf(spheres[i]);
         uint8_t id = 0;
-        for (float cell = baseCellSize; radii[i] > cell && id < kMaxLevels - 1; cell *= 4.0f) ++id;
+        for (float cell = baseCellSize; radius > cell && id < kMaxLevels - 1; cell *= 4.0f) ++id;
         sphereLevel_[i] = id;
     });
     const uint32_t usedIds = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, count), 0u,
         [&](const tbb::blocked_range<size_t>& r, uint32_t bits) {
-            for (size_t i = r.begin(); i < r.end(); ++i) bits |= static_cast<uint32_t>(radii[i] > 0) << sphereLevel_[i];
+            for (size_t i = r.begin(); i < r.end(); ++i)
+                bits |= static_cast<uint32_t>(radiusOf(spheres[i]) > 0) << sphereLevel_[i];
             return bits;
         },
         [](uint32_t a, uint32_t b) { return a | b; });
@@ -77,17 +83,22 @@ void HashGrid::setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, con
     offsets_.assign(buckets + 1, 0);
 }
 
-void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radiiSquared) {
-    std::vector<float> radii(count);
-    tbb::parallel_for(size_t(0), count, [&](size_t i) { radii[i] = radiiSquared[i] > 0 ? std::sqrt(radiiSquared[i]) : 0.0f; });
+void HashGrid::release() {
+    *this = HashGrid();
+}
+
+void HashGrid::build(std::span<const Sphere> spheres) {
+    const size_t count = spheres.size();
+    if (count >= (size_t(1) << kSphereBits)) throw std::length_error("HashGrid: more than 2^28 spheres");
     Extent e = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, count), Extent{},
         [&](const tbb::blocked_range<size_t>& r, Extent acc) {
             for (size_t i = r.begin(); i < r.end(); ++i) {
-                if (!(radii[i] > 0)) continue;
-                acc.lo = vmin(acc.lo, centers[i] - Vec3(radii[i]));
-                acc.hi = vmax(acc.hi, centers[i] + Vec3(radii[i]));
-                acc.radiusSum += radii[i];
+                const float radius = radiusOf(spheres[i]);
+                if (!(radius > 0)) continue;
+                acc.lo = vmin(acc.lo, spheres[i].center - Vec3(radius));
+                acc.hi = vmax(acc.hi, spheres[i].center + Vec3(radius));
+                acc.radiusSum += radius;
                 ++acc.withRadius;
             }
             return acc;
@@ -101,16 +112,16 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
         });
     if (e.withRadius == 0) e.lo = e.hi = Vec3(0.0f);
     const float meanRadius = e.withRadius ? static_cast<float>(e.radiusSum / static_cast<double>(e.withRadius)) : 1.0f;
-    setLevels(count, e.lo, e.hi, std::max(3.0f * meanRadius, 1e-6f), radii);
+    setLevels(spheres, e.lo, e.hi, std::max(3.0f * meanRadius, 1e-6f));
 
     // Every (bucket, entry) pair as one key, bucket in the high half, written at the
     // sphere's own place (its entries are counted first), then sorted by bucket. The sort
     // is stable, so a bucket lists its spheres in index order: the grid is the same for
     // any thread count. (It replaced a counting sort with an atomic counter per entry:
     // the grid build of photon-bench went from 13.6 to 10.4 ms, docs/sppm.md.)
-    auto forEachCell = [&](size_t i, auto&& fn) {
+    auto forEachCell = [&](size_t i, float radius, auto&& fn) {
         const Level& l = levels_[sphereLevel_[i]];
-        CellRange cr = cellsOverlapping(centers[i], radii[i], l);
+        CellRange cr = cellsOverlapping(spheres[i].center, radius, l);
         for (int z = cr.lo[2]; z <= cr.hi[2]; ++z)
             for (int y = cr.lo[1]; y <= cr.hi[1]; ++y)
                 for (int x = cr.lo[0]; x <= cr.hi[0]; ++x) fn(hash(x, y, z, l.id));
@@ -118,8 +129,8 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     resizeForOverwrite(firstKey_, count + 1);
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
         uint32_t cells = 0;
-        if (radii[i] > 0) {
-            CellRange cr = cellsOverlapping(centers[i], radii[i], levels_[sphereLevel_[i]]);
+        if (const float radius = radiusOf(spheres[i]); radius > 0) {
+            CellRange cr = cellsOverlapping(spheres[i].center, radius, levels_[sphereLevel_[i]]);
             cells = static_cast<uint32_t>((cr.hi[0] - cr.lo[0] + 1) * (cr.hi[1] - cr.lo[1] + 1) * (cr.hi[2] - cr.lo[2] + 1));
         }
         firstKey_[i + 1] = cells;
@@ -134,10 +145,11 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
     }
     uint64_t* const keys = std::launder(reinterpret_cast<uint64_t*>(arena_.get()));
     tbb::parallel_for(size_t(0), count, [&](size_t i) {
-        if (!(radii[i] > 0)) return;
+        const float radius = radiusOf(spheres[i]);
+        if (!(radius > 0)) return;
         uint64_t* key = keys + firstKey_[i];
         const uint64_t entry = (static_cast<uint64_t>(sphereLevel_[i]) << kSphereBits) | i;
-        forEachCell(i, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | entry; });
+        forEachCell(i, radius, [&](uint32_t h) { *key++ = (static_cast<uint64_t>(h) << 32) | entry; });
     });
     const uint64_t* sorted = radixSortByBits(keys, keys + arenaEntries_, n, 32, std::countr_zero(mask_ + 1));
 
@@ -162,7 +174,7 @@ void HashGrid::countAndFill(size_t count, const std::vector<Vec3>& centers, cons
                 // The same sphere twice in a bucket (two of its cells hashed alike) holds no
                 // point the second time, or a photon there would be added to it twice.
                 const bool repeated = e > offsets_[h] && entries_[e] == entries_[e - 1];
-                spheres_[e] = {centers[i], repeated ? -1.0f : radiiSquared[i]};
+                spheres_[e] = {spheres[i].center, repeated ? -1.0f : spheres[i].radiusSquared};
             }
     });
 }

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 #include <photon/vec.h>
 
@@ -21,10 +22,17 @@ namespace photon {
 
 class HashGrid {
 public:
-    // Builds over `count` spheres; center(i) and radiusSquared(i) are read through the
-    // callables. Spheres with radius <= 0 are left out.
-    template <class CenterFn, class RadiusSquaredFn>
-    void build(size_t count, CenterFn center, RadiusSquaredFn radiusSquared);
+    struct Sphere {
+        Vec3 center;
+        float radiusSquared;
+    };
+    // Builds over the spheres, read where they are (a caller keeps its own array of them:
+    // no copy of centres and radii during the build, 20 bytes a sphere at a frame's peak).
+    // Spheres with radius <= 0 are left out.
+    void build(std::span<const Sphere> spheres);
+    // Frees the grid and its build buffers (kept between builds so that the next one does
+    // not fault their pages in again); the grid is empty until built again.
+    void release();
 
     // Photons look up their buckets in three steps so that callers can work on many at
     // once and prefetch each step's memory before the next needs it.
@@ -41,10 +49,6 @@ public:
     }
     // What bucket(h) reads first, for callers to prefetch (into the cache level they choose).
     const void* bucketAddress(uint32_t h) const { return &offsets_[h]; }
-    struct Sphere {
-        Vec3 center;
-        float radiusSquared;
-    };
     // The spheres entered in bucket h, with their entries: a superset of those containing
     // any point of its cells on the level looked up (callers test the distance, and the
     // level: a bucket also holds other cells', of any level). A sphere entered twice in one
@@ -86,8 +90,7 @@ private:
         return ((static_cast<uint32_t>(ix) * 73856093u) ^ (static_cast<uint32_t>(iy) * 19349663u) ^
                 (static_cast<uint32_t>(iz) * 83492791u) ^ (levelId * 2654435761u)) & mask_;
     }
-    void setLevels(size_t count, Vec3 lo, Vec3 hi, float baseCellSize, const std::vector<float>& radii);
-    void countAndFill(size_t count, const std::vector<Vec3>& centers, const std::vector<float>& radiiSquared);
+    void setLevels(std::span<const Sphere> spheres, Vec3 lo, Vec3 hi, float baseCellSize);
 
     Vec3 origin_;
     std::vector<Level> levels_;       // the levels that hold spheres, finest first
@@ -110,4 +113,3 @@ private:
 
 }  // namespace photon
 
-#include "accel/hash_grid_build.h"

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace photon {
@@ -38,14 +39,20 @@ const SrgbTable& srgbTable() {
     return table;
 }
 
-// One writer for files and memory: `proxy` is null for files.
-void writeImage(const std::string& name, const OIIO::ImageSpec& spec, const void* pixels,
-                OIIO::Filesystem::IOProxy* proxy) {
+// One writer for files and memory: `proxy` is null for files. writePixels writes the
+// pixels into the opened output, false on failure.
+void writeImage(const std::string& name, const OIIO::ImageSpec& spec, OIIO::Filesystem::IOProxy* proxy,
+                const std::function<bool(OIIO::ImageOutput&)>& writePixels) {
     auto out = OIIO::ImageOutput::create(name);
     if (!out) throw std::runtime_error("cannot write " + name + ": " + OIIO::geterror());
     if (proxy) out->set_ioproxy(proxy);
-    if (!out->open(name, spec) || !out->write_image(spec.format, pixels) || !out->close())
+    if (!out->open(name, spec) || !writePixels(*out) || !out->close())
         throw std::runtime_error("cannot write " + name + ": " + out->geterror());
+}
+
+void writeImage(const std::string& name, const OIIO::ImageSpec& spec, const void* pixels,
+                OIIO::Filesystem::IOProxy* proxy) {
+    writeImage(name, spec, proxy, [&](OIIO::ImageOutput& out) { return out.write_image(spec.format, pixels); });
 }
 
 // String attributes: PNG keeps only strings, as tEXt chunks (OpenImageIO's PNG writer drops
@@ -64,19 +71,33 @@ OIIO::ImageSpec exrSpec(const LayeredImage& image) {
     return spec;
 }
 
-// The main image's and every layer's channels interleaved per pixel.
-std::vector<float> exrPixels(const LayeredImage& image) {
-    const size_t pixels = static_cast<size_t>(image.main.width) * image.main.height;
+// The main image's and every layer's channels interleaved per pixel, written 64 rows at a
+// time (a multiple of the 16 rows OpenEXR compresses together with zip): the interleaved
+// copy of a whole 3840 x 2160 frame with its error layer took 190 MiB (docs/sppm.md#memory).
+void writeExrStrips(const std::string& name, const LayeredImage& image, const ImageMetadata& metadata,
+                    OIIO::Filesystem::IOProxy* proxy) {
+    const int width = image.main.width, height = image.main.height;
+    for (const ImageLayer& layer : image.layers)
+        if (layer.image.width != width || layer.image.height != height)
+            throw std::invalid_argument("EXR layer " + layer.name + " has another size");
+    OIIO::ImageSpec spec = exrSpec(image);
+    addMetadata(spec, metadata);
+    constexpr int kStripRows = 64;
     const size_t channels = 3 * (1 + image.layers.size());
-    std::vector<float> out(pixels * channels);
-    for (size_t l = 0; l <= image.layers.size(); ++l) {
-        const Image& source = l == 0 ? image.main : image.layers[l - 1].image;
-        if (source.width != image.main.width || source.height != image.main.height)
-            throw std::invalid_argument("EXR layer " + image.layers[l - 1].name + " has another size");
-        for (size_t p = 0; p < pixels; ++p)
-            for (size_t c = 0; c < 3; ++c) out[p * channels + 3 * l + c] = source.rgb[3 * p + c];
-    }
-    return out;
+    std::vector<float> strip(static_cast<size_t>(width) * std::min(kStripRows, height) * channels);
+    writeImage(name, spec, proxy, [&](OIIO::ImageOutput& out) {
+        for (int y0 = 0; y0 < height; y0 += kStripRows) {
+            const int y1 = std::min(height, y0 + kStripRows);
+            const size_t first = static_cast<size_t>(y0) * width, pixels = static_cast<size_t>(y1 - y0) * width;
+            for (size_t l = 0; l <= image.layers.size(); ++l) {
+                const std::vector<float>& source = l == 0 ? image.main.rgb : image.layers[l - 1].image.rgb;
+                for (size_t p = 0; p < pixels; ++p)
+                    for (size_t c = 0; c < 3; ++c) strip[p * channels + 3 * l + c] = source[3 * (first + p) + c];
+            }
+            if (!out.write_scanlines(y0, y1, 0, OIIO::TypeDesc::FLOAT, strip.data())) return false;
+        }
+        return true;
+    });
 }
 
 }  // namespace
@@ -94,7 +115,7 @@ void writeExr(const Image& image, const std::filesystem::path& file) {
 }
 
 void writeExr(const LayeredImage& image, const std::filesystem::path& file) {
-    writeImage(file.string(), exrSpec(image), exrPixels(image).data(), nullptr);
+    writeExrStrips(file.string(), image, {}, nullptr);
 }
 
 void writePng(const Image& image, const std::filesystem::path& file, float exposure) {
@@ -124,9 +145,7 @@ std::vector<uint8_t> encodeExr(const Image& image) { return encodeExr(LayeredIma
 std::vector<uint8_t> encodeExr(const LayeredImage& image, const ImageMetadata& metadata) {
     std::vector<unsigned char> buffer;
     OIIO::Filesystem::IOVecOutput proxy(buffer);
-    OIIO::ImageSpec spec = exrSpec(image);
-    addMetadata(spec, metadata);
-    writeImage("image.exr", spec, exrPixels(image).data(), &proxy);
+    writeExrStrips("image.exr", image, metadata, &proxy);
     return {buffer.begin(), buffer.end()};
 }
 

@@ -42,6 +42,9 @@ public:
     // for integrators whose passes are independent estimates; nullopt for the others, and
     // for a render resumed from a checkpoint that did not keep its halves.
     virtual std::optional<PixelErrors> pixelErrors() const { return std::nullopt; }
+    // Frees what only a next pass would use (SPPM's hash grid), when a render stops; a pass
+    // after it allocates that again.
+    virtual void releasePassBuffers() {}
     virtual void addPasses(const PassSums&) {
         throw std::logic_error("this render's passes are not independent (render.radius_schedule \"global\" makes them so)");
     }

@@ -31,7 +31,8 @@ public:
 
     using ProgressFn = std::function<void(const RenderProgress&)>;
     // Renders until the scene's pass count, time limit or target error is reached, or
-    // `cancel` is set.
+    // `cancel` is set, then frees what only a next pass would use (a later run() or
+    // renderPass() allocates it again).
     // onPass runs on the rendering thread after every finished pass.
     RenderOutcome run(const CancelToken& cancel, const ProgressFn& onPass = {});
     // Renders one pass; false if cancelled (the image stays as after the last pass).
@@ -73,6 +74,7 @@ public:
     const Scene& scene() const { return *scene_; }
 
 private:
+    RenderOutcome runPasses(const CancelToken& cancel, const ProgressFn& onPass);
     // The error estimate after the passes so far: progress_.relativeError, passesToTarget
     // and the heat map's source.
     void updateErrorEstimate();

@@ -4,21 +4,6 @@
 
 namespace photon {
 
-std::optional<PixelErrors> PassHalves::errors(const Image& image, double decay) const {
-    if (!known_) return std::nullopt;
-    PixelErrors e;
-    e.width = image.width, e.height = image.height, e.decay = decay;
-    const size_t n = size_t(image.width) * image.height;
-    e.luminance.resize(n);
-    e.variance.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const float* c = &image.rgb[3 * i];
-        e.luminance[i] = luminance(Color(c[0], c[1], c[2]));
-        e.variance[i] = halfSplitVariance(sums_[2 * i + 1], sums_[2 * i], counts_[1], counts_[0]);
-    }
-    return e;
-}
-
 void PassHalves::save(std::ostream& out) const {
     if (!known_) return;
     writeRaw(out, counts_, 2);

@@ -22,9 +22,23 @@ public:
     void add(int64_t pass, size_t pixel, float luminance) { sums_[2 * pixel + (pass & 1)] += luminance; }
     // Counts pass `pass` as added (once per pass, after its pixels).
     void countPass(int64_t pass) { ++counts_[pass & 1]; }
-    // The variance estimates of `image` (the render's image after the counted passes);
-    // nullopt for a render resumed from a checkpoint that had no halves.
-    std::optional<PixelErrors> errors(const Image& image, double decay) const;
+    // The variance estimates of the render's image after the counted passes, whose pixel i
+    // is radianceAt(i) (read pixel by pixel: no copy of the image, 12 bytes a pixel at a
+    // frame's peak); nullopt for a render resumed from a checkpoint that had no halves.
+    template <class RadianceAt>
+    std::optional<PixelErrors> errors(int width, int height, RadianceAt radianceAt, double decay) const {
+        if (!known_) return std::nullopt;
+        PixelErrors e;
+        e.width = width, e.height = height, e.decay = decay;
+        const size_t n = size_t(width) * height;
+        e.luminance.resize(n);
+        e.variance.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            e.luminance[i] = luminance(radianceAt(i));
+            e.variance[i] = halfSplitVariance(sums_[2 * i + 1], sums_[2 * i], counts_[1], counts_[0]);
+        }
+        return e;
+    }
 
     // Checkpoints carry the halves after the integrator's own state. A checkpoint written
     // before they existed has none: the render then resumes without an error estimate.

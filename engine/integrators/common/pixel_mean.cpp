@@ -40,7 +40,7 @@ Image PixelMeanIntegrator::snapshot() const {
 
 std::optional<PixelErrors> PixelMeanIntegrator::pixelErrors() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return halves_.errors(snapshotLocked(), 0.5);
+    return halves_.errors(width_, height_, [&](size_t i) { return meanLocked(i); }, 0.5);
 }
 
 Image PixelMeanIntegrator::snapshotLocked() const {
@@ -48,7 +48,7 @@ Image PixelMeanIntegrator::snapshotLocked() const {
     if (passes_ == 0) return image;
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x)
-            image.set(x, y, sum_[static_cast<size_t>(y) * width_ + x] / static_cast<float>(passes_));
+            image.set(x, y, meanLocked(static_cast<size_t>(y) * width_ + x));
     return image;
 }
 

@@ -37,6 +37,8 @@ protected:
 private:
     int width_, height_;
     Image snapshotLocked() const;
+    // Pixel i of the image: the mean of its passes (black before the first).
+    Color meanLocked(size_t i) const { return passes_ == 0 ? Color(0.0f) : sum_[i] / static_cast<float>(passes_); }
 
     std::vector<Color> sum_, pass_;
     PassHalves halves_;

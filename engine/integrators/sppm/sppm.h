@@ -35,6 +35,7 @@ public:
     std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) override;
     void addPasses(const PassSums& sums) override;
     std::optional<PixelErrors> pixelErrors() const override;
+    void releasePassBuffers() override { grid_.release(); }
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
     struct PixelState {
@@ -48,13 +49,11 @@ public:
     uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
 
 private:
-    // The first non-specular vertex of a pixel's camera path in this pass. Its position
-    // and radius live apart (GatherDisc) because photons test many of those for every
-    // one they add to: a compact array keeps that test in cache.
-    struct GatherDisc {
-        Vec3 p;
-        float r2 = 0;  // squared gather radius for this pass (0: no visible point)
-    };
+    // The first non-specular vertex of a pixel's camera path in this pass: its position
+    // and squared gather radius (0: no visible point). They live apart because photons
+    // test many of those for every one they add to: a compact array keeps that test in
+    // cache. The grid is built from this array as it is.
+    using GatherDisc = HashGrid::Sphere;
     // Everything a photon needs once it is inside the disc, and what it adds to, in one
     // cache line: one memory access per accepted photon.
     struct alignas(64) VisiblePoint {
@@ -88,9 +87,14 @@ private:
     // Pixel i's estimate from this pass alone, direct + Phi / (pi r_i^2 N_emitted).
     Color passEstimate(size_t i) const;
     // Adds this pass's estimates to `sums` in fixed point (and their luminance to its odd
-    // half for an odd pass).
+    // half for an odd pass) and counts the pass there; throws std::invalid_argument, the
+    // sums then spent, where they would overflow.
     void addPassEstimate(PassSums& sums) const;
+    // The global schedule's pass `index`: its radius, camera and photon passes.
+    bool traceGlobalPass(int64_t index, const CancelToken& cancel);
     Image snapshotLocked() const;
+    // Pixel i of the per-pixel schedule's image.
+    Color radianceLocked(size_t i) const;
     void cameraPass(const CancelToken& cancel);
     // Clears the pixel's visible point and returns its jittered camera ray.
     Ray startPixel(size_t index, Rng& rng);
