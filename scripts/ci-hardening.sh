@@ -154,15 +154,26 @@ fuzz_run() {
     fi
     grep -E "^Done|stat::number_of_executed_units|stat::new_units_added" "$log" || true
 }
-# Left out here: the farm tests that kill, pause or restart a render that must run for
-# seconds first (FarmServerTest.ARestartedServer..., .AWholeJob..., FarmRedisRestartTest:
-# about a minute and a half under ASan; the farm's code paths are run by the other farm
-# tests, and these run in the test command); and PhotonMap.GlassBoxAgreesWithSppm, a
-# convergence comparison of two integrators at finite samples. Built by clang, the two-pass photon mapper's image differs
-# from GCC's (SPPM's is the same bit for bit under both), one region by 7.6% from SPPM against
-# the test's 5% (GCC: 1.5%); it runs in the GCC build of the test command.
+# Left out here, as they run in the test command (GCC, no sanitizer) and what they add under
+# ASan is time, not code:
+#  - the farm tests that kill, pause or restart a render that must run for seconds first
+#    (FarmServerTest.ARestartedServer..., .AWholeJob..., FarmRedisRestartTest: about a minute
+#    and a half under ASan; the farm's code paths are run by the other farm tests);
+#  - the slowest convergence comparisons, 330 s of the stage's 1,160 (cold CI, two lanes):
+#    they render the same code paths for hundreds of passes until a statistic settles, and
+#    shorter tests of the same programs run those paths (the photon mapper's with
+#    InstancesVsCopies/sppm and test_photonmap's others, lightweight's with its
+#    no-photons and thread tests, projection maps' with the spot-light and caustic tests);
+#  - PhotonMap.GlassBoxAgreesWithSppm: built by clang, the two-pass photon mapper's image
+#    differs from GCC's (SPPM's is the same bit for bit under both), one region by 7.6% from
+#    SPPM against the test's 5% (GCC: 1.5%).
+san_slow='Integrators/InstancesVsCopies.RenderTheSameImage/photonmap:DiffuseTransmission.PhotonMappersAgreeWithPathTracerThroughTheSheet'
+san_slow+=':Lightweight.GlassCornellBoxAgreesWithThePathTracerInMeanAndPerRegion:Lightweight.PhotonsTakeTheCausticsNoiseAway'
+san_slow+=':Radiosity.CornellBoxWallsAgreeWithSppm:PhotonMap.CornellBoxWithFinalGatherAgreesWithPathTracer'
+san_slow+=':ProjectionMap.DistantObjectUnderPointLightSameImageTenfoldFewerMisses'
+san_slow+=':ProjectionMap.SpheresApartUnderDirectionalLightSameImageTenfoldFewerMisses:SppmRadius.ErrorFallsAsPassesGrow'
 san_tests() {
-    GTEST_FILTER='-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*' \
+    GTEST_FILTER="-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:$san_slow" \
     ASAN_OPTIONS="detect_leaks=1:log_path=$san/sanitizer-logs/asan" \
         LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
         UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$san/sanitizer-logs/ubsan" \
