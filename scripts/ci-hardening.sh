@@ -66,7 +66,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
               test_alpha_cutout test_instancing test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_area_light_kinds test_conductor test_rough_dielectric test_coated_diffuse
               test_diffuse_transmission test_texture_channels test_gltf_import test_independent_passes
-              test_error_estimate test_lightweight test_obj_mesh test_photon_guiding)
+              test_error_estimate test_lightweight test_obj_mesh test_photon_guiding test_adaptive_photons)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head test_progress_history)
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
@@ -159,7 +159,8 @@ fuzz_run() {
 #  - the farm tests that kill, pause or restart a render that must run for seconds first
 #    (FarmServerTest.ARestartedServer..., .AWholeJob..., FarmRedisRestartTest: about a minute
 #    and a half under ASan; the farm's code paths are run by the other farm tests);
-#  - the slowest convergence comparisons, 330 s of the stage's 1,160 (cold CI, two lanes):
+#  - the slowest convergence comparisons, 330 s of the stage's 1,160 (cold CI, two lanes),
+#    and the adaptive photon count's image check:
 #    they render the same code paths for hundreds of passes until a statistic settles, and
 #    shorter tests of the same programs run those paths (the photon mapper's with
 #    InstancesVsCopies/sppm and test_photonmap's others, lightweight's with its
@@ -172,6 +173,7 @@ san_slow+=':Lightweight.GlassCornellBoxAgreesWithThePathTracerInMeanAndPerRegion
 san_slow+=':Radiosity.CornellBoxWallsAgreeWithSppm:PhotonMap.CornellBoxWithFinalGatherAgreesWithPathTracer'
 san_slow+=':ProjectionMap.DistantObjectUnderPointLightSameImageTenfoldFewerMisses'
 san_slow+=':ProjectionMap.SpheresApartUnderDirectionalLightSameImageTenfoldFewerMisses:SppmRadius.ErrorFallsAsPassesGrow'
+san_slow+=':AdaptivePhotons.ImageAgreesWithFixedPhotonsPerPass'
 san_tests() {
     GTEST_FILTER="-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:$san_slow" \
     ASAN_OPTIONS="detect_leaks=1:log_path=$san/sanitizer-logs/asan" \

@@ -79,7 +79,9 @@ TEST(Lightweight, TracesNoPhotonsWhereNoMaterialHasADeltaLobe) {
     renderer.run(cancel);
     EXPECT_EQ(renderer.integrator().lastPassStats().photons, 0);
     EXPECT_EQ(renderer.integrator().lastPassStats().photonRays, 0);
-    EXPECT_EQ(renderer.integrator().lastPassStats().cameraRays, 16 * 16);
+    // Every pixel's path casts its first ray, and on the box's walls goes on (rays counted at
+    // each vertex and light sample).
+    EXPECT_GT(renderer.integrator().lastPassStats().cameraRays, 2 * 16 * 16);
     EXPECT_GT(test::meanOver(renderer.snapshot(), 0, 0, 16, 16).x, 0.0f);
 
     SceneDescription glass = test::exampleScene("cornell-glass", 16, 2, 20000, 3);

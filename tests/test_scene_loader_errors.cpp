@@ -93,6 +93,12 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["render"]["seed"] = -1; }, "render.seed", "must be an integer >= 0");
     expectError([](Json& d) { d["render"]["time_limit"] = -1; }, "render.time_limit", "must be >= 0");
     expectError([](Json& d) { d["render"]["target_error"] = -0.5; }, "render.target_error", "must be >= 0");
+    expectError(
+        [](Json& d) {
+            d["render"]["radius_schedule"] = "global";
+            d["render"]["adaptive_photons"] = true;
+        },
+        "render.adaptive_photons", "adaptive_photons needs the per-pixel radius schedule (radius_schedule \"pixel\")");
     expectError([](Json& d) { d["render"]["initial_radius"] = "big"; }, "render.initial_radius",
                 "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["initial_radius"] = 0; }, "render.initial_radius", "must be > 0");

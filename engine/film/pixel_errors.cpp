@@ -51,14 +51,20 @@ std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, in
     return keep;
 }
 
-double relativeErrorOf(const PixelErrors& e) {
+ErrorMoments errorMoments(const PixelErrors& e) {
     const std::vector<bool> keep = errorPixels(e.luminance, e.width, e.height);
     double sum = 0, variance = 0;
     size_t kept = 0;
     for (size_t i = 0; i < keep.size(); ++i)
         if (keep[i]) sum += e.luminance[i], variance += e.variance[i], ++kept;
-    if (kept == 0 || sum <= 0) return 0;
-    return std::sqrt(variance / double(kept)) / (sum / double(kept));
+    if (kept == 0) return {};
+    return {variance / double(kept), sum / double(kept)};
+}
+
+double relativeErrorOf(const PixelErrors& e) {
+    const ErrorMoments m = errorMoments(e);
+    if (m.luminance <= 0) return 0;
+    return std::sqrt(m.variance) / m.luminance;
 }
 
 ImageLayer errorLayer(const PixelErrors& e) {

@@ -40,6 +40,12 @@ inline float halfSplitVariance(double oddSum, double evenSum, int64_t oddCount, 
 // a variance far above any other's, and would make the estimate hinge on a few pixels.
 std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, int height);
 
+// Means over errorPixels of the variance estimates and of the luminance (0 with none).
+struct ErrorMoments {
+    double variance = 0, luminance = 0;
+};
+ErrorMoments errorMoments(const PixelErrors& e);
+
 // The image's relative error: RMS over errorPixels of the estimated standard error, over
 // their mean luminance (the relative noise photon-bench measures from two seeds). Summed
 // in a fixed order, so the same passes give the same figure on any thread count.

@@ -140,6 +140,13 @@ RenderSettings readRender(const JsonValue& value) {
     r.radiusSchedule = RadiusSchedule(obj.choice("radius_schedule", 0, {"pixel", "global"}));
     r.lightweight = obj.boolean("lightweight", r.lightweight);
     r.photonGuiding = obj.boolean("photon_guiding", r.photonGuiding);
+    if (auto adaptive = obj.optional("adaptive_photons")) {
+        r.adaptivePhotons = adaptive->boolean();
+        // The global schedule's passes are rendered apart (on a farm's workers too), each
+        // with the photons it was given: nothing could tell them a count chosen later.
+        if (r.adaptivePhotons && r.radiusSchedule == RadiusSchedule::Global)
+            adaptive->fail("adaptive_photons needs the per-pixel radius schedule (radius_schedule \"pixel\")");
+    }
     if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);

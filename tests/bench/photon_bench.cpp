@@ -123,7 +123,7 @@ constexpr int kFirstPassesTimed = 7;
 // Sums over timed passes.
 struct PassTotals {
     double cameraMs = 0, gridMs = 0, photonMs = 0;
-    int64_t passes = 0, rays = 0, segments = 0, emitted = 0, candidates = 0, accepted = 0;
+    int64_t passes = 0, rays = 0, segments = 0, emitted = 0, candidates = 0, accepted = 0, cameraRays = 0, gridEntries = 0;
     photon::bench::RayThroughput raw, rawPackets;
 
     void add(const photon::PassStats& s, const photon::bench::RayThroughput& r, const photon::bench::RayThroughput& rp) {
@@ -136,6 +136,8 @@ struct PassTotals {
         emitted += s.photons;
         candidates += s.gatherCandidates;
         accepted += s.gatherHits;
+        cameraRays += s.cameraRays;
+        gridEntries += s.gridEntries;
         raw += r;
         rawPackets += rp;
     }
@@ -180,6 +182,10 @@ json renderStats(const Options& o, int64_t photons, photon::bench::RayThroughput
             {"gather_accepted_per_segment", all.perSegment(all.accepted)},
             {"camera_pass_ms", all.cameraMs / timed},
             {"hash_build_ms", all.gridMs / timed},
+            // The costs render.adaptive_photons weighs by counts (photon_budget.h), in time.
+            {"camera_ns_per_ray", all.cameraMs * 1e6 / static_cast<double>(std::max<int64_t>(all.cameraRays, 1))},
+            {"grid_ns_per_entry", all.gridMs * 1e6 / static_cast<double>(std::max<int64_t>(all.gridEntries, 1))},
+            {"photon_ns_per_ray", all.photonMs * 1e6 / static_cast<double>(std::max<int64_t>(all.rays, 1))},
             {"photon_pass_ms", all.photonMs / timed},
             {"bytes_per_pixel_sppm_state", integrator.bytesPerPixel()},
             {"grid_entries_per_pixel", static_cast<double>(integrator.lastPassStats().gridEntries) /

@@ -91,6 +91,10 @@ struct RenderSettings {
     // SPPM only, with the per-pixel schedule: photons leave the lights where earlier
     // passes' photons reached visible points (docs/sppm.md, "Photon guiding").
     bool photonGuiding = false;
+    // SPPM only, with the per-pixel schedule: photons_per_pass is where the render starts,
+    // and the photons a pass traces follow the split of the error between camera paths and
+    // photons, and their costs (docs/sppm.md, "Photons per pass").
+    bool adaptivePhotons = false;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -116,6 +120,7 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     if (s.radiusSchedule != RadiusSchedule::PerPixel) visit(s.radiusSchedule);
     if (s.lightweight) visit(s.lightweight);
     if (s.photonGuiding) visit(s.photonGuiding);
+    if (s.adaptivePhotons) visit(s.adaptivePhotons);
 }
 
 }  // namespace photon

@@ -1,7 +1,9 @@
 // SPPM: construction, the per-pass driver, the statistics update and snapshots.
 #include "integrators/sppm/sppm.h"
 #include "integrators/common/checkpoint.h"
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -24,7 +26,7 @@ int64_t fixedLuminance(const int64_t* rgb) {
 
 SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
-      width_(scene_->camera().width()), height_(scene_->camera().height()),
+      width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_) {
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
@@ -117,7 +119,7 @@ Color SppmIntegrator::passEstimate(size_t i) const {
     const VisiblePoint& vp = visible_[i];
     if (vp.photonCount > 0 && discs_[i].radiusSquared > 0) {
         const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
-        const double emitted = static_cast<double>(settings_.photonsPerPass);
+        const double emitted = static_cast<double>(photons_);
         const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].radiusSquared) * emitted);
         L += Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
                    static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
@@ -161,7 +163,7 @@ bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     stats_.gridEntries = static_cast<int64_t>(grid_.entryCount());
 
     t0 = std::chrono::steady_clock::now();
-    photonPass(cancel, settings_.photonsPerPass);
+    photonPass(cancel, photons_);
     stats_.photonMs = millisecondsSince(t0);
     if (cancel.cancelled()) return false;
 
@@ -197,6 +199,8 @@ void SppmIntegrator::updateStatistics() {
     });
     halves_.countPass(passIndex_);
     ++passes_;
+    emitted_ += photons_;
+    if (settings_.adaptivePhotons) adaptPhotons();
     double radiusSum = 0;
     size_t withRadius = 0;
     for (const PixelState& px : pixels_)
@@ -219,6 +223,11 @@ void SppmIntegrator::saveState(std::ostream& out) const {
         }
     } else {
         writeRaw(out, pixels_.data(), pixels_.size());
+        if (settings_.adaptivePhotons) {
+            writeRaw(out, &photons_, 1);
+            writeRaw(out, &emitted_, 1);
+            budget_.save(out);
+        }
         halves_.save(out);
     }
 }
@@ -258,10 +267,21 @@ void SppmIntegrator::restoreState(std::istream& in) {
         if (!isFiniteNonNegative(p.directSum) || !isFiniteNonNegative(p.tau) || !isFiniteNonNegative(p.n) ||
             !isFiniteNonNegative(p.r2))
             throw CheckpointError("checkpoint: invalid pixel statistics");
+    int64_t photons = settings_.photonsPerPass, emitted = passes * settings_.photonsPerPass;
+    PhotonBudget budget;
+    if (settings_.adaptivePhotons) {
+        readRaw(in, &photons, 1);
+        readRaw(in, &emitted, 1);
+        if (photons < 1 || emitted < 0) throw CheckpointError("checkpoint: invalid photon counts");
+        budget.restore(in);
+    }
     std::lock_guard<std::mutex> lock(stateMutex_);
     halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     passes_ = passes;
     pixels_ = std::move(pixels);
+    photons_ = photons;
+    emitted_ = emitted;
+    budget_ = budget;
 
 }
 
@@ -294,7 +314,7 @@ std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
 // Knaus & Zwicker 2011: the mean of the passes' direct light plus tau / (pi R^2 N_emitted).
 Color SppmIntegrator::radianceLocked(size_t i) const {
     if (passes_ == 0) return Color(0.0f);
-    const double emitted = static_cast<double>(passes_) * static_cast<double>(settings_.photonsPerPass);
+    const double emitted = static_cast<double>(emitted_);
     const PixelState& px = pixels_[i];
     Color L = px.directSum * (1.0f / static_cast<float>(passes_));
     if (px.r2 > 0) L += px.tau * static_cast<float>(1.0 / (kPi * px.r2 * emitted));

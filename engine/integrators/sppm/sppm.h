@@ -17,6 +17,7 @@
 #include "scene/scene.h"
 #include "integrators/common/shading.h"
 #include "integrators/integrator.h"
+#include "integrators/sppm/photon_budget.h"
 
 namespace photon {
 
@@ -47,6 +48,8 @@ public:
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     // Photons gathered by each pixel in the last pass (M in the paper), for tests.
     uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
+    // The photons the next pass traces: photons_per_pass, or render.adaptive_photons' choice.
+    int64_t photonsPerPass() const { return photons_; }
 
 private:
     // The first non-specular vertex of a pixel's camera path in this pass: its position
@@ -98,10 +101,11 @@ private:
     void cameraPass(const CancelToken& cancel);
     // Clears the pixel's visible point and returns its jittered camera ray.
     Ray startPixel(size_t index, Rng& rng);
-    void tracePixel(size_t index, Rng& rng);
+    // Each returns the rays it cast (render.adaptive_photons' measure of the camera's cost).
+    int tracePixel(size_t index, Rng& rng);
     // render.lightweight's camera path: a path-traced sample that leaves out the caustics
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
-    void tracePixelLightweight(size_t index, Rng& rng);
+    int tracePixelLightweight(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
@@ -142,6 +146,12 @@ private:
     class GatheringSink;
     void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
     void updateStatistics();
+    // render.adaptive_photons, after a pass's statistics: what the pass measured goes to the
+    // budget, which at its decisions sets the photons of the passes that follow.
+    void adaptPhotons();
+    // The mean over pixels of p^2 / M, the variance this pass's photons brought given its
+    // camera paths (photon_budget.h), summed in a fixed order.
+    double photonVarianceOfPass() const;
 
     std::shared_ptr<const Scene> scene_;
     const RenderSettings& settings_;
@@ -149,6 +159,9 @@ private:
     int width_, height_;
     int passes_ = 0;
     int64_t passIndex_ = 0;     // the pass being rendered: its random streams' index
+    int64_t photons_;           // photons the pass being rendered traces
+    int64_t emitted_ = 0;       // photons the per-pixel schedule's counted passes traced
+    PhotonBudget budget_;       // render.adaptive_photons' measurements
     float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
     bool tracesPhotons_ = true; // false: passes are camera passes alone (sppm.cpp)
     PassStats stats_;

@@ -4,18 +4,18 @@
 #include "integrators/common/direct_lighting.h"
 #include "integrators/common/pixel_loop.h"
 #include "integrators/sppm/sppm.h"
+#include <tbb/enumerable_thread_specific.h>
+#include <functional>
 
 namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
+    tbb::enumerable_thread_specific<int64_t> rays(0);
     forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) {
-        if (settings_.lightweight)
-            tracePixelLightweight(index, rng);
-        else
-            tracePixel(index, rng);
+        rays.local() += settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
     });
-    stats_.cameraRays = static_cast<int64_t>(pixels_.size());
+    stats_.cameraRays = rays.combine(std::plus<int64_t>());
 }
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
@@ -37,7 +37,7 @@ Ray SppmIntegrator::startPixel(size_t index, Rng& rng) {
     return scene_->camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
 }
 
-void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
+int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
     Color direct(0.0f), beta(1.0f);
@@ -46,8 +46,10 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     // the environment is shared between shadow rays and BSDF samples (BounceSampling).
     BounceSampling bounce;
     float pathLength = 0;
+    int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
+        ++rays;
         if (!traceCameraRay(scene, ray, beta, bounce, hit, direct)) break;
         pathLength += hit.t;
         Vec3 wo = -ray.d;
@@ -75,9 +77,9 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                                       : splits                  ? BsdfContinuation{others, 1.0f - pd}
                                                                 : BsdfContinuation{};
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
-            direct += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next), ++rays;
         else if (splits)  // photons bring direct light through the diffuse lobe only
-            direct += beta * sampleDirectLight(scene, sp, wo, rng, others, next);
+            direct += beta * sampleDirectLight(scene, sp, wo, rng, others, next), ++rays;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
         if (storesHere) {
@@ -90,7 +92,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 continue;
             }
             storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
-            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct);
+            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct), ++rays;
             break;
         }
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
@@ -100,6 +102,7 @@ void SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = direct;
+    return rays;
 }
 
 void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,

@@ -36,7 +36,7 @@ Color pathTracedShare(const GatherVertex& v) {
 
 }  // namespace
 
-void SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
+int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
     Color L(0.0f), beta(1.0f);
     Ray ray = startPixel(index, rng);
@@ -48,9 +48,11 @@ void SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     int deltaChain = -1;
     float pathLength = 0;
     const int maxDepth = settings_.maxDepth;
+    int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         Color found(0.0f);
+        ++rays;
         const bool hitSurface = traceCameraRay(scene, ray, beta, bounce, hit, found);
         L += deltaChain > 0 ? found * pathTracedShare(*gather) : found;
         if (!hitSurface || depth == maxDepth) break;
@@ -59,7 +61,7 @@ void SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         const Vec3 woLocal = sp.frame.toLocal(wo);
-        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
+        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next), ++rays;
         const bool gathersHere = !gather && m.hasDiffuse();
         if (gathersHere) {
             // Photons are gathered through the diffuse lobe alone where there are others
@@ -84,6 +86,7 @@ void SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     passDirect_[index] = L;
+    return rays;
 }
 
 }  // namespace photon

@@ -1,0 +1,51 @@
+// render.adaptive_photons: each pass's measurements go to the photon budget
+// (photon_budget.h), which at its decisions sets the photons of the passes that follow.
+#include "integrators/sppm/sppm.h"
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+#include <functional>
+
+namespace photon {
+
+double SppmIntegrator::photonVarianceOfPass() const {
+    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    // parallel_deterministic_reduce splits the same way on any number of threads, so the
+    // sum's rounding, and with it the budget's choice, does not depend on them.
+    const double sum = tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<size_t>(0, visible_.size(), 4096), 0.0,
+        [&](const tbb::blocked_range<size_t>& range, double partial) {
+            for (size_t i = range.begin(); i < range.end(); ++i) {
+                const VisiblePoint& vp = visible_[i];
+                const float r2 = discs_[i].radiusSquared;
+                if (vp.photonCount == 0 || !(r2 > 0)) continue;
+                const double toRadiance = fluxUnit / (kPi * static_cast<double>(r2) * static_cast<double>(photons_));
+                const double p = luminance(Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
+                                                 static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
+                                                 static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance)));
+                partial += p * p / static_cast<double>(vp.photonCount);
+            }
+            return partial;
+        },
+        std::plus<double>());
+    return visible_.empty() ? 0.0 : sum / static_cast<double>(visible_.size());
+}
+
+void SppmIntegrator::adaptPhotons() {
+    if (!tracesPhotons_) return;  // lightweight photon mapping in a scene without delta lobes
+    PhotonBudget::Pass pass;
+    pass.photons = photons_;
+    pass.photonVariance = photonVarianceOfPass();
+    pass.cameraCost = static_cast<double>(stats_.cameraRays) +
+                      PhotonBudget::kGridEntryCost * static_cast<double>(stats_.gridEntries);
+    pass.photonCost = static_cast<double>(stats_.photonRays) +
+                      PhotonBudget::kCandidateCost * static_cast<double>(stats_.gatherCandidates);
+    budget_.add(pass);
+    if (!PhotonBudget::decidesAfter(passes_)) return;
+    // The halves' variance of the render's mean, times the passes: a pass's own variance.
+    const std::optional<PixelErrors> errors =
+        halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, 0.5);
+    if (!errors) return;  // resumed from a checkpoint without halves: the count stays
+    photons_ = budget_.next(photons_, errorMoments(*errors).variance * static_cast<double>(passes_));
+}
+
+}  // namespace photon
