@@ -4,18 +4,18 @@
 #include "integrators/common/direct_lighting.h"
 #include "integrators/common/pixel_loop.h"
 #include "integrators/sppm/sppm.h"
-#include <tbb/enumerable_thread_specific.h>
-#include <functional>
+#include <numeric>
 
 namespace photon {
 
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
-    tbb::enumerable_thread_specific<int64_t> rays(0);
-    forEachPixel(width_, height_, stream, cancel, [&](int, int, size_t index, Rng& rng) {
-        rays.local() += settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
+    // Counted by row: each row is one thread's, so no thread-local look-up per pixel.
+    std::vector<int64_t> rowRays(static_cast<size_t>(height_), 0);
+    forEachPixel(width_, height_, stream, cancel, [&](int, int y, size_t index, Rng& rng) {
+        rowRays[static_cast<size_t>(y)] += settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
     });
-    stats_.cameraRays = rays.combine(std::plus<int64_t>());
+    stats_.cameraRays = std::accumulate(rowRays.begin(), rowRays.end(), int64_t(0));
 }
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
