@@ -8,8 +8,8 @@
 // a / N what its photons bring given that path. A pass costs C_c + N c_p (camera rays and
 // the grid; photon rays and the gather), so time T holds T / (C_c + N c_p) passes and
 //     E^2 T = (C_c + N c_p) (V_c + a / N),
-// least at N* = sqrt(a C_c / (c_p V_c)): the balance of Veach's efficiency-optimal
-// allocation of samples between two estimators (Veach 1997, sec. 9.2.4). The two variances
+// least at N* = sqrt(a C_c / (c_p V_c)): the split of work that maximises Monte Carlo
+// efficiency, 1 / (variance x cost) (Hammersley & Handscomb 1964). The two variances
 // are told apart without a second render: a pass's estimate p at a point that gathered M
 // photons varies by about p^2 / M given its camera path (the photons' count is Poisson),
 // and the rest of the pass-to-pass variance (the error estimate's halves) is the camera's.
