@@ -48,8 +48,6 @@ public:
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     // Photons gathered by each pixel in the last pass (M in the paper), for tests.
     uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
-    // The photons the next pass traces: photons_per_pass, or render.adaptive_photons' choice.
-    int64_t photonsPerPass() const { return photons_; }
 
 private:
     // The first non-specular vertex of a pixel's camera path in this pass: its position
