@@ -1,9 +1,7 @@
 // SPPM: construction, the per-pass driver, the statistics update and snapshots.
 #include "integrators/sppm/sppm.h"
 #include "integrators/common/checkpoint.h"
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -116,16 +114,19 @@ void SppmIntegrator::addPasses(const PassSums& batch) {
 // flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
 Color SppmIntegrator::passEstimate(size_t i) const {
     Color L = passDirect_[i];
-    const VisiblePoint& vp = visible_[i];
-    if (vp.photonCount > 0 && discs_[i].radiusSquared > 0) {
-        const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
-        const double emitted = static_cast<double>(photons_);
-        const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].radiusSquared) * emitted);
-        L += Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
-                   static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
-                   static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
-    }
+    if (std::optional<Color> photons = passPhotonEstimate(i)) L += *photons;
     return L;
+}
+
+std::optional<Color> SppmIntegrator::passPhotonEstimate(size_t i) const {
+    const VisiblePoint& vp = visible_[i];
+    if (vp.photonCount == 0 || !(discs_[i].radiusSquared > 0)) return std::nullopt;
+    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    const double emitted = static_cast<double>(photons_);
+    const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].radiusSquared) * emitted);
+    return Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
+                 static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
+                 static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
 }
 
 void SppmIntegrator::addPassEstimate(PassSums& sums) const {

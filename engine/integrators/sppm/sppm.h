@@ -87,6 +87,8 @@ private:
     double globalShrinkAt(int64_t i) const;
     // Pixel i's estimate from this pass alone, direct + Phi / (pi r_i^2 N_emitted).
     Color passEstimate(size_t i) const;
+    // Its photons' part, Phi / (pi r_i^2 N_emitted); none where the pixel gathered none.
+    std::optional<Color> passPhotonEstimate(size_t i) const;
     // Adds this pass's estimates to `sums` in fixed point (and their luminance to its odd
     // half for an odd pass) and counts the pass there; throws std::invalid_argument, the
     // sums then spent, where they would overflow.

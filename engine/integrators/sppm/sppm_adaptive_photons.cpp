@@ -8,21 +8,16 @@
 namespace photon {
 
 double SppmIntegrator::photonVarianceOfPass() const {
-    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
     // parallel_deterministic_reduce splits the same way on any number of threads, so the
     // sum's rounding, and with it the budget's choice, does not depend on them.
     const double sum = tbb::parallel_deterministic_reduce(
         tbb::blocked_range<size_t>(0, visible_.size(), 4096), 0.0,
         [&](const tbb::blocked_range<size_t>& range, double partial) {
             for (size_t i = range.begin(); i < range.end(); ++i) {
-                const VisiblePoint& vp = visible_[i];
-                const float r2 = discs_[i].radiusSquared;
-                if (vp.photonCount == 0 || !(r2 > 0)) continue;
-                const double toRadiance = fluxUnit / (kPi * static_cast<double>(r2) * static_cast<double>(photons_));
-                const double p = luminance(Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
-                                                 static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
-                                                 static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance)));
-                partial += p * p / static_cast<double>(vp.photonCount);
+                const std::optional<Color> photons = passPhotonEstimate(i);
+                if (!photons) continue;
+                const double p = luminance(*photons);
+                partial += p * p / static_cast<double>(visible_[i].photonCount);
             }
             return partial;
         },
