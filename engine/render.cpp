@@ -41,8 +41,13 @@ std::shared_ptr<const PendingImage> Renderer::pendingLayersOf(Image raw) const {
 bool Renderer::renderPass(const CancelToken& cancel) {
     auto start = std::chrono::steady_clock::now();
     if (!integrator_->renderPass(cancel)) return false;
-    renderSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderSeconds_ += seconds;
     const PassStats& s = integrator_->lastPassStats();
+    if (window_.photons >= 0 && s.photons != window_.photons) window_ = PassWindow{};
+    window_.photons = s.photons;
+    window_.passes += 1;
+    window_.seconds += seconds;
     progress_.pass = integrator_->passesDone();
     progress_.photonsTraced += s.photons;
     progress_.photonsPerSecond = renderSeconds_ > 0 ? static_cast<double>(progress_.photonsTraced) / renderSeconds_ : 0;
@@ -51,7 +56,7 @@ bool Renderer::renderPass(const CancelToken& cancel) {
     progress_.lastPass = s;
     updateErrorEstimate();
     int left = std::max(0, progress_.totalPasses - progress_.pass);
-    const double perPass = renderSeconds_ / progress_.pass;
+    const double perPass = window_.seconds / window_.passes;
     progress_.etaSeconds = perPass * left;
     if (progress_.passesToTarget) progress_.etaSeconds = std::min(progress_.etaSeconds, perPass * *progress_.passesToTarget);
     double limit = scene_->settings().timeLimitSeconds;
@@ -118,6 +123,7 @@ void Renderer::restoreCheckpoint(std::istream& in) {
     if (photons < 0 || !(seconds >= 0 && seconds <= 1e12)) throw CheckpointError("checkpoint: invalid progress");
     integrator_->restoreState(body);
     renderSeconds_ = seconds;
+    window_ = PassWindow{-1, integrator_->passesDone(), seconds};
     progress_.photonsTraced = photons;
     progress_.pass = integrator_->passesDone();
     progress_.elapsedSeconds = seconds;

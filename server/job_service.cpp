@@ -168,7 +168,8 @@ void JobService::logAccepted(const JobRecord& job) const {
     const JobSettings& s = job.settings;
     appendJobLog(folders_.logFile(job.id),
                  "accepted from " + job.client + ": " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
-                     std::to_string(s.passes) + " passes of " + std::to_string(s.photonsPerPass) + " photons, seed " +
+                     // photons_per_pass as the scene gives it: SPPM may choose its own after it.
+                     std::to_string(s.passes) + " passes, photons_per_pass " + std::to_string(s.photonsPerPass) + ", seed " +
                      std::to_string(s.seed) + ", " + s.integrator + ", priority " + std::to_string(job.priority));
     for (const std::string& warning : job.warnings) appendJobLog(folders_.logFile(job.id), "warning: " + warning);
 }

@@ -39,6 +39,7 @@ TEST(PhotonBudget, StepsAtMostFourfoldWithinItsBounds) {
     const PhotonBudget noPhotonNoise = budgetOf(4, 100'000, 0, 1e6, 2);
     EXPECT_EQ(noPhotonNoise.next(100'000, 0.01), 25'000);
     EXPECT_EQ(noPhotonNoise.next(2'000, 0.01), PhotonBudget::kMinPhotons);
+    EXPECT_EQ(noPhotonNoise.next(300, 0.01), 300);  // started below the floor: held there
     // All the variance is the photons': the camera's is taken as a fiftieth of the whole.
     const PhotonBudget photonsOnly = budgetOf(4, 100'000, 1000, 1e6, 2);
     EXPECT_EQ(photonsOnly.next(100'000, 0.01), 400'000);
@@ -74,16 +75,24 @@ SceneDescription glassBox(bool adaptive, int passes, int64_t photons = 200'000) 
     return d;
 }
 
+// A render of `d` run to its end, and a checkpoint of another after `passes` passes.
+struct WholeAndCheckpoint {
+    Renderer whole;
+    std::stringstream checkpoint;
+};
+WholeAndCheckpoint wholeAndCheckpoint(const SceneDescription& d, int passes) {
+    CancelToken cancel;
+    WholeAndCheckpoint r{Renderer(Scene::build(d)), {}};
+    r.whole.run(cancel);
+    Renderer first(Scene::build(d));
+    for (int i = 0; i < passes; ++i) EXPECT_TRUE(first.renderPass(cancel));
+    first.saveCheckpoint(r.checkpoint);
+    return r;
+}
+
 TEST(AdaptivePhotons, ResumedAcrossADecisionIsBitIdentical) {
     CancelToken cancel;
-    Renderer whole(Scene::build(glassBox(true, 10)));
-    whole.run(cancel);
-    std::stringstream saved;
-    {
-        Renderer first(Scene::build(glassBox(true, 10)));
-        for (int i = 0; i < 6; ++i) ASSERT_TRUE(first.renderPass(cancel));
-        first.saveCheckpoint(saved);
-    }
+    auto [whole, saved] = wholeAndCheckpoint(glassBox(true, 10), 6);
     Renderer resumed(Scene::build(glassBox(true, 10)));
     resumed.restoreCheckpoint(saved);
     EXPECT_EQ(resumed.run(cancel), RenderOutcome::Completed);
@@ -91,6 +100,51 @@ TEST(AdaptivePhotons, ResumedAcrossADecisionIsBitIdentical) {
     // The budget moved: the passes after the decisions at 4 and 8 traced fewer photons.
     EXPECT_LT(whole.progress().lastPass.photons, 200'000 / 4);
     EXPECT_TRUE(resumed.snapshot().rgb == whole.snapshot().rgb);
+}
+
+// Adaptive counts became the default after renders had been checkpointed with fixed ones:
+// such a checkpoint, whose key is the settings' with adaptive_photons off, goes on with fixed
+// counts to the image the fixed render would have made, and so do the checkpoints it writes.
+TEST(AdaptivePhotons, ACheckpointWithFixedCountsGoesOnWithFixedCounts) {
+    CancelToken cancel;
+    auto [whole, saved] = wholeAndCheckpoint(glassBox(false, 10), 6);
+    SceneDescription byDefault = glassBox(false, 10);
+    byDefault.render.adaptivePhotons = RenderSettings{}.adaptivePhotons;
+    ASSERT_TRUE(byDefault.render.adaptivePhotons);
+    Renderer resumed(Scene::build(byDefault));
+    resumed.restoreCheckpoint(saved);
+    ASSERT_TRUE(resumed.renderPass(cancel));
+    std::stringstream again;
+    resumed.saveCheckpoint(again);
+    Renderer resumedAgain(Scene::build(byDefault));
+    resumedAgain.restoreCheckpoint(again);
+    EXPECT_EQ(resumedAgain.run(cancel), RenderOutcome::Completed);
+    EXPECT_EQ(resumedAgain.progress().photonsTraced, 10 * 200'000);
+    EXPECT_TRUE(resumedAgain.snapshot().rgb == whole.snapshot().rgb);
+    // A checkpoint of other settings is still refused.
+    SceneDescription other = byDefault;
+    other.render.seed = 8;
+    Renderer refused(Scene::build(other));
+    std::stringstream copy(saved.str());
+    EXPECT_THROW(refused.restoreCheckpoint(copy), CheckpointError);
+}
+
+// Passes get cheaper or dearer as the count moves: the time left is reckoned from the
+// passes since the last change, not from all of them.
+TEST(AdaptivePhotons, TimeLeftFollowsThePassesSinceTheCountChanged) {
+    CancelToken cancel;
+    Renderer r(Scene::build(glassBox(true, 12)));
+    std::vector<RenderProgress> seen;
+    r.run(cancel, [&](const RenderProgress& p) { seen.push_back(p); });
+    ASSERT_EQ(seen.size(), 12u);
+    ASSERT_NE(seen[4].lastPass.photons, seen[3].lastPass.photons);  // the decision after pass 4
+    int since = 0;  // the passes before the first at the current count
+    for (int pass = 1; pass <= 12; ++pass) {
+        if (pass > 1 && seen[pass - 1].lastPass.photons != seen[pass - 2].lastPass.photons) since = pass - 1;
+        const double before = since ? seen[since - 1].elapsedSeconds : 0.0;
+        const double perPass = (seen[pass - 1].elapsedSeconds - before) / (pass - since);
+        EXPECT_NEAR(seen[pass - 1].etaSeconds, perPass * (12 - pass), 1e-9 * (1 + perPass * 12)) << "pass " << pass;
+    }
 }
 
 // Passes of different photon counts are one estimate: tau / (pi R^2 N_emitted) counts the

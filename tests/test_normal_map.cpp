@@ -45,6 +45,7 @@ SceneDescription tiltedPlane(std::shared_ptr<const Texture> map, IntegratorKind 
     d.render.integrator = kind;
     d.render.passes = kind == IntegratorKind::Path ? 16 : 32;
     d.render.photonsPerPass = 100000;
+    d.render.adaptivePhotons = false;  // the radii, and the blur at the plane's edge, of this count
     d.render.direct = DirectLighting::Photons;  // SPPM: the light through photons alone
     return d;
 }

@@ -57,6 +57,8 @@ json smallScene(int passes, int64_t photonsPerPass, int resolution) {
     scene["camera"]["resolution"] = {resolution, resolution};
     scene["render"]["passes"] = passes;
     scene["render"]["photons_per_pass"] = photonsPerPass;
+    // Every pass traces photonsPerPass: the tests count photons and time passes by it.
+    scene["render"]["adaptive_photons"] = false;
     scene["render"]["seed"] = 7;
     return scene;
 }

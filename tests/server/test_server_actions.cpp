@@ -119,7 +119,7 @@ TEST_F(ActionsTest, TheLogSaysWhatHappenedToTheJob) {
     EXPECT_EQ(r->get_header_value("Content-Type"), "text/plain; charset=utf-8");
     std::vector<std::string> lines = logLines(r->body);
     ASSERT_EQ(lines.size(), 4u) << r->body;
-    EXPECT_EQ(lines[0], "accepted from 127.0.0.1: 32x32, 3 passes of 2000 photons, seed 7, sppm, priority 0");
+    EXPECT_EQ(lines[0], "accepted from 127.0.0.1: 32x32, 3 passes, photons_per_pass 2000, seed 7, sppm, priority 0");
     EXPECT_EQ(lines[1], "warning: asset \"notes.txt\" is not used by the scene and was not stored");
     EXPECT_EQ(lines[2], "started");
     char elapsed[32];

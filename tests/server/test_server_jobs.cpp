@@ -144,6 +144,38 @@ TEST_F(JobsTest, TheScenesTimeLimitEndsTheJobAfterThePassThatCrossesIt) {
               std::to_string(job["pass"].get<int>()));
 }
 
+// By default SPPM's photons per pass follow the error (render.adaptive_photons): the job's
+// photons are the engine's, pass by pass, changing only at the budget's decisions.
+TEST_F(JobsTest, AdaptivePhotonCountsReachTheProgressAsTheEngineTracesThem) {
+    startServer();
+    json scene = smallScene(16, 50000, 16);
+    scene["render"].erase("adaptive_photons");
+    Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));
+    CancelToken cancel;
+    std::vector<int64_t> engine;  // photons traced after each pass
+    ASSERT_EQ(renderer.run(cancel, [&](const RenderProgress& p) { engine.push_back(p.photonsTraced); }),
+              RenderOutcome::Completed);
+
+    std::string id = submitOk(scene);
+    json job = waitFor(id, [](const json& j) { return j["status"] == "completed"; }, std::chrono::seconds(60));
+    EXPECT_EQ(job["settings"]["photons_per_pass"], 50000);  // where the render started
+    EXPECT_EQ(job["photons_traced"], engine.back());
+    const json points = json::parse(client().Get(("/api/v1/jobs/" + id + "/progress").c_str())->body)["points"];
+    ASSERT_EQ(points.size(), 16u);
+    std::vector<int64_t> perPass;
+    for (size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(points[i]["photons_traced"].get<int64_t>(), engine[i]) << "pass " << i + 1;
+        perPass.push_back(engine[i] - (i ? engine[i - 1] : 0));
+    }
+    // Passes 1-4 at the start; decisions after passes 4 and 8, each at most a fourfold step.
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(perPass[i], 50000);
+    for (int i = 5; i < 8; ++i) EXPECT_EQ(perPass[i], perPass[4]);
+    for (int i = 9; i < 16; ++i) EXPECT_EQ(perPass[i], perPass[8]);
+    EXPECT_NE(perPass[4], 50000) << "a 16 x 16 image's camera pass costs little: fewer photons pay";
+    EXPECT_GE(perPass[4], 12500);
+    EXPECT_GE(perPass[8] * 4, perPass[4]);
+}
+
 TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
     startServer();
     json scene = smallScene(100000, 2000, 16);

@@ -85,6 +85,14 @@ private:
     RenderProgress progress_;
     std::shared_ptr<const PixelErrors> errors_;  // after the last pass; null without an estimate
     double renderSeconds_ = 0;
+    // The passes since the photons per pass last changed (render.adaptive_photons): their
+    // mean time is what each pass left will take. Photon count -1: not yet seen (a new or
+    // resumed render, whose passes so far all count).
+    struct PassWindow {
+        int64_t photons = -1;
+        int passes = 0;
+        double seconds = 0;
+    } window_;
 };
 
 }  // namespace photon

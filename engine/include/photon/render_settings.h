@@ -91,14 +91,20 @@ struct RenderSettings {
     // SPPM only, with the per-pixel schedule: photons leave the lights where earlier
     // passes' photons reached visible points (docs/sppm.md, "Photon guiding").
     bool photonGuiding = false;
-    // SPPM only, with the per-pixel schedule: photons_per_pass is where the render starts,
-    // and the photons a pass traces follow the split of the error between camera paths and
-    // photons, and their costs (docs/sppm.md, "Photons per pass").
-    bool adaptivePhotons = false;
+    // SPPM with the per-pixel schedule: photons_per_pass is where the render starts, and the
+    // photons a pass traces follow the split of the error between camera paths and photons,
+    // and their costs (docs/sppm.md, "Photons per pass"). The other methods, and the global
+    // schedule (whose passes are rendered apart), trace photons_per_pass in every pass.
+    bool adaptivePhotons = true;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
 };
+
+// Whether a render's photons per pass follow its error (RenderSettings::adaptivePhotons).
+inline bool adaptsPhotonsPerPass(const RenderSettings& s) {
+    return s.adaptivePhotons && s.integrator == IntegratorKind::Sppm && s.radiusSchedule == RadiusSchedule::PerPixel;
+}
 
 // Hands `visit` every setting that changes what a render's state becomes, in a fixed
 // order: the one list a fingerprint of the settings (a checkpoint's key) is made from, kept
@@ -120,7 +126,9 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     if (s.radiusSchedule != RadiusSchedule::PerPixel) visit(s.radiusSchedule);
     if (s.lightweight) visit(s.lightweight);
     if (s.photonGuiding) visit(s.photonGuiding);
-    if (s.adaptivePhotons) visit(s.adaptivePhotons);
+    // Visited where it acts, as when it was off by default: a checkpoint written with fixed
+    // photon counts keeps its key, and SPPM goes on from it with fixed counts.
+    if (adaptsPhotonsPerPass(s)) visit(true);
 }
 
 }  // namespace photon

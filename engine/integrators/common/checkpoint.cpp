@@ -39,6 +39,10 @@ void writeCheckpointHeader(std::ostream& out, const CheckpointKey& key) {
 }
 
 void readCheckpointHeader(std::istream& in, const CheckpointKey& expected) {
+    readCheckpointHeader(in, expected, expected);
+}
+
+bool readCheckpointHeader(std::istream& in, const CheckpointKey& first, const CheckpointKey& second) {
     char magic[sizeof kMagic];
     uint32_t version = 0;
     CheckpointKey key;
@@ -47,11 +51,12 @@ void readCheckpointHeader(std::istream& in, const CheckpointKey& expected) {
     readRaw(in, &version, 1);
     if (version != kVersion) throw CheckpointError("checkpoint: unsupported version " + std::to_string(version));
     readRaw(in, &key, 1);
-    if (key.width != expected.width || key.height != expected.height)
+    if (key.width != first.width || key.height != first.height)
         throw CheckpointError("checkpoint: made for a " + std::to_string(key.width) + "x" + std::to_string(key.height) +
                               " image");
-    if (key.settings != expected.settings)
+    if (key.settings != first.settings && key.settings != second.settings)
         throw CheckpointError("checkpoint: made with other render settings");
+    return key.settings != first.settings;
 }
 
 namespace {

@@ -28,6 +28,9 @@ CheckpointKey checkpointKey(const RenderSettings& settings, int width, int heigh
 void writeCheckpointHeader(std::ostream& out, const CheckpointKey& key);
 // Throws CheckpointError if the stream is not a checkpoint or belongs to another key.
 void readCheckpointHeader(std::istream& in, const CheckpointKey& expected);
+// The same for a state that may have been written under either of two keys: returns
+// whether it was `second`.
+bool readCheckpointHeader(std::istream& in, const CheckpointKey& first, const CheckpointKey& second);
 
 // A whole checkpoint ends in a seal: the length and CRC-32 of everything before it. A file
 // cut short or damaged on disk is told from a good one before any of it is used.

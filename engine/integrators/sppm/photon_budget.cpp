@@ -32,7 +32,9 @@ int64_t PhotonBudget::next(int64_t current, double passVariance) const {
         best = std::sqrt(a * cameraCost / (photonCost * camera));
     const double lo = static_cast<double>(current) / kMaxStep, hi = static_cast<double>(current) * kMaxStep;
     best = std::clamp(best, lo, hi);
-    best = std::clamp(best, static_cast<double>(kMinPhotons), static_cast<double>(kMaxPhotons));
+    // A render already below the floor (it started there) is held where it is, not lifted to it.
+    const double floor = std::min(static_cast<double>(current), static_cast<double>(kMinPhotons));
+    best = std::clamp(best, floor, static_cast<double>(kMaxPhotons));
     return static_cast<int64_t>(std::llround(best));
 }
 

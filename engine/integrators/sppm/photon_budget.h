@@ -38,7 +38,7 @@ public:
     // a photon ray with 1.7-7.5 candidates (docs/sppm.md, "Photons per pass").
     static constexpr double kGridEntryCost = 0.25, kCandidateCost = 0.03;
     // The photons per pass move by at most this factor at a decision, and stay in
-    // [kMinPhotons, kMaxPhotons].
+    // [kMinPhotons, kMaxPhotons] (a render started below kMinPhotons may stay there).
     static constexpr double kMaxStep = 4;
     static constexpr int64_t kMinPhotons = 1000, kMaxPhotons = 100'000'000;
 

@@ -25,6 +25,7 @@ int64_t fixedLuminance(const int64_t* rgb) {
 SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
+      adaptivePhotons_(adaptsPhotonsPerPass(settings_)),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_) {
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
@@ -201,7 +202,7 @@ void SppmIntegrator::updateStatistics() {
     halves_.countPass(passIndex_);
     ++passes_;
     emitted_ += photons_;
-    if (settings_.adaptivePhotons) adaptPhotons();
+    if (adaptivePhotons_) adaptPhotons();
     double radiusSum = 0;
     size_t withRadius = 0;
     for (const PixelState& px : pixels_)
@@ -214,7 +215,7 @@ void SppmIntegrator::updateStatistics() {
 
 void SppmIntegrator::saveState(std::ostream& out) const {
     std::lock_guard<std::mutex> lock(stateMutex_);
-    writeCheckpointHeader(out, checkpointKey(settings_, width_, height_));
+    writeCheckpointHeader(out, checkpointKeyWith(adaptivePhotons_));
     writeRaw(out, &passes_, 1);
     if (global()) {
         writeRaw(out, sums_.values.data(), sums_.values.size());
@@ -224,7 +225,7 @@ void SppmIntegrator::saveState(std::ostream& out) const {
         }
     } else {
         writeRaw(out, pixels_.data(), pixels_.size());
-        if (settings_.adaptivePhotons) {
+        if (adaptivePhotons_) {
             writeRaw(out, &photons_, 1);
             writeRaw(out, &emitted_, 1);
             budget_.save(out);
@@ -234,7 +235,10 @@ void SppmIntegrator::saveState(std::ostream& out) const {
 }
 
 void SppmIntegrator::restoreState(std::istream& in) {
-    readCheckpointHeader(in, checkpointKey(settings_, width_, height_));
+    // A checkpoint written with fixed photon counts (before adaptive counts were the
+    // default, or with them off) goes on with fixed counts.
+    const bool writtenFixed = readCheckpointHeader(in, checkpointKeyWith(adaptivePhotons_), checkpointKeyWith(false));
+    const bool adaptive = adaptivePhotons_ && !writtenFixed;
     int passes = readPassCount(in);
     if (global()) {
         std::vector<int64_t> values(sums_.values.size());
@@ -270,7 +274,7 @@ void SppmIntegrator::restoreState(std::istream& in) {
             throw CheckpointError("checkpoint: invalid pixel statistics");
     int64_t photons = settings_.photonsPerPass, emitted = passes * settings_.photonsPerPass;
     PhotonBudget budget;
-    if (settings_.adaptivePhotons) {
+    if (adaptive) {
         readRaw(in, &photons, 1);
         readRaw(in, &emitted, 1);
         if (photons < 1 || emitted < 0) throw CheckpointError("checkpoint: invalid photon counts");
@@ -283,7 +287,13 @@ void SppmIntegrator::restoreState(std::istream& in) {
     photons_ = photons;
     emitted_ = emitted;
     budget_ = budget;
+    adaptivePhotons_ = adaptive;
+}
 
+CheckpointKey SppmIntegrator::checkpointKeyWith(bool adaptivePhotons) const {
+    RenderSettings settings = settings_;
+    settings.adaptivePhotons = adaptivePhotons;
+    return checkpointKey(settings, width_, height_);
 }
 
 // L = direct / passes + tau / (pi R^2 N_emitted) (Hachisuka & Jensen 2009, eq. 12).

@@ -10,6 +10,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <photon/pass_sums.h>
 #include "accel/hash_grid.h"
+#include "integrators/common/checkpoint.h"
 #include "integrators/common/pass_halves.h"
 #include "integrators/common/photon_emitter.h"
 #include "math/octahedral.h"
@@ -152,6 +153,8 @@ private:
     // The mean over pixels of p^2 / M, the variance this pass's photons brought given its
     // camera paths (photon_budget.h), summed in a fixed order.
     double photonVarianceOfPass() const;
+    // The key of this render's checkpoints, with adaptive or fixed photon counts.
+    CheckpointKey checkpointKeyWith(bool adaptivePhotons) const;
 
     std::shared_ptr<const Scene> scene_;
     const RenderSettings& settings_;
@@ -162,6 +165,9 @@ private:
     int64_t photons_;           // photons the pass being rendered traces
     int64_t emitted_ = 0;       // photons the per-pixel schedule's counted passes traced
     PhotonBudget budget_;       // render.adaptive_photons' measurements
+    // Whether the photons per pass follow the error (adaptsPhotonsPerPass), unless resumed
+    // from a checkpoint written with fixed counts.
+    bool adaptivePhotons_;
     float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
     bool tracesPhotons_ = true; // false: passes are camera passes alone (sppm.cpp)
     PassStats stats_;
