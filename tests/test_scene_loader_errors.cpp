@@ -99,6 +99,11 @@ TEST(SceneLoaderErrors, RangeChecks) {
             d["render"]["adaptive_photons"] = true;
         },
         "render.adaptive_photons", "adaptive_photons needs the per-pixel radius schedule (radius_schedule \"pixel\")");
+    expectError([](Json& d) { d["render"]["bands"] = "many"; }, "render.bands",
+                "must be \"auto\" or an integer in [1, 65536]");
+    expectError([](Json& d) { d["render"]["bands"] = 2.5; }, "render.bands",
+                "must be \"auto\" or an integer in [1, 65536]");
+    expectError([](Json& d) { d["render"]["bands"] = 0; }, "render.bands", "must be an integer in [1, 65536]");
     expectError([](Json& d) { d["render"]["initial_radius"] = "big"; }, "render.initial_radius",
                 "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["initial_radius"] = 0; }, "render.initial_radius", "must be > 0");

@@ -147,6 +147,16 @@ RenderSettings readRender(const JsonValue& value) {
         if (r.adaptivePhotons && r.radiusSchedule == RadiusSchedule::Global)
             adaptive->fail("adaptive_photons needs the per-pixel radius schedule (radius_schedule \"pixel\")");
     }
+    if (auto bands = obj.optional("bands")) {
+        const char* expected = "must be \"auto\" or an integer in [1, 65536]";
+        if (bands->json().is_string()) {
+            if (bands->string() != "auto") bands->fail(expected);
+        } else if (!bands->json().is_number_integer()) {
+            bands->fail(expected);
+        } else {
+            r.bands = static_cast<int>(bands->integer(1, 65536));
+        }
+    }
     if (auto p = obj.optional("photonmap")) r.photonMap = readPhotonMap(*p);
     if (auto radiosity = obj.optional("radiosity")) r.radiosity = readRadiosity(*radiosity);
     if (auto denoise = obj.optional("denoise")) r.denoise = readDenoise(*denoise);

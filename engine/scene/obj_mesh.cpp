@@ -141,7 +141,7 @@ TriangleMesh ObjReader::finish() {
     mesh.positions.reserve(total + 1);
     mesh.positions.assign(positions_.begin(), positions_.end());
     for (const ExtraVertex& e : extras_) mesh.positions.push_back(positions_[e.position]);
-    positions_ = {};
+    positions_ = decltype(positions_)();  // frees its storage (= {} would only clear it)
     for (uint32_t& i : indices_)
         if (i & kExtraBit) i = uint32_t(fileVertices + (i & ~kExtraBit));
     mesh.indices = std::move(indices_);
@@ -158,7 +158,7 @@ TriangleMesh ObjReader::finish() {
             mesh.normals[v] = n >= 0 ? normals_[size_t(n)] : Vec3(0, 0, 1);
         }
     }
-    normals_ = {};
+    normals_ = decltype(normals_)();
     if (anyCornerHasUv_) {
         mesh.uvs.resize(total);
         for (size_t v = 0; v < total; ++v) {

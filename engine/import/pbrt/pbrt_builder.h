@@ -18,6 +18,10 @@ namespace photon::pbrt {
 
 using Json = nlohmann::ordered_json;
 
+// A colour or vector as the scene JSON's three-number array.
+inline Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
+inline Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
+
 // pbrt's CTM with its projective part checked away: pbrt matrices are 4x4, photon's affine.
 struct GraphicsState {
     Transform ctm;  // object (or camera) to world, as pbrt's current transformation matrix

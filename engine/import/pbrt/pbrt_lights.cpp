@@ -10,8 +10,6 @@ namespace photon::pbrt {
 
 namespace {
 
-Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
-Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 
 // A rotation's axis and angle (degrees), if `t`'s linear part is a rotation.
 std::optional<std::pair<Vec3, float>> axisAngle(const Transform& t) {

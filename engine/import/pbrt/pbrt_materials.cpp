@@ -13,8 +13,6 @@ namespace photon::pbrt {
 
 namespace {
 
-Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
-
 // The name photon gives what pbrt's "interface" material marks: no surface.
 const std::string kNoSurface = "";
 

@@ -96,6 +96,11 @@ struct RenderSettings {
     // and their costs (docs/sppm.md, "Photons per pass"). The other methods, and the global
     // schedule (whose passes are rendered apart), trace photons_per_pass in every pass.
     bool adaptivePhotons = true;
+    // SPPM: a pass's camera paths and photons go in this many bands of rows, one band's
+    // visible points and grid in memory at a time, each band tracing the pass's photons
+    // again; the image is the same for any count. 0: "auto", one band up to 4 Mpx, else
+    // bands of at most 1 Mpx (docs/sppm.md, "Memory").
+    int bands = 0;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;

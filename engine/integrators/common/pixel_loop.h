@@ -9,11 +9,12 @@
 
 namespace photon {
 
-// Calls pixel(x, y, index, rng) for every pixel; once `cancel` is set, rows not yet begun
-// are skipped.
+// Calls pixel(x, y, index, rng) for every pixel of rows [firstRow, endRow); once `cancel` is
+// set, rows not yet begun are skipped.
 template <class PixelFn>
-void forEachPixel(int width, int height, const RngStream& stream, const CancelToken& cancel, PixelFn pixel) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+void forEachPixelOfRows(int width, int firstRow, int endRow, const RngStream& stream, const CancelToken& cancel,
+                        PixelFn pixel) {
+    tbb::parallel_for(tbb::blocked_range<int>(firstRow, endRow), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y < rows.end(); ++y) {
             if (cancel.cancelled()) return;
             for (int x = 0; x < width; ++x) {
@@ -23,6 +24,12 @@ void forEachPixel(int width, int height, const RngStream& stream, const CancelTo
             }
         }
     });
+}
+
+// The same for every pixel of the image.
+template <class PixelFn>
+void forEachPixel(int width, int height, const RngStream& stream, const CancelToken& cancel, PixelFn pixel) {
+    forEachPixelOfRows(width, 0, height, stream, cancel, pixel);
 }
 
 }  // namespace photon

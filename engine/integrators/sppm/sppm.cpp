@@ -35,9 +35,8 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     } else {
         pixels_.resize(n);
     }
-    discs_.resize(n);
-    visible_.resize(n);
-    passDirect_.resize(n);
+    bandRows_ = rowsPerBand();
+    allocatePassBuffers();
     // Lightweight photon mapping's photons arrive only after a delta bounce: with no
     // material that has one, none would, and the path tracer has all the light.
     if (settings_.lightweight) {
@@ -47,9 +46,35 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     if (settings_.photonGuiding && tracesPhotons_ && scene_->lights().size() > 0) guide_.emplace(scene_->lights());
 }
 
+int SppmIntegrator::rowsPerBand() const {
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    int bands = settings_.bands;
+    if (bands <= 0) bands = pixels <= kOneBandPixels ? 1 : static_cast<int>((pixels + kBandPixels - 1) / kBandPixels);
+    bands = std::clamp(bands, 1, std::max(height_, 1));
+    return std::max((height_ + bands - 1) / bands, 1);
+}
+
+void SppmIntegrator::allocatePassBuffers() {
+    if (!results_.empty()) return;
+    const size_t band = static_cast<size_t>(bandRows_) * width_;
+    discs_.resize(band);
+    visible_.resize(band);
+    results_.resize(static_cast<size_t>(width_) * height_);
+}
+
+void SppmIntegrator::releasePassBuffers() {
+    grid_.release();
+    // Assigned empty vectors, which take their storage with them (= {} would only clear).
+    discs_ = std::vector<GatherDisc>();
+    visible_ = std::vector<VisiblePoint>();
+    results_ = std::vector<PassResult>();
+}
+
 size_t SppmIntegrator::bytesPerPixel() const {
     const size_t state = global() ? 4 * sizeof(int64_t) : sizeof(PixelState) + 2 * sizeof(float);
-    return state + sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(Color);
+    const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
+                        static_cast<size_t>(std::max(height_, 1));
+    return state + sizeof(PassResult) + band;
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
@@ -98,8 +123,8 @@ bool SppmIntegrator::traceGlobalPass(int64_t index, const CancelToken& cancel) {
     if (!traceOnePass(cancel)) return false;
     double radiusSum = 0;
     size_t withRadius = 0;
-    for (const GatherDisc& d : discs_)
-        if (d.radiusSquared > 0) radiusSum += std::sqrt(d.radiusSquared), ++withRadius;
+    for (const PassResult& r : results_)
+        if (r.radiusSquared > 0) radiusSum += std::sqrt(r.radiusSquared), ++withRadius;
     stats_.meanRadius = withRadius ? radiusSum / static_cast<double>(withRadius) : 0.0;
     return true;
 }
@@ -114,26 +139,25 @@ void SppmIntegrator::addPasses(const PassSums& batch) {
 // One pass's estimate per pixel: the direct light its camera path found plus the photons'
 // flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
 Color SppmIntegrator::passEstimate(size_t i) const {
-    Color L = passDirect_[i];
+    Color L = results_[i].direct;
     if (std::optional<Color> photons = passPhotonEstimate(i)) L += *photons;
     return L;
 }
 
 std::optional<Color> SppmIntegrator::passPhotonEstimate(size_t i) const {
-    const VisiblePoint& vp = visible_[i];
-    if (vp.photonCount == 0 || !(discs_[i].radiusSquared > 0)) return std::nullopt;
-    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    const PassResult& r = results_[i];
+    if (r.photonCount == 0 || !(r.radiusSquared > 0)) return std::nullopt;
     const double emitted = static_cast<double>(photons_);
-    const double toRadiance = fluxUnit / (kPi * static_cast<double>(discs_[i].radiusSquared) * emitted);
-    return Color(static_cast<float>(static_cast<double>(vp.flux[0]) * toRadiance),
-                 static_cast<float>(static_cast<double>(vp.flux[1]) * toRadiance),
-                 static_cast<float>(static_cast<double>(vp.flux[2]) * toRadiance));
+    const double toRadiance = 1.0 / (kPi * static_cast<double>(r.radiusSquared) * emitted);
+    return Color(static_cast<float>(static_cast<double>(r.flux[0]) * toRadiance),
+                 static_cast<float>(static_cast<double>(r.flux[1]) * toRadiance),
+                 static_cast<float>(static_cast<double>(r.flux[2]) * toRadiance));
 }
 
 void SppmIntegrator::addPassEstimate(PassSums& sums) const {
     const bool odd = passIndex_ & 1;
     std::atomic<bool> overflow = false;
-    tbb::parallel_for(size_t(0), visible_.size(), [&](size_t i) {
+    tbb::parallel_for(size_t(0), results_.size(), [&](size_t i) {
         const Color L = passEstimate(i);
         int64_t pass[3];
         bool over = false;
@@ -153,46 +177,65 @@ void SppmIntegrator::addPassEstimate(PassSums& sums) const {
 bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     if (guide_ && !guide_->trained() && !trainGuide(cancel)) return false;
     stats_ = PassStats{};
-    auto t0 = std::chrono::steady_clock::now();
-    cameraPass(cancel);
-    stats_.cameraMs = millisecondsSince(t0);
-    if (cancel.cancelled()) return false;
-
-    if (!tracesPhotons_) return true;
-    t0 = std::chrono::steady_clock::now();
-    buildGrid();
-    stats_.gridMs = millisecondsSince(t0);
-    stats_.gridEntries = static_cast<int64_t>(grid_.entryCount());
-
-    t0 = std::chrono::steady_clock::now();
-    photonPass(cancel, photons_);
-    stats_.photonMs = millisecondsSince(t0);
-    if (cancel.cancelled()) return false;
-
+    if (!traceBands(cancel, photons_)) return false;
+    if (tracesPhotons_) stats_.photons = photons_;
     return true;
 }
 
+bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons) {
+    allocatePassBuffers();
+    for (bandFirstRow_ = 0; bandFirstRow_ < height_; bandFirstRow_ += bandRows_) {
+        bandOffset_ = static_cast<size_t>(bandFirstRow_) * width_;
+        auto t0 = std::chrono::steady_clock::now();
+        cameraPass(cancel);
+        stats_.cameraMs += millisecondsSince(t0);
+        if (cancel.cancelled()) return false;
+        if (tracesPhotons_) {
+            t0 = std::chrono::steady_clock::now();
+            buildGrid();
+            stats_.gridMs += millisecondsSince(t0);
+            stats_.gridEntries += static_cast<int64_t>(grid_.entryCount());
+            t0 = std::chrono::steady_clock::now();
+            photonPass(cancel, photons);
+            stats_.photonMs += millisecondsSince(t0);
+            if (cancel.cancelled()) return false;
+        }
+        collectBand();
+    }
+    return true;
+}
+
+void SppmIntegrator::collectBand() {
+    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    tbb::parallel_for(size_t(0), bandPixels(), [&](size_t k) {
+        const VisiblePoint& vp = visible_[k];
+        PassResult& r = results_[bandOffset_ + k];
+        r.flux = Color(static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
+                       static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
+                       static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
+        r.photonCount = vp.photonCount;
+        r.radiusSquared = discs_[k].radiusSquared;
+    });
+}
+
 void SppmIntegrator::buildGrid() {
-    grid_.build(discs_);
+    grid_.build(std::span<const GatherDisc>(discs_.data(), bandPixels()));
 }
 
 // Hachisuka & Jensen 2009, eq. 7-10: N' = N + alpha M, R'^2 = R^2 (N + alpha M)/(N + M),
 // tau' = (tau + Phi) R'^2 / R^2. Photon fluxes were normalised to a mean of 1, so Phi is
 // scaled back by the lights' total power here.
 void SppmIntegrator::updateStatistics() {
-    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
     std::lock_guard<std::mutex> lock(stateMutex_);
     tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
         halves_.add(passIndex_, i, luminance(passEstimate(i)));
         PixelState& px = pixels_[i];
-        px.directSum += passDirect_[i];
-        if (px.r2 == 0) px.r2 = discs_[i].radiusSquared;  // first pass with a visible point sets the start radius
-        const VisiblePoint& vp = visible_[i];
-        uint32_t m = vp.photonCount;
+        const PassResult& r = results_[i];
+        px.directSum += r.direct;
+        if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
+        uint32_t m = r.photonCount;
         if (m == 0 || px.r2 == 0) return;
-        Color phi{static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
-                  static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
-                  static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit)};
+        const Color phi = r.flux;
         float nNew = px.n + settings_.alpha * static_cast<float>(m);
         float shrink = nNew / (px.n + static_cast<float>(m));
         px.tau = (px.tau + phi) * shrink;

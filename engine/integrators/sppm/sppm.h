@@ -4,6 +4,7 @@
 // and splatted into the visible points around their hits, and per-pixel statistics are
 // updated. Photons are never stored, so memory does not grow with their number.
 #pragma once
+#include <algorithm>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -37,7 +38,9 @@ public:
     std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) override;
     void addPasses(const PassSums& sums) override;
     std::optional<PixelErrors> pixelErrors() const override;
-    void releasePassBuffers() override { grid_.release(); }
+    // When a render stops: the grid, the band's visible points and discs, and the pass
+    // results (32 bytes a pixel and more), which a next pass allocates again.
+    void releasePassBuffers() override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
     struct PixelState {
@@ -48,7 +51,9 @@ public:
     };
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     // Photons gathered by each pixel in the last pass (M in the paper), for tests.
-    uint32_t lastPhotonCount(int x, int y) const { return visible_[static_cast<size_t>(y) * width_ + x].photonCount; }
+    uint32_t lastPhotonCount(int x, int y) const { return results_[static_cast<size_t>(y) * width_ + x].photonCount; }
+    // The bands of rows a pass is rendered in (render.bands).
+    int bandCount() const { return (height_ + bandRows_ - 1) / bandRows_; }
 
 private:
     // The first non-specular vertex of a pixel's camera path in this pass: its position
@@ -76,6 +81,15 @@ private:
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
     };
 
+    // What a pass leaves at each pixel for the statistics once all its bands are done (the
+    // visible points, their discs and the grid hold one band at a time): 32 bytes a pixel.
+    struct PassResult {
+        Color direct;              // the camera path's direct light (lightweight: its path-traced light)
+        Color flux;                // Phi, the flux its photons brought, in the lights' units
+        uint32_t photonCount = 0;  // M
+        float radiusSquared = 0;   // the pass's gather radius; 0: no visible point
+    };
+
     // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
     // (photons start with a mean flux of 1), so sums are exact integers whatever the order
     // threads add them in, and the image is bit-identical for any thread count.
@@ -84,6 +98,16 @@ private:
     bool global() const { return settings_.radiusSchedule == RadiusSchedule::Global; }
     // Renders pass passIndex_ (camera pass, grid, photon pass) without touching the state.
     bool traceOnePass(const CancelToken& cancel);
+    // The pass's camera paths and `photons` photons, band by band, into results_; false once
+    // cancelled. Every band traces the same photons, so results_ is what one band would make.
+    bool traceBands(const CancelToken& cancel, int64_t photons);
+    // The band's visible points into results_.
+    void collectBand();
+    // Sizes the visible points, discs and pass results if releasePassBuffers freed them.
+    void allocatePassBuffers();
+    // Frames above kOneBandPixels render in bands of at most kBandPixels (render.bands "auto").
+    static constexpr size_t kOneBandPixels = size_t(1) << 22, kBandPixels = size_t(1) << 20;
+    int rowsPerBand() const;
     // The global schedule's r_i^2 / r_1^2 for the pass with index i (from 0).
     double globalShrinkAt(int64_t i) const;
     // Pixel i's estimate from this pass alone, direct + Phi / (pi r_i^2 N_emitted).
@@ -179,9 +203,17 @@ private:
     // estimate: their spread tracks the noise of the progressive estimate, whose radius
     // shrinks as the global schedule's does (checked against two seeds in the tests).
     PassHalves halves_;
+    // The band under way: its rows [bandFirstRow_, bandFirstRow_ + bandRows_) (fewer in the
+    // last band), whose pixel i is at discs_ and visible_ [i - bandOffset_].
+    int bandRows_ = 1;
+    int bandFirstRow_ = 0;
+    size_t bandOffset_ = 0;
+    size_t bandPixels() const {
+        return static_cast<size_t>(std::min(bandRows_, height_ - bandFirstRow_)) * static_cast<size_t>(width_);
+    }
     std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
-    std::vector<Color> passDirect_;      // direct light found by this pass's camera paths
+    std::vector<PassResult> results_;  // the whole image's, for the pass under way
     HashGrid grid_;
     // render.photon_guiding: where photons leave the lights; while it is trained, each
     // thread's sums of what the pass's photons were worth, and the photons each pixel has

@@ -11,18 +11,18 @@ double SppmIntegrator::photonVarianceOfPass() const {
     // parallel_deterministic_reduce splits the same way on any number of threads, so the
     // sum's rounding, and with it the budget's choice, does not depend on them.
     const double sum = tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<size_t>(0, visible_.size(), 4096), 0.0,
+        tbb::blocked_range<size_t>(0, results_.size(), 4096), 0.0,
         [&](const tbb::blocked_range<size_t>& range, double partial) {
             for (size_t i = range.begin(); i < range.end(); ++i) {
                 const std::optional<Color> photons = passPhotonEstimate(i);
                 if (!photons) continue;
                 const double p = luminance(*photons);
-                partial += p * p / static_cast<double>(visible_[i].photonCount);
+                partial += p * p / static_cast<double>(results_[i].photonCount);
             }
             return partial;
         },
         std::plus<double>());
-    return visible_.empty() ? 0.0 : sum / static_cast<double>(visible_.size());
+    return results_.empty() ? 0.0 : sum / static_cast<double>(results_.size());
 }
 
 void SppmIntegrator::adaptPhotons() {

@@ -11,11 +11,13 @@ namespace photon {
 void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
     // Counted by row: each row is one thread's, so no thread-local look-up per pixel.
-    std::vector<int64_t> rowRays(static_cast<size_t>(height_), 0);
-    forEachPixel(width_, height_, stream, cancel, [&](int, int y, size_t index, Rng& rng) {
-        rowRays[static_cast<size_t>(y)] += settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
+    const int endRow = std::min(height_, bandFirstRow_ + bandRows_);
+    std::vector<int64_t> rowRays(static_cast<size_t>(endRow - bandFirstRow_), 0);
+    forEachPixelOfRows(width_, bandFirstRow_, endRow, stream, cancel, [&](int, int y, size_t index, Rng& rng) {
+        rowRays[static_cast<size_t>(y - bandFirstRow_)] +=
+            settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
     });
-    stats_.cameraRays = std::accumulate(rowRays.begin(), rowRays.end(), int64_t(0));
+    stats_.cameraRays += std::accumulate(rowRays.begin(), rowRays.end(), int64_t(0));
 }
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
@@ -30,8 +32,8 @@ float SppmIntegrator::autoRadius(float pathLength) const {
 }
 
 Ray SppmIntegrator::startPixel(size_t index, Rng& rng) {
-    discs_[index] = GatherDisc{};
-    visible_[index] = VisiblePoint{};
+    discs_[index - bandOffset_] = GatherDisc{};
+    visible_[index - bandOffset_] = VisiblePoint{};
     float px = static_cast<float>(index % width_) + rng.uniform();
     float py = static_cast<float>(index / width_) + rng.uniform();
     return scene_->camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
@@ -101,7 +103,7 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-    passDirect_[index] = direct;
+    results_[index].direct = direct;
     return rays;
 }
 
@@ -128,13 +130,14 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
         r2 = r * r;
         if (global()) r2 *= globalShrink_;
     }
-    discs_[index] = GatherDisc{sp.hit.p, r2};
+    const size_t local = index - bandOffset_;
+    discs_[local] = GatherDisc{sp.hit.p, r2};
     Vec3 woLocal = frame.toLocal(wo);
     // Seen from below its (quantised) normal a surface reflects nothing: leave that to eval().
     const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
-    visible_[index] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
+    visible_[local] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
                                    sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian, sp.material->transmits()};
-    if (guidePass_ >= 0) visible_[index].guideWeight = guideWeight(index);
+    if (guidePass_ >= 0) visible_[local].guideWeight = guideWeight(index);
 }
 
 }  // namespace photon

@@ -9,25 +9,24 @@ namespace photon {
 bool SppmIntegrator::trainGuide(const CancelToken& cancel) {
     const int64_t pass = passIndex_;
     const float shrink = globalShrink_;
-    guidePhotons_.assign(visible_.size(), 0);
+    guidePhotons_.assign(results_.size(), 0);
     emitter_.setGuide(&*guide_);
     bool trained = true;
     for (guidePass_ = 0; guidePass_ < kGuidePasses && trained; ++guidePass_) {
         // Random streams of their own: pass indices below 0, which no pass uses.
         passIndex_ = -1 - guidePass_;
         globalShrink_ = 1;  // the global schedule's first radius
-        cameraPass(cancel);
-        buildGrid();
-        photonPass(cancel, guidePhotonsPerPass());
-        trained = !cancel.cancelled();
+        // The first training pass only counts photons; the others' worth adds up over bands.
+        for (std::vector<uint64_t>& worth : guideWorth_) std::fill(worth.begin(), worth.end(), 0);
+        trained = traceBands(cancel, guidePhotonsPerPass());
         if (!trained) break;
-        for (size_t i = 0; i < visible_.size(); ++i) guidePhotons_[i] += visible_[i].photonCount;
+        for (size_t i = 0; i < results_.size(); ++i) guidePhotons_[i] += results_[i].photonCount;
         if (guidePass_ > 0) teachGuide();
     }
     guidePass_ = -1;
     passIndex_ = pass;
     globalShrink_ = shrink;
-    guidePhotons_ = {};
+    guidePhotons_ = decltype(guidePhotons_)();  // frees its storage (= {} would only clear it)
     // Cancelled: the guide starts again from nothing next time, as a resumed render's does.
     if (!trained) guide_.emplace(scene_->lights());
     return trained;

@@ -85,7 +85,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;  // as the path tracer
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-    passDirect_[index] = L;
+    results_[index].direct = L;
     return rays;
 }
 

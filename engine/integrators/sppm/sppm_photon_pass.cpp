@@ -30,8 +30,6 @@ void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
     const int64_t total = photons;
     const int64_t chunks = (total + kPhotonsPerChunk - 1) / kPhotonsPerChunk;
     const bool teaching = guidePass_ > 0;  // the first training pass only counts photons
-    if (teaching)
-        for (std::vector<uint64_t>& worth : guideWorth_) std::fill(worth.begin(), worth.end(), 0);
     PhotonCounters counters = tbb::parallel_reduce(
         tbb::blocked_range<int64_t>(0, chunks, 1), PhotonCounters{},
         [&](const tbb::blocked_range<int64_t>& r, PhotonCounters acc) {
@@ -63,11 +61,11 @@ void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
             a.accepted += b.accepted;
             return a;
         });
-    stats_.photons = total;
-    stats_.photonRays = counters.rays;
-    stats_.photonSegments = counters.segments;
-    stats_.gatherCandidates = counters.candidates;
-    stats_.gatherHits = counters.accepted;
+    // Summed over the pass's bands (its photons are counted once, in traceOnePass).
+    stats_.photonRays += counters.rays;
+    stats_.photonSegments += counters.segments;
+    stats_.gatherCandidates += counters.candidates;
+    stats_.gatherHits += counters.accepted;
 }
 
 }  // namespace photon

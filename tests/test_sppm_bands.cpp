@@ -1,0 +1,122 @@
+// render.bands: a pass's camera paths, grid and photons one band of rows at a time, each band
+// tracing the pass's photons again, so that a large frame's visible points and grid need
+// not all be in memory at once. Photons are the same in every band and their sums are
+// integers, so the image is the one a single band makes, bit for bit.
+#include <gtest/gtest.h>
+#include <photon/render.h>
+#include "integrators/integrator.h"
+#include "integrators/sppm/sppm.h"
+#include "scene/scene.h"
+#include "scene_loader_fixture.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+// The glass-sphere Cornell box at 24 x 33: 33 rows, so that bands do not divide them evenly.
+SceneDescription glassBox(int bands, int passes = 5) {
+    SceneDescription d = test::exampleScene("cornell-glass", 24, passes, 20000, 3);
+    d.camera.height = 33;
+    d.render.bands = bands;
+    d.render.adaptivePhotons = false;
+    return d;
+}
+
+struct Rendered {
+    Image image;
+    RenderProgress progress;
+};
+
+Rendered render(SceneDescription d) {
+    Renderer r(Scene::build(std::move(d)));
+    CancelToken cancel;
+    EXPECT_EQ(r.run(cancel), RenderOutcome::Completed);
+    return {r.snapshot(), r.progress()};
+}
+
+void expectSameImageInBands(const SceneDescription& d, std::initializer_list<int> bandCounts) {
+    const Rendered one = render(d);
+    EXPECT_GT(test::meanOver(one.image, 0, 0, 24, 33).y, 0.05f);  // there is light to get wrong
+    for (int bands : bandCounts) {
+        SCOPED_TRACE(std::to_string(bands) + " bands");
+        SceneDescription banded = d;
+        banded.render.bands = bands;
+        const Rendered many = render(banded);
+        EXPECT_TRUE(many.image.rgb == one.image.rgb);
+        EXPECT_EQ(many.progress.photonsTraced, one.progress.photonsTraced);
+        // Every band traces the pass's photons: the rays are the bands' times one band's,
+        // and the photons accepted by visible points add up to one band's.
+        EXPECT_EQ(many.progress.lastPass.photonRays, bands * one.progress.lastPass.photonRays);
+        EXPECT_EQ(many.progress.lastPass.gatherHits, one.progress.lastPass.gatherHits);
+        EXPECT_EQ(many.progress.lastPass.cameraRays, one.progress.lastPass.cameraRays);
+    }
+}
+
+// Bands of a row each too: the grid then holds 24 discs.
+TEST(SppmBands, PerPixelScheduleGivesTheOneBandImage) { expectSameImageInBands(glassBox(1), {3, 33}); }
+
+TEST(SppmBands, GlobalScheduleGivesTheOneBandImage) {
+    SceneDescription d = glassBox(1);
+    d.render.radiusSchedule = RadiusSchedule::Global;
+    expectSameImageInBands(d, {4});
+}
+
+TEST(SppmBands, LightweightGivesTheOneBandImage) {
+    SceneDescription d = glassBox(1);
+    d.render.lightweight = true;
+    expectSameImageInBands(d, {4});
+}
+
+TEST(SppmBands, PhotonGuidingGivesTheOneBandImage) {
+    SceneDescription d = glassBox(1, 2);
+    d.render.photonGuiding = true;  // its training passes in bands too
+    expectSameImageInBands(d, {3});
+}
+
+// With adaptive photon counts the bands' photon rays are part of what a photon costs, so
+// the counts chosen may differ from one band's; the render is still the same for a seed on
+// any number of threads.
+TEST(SppmBands, AdaptivePhotonsInBandsAreDeterministic) {
+    SceneDescription d = glassBox(3, 10);
+    d.render.adaptivePhotons = true;
+    const Image one = test::renderWithThreads(d, 1), two = test::renderWithThreads(d, 2);
+    EXPECT_TRUE(one.rgb == two.rgb);
+}
+
+// A band holds ceil(rows / bands) rows, so 8 bands asked of 33 rows hold 5 rows each and
+// there are 7 of them; more bands than rows give a row each.
+TEST(SppmBands, BandsHoldWholeRowsAsEvenlyAsTheyCan) {
+    for (auto [asked, made] : {std::pair{1, 1}, {2, 2}, {4, 4}, {5, 5}, {8, 7}, {33, 33}, {100, 33}}) {
+        SppmIntegrator sppm(Scene::build(glassBox(asked)));
+        EXPECT_EQ(sppm.bandCount(), made) << asked << " bands asked for";
+    }
+}
+
+TEST(SppmBands, SceneFilesSayAutoOrACount) {
+    test::Json doc = test::fullScene();
+    EXPECT_EQ(test::load(doc).render.bands, 0);  // "auto" when not given
+    doc["render"]["bands"] = "auto";
+    EXPECT_EQ(test::load(doc).render.bands, 0);
+    doc["render"]["bands"] = 6;
+    EXPECT_EQ(test::load(doc).render.bands, 6);
+}
+
+// Resuming a checkpoint// Resuming a checkpoint taken in one band count into another gives the same image: bands are
+// how a pass is computed, not what it computes, so they are not part of the checkpoint's key.
+TEST(SppmBands, ACheckpointResumesInOtherBands) {
+    CancelToken cancel;
+    const Rendered whole = render(glassBox(1, 6));
+    std::stringstream saved;
+    {
+        Renderer first(Scene::build(glassBox(1, 6)));
+        for (int i = 0; i < 3; ++i) ASSERT_TRUE(first.renderPass(cancel));
+        first.saveCheckpoint(saved);
+    }
+    Renderer resumed(Scene::build(glassBox(4, 6)));
+    resumed.restoreCheckpoint(saved);
+    EXPECT_EQ(resumed.run(cancel), RenderOutcome::Completed);
+    EXPECT_TRUE(resumed.snapshot().rgb == whole.image.rgb);
+}
+
+}  // namespace
+}  // namespace photon
