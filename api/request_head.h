@@ -48,5 +48,7 @@ HeadScan scanRequestHead(std::string_view buffered, const HeadLimits& limits);
 std::string forwardedHead(const RequestHead& head, const std::string& clientAddress);
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b);
+// A field value without the spaces and tabs around it (RFC 9110 section 5.5).
+std::string_view trimmed(std::string_view s);
 
 }  // namespace photon::api

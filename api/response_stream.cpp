@@ -10,12 +10,6 @@ namespace {
 // httplib's heads are a few hundred bytes; anything near this is not one of them.
 constexpr size_t kMaxResponseHead = 64 << 10;
 
-std::string_view trimmed(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
 }  // namespace
 
 void ResponseStream::responseEnded() {

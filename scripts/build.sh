@@ -12,5 +12,9 @@ export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 # The test programs use precompiled headers (CMakeLists.txt); ccache caches their sources
 # only when told to trust the header's timestamps and the macros it was built with.
 export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@"
+# Unity builds: the libraries' sources compiled eight to a unit, so the headers they share
+# (nlohmann/json, Embree, oneTBB, cpp-httplib) are parsed once for eight; a cold build of
+# engine/, server/ and api/ took about a third of the time.
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 \
+    "${launcher[@]}" "$@"
 cmake --build "$build" -j2

@@ -20,7 +20,9 @@ bash "$root/scripts/install-deps.sh" --hardening
 # Ninja: CMake's Makefiles build the targets named on one command line one after another
 # (.NOTPARALLEL), so each test program's one source compiled on one core while the other
 # idled; measured cold, the two builds took 1,285 and 539 s that way.
-cmake_args=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+# Unity builds of eight sources a unit, as scripts/build.sh.
+cmake_args=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+            -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=8)
 if command -v ccache > /dev/null; then cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 # As in build.sh: cached objects serve any clone of the repository, precompiled headers included.
 export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
@@ -67,7 +69,7 @@ engine_tests=(test_area_light_emission test_bsdf test_checkpoint test_denoise te
               test_alpha_cutout test_instancing test_pbrt_import test_pbrt_parser test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_area_light_kinds test_conductor test_rough_dielectric test_coated_diffuse
               test_diffuse_transmission test_texture_channels test_gltf_import test_independent_passes
-              test_error_estimate test_lightweight test_obj_mesh test_photon_guiding test_adaptive_photons)
+              test_error_estimate test_lightweight test_obj_mesh test_photon_guiding test_adaptive_photons test_sppm_bands)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head test_progress_history)
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
@@ -161,11 +163,15 @@ fuzz_run() {
 #    (FarmServerTest.ARestartedServer..., .AWholeJob..., FarmRedisRestartTest: about a minute
 #    and a half under ASan; the farm's code paths are run by the other farm tests);
 #  - the slowest convergence comparisons, 330 s of the stage's 1,160 (cold CI, two lanes),
-#    and the adaptive photon count's image check:
+#    the adaptive photon count's image check, and five more SPPM-against-path-tracer means of
+#    materials and lights (about 120 s of the lanes' time; each material's and light's own
+#    tests run under ASan):
 #    they render the same code paths for hundreds of passes until a statistic settles, and
 #    shorter tests of the same programs run those paths (the photon mapper's with
 #    InstancesVsCopies/sppm and test_photonmap's others, lightweight's with its
 #    no-photons and thread tests, projection maps' with the spot-light and caustic tests);
+#  - the slowloris test, which times answers to a second while 400 connections trickle bytes
+#    (34 s under ASan; the connection guard's code is run by the other connection tests);
 #  - PhotonMap.GlassBoxAgreesWithSppm: built by clang, the two-pass photon mapper's image
 #    differs from GCC's (SPPM's is the same bit for bit under both), one region by 7.6% from
 #    SPPM against the test's 5% (GCC: 1.5%).
@@ -174,9 +180,11 @@ san_slow+=':Lightweight.GlassCornellBoxAgreesWithThePathTracerInMeanAndPerRegion
 san_slow+=':Radiosity.CornellBoxWallsAgreeWithSppm:PhotonMap.CornellBoxWithFinalGatherAgreesWithPathTracer'
 san_slow+=':ProjectionMap.DistantObjectUnderPointLightSameImageTenfoldFewerMisses'
 san_slow+=':ProjectionMap.SpheresApartUnderDirectionalLightSameImageTenfoldFewerMisses:SppmRadius.ErrorFallsAsPassesGrow'
-san_slow+=':AdaptivePhotons.ImageAgreesWithFixedPhotonsPerPass'
+san_slow+=':AdaptivePhotons.ImageAgreesWithFixedPhotonsPerPass:AreaLightKinds.SppmAgreesWithThePathTracer'
+san_slow+=':PhotonMap.CornellBoxWithFinalGatherIntoFullEstimatesAgreesWithPathTracer:ConductorSppmVsPath.RoughGoldBlocksAgreeInMean'
+san_slow+=':MixMaterial.SppmAgreesWithThePathTracer'
 san_tests() {
-    GTEST_FILTER="-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:$san_slow" \
+    GTEST_FILTER="-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:ConnectionsTest.ASlowloris*:$san_slow" \
     ASAN_OPTIONS="detect_leaks=1:log_path=$san/sanitizer-logs/asan" \
         LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
         UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$san/sanitizer-logs/ubsan" \
