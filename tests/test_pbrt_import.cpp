@@ -89,6 +89,24 @@ Shape "sphere")")).document["camera"];
     EXPECT_NEAR(portrait["fov"].get<double>(), 2 * std::atan(2 * std::tan(15 * kPi / 180)) * 180 / kPi, 1e-4);
 }
 
+// pbrt-v4's light samplers: "power" stays power, "bvh" (its default) and the others become
+// photon's spatial sampler, the one that weighs lights by their bounds at the point.
+TEST(PbrtImport, IntegratorsLightSamplerMapsOntoPhotons) {
+    auto lightSampler = [](const std::string& value) {
+        const Json render = importPbrt(writeScene("sampler-" + value + ".pbrt", R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+Integrator "path" "string lightsampler" ")" + value + R"("
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere")")).document["render"];
+        return render["light_sampler"].get<std::string>();
+    };
+    EXPECT_EQ(lightSampler("power"), "power");
+    EXPECT_EQ(lightSampler("bvh"), "spatial");
+    EXPECT_EQ(lightSampler("uniform"), "spatial");
+}
+
 TEST(PbrtImport, CameraSeesTheImageTheRightWayRound) {
     // A red quad on the left of the view (x < 0 in a world whose camera x axis is -x ...)
     // pbrt: with this LookAt, world +x is the image's left. The red quad at x = +1 must

@@ -205,6 +205,8 @@ TEST(SceneLoaderErrors, UnknownNames) {
                 "unknown value \"bdpt\" (expected one of sppm, path, radiosity, photonmap)");
     expectError([](Json& d) { d["render"]["kernel"] = "gauss"; }, "render.kernel",
                 "unknown value \"gauss\" (expected one of uniform, biweight, cone)");
+    expectError([](Json& d) { d["render"]["light_sampler"] = "bvh"; }, "render.light_sampler",
+                "unknown value \"bvh\" (expected one of spatial, power)");
     expectError([](Json& d) { d["render"]["direct"] = "none"; }, "render.direct",
                 "unknown value \"none\" (expected one of light_sampling, photons)");
 }

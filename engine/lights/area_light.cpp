@@ -84,6 +84,7 @@ public:
                 lo = vmin(lo, v), hi = vmax(hi, v);
         centre_ = (lo + hi) * 0.5f;
         radius_ = length(hi - centre_);
+        bounds_ = boundsOf(lo, hi);
     }
 
     static std::unique_ptr<Light> make(const ShapeDescription& shape) {
@@ -97,6 +98,7 @@ public:
     }
 
     const EmissionTriangles* emissionTriangles() const override { return uniformOneSided() ? &triangles_ : nullptr; }
+    std::optional<LightBounds> bounds() const override { return bounds_; }
 
     // Close to a mesh of a few triangles (a quad light's two), light samples are uniform in
     // the solid angle its triangles subtend, each picked in proportion to its own: the
@@ -184,9 +186,31 @@ private:
         return s;
     }
 
+    // The box, and a cone about the area-weighted mean normal holding every triangle's
+    // emitting normal (all directions when they cancel out, as on a closed mesh).
+    LightBounds boundsOf(Vec3 lo, Vec3 hi) const {
+        LightBounds b;
+        b.lo = lo, b.hi = hi;
+        b.intensity = average(shape_.meanEmission()) * area_;  // L A: along the normal of a flat one
+        b.twoSided = sides_ > 1;
+        Vec3 sum{0, 0, 0};
+        for (size_t t = 0; t < triangles_.size(); ++t)
+            sum += triangles_[t].frame.n * (0.5f * length(cross(triangles_[t].e1, triangles_[t].e2)));
+        if (length(sum) > 1e-3f * area_) {
+            b.axis = normalize(sum);
+            b.cosThetaO = 1;
+            for (size_t t = 0; t < triangles_.size(); ++t)
+                b.cosThetaO = std::min(b.cosThetaO, dot(b.axis, triangles_[t].frame.n));
+            // Rounding must not leave a triangle's normal outside the cone.
+            b.cosThetaO = std::max(-1.0f, b.cosThetaO - 1e-4f);
+        }
+        return b;
+    }
+
     EmissionTriangles triangles_;
     Vec3 centre_;
     float radius_ = 0;
+    LightBounds bounds_;
 };
 
 // Seen from outside, a sphere emitting outward is sampled by the cone of directions it
@@ -225,6 +249,15 @@ public:
     float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const override {
         auto cone = coneFrom(p);
         return cone ? cone->pdf : AreaLight::pdfIncidentFrom(p, y, ny, wi);
+    }
+
+    // Emits every way; seen from any direction it is a disc of area pi r^2.
+    std::optional<LightBounds> bounds() const override {
+        LightBounds b;
+        const Vec3 r(shape_.radius);
+        b.lo = shape_.center - r, b.hi = shape_.center + r;
+        b.intensity = average(shape_.meanEmission()) * (kPi * shape_.radius * shape_.radius);
+        return b;
     }
 
 private:

@@ -5,6 +5,7 @@
 #include <optional>
 #include "math/frame.h"
 #include "math/sampling.h"
+#include "lights/light_bounds.h"
 #include <photon/vec.h>
 
 namespace photon {
@@ -75,6 +76,9 @@ public:
     // Lights on triangle meshes: the triangles photons leave from, cosine-distributed with
     // the light's whole power each (the photon walk emits eight of those at a time).
     virtual const EmissionTriangles* emissionTriangles() const { return nullptr; }
+    // Finite lights: where they are and which way they shine, for choosing among them by
+    // what could reach a point (direct_light_sampler.h). None for infinite lights.
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
 };
 
 }  // namespace photon

@@ -1,5 +1,6 @@
 // Picks a light with probability proportional to its power: the rule for emitting
-// photons (flux stays equal across lights) and for direct-light shadow rays.
+// photons (flux stays equal across lights), and for shadow rays with render.light_sampler
+// "power" (direct_light_sampler.h).
 #pragma once
 #include <algorithm>
 #include <vector>

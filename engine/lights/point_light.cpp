@@ -27,6 +27,12 @@ public:
         return {EmissionGeometry::Kind::Point, position_, Frame::fromNormal({0, 0, 1}), -1, {}};
     }
     Color emittedDensity(Vec3) const override { return intensity_; }
+    std::optional<LightBounds> bounds() const override {
+        LightBounds b;
+        b.lo = b.hi = position_;
+        b.intensity = average(intensity_);
+        return b;  // every direction (cosThetaO -1)
+    }
 
 private:
     Vec3 position_;

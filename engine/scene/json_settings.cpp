@@ -139,6 +139,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.projectionMaps = obj.boolean("projection_maps", r.projectionMaps);
     r.radiusSchedule = RadiusSchedule(obj.choice("radius_schedule", 0, {"pixel", "global"}));
     r.lightweight = obj.boolean("lightweight", r.lightweight);
+    r.lightSampler = LightSamplerKind(obj.choice("light_sampler", 0, {"spatial", "power"}));
     r.photonGuiding = obj.boolean("photon_guiding", r.photonGuiding);
     if (auto adaptive = obj.optional("adaptive_photons")) {
         r.adaptivePhotons = adaptive->boolean();

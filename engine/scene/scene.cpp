@@ -125,6 +125,7 @@ void Scene::buildLights() {
     std::vector<const Light*> lights;
     for (const auto& l : ownedLights_) lights.push_back(l.get());
     lightSampler_ = LightSampler(std::move(lights));
+    directLightSampler_ = DirectLightSampler(lightSampler_, description_.render.lightSampler);
     for (size_t i = 0; i < lightSampler_.size(); ++i)
         if (&lightSampler_.light(i) == environmentLight_) environmentPickProbability_ = lightSampler_.probability(i);
 

@@ -5,6 +5,7 @@
 #include <vector>
 #include "camera/camera.h"
 #include "lights/light.h"
+#include "lights/direct_light_sampler.h"
 #include "lights/light_sampler.h"
 #include "math/ray.h"
 #include "description/scene_description.h"
@@ -134,22 +135,25 @@ public:
     // weigh itself against light sampling.
     const Light* environmentLight() const { return environmentLight_; }
     // The area light of the emitting shape a hit landed on (null if it emits nothing) and
-    // the probability lights().pick() returns it with: for weighting emission a BSDF sample
-    // found against the light sample that could have found it too.
+    // its index among the lights: for weighting emission a BSDF sample found against the
+    // light sample that could have found it too (directLights().probability).
     struct Emitter {
         const Light* light = nullptr;
-        float pickProbability = 0;
+        size_t index = 0;
     };
     Emitter emitterAt(const SurfaceHit& hit) const {
         const int32_t i = lightOfShape_[hit.shape];
-        return i < 0 ? Emitter{} : Emitter{&lightSampler_.light(size_t(i)), lightSampler_.probability(size_t(i))};
+        return i < 0 ? Emitter{} : Emitter{&lightSampler_.light(size_t(i)), size_t(i)};
     }
     float environmentPickProbability() const { return environmentPickProbability_; }
 
     const Camera& camera() const { return camera_; }
     const RenderSettings& settings() const { return description_.render; }
     const SceneDescription& description() const { return description_; }
+    // By power: how photons leave the lights.
     const LightSampler& lights() const { return lightSampler_; }
+    // How shadow rays pick a light (render.light_sampler).
+    const DirectLightSampler& directLights() const { return directLightSampler_; }
     Vec3 boundsMin() const { return boundsMin_; }
     Vec3 boundsMax() const { return boundsMax_; }
     RTCScene embreeScene() const { return rtcScene_; }
@@ -266,6 +270,7 @@ private:
     std::vector<PlainSphere> plainSpheres_;  // by shape
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
+    DirectLightSampler directLightSampler_;  // refers to lightSampler_
     const Light* environmentLight_ = nullptr;
     float environmentPickProbability_ = 0;
     Camera camera_;

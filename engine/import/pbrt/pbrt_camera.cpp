@@ -44,6 +44,9 @@ void SceneBuilder::integrator(const Directive& d) {
     const std::string& type = d.strings.at(0);
     render_["integrator"] = "sppm";
     render_["max_depth"] = static_cast<int64_t>(p.number("maxdepth", 5));
+    // pbrt-v4's "bvh" and "exhaustive" samplers weigh lights by their bounds at the point, as
+    // photon's spatial sampler does; "uniform" has no counterpart and becomes the default.
+    if (auto sampler = p.string("lightsampler")) render_["light_sampler"] = *sampler == "power" ? "power" : "spatial";
     if (type == "sppm") {
         if (auto photons = p.number("photonsperiteration"); photons && *photons > 0)
             render_["photons_per_pass"] = static_cast<int64_t>(*photons);

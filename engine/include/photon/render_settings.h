@@ -28,6 +28,9 @@ enum class DirectLighting { LightSampling, Photons };
 // pass is then an independent estimate, and passes rendered anywhere, in any order, add up
 // (docs/sppm.md, "Independent passes").
 enum class RadiusSchedule { PerPixel, Global };
+// How a shadow ray picks its light (render.light_sampler; engine/lights/direct_light_sampler.h):
+// among finite lights by a bound on what each could bring to the point, or by power alone.
+enum class LightSamplerKind { Spatial, Power };
 
 // Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
 // the form factors and the linear system are computed.
@@ -101,6 +104,7 @@ struct RenderSettings {
     // again; the image is the same for any count. 0: "auto", one band up to 4 Mpx, else
     // bands of at most 1 Mpx (docs/sppm.md, "Memory").
     int bands = 0;
+    LightSamplerKind lightSampler = LightSamplerKind::Spatial;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -134,6 +138,9 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Visited where it acts, as when it was off by default: a checkpoint written with fixed
     // photon counts keeps its key, and SPPM goes on from it with fixed counts.
     if (adaptsPhotonsPerPass(s)) visit(true);
+    // Visited only when not the default: a checkpoint written before the spatial light
+    // sampler existed (by power) goes on with it, both being unbiased.
+    if (s.lightSampler != LightSamplerKind::Spatial) visit(s.lightSampler);
 }
 
 }  // namespace photon

@@ -4,18 +4,21 @@ namespace photon {
 
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes,
                         BsdfContinuation next) {
-    LightSampler::Pick pick = scene.lights().pick(rng.uniform());
+    const float uLight = rng.uniform();
     Vec2 u{rng.uniform(), rng.uniform()};
-    if (!pick.light) return Color(0.0f);
-    // Lights may sample only directions above the normal they are given (the environment
-    // does), others any direction. A surface that transmits also sees light from below: it
-    // picks a side with probability 1/2 and keeps only light from that side, which is
-    // unbiased either way (the two sides' restricted estimates sum to the whole).
+    // Light is kept only from above n: a surface that only reflects sees none from below its
+    // shading normal (its BSDF is zero there), and one that transmits picks a side with
+    // probability 1/2 and keeps only light from that side, which is unbiased either way (the
+    // two sides' restricted estimates sum to the whole). The light is picked for that side
+    // (render.light_sampler), and lights may sample only directions above it (the
+    // environment does).
     Vec3 n = sp.hit.ns;
     const float sideProbability = lightSampleSideProbability(*sp.material);
     if (sideProbability < 1.0f && rng.uniform() < 0.5f) n = -n;
+    LightSampler::Pick pick = scene.directLights().pick(uLight, sp.hit.p, n);
+    if (!pick.light) return Color(0.0f);
     std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, n, u);
-    if (!ls || (sideProbability < 1.0f && !(dot(ls->wi, n) > 0))) return Color(0.0f);
+    if (!ls || !(dot(ls->wi, n) > 0)) return Color(0.0f);
     const Vec3 woLocal = sp.frame.toLocal(wo), wiLocal = sp.frame.toLocal(ls->wi);
     Color f = sp.material->eval(woLocal, wiLocal, sp.inputs, TransportMode::Radiance, lobes);
     if (isBlack(f)) return Color(0.0f);

@@ -17,7 +17,7 @@ struct BsdfContinuation {
     float probability = 0;
 };
 
-// Reflected radiance toward wo (world space) from one light picked in proportion to power,
+// Reflected radiance toward wo (world space) from one light picked by Scene::directLights,
 // through the material's `lobes` only.
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes = kAllLobes,
                         BsdfContinuation next = {});

@@ -97,9 +97,14 @@ inline float environmentBounceWeight(const Scene& scene, const BounceSampling& b
     return powerHeuristic(bounce.pdf, pLight);
 }
 
-// The same for emission from the area light e where the ray from `bounce` lands (hit).
-inline float areaLightBounceWeight(const BounceSampling& bounce, const Scene::Emitter& e, const SurfaceHit& hit, Vec3 d) {
-    const float pLight = bounce.sideProbability * e.pickProbability * e.light->pdfIncidentFrom(bounce.p, hit.p, hit.ng, d);
+// The same for emission from the area light e where the ray from `bounce` lands (hit): the
+// light sample there picks e for the side d leaves from with a probability that depends on
+// the vertex (Scene::directLights).
+inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bounce, const Scene::Emitter& e,
+                                   const SurfaceHit& hit, Vec3 d) {
+    const Vec3 n = bounce.sideProbability < 1 && dot(d, bounce.n) < 0 ? -bounce.n : bounce.n;
+    const float pick = scene.directLights().probability(e.index, bounce.p, n);
+    const float pLight = bounce.sideProbability * pick * e.light->pdfIncidentFrom(bounce.p, hit.p, hit.ng, d);
     return powerHeuristic(bounce.pdf, pLight);
 }
 
@@ -120,7 +125,7 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const
         L += beta * scene.emitted(hit, -ray.d);
     } else if (Scene::Emitter e = scene.emitterAt(hit); e.light) {
         const Color Le = scene.emitted(hit, -ray.d);
-        if (!isBlack(Le)) L += beta * Le * areaLightBounceWeight(bounce, e, hit, ray.d);
+        if (!isBlack(Le)) L += beta * Le * areaLightBounceWeight(scene, bounce, e, hit, ray.d);
     }
     return true;
 }

@@ -1,0 +1,43 @@
+// Where a finite light is and which way it shines, bounded: enough to say from a point how
+// much light could at most arrive from it, up to a constant, without sampling it. After
+// pbrt-v4's LightBounds (Pharr, Jakob & Humphreys, 4th ed., sec. 12.6.3), from Conty Estevez
+// & Kulla 2018 ("Importance sampling of many lights with adaptive tree splitting").
+#pragma once
+#include <photon/vec.h>
+
+namespace photon {
+
+struct LightBounds {
+    Vec3 lo, hi;            // a box around every point that emits
+    float intensity = 0;    // radiant intensity along the emission axis, mean over channels (W/sr)
+    Vec3 axis{0, 0, 1};     // unit; every emitting normal (or spot direction) is within thetaO of it
+    float cosThetaO = -1;   // -1: any direction
+    float cosThetaE = 0;    // light leaves each normal at most thetaE away (pi/2 for diffuse: 0)
+    bool twoSided = false;  // emits about -axis as well
+
+};
+
+// A light's bounds made ready to be asked, at every shadow ray, how much light could reach
+// a point: what importance() needs of them that does not depend on the point, computed once.
+class LightImportance {
+public:
+    LightImportance() = default;
+    explicit LightImportance(const LightBounds& b);
+
+    // How much light could reach p, in proportion to the irradiance there: intensity over
+    // the squared distance to the box's centre, times a bound on the emitter's cosine
+    // (thetaW, the angle of p from the axis, less thetaO and the angle the box subtends) and,
+    // when n is not zero, on the receiver's cosine about n (one-sided: 0 when the whole box is
+    // at or below the horizon of n). Conservative: 0 only where no light can arrive from above
+    // n. The squared distance is kept above the box's half diagonal squared, so a point in or
+    // near the box does not make its light's importance unbounded.
+    float operator()(Vec3 p, Vec3 n) const;
+
+private:
+    Vec3 centre_, axis_{0, 0, 1};
+    float radius_ = 0, radius2_ = 0, intensity_ = 0;
+    float cosThetaO_ = -1, sinThetaO_ = 0, cosThetaE_ = 0;
+    bool twoSided_ = false;
+};
+
+}  // namespace photon
