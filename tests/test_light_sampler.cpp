@@ -154,6 +154,7 @@ TEST(DirectLightSampler, BoundsNeverRuleOutALightThatReachesThePoint) {
     emitters.push_back(test::sphere({0.5f, 1, 0.5f}, 0.3f, 0, Color(2.0f)));
     std::vector<LightDescription> lights = {spotLight({0, 1.5f, 0}, {0, -1, 0}, 10, 30, 20),
                                             spotLight({1, 0.5f, -1}, normalize(Vec3(-1, 0, 1)), 5, 60, 10),
+                                            spotLight({-0.5f, 1, 0.5f}, normalize(Vec3(1, -1, 0)), 5, 25, 25),  // hard-edged
                                             pointLight({-1, 1, 1}, 3)};
     auto scene = sceneWith(lights, emitters);
     const LightSampler& all = scene->lights();

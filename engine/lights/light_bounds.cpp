@@ -45,7 +45,8 @@ float LightImportance::operator()(Vec3 p, Vec3 n) const {
     const float cosThetaX = cosOfDifferenceClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
     const float sinThetaX = sinOfDifferenceClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
     const float cosThetaP = cosOfDifferenceClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
-    if (cosThetaP <= cosThetaE_) return 0.0f;
+    // Strictly beyond: a hard-edged spot (thetaE 0, cosThetaE 1) still lights its cone.
+    if (cosThetaP < cosThetaE_) return 0.0f;
 
     float result = intensity_ * cosThetaP / std::max(d2, radius2_);
     if (n.x != 0 || n.y != 0 || n.z != 0) {

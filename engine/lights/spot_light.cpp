@@ -48,15 +48,17 @@ public:
         return {EmissionGeometry::Kind::Point, position_, frame_, cosTotal_, {}};
     }
     Color emittedDensity(Vec3 w) const override { return intensity_ * falloff(dot(w, frame_.n)); }
-    // Full intensity within the falloff's start, none beyond the cone (pbrt-v4 12.6.1).
+    // Full intensity within the falloff's start, none beyond the cone (pbrt-v4 12.6.1). (Scenes
+    // cannot give a falloff wider than the cone; the bound would hold it to the cone.)
     std::optional<LightBounds> bounds() const override {
         LightBounds b;
         b.lo = b.hi = position_;
         b.intensity = average(intensity_);
         b.axis = frame_.n;
-        b.cosThetaO = cosFalloffStart_;
-        b.cosThetaE = std::cos(std::acos(std::clamp(cosTotal_, -1.0f, 1.0f)) -
-                               std::acos(std::clamp(cosFalloffStart_, -1.0f, 1.0f)));
+        const float thetaTotal = std::acos(std::clamp(cosTotal_, -1.0f, 1.0f));
+        const float thetaStart = std::min(std::acos(std::clamp(cosFalloffStart_, -1.0f, 1.0f)), thetaTotal);
+        b.cosThetaO = std::cos(thetaStart);
+        b.cosThetaE = std::cos(thetaTotal - thetaStart);
         return b;
     }
 
