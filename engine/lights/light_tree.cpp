@@ -55,12 +55,16 @@ LightTree::LightTree(const std::vector<LightBounds>& bounds) {
     trail_.assign(bounds.size(), 0);
     depth_.assign(bounds.size(), 0);
     inTree_.assign(bounds.size(), false);
-    std::vector<uint32_t> lights;
+    place_.assign(bounds.size(), 0);
     for (uint32_t i = 0; i < bounds.size(); ++i)
-        if (bounds[i].intensity > 0) lights.push_back(i);
-    if (lights.empty()) return;
-    nodes_.reserve(2 * lights.size());
-    build(lights, 0, lights.size(), bounds, 0, 0);
+        if (bounds[i].intensity > 0) order_.push_back(i);
+    if (order_.empty()) return;
+    nodes_.reserve(2 * order_.size() / kClusterSize + 2);
+    build(order_, 0, order_.size(), bounds, 0, 0);
+    for (uint32_t k = 0; k < order_.size(); ++k) {
+        place_[order_[k]] = k;
+        importances_.emplace_back(bounds[order_[k]]);
+    }
 }
 
 // Median splits of the lights' centres along the widest axis of their box: a balanced tree
@@ -69,10 +73,15 @@ uint32_t LightTree::build(std::vector<uint32_t>& lights, size_t begin, size_t en
                           const std::vector<LightBounds>& bounds, uint64_t trail, int depth) {
     const uint32_t index = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back({});
-    if (end - begin == 1) {
-        const uint32_t light = lights[begin];
-        nodes_[index] = Node{bounds[light], LightImportance(bounds[light]), 0, light, true};
-        trail_[light] = trail, depth_[light] = static_cast<uint8_t>(depth), inTree_[light] = true;
+    if (end - begin <= kClusterSize) {
+        LightBounds all = bounds[lights[begin]];
+        for (size_t i = begin + 1; i < end; ++i) all = unionOf(all, bounds[lights[i]]);
+        nodes_[index] = Node{all, LightImportance(all), 0, static_cast<uint32_t>(begin),
+                             static_cast<uint32_t>(end - begin), true};
+        for (size_t i = begin; i < end; ++i) {
+            const uint32_t light = lights[i];
+            trail_[light] = trail, depth_[light] = static_cast<uint8_t>(depth), inTree_[light] = true;
+        }
         return index;
     }
     auto centre = [&](uint32_t i) { return (bounds[i].lo + bounds[i].hi) * 0.5f; };
@@ -91,6 +100,12 @@ uint32_t LightTree::build(std::vector<uint32_t>& lights, size_t begin, size_t en
     nodes_[index].bounds = unionOf(nodes_[index + 1].bounds, nodes_[second].bounds);
     nodes_[index].importance = LightImportance(nodes_[index].bounds);
     return index;
+}
+
+float LightTree::clusterImportances(const Node& leaf, Vec3 p, Vec3 n, float* out) const {
+    float sum = 0;
+    for (uint32_t k = 0; k < leaf.count; ++k) sum += out[k] = importances_[leaf.first + k](p, n);
+    return sum;
 }
 
 LightTree::Pick LightTree::pick(float u, Vec3 p, Vec3 n) const {
@@ -113,8 +128,18 @@ LightTree::Pick LightTree::pick(float u, Vec3 p, Vec3 n) const {
             node = second;
         }
     }
-    if (!(nodes_[node].importance(p, n) > 0)) return {};
-    return {nodes_[node].light, probability};
+    const Node& leaf = nodes_[node];
+    float each[kClusterSize];
+    const float sum = clusterImportances(leaf, p, n, each);
+    if (!(sum > 0)) return {};
+    const float target = u * sum;
+    float below = 0;
+    uint32_t last = 0;
+    for (uint32_t k = 0; k < leaf.count; ++k)
+        if (each[k] > 0) last = k;
+    uint32_t k = 0;
+    while (k < last && (!(each[k] > 0) || target >= below + each[k])) below += each[k++];
+    return {order_[leaf.first + k], probability * (each[k] / sum)};
 }
 
 float LightTree::probability(uint32_t light, Vec3 p, Vec3 n) const {
@@ -133,7 +158,10 @@ float LightTree::probability(uint32_t light, Vec3 p, Vec3 n) const {
             node = first;
         }
     }
-    return nodes_[node].importance(p, n) > 0 ? probability : 0.0f;
+    const Node& leaf = nodes_[node];
+    float each[kClusterSize];
+    const float sum = clusterImportances(leaf, p, n, each);
+    return sum > 0 ? probability * (each[place_[light] - leaf.first] / sum) : 0.0f;
 }
 
 }  // namespace photon

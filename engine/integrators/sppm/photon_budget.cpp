@@ -38,6 +38,15 @@ int64_t PhotonBudget::next(int64_t current, double passVariance) const {
     return static_cast<int64_t>(std::llround(best));
 }
 
+PhotonBudget::Range PhotonBudget::reachable(int64_t start, int64_t passes) {
+    double lo = static_cast<double>(start), hi = lo;
+    for (int64_t p = 4; p <= passes; p *= 2) {  // each decision made by then
+        lo = std::max(std::floor(lo / kMaxStep), std::min(lo, static_cast<double>(kMinPhotons)));
+        hi = std::min(std::ceil(hi * kMaxStep), std::max(hi, static_cast<double>(kMaxPhotons)));
+    }
+    return {static_cast<int64_t>(lo), static_cast<int64_t>(hi)};
+}
+
 void PhotonBudget::save(std::ostream& out) const {
     writeRaw(out, &passes_, 1);
     writeRaw(out, &photons_, 1);

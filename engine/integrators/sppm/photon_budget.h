@@ -42,6 +42,14 @@ public:
     static constexpr double kMaxStep = 4;
     static constexpr int64_t kMinPhotons = 1000, kMaxPhotons = 100'000'000;
 
+    // The photons per pass a render started at `start` can trace after `passes` passes:
+    // within kMaxStep of the last count at each decision made by then, and within the limits
+    // (the start itself may lie outside them). What a checkpoint is checked against.
+    struct Range {
+        int64_t lo, hi;
+    };
+    static Range reachable(int64_t start, int64_t passes);
+
     void add(const Pass& pass);
     // Decisions fall after passes 4, 8, 16, ...: each on twice the passes of the last.
     static bool decidesAfter(int64_t passes) { return passes >= 4 && (passes & (passes - 1)) == 0; }

@@ -320,7 +320,13 @@ void SppmIntegrator::restoreState(std::istream& in) {
     if (adaptive) {
         readRaw(in, &photons, 1);
         readRaw(in, &emitted, 1);
-        if (photons < 1 || emitted < 0) throw CheckpointError("checkpoint: invalid photon counts");
+        // Counts no render could have reached: a damaged checkpoint must not start a pass of
+        // 2^60 photons.
+        const PhotonBudget::Range range = PhotonBudget::reachable(settings_.photonsPerPass, passes);
+        const double passCount = static_cast<double>(passes);
+        if (photons < std::max<int64_t>(range.lo, 1) || photons > range.hi || emitted < 0 ||
+            static_cast<double>(emitted) > passCount * static_cast<double>(range.hi))
+            throw CheckpointError("checkpoint: invalid photon counts");
         budget.restore(in);
     }
     std::lock_guard<std::mutex> lock(stateMutex_);
