@@ -31,6 +31,31 @@ export function formatCount(value) {
   return String(Math.round(value));
 }
 
+// The photons a pass traces now. SPPM's adaptive counts (render.adaptive_photons) change
+// it after passes 4, 8, 16, ..., so the record's photons_per_pass is only where the render
+// started; the job's progress points ({ pass, photons }: photons traced after that pass, in
+// any order, as the plot keeps them) tell the latest passes' count: the photons between the
+// last two over the passes between them. null until two passes with photons are known.
+export function currentPhotonsPerPass(points) {
+  const known = (points || []).filter((p) => p && Number.isInteger(p.pass) && p.pass > 0 && ok(p.photons));
+  if (known.length < 2) return null;
+  known.sort((a, b) => a.pass - b.pass);
+  const [before, last] = known.slice(-2);
+  const photons = last.photons - before.photons;
+  return last.pass > before.pass && photons > 0 ? Math.round(photons / (last.pass - before.pass)) : null;
+}
+
+// SPPM's photons per pass as the job view shows them: the count now, with where the render
+// started once it has moved ("800 k (started at 200 k)"); the start alone until the points
+// tell. Counts that read the same are shown once: "200 k (started at 200 k)" would say a
+// change that the figures cannot show.
+export function formatPhotonsPerPass(start, points) {
+  const now = currentPhotonsPerPass(points);
+  if (now === null) return formatCount(start);
+  if (!ok(start) || formatCount(now) === formatCount(start)) return formatCount(now);
+  return `${formatCount(now)} (started at ${formatCount(start)})`;
+}
+
 export function formatRate(perSecond) {
   return ok(perSecond) ? `${formatCount(perSecond)}/s` : DASH;
 }

@@ -27,6 +27,7 @@ import {
   formatCount,
   formatDuration,
   formatPasses,
+  formatPhotonsPerPass,
   formatRadius,
   formatRelativeError,
   formatRate,
@@ -227,7 +228,6 @@ export function createJobView({ onChanged, onDeleted }) {
     el.elapsed.textContent = formatDuration(job.elapsedSeconds);
     el.eta.textContent = job.status === 'running' && job.passesDone > 0 ? formatDuration(job.etaSeconds) : '—';
     el.resolution.textContent = job.width && job.height ? `${job.width} × ${job.height}` : '—';
-    el.photonsPerPass.textContent = formatCount(job.photonsPerPass);
     el.seed.textContent = job.seed ?? '—';
     el.integrator.textContent = methodName(job.integrator);
     if (job.denoise !== null) el.denoise.textContent = job.denoise ? 'on' : 'off';
@@ -263,6 +263,14 @@ export function createJobView({ onChanged, onDeleted }) {
     setDownload(el.exr, job.id, 'exr', job.passesDone > 0);
   }
 
+  // SPPM's adaptive photon counts move away from the record's photons_per_pass (where the
+  // render started): the count now is read off the passes the plot holds (its history and
+  // the live passes), so no request of its own. The other methods show the record's.
+  function showPhotonsPerPass(job) {
+    el.photonsPerPass.textContent = job.integrator === 'sppm'
+      ? formatPhotonsPerPass(job.photonsPerPass, plot.points()) : formatCount(job.photonsPerPass);
+  }
+
   // A new state of the job on show, from an event, a poll or a button's answer.
   function apply(s, job) {
     if (session !== s) return;
@@ -277,6 +285,7 @@ export function createJobView({ onChanged, onDeleted }) {
     else compare.open(job);
     if (job.passesDone > 0) s.preview.want(job.passesDone);
     plot.add(job);
+    showPhotonsPerPass(job);
     if (isFinished(job)) {
       stopFollowing(s);
       if (!previous || !isFinished(previous)) onChanged();
@@ -401,7 +410,9 @@ export function createJobView({ onChanged, onDeleted }) {
           progressPoints(id)
             .then((points) => points ?? progressHistory(id, { untilPass: job.passesDone }))
             .then((records) => {
-              if (session === s) plot.addAll(records);
+              if (session !== s) return;
+              plot.addAll(records);
+              showPhotonsPerPass(s.job); // the passes before the latest may tell the count now
             });
         }
       })

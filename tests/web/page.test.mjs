@@ -8,19 +8,20 @@
 // Starts the server on a free port with a fresh data folder, opens the page and checks: the
 // render farm panel; a Cornell box render followed to completion, whole preview images only,
 // its error estimate, the plot's history kept across a reload; the preview on a link
-// throttled to 30 KB/s (CDP); method and denoise choices; cancel and delete (with its
-// confirmation); an imported pbrt file's warnings; the job list (names, methods, thumbnails,
-// search, status filter, sort, events without polling); each method's figures; the
-// phone-width layout. Screenshots of each state go beside PHOTON_WEB_SCREENSHOT. The form
-// (examples, placeholders, memory, errors) is checked in page-form.test.mjs, the image's
-// zoom, exposure, layers and compare view in page-image.test.mjs. The server and the browser
-// (page-session.mjs) are stopped at the end, also when a check fails; the helpers that talk
-// to the server from Node are in harness.mjs.
+// throttled to 30 KB/s (CDP) and the photons per pass its adaptive count moved to; method
+// and denoise choices; cancel and delete (with its confirmation); an imported pbrt file's
+// warnings; the job list (names, methods, thumbnails, search, status filter, sort, events
+// without polling); each method's figures; the phone-width layout. Screenshots of each state
+// go beside PHOTON_WEB_SCREENSHOT. The form (examples, placeholders, memory, errors) is
+// checked in page-form.test.mjs, the image's zoom, exposure, layers and compare view in
+// page-image.test.mjs. The server and the browser (page-session.mjs) are stopped at the end,
+// also when a check fails; the helpers that talk to the server from Node are in harness.mjs.
 
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { dirname } from 'node:path';
 import { test } from 'node:test';
+import { formatCount } from '../../web/format.js';
 import {
   countEventStreams,
   occupyWorker,
@@ -145,6 +146,8 @@ test('a Cornell box render follows its passes to completion', { timeout: RENDER_
   assert.match(await textOf('#job-elapsed'), /^\d+:\d\d:\d\d$/);
   assert.match(await textOf('#job-rate'), /\/s$/);
   assert.match(await textOf('#job-radius'), /^\d/);
+  // Adaptive counts change after pass 4 at the earliest: all 4 passes traced the start count.
+  assert.equal(await textOf('#job-photons-per-pass'), '20.0 k');
   assert.equal(await page.isDisabled('#cancel-button'), true);
   assert.equal(await page.isDisabled('#delete-button'), false);
   for (const format of ['png', 'exr']) {
@@ -229,6 +232,14 @@ test('on a slow link the preview shows only whole images and ends on the final p
   assert.equal(record.total_passes, 12);
   assert.equal(shown.at(-1).pass, record.total_passes, "the last image shown is the job's final pass");
   assert.equal(await page.getAttribute('#job-image', 'data-pass'), '12');
+  // 100k photons a pass is far more than 64x64 pixels need: the adaptive count moved after
+  // pass 4 (and 8), and the view shows the latest passes' count with where it started.
+  const points = (await (await fetch(new URL(`api/v1/jobs/${id}/progress`, server.baseUrl))).json()).points;
+  assert.deepEqual(points.slice(-2).map((p) => p.pass), [11, 12]);
+  const latest = points.at(-1).photons_traced - points.at(-2).photons_traced;
+  t.diagnostic(`photons per pass: ${points.map((p, i) => p.photons_traced - (points[i - 1]?.photons_traced ?? 0)).join(', ')}`);
+  assert.notEqual(formatCount(latest), formatCount(100000), 'the render changed its photons per pass');
+  assert.equal(await textOf('#job-photons-per-pass'), `${formatCount(latest)} (started at 100 k)`);
   assert.deepEqual(failedImages, [], 'no image load was aborted');
   await saveScreenshot('throttled-preview');
 });
