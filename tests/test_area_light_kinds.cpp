@@ -80,22 +80,10 @@ TEST(AreaLightKinds, SphereLightsAreSampledByTheConeTheySubtend) {
             const Vec3 y = p + ls->wi * ls->distance;
             EXPECT_NEAR(length(y), 1.0f, 2e-3f * std::max(1.0f, d / 100));  // on the sphere
             EXPECT_GT(dot(y, p - y), -1e-3f * d);                             // on the near cap
-            EXPECT_EQ(light.pdfIncidentFrom(p, y, normalize(y), ls->wi), ls->pdf);
+            EXPECT_EQ(light.pdfIncidentFrom(p, n, {y, normalize(y), 0}, ls->wi), ls->pdf);
         }
         EXPECT_NEAR(irradiance, kPi * 3.0 * sin2Max, 2e-3 * kPi * 3.0 * sin2Max);
     }
-}
-
-// Irradiance at p (normal n) from a uniform polygon of radiance Le, all of it above p's
-// horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's
-// component along the normal of the plane through p and the edge (Arvo 1995).
-double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le) {
-    double sum = 0;
-    for (size_t i = 0; i < corners.size(); ++i) {
-        const Vec3 a = normalize(corners[i] - p), b = normalize(corners[(i + 1) % corners.size()] - p);
-        sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
-    }
-    return le / 2 * std::abs(sum);
 }
 
 // Close to a quad light (two triangles; 2 cm), light samples are uniform in the solid angle
@@ -109,7 +97,7 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
     for (float h : {0.02f, 0.3f, 3.0f}) {
         SCOPED_TRACE("distance " + std::to_string(h));
         const Vec3 p(0.2f, 1 - h, 0.1f), n(0, 1, 0);
-        const double expected = polygonIrradiance(p, n, corners, 2.0);
+        const double expected = test::polygonIrradiance(p, n, corners, 2.0);
         Rng rng(5, 0, 0, StreamPurpose::Test);
         const int samples = 40000;
         double sum = 0, sumSquares = 0, areaSum = 0, areaSquares = 0;
@@ -123,7 +111,7 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
             EXPECT_NEAR(y.y, 1.0f, 1e-4f);
             EXPECT_LE(std::abs(y.x), 0.5f + 1e-4f);
             EXPECT_LE(std::abs(y.z), 0.5f + 1e-4f);
-            EXPECT_FLOAT_EQ(light.pdfIncidentFrom(p, y, Vec3(0, -1, 0), ls->wi), ls->pdf);
+            EXPECT_FLOAT_EQ(light.pdfIncidentFrom(p, n, {y, Vec3(0, -1, 0), 0}, ls->wi), ls->pdf);
             // The same estimate from a point uniform on the panel: Le cos cos' A / d^2.
             const Vec3 q(-0.5f + u.x, 1, -0.5f + u.y), d = q - p;
             const double d2 = lengthSquared(d), c = d.y / std::sqrt(d2);

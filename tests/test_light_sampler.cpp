@@ -189,38 +189,24 @@ TEST(DirectLightSampler, BoundsNeverRuleOutALightThatReachesThePoint) {
 // probabilities enter the multiple importance weights of BSDF samples that find a light),
 // and the spatial one with less noise.
 SceneDescription floorUnderLights(LightSamplerKind kind, uint64_t seed) {
-    SceneDescription d = test::pointLightPlane(0.5f, 1.0f, 1.0f, 24, 2.0f);
+    SceneDescription d = test::directLitFloor(kind, seed, 64);
     d.lights = {spotLight({-0.6f, 1.2f, 0.6f}, {0, -1, 0}, 3, 35, 25)};
     d.shapes.push_back(test::quad({0.6f, 0.4f, -0.6f}, {0.3f, 0, 0}, {0, 0.3f, 0}, 0, Color(4.0f)));   // faces +z
     d.shapes.push_back(test::quad({-0.9f, 0.3f, -0.2f}, {0, 0, 0.3f}, {0, 0.3f, 0}, 0, Color(4.0f)));  // faces -x
     d.shapes.push_back(test::quad({0.2f, 0.8f, 0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, 0, Color(6.0f)));    // faces down
-    d.render.integrator = IntegratorKind::Path;
-    d.render.maxDepth = 1;
-    d.render.passes = 64;
-    d.render.seed = seed;
-    d.render.lightSampler = kind;
     return d;
 }
 
 TEST(DirectLightSampler, SpatialAndPowerRenderTheSameImageTheSpatialWithLessNoise) {
-    const Image spatial = test::renderImage(floorUnderLights(LightSamplerKind::Spatial, 1));
-    const Image spatial2 = test::renderImage(floorUnderLights(LightSamplerKind::Spatial, 2));
-    const Image power = test::renderImage(floorUnderLights(LightSamplerKind::Power, 1));
-    const Image power2 = test::renderImage(floorUnderLights(LightSamplerKind::Power, 2));
+    const test::RendersBySampler r = test::renderBySampler(floorUnderLights);
+    const Image &spatial = r.spatial, &spatial2 = r.spatial2, &power = r.power, &power2 = r.power2;
     auto noise = [](const Image& a, const Image& b) {
         double d2 = 0;
         for (int y = 0; y < a.height; ++y)
             for (int x = 0; x < a.width; ++x) d2 += std::pow(average(a.at(x, y) - b.at(x, y)), 2);
         return std::sqrt(d2 / (a.width * a.height));
     };
-    for (int by = 0; by < 24; by += 8)
-        for (int bx = 0; bx < 24; bx += 8) {
-            const float s = average(test::meanOver(spatial, bx, by, bx + 8, by + 8) +
-                                    test::meanOver(spatial2, bx, by, bx + 8, by + 8));
-            const float p = average(test::meanOver(power, bx, by, bx + 8, by + 8) +
-                                    test::meanOver(power2, bx, by, bx + 8, by + 8));
-            EXPECT_NEAR(s, p, 0.03f * p) << "block " << bx << "," << by;
-        }
+    test::expectSameBlockMeans(spatial, spatial2, power, power2, 8, 0.03f);
     EXPECT_LT(noise(spatial, spatial2), 0.7 * noise(power, power2));
 }
 

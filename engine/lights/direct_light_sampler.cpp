@@ -12,9 +12,8 @@ DirectLightSampler::DirectLightSampler(const LightSampler& byPower, LightSampler
     for (size_t i = 0; i < byPower.size(); ++i) {
         const double power = byPower.probability(i);
         if (std::optional<LightBounds> b = byPower.light(i).bounds()) {
-            finiteSlot_[i] = static_cast<int32_t>(finite_.size());
+            finiteSlot_[i] = static_cast<int32_t>(bounds.size());
             bounds.push_back(*b);
-            finite_.emplace_back(*b);
             finiteLight_.push_back(static_cast<uint32_t>(i));
             finitePower += power;
         } else {
@@ -26,13 +25,12 @@ DirectLightSampler::DirectLightSampler(const LightSampler& byPower, LightSampler
     for (double s : infiniteSums) infiniteCdf_.push_back(static_cast<float>(s / infinitePower));
     if (!infiniteCdf_.empty()) infiniteCdf_.back() = 1.0f;
     finiteShare_ = infinite_.empty() ? 1.0f : static_cast<float>(finitePower / (finitePower + infinitePower));
+    finite_ = LightImportances(bounds);
     if (finite_.size() > kMaxExhaustive) tree_ = LightTree(bounds);
 }
 
 float DirectLightSampler::importances(Vec3 p, Vec3 n, float* out) const {
-    float sum = 0;
-    for (size_t i = 0; i < finite_.size(); ++i) sum += out[i] = finite_[i](p, n);
-    return sum;
+    return finite_.evaluate(0, finite_.size(), p, n, out);
 }
 
 LightSampler::Pick DirectLightSampler::pick(float u, Vec3 p, Vec3 n) const {

@@ -49,7 +49,7 @@ private:
 
     const LightSampler* byPower_ = nullptr;
     LightSamplerKind kind_ = LightSamplerKind::Power;
-    std::vector<LightImportance> finite_;   // the finite lights' bounds, in the power sampler's order
+    LightImportances finite_;               // the finite lights' bounds, in the power sampler's order
     std::vector<uint32_t> finiteLight_;     // their indices in the power sampler
     std::vector<int32_t> finiteSlot_;       // by light: its place in finite_, or -1 if infinite
     std::vector<uint32_t> infinite_;        // the infinite lights

@@ -1,6 +1,7 @@
 // The one interface every light implements: sampling incident light at a point (for
 // direct lighting) and emitting photons (for the photon pass).
 #pragma once
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include "math/frame.h"
@@ -15,6 +16,13 @@ struct LightSample {
     float distance = std::numeric_limits<float>::infinity();  // to the sampled point; inf for infinite lights
     Color weight;            // incident radiance / pdf (solid angle), or irradiance for delta lights
     float pdf = 0;           // the solid-angle density wi was drawn with; 0 for delta lights
+};
+
+// A point on an area light that a ray met.
+struct EmitterPoint {
+    Vec3 p;                 // where
+    Vec3 ng;                // the geometric normal there
+    uint32_t triangle = 0;  // the mesh's triangle (meshes only)
 };
 
 struct PhotonEmission {
@@ -64,9 +72,9 @@ public:
     // the direction wi, for weighting it against BSDF sampling (multiple importance
     // sampling, Veach 1997 ch. 9). 0 for lights no ray can find (delta lights).
     virtual float pdfIncident(Vec3 p, Vec3 n, Vec3 wi) const { return 0; }
-    // Area lights: the same for the direction wi from p whose ray first meets the light at
-    // y, where its geometric normal is ny. 0 for lights no ray can find.
-    virtual float pdfIncidentFrom(Vec3 p, Vec3 y, Vec3 ny, Vec3 wi) const { return 0; }
+    // Area lights: the same for the direction wi from p (whose light samples are kept from
+    // above n) whose ray first meets the light at `at`. 0 for lights no ray can find.
+    virtual float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const { return 0; }
     // For projection maps (projection_map.h): where photons leave from, and how much power
     // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
     // world direction w; for parallel kinds: the power per unit area crossing the emission

@@ -6,15 +6,81 @@
 namespace photon {
 namespace {
 
-// cos(max(0, a - b)) from the angles' sines and cosines (both in [0, pi]).
-float cosOfDifferenceClamped(float sinA, float cosA, float sinB, float cosB) {
-    if (cosA > cosB) return 1.0f;  // a < b
-    return cosA * cosB + sinA * sinB;
+// One light's bounds as importance() reads them: floats, or eight lights' in lanes.
+template <class F, class M>
+struct BoundsOf {
+    F cx, cy, cz;  // the box's centre
+    F ax, ay, az;  // the cone's axis
+    F radius, radius2, intensity, cosThetaO, sinThetaO, cosThetaE;
+    M twoSided;
+};
+
+// cos(max(0, a - b)) and sin(max(0, a - b)) from the angles' sines and cosines (both in
+// [0, pi]): a < b where cosA > cosB.
+template <class F>
+PHOTON_LANES_INLINE F cosOfDifferenceClamped(F sinA, F cosA, F sinB, F cosB) {
+    return select(cosA > cosB, broadcast<F>(1.0f), cosA * cosB + sinA * sinB);
 }
-float sinOfDifferenceClamped(float sinA, float cosA, float sinB, float cosB) {
-    if (cosA > cosB) return 0.0f;
-    return sinA * cosB - cosA * sinB;
+template <class F>
+PHOTON_LANES_INLINE F sinOfDifferenceClamped(F sinA, F cosA, F sinB, F cosB) {
+    return select(cosA > cosB, broadcast<F>(0.0f), sinA * cosB - cosA * sinB);
 }
+
+// LightImportance::operator(), written once for one light and for eight: the same
+// operations in the same order, so a light's figure does not depend on which code asks.
+template <class F, class M>
+PHOTON_LANES_INLINE F importanceAt(const BoundsOf<F, M>& b, Vec3 p, Vec3 n) {
+    const F dx = p.x - b.cx, dy = p.y - b.cy, dz = p.z - b.cz;
+    const F d2 = dx * dx + dy * dy + dz * dz;
+    const M positive = d2 > 0.0f;
+    const F inverseD = select(positive, 1.0f / safeSqrt(d2), broadcast<F>(0.0f));
+    // The cone of directions from p that hold the box's bounding sphere; all of them when p
+    // is inside it.
+    const M outside = d2 > b.radius2;
+    const F sinThetaBOutside = b.radius * inverseD;
+    const F sinThetaB = select(outside, sinThetaBOutside, broadcast<F>(0.0f));
+    const F cosThetaB = select(outside, safeSqrt(1.0f - sinThetaBOutside * sinThetaBOutside), broadcast<F>(-1.0f));
+    const F fx = select(positive, dx * inverseD, broadcast<F>(0.0f));
+    const F fy = select(positive, dy * inverseD, broadcast<F>(0.0f));
+    const F fz = select(positive, dz * inverseD, broadcast<F>(1.0f));
+
+    // The emitter's side: the smallest angle between an emitting direction and a direction
+    // toward p.
+    F cosThetaW = b.ax * fx + b.ay * fy + b.az * fz;
+    cosThetaW = select(b.twoSided, absValue(cosThetaW), cosThetaW);
+    const F sinThetaW = safeSqrt(1.0f - cosThetaW * cosThetaW);
+    const F cosThetaX = cosOfDifferenceClamped(sinThetaW, cosThetaW, b.sinThetaO, b.cosThetaO);
+    const F sinThetaX = sinOfDifferenceClamped(sinThetaW, cosThetaW, b.sinThetaO, b.cosThetaO);
+    const F cosThetaP = cosOfDifferenceClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
+
+    F result = b.intensity * cosThetaP / maxValue(d2, b.radius2);
+    if (n.x != 0 || n.y != 0 || n.z != 0) {
+        // The receiver's side: the smallest angle between n and a direction into the box.
+        const F cosThetaI = -(fx * n.x + fy * n.y + fz * n.z);
+        const F sinThetaI = safeSqrt(1.0f - cosThetaI * cosThetaI);
+        const F cosBound = cosOfDifferenceClamped(sinThetaI, cosThetaI, sinThetaB, cosThetaB);
+        result = select(cosBound > 0.0f, result * cosBound, broadcast<F>(0.0f));
+    }
+    // Strictly beyond: a hard-edged spot (thetaE 0, cosThetaE 1) still lights its cone.
+    result = select(cosThetaP < b.cosThetaE, broadcast<F>(0.0f), result);
+    return maxValue(result, broadcast<F>(0.0f));
+}
+
+PHOTON_LANES_INLINE void importancesLanes(const LightImportances::Columns& c, size_t first, size_t count, Vec3 p, Vec3 n,
+                                          float* out) {
+    for (size_t k = 0; k < count; k += kLanes) {
+        const size_t i = first + k;
+        auto load = [&](const std::vector<float>& column) { return loadLanes<float, FloatLanes>(column.data() + i); };
+        BoundsOf<FloatLanes, IntLanes> b{load(c.cx),        load(c.cy),        load(c.cz),         load(c.ax),
+                                         load(c.ay),        load(c.az),        load(c.radius),     load(c.radius2),
+                                         load(c.intensity), load(c.cosThetaO), load(c.sinThetaO), load(c.cosThetaE),
+                                         loadLanes<int32_t, IntLanes>(c.twoSided.data() + i)};
+        storeLanes(out + k, importanceAt(b, p, n));
+    }
+}
+PHOTON_LANES_KERNEL(importancesInLanes, importancesLanes,
+                    (const LightImportances::Columns& c, size_t first, size_t count, Vec3 p, Vec3 n, float* out),
+                    (c, first, count, p, n, out))
 
 }  // namespace
 
@@ -26,38 +92,43 @@ LightImportance::LightImportance(const LightBounds& b)
 }
 
 float LightImportance::operator()(Vec3 p, Vec3 n) const {
-    const float d2 = lengthSquared(p - centre_);
-    const float inverseD = d2 > 0 ? 1.0f / std::sqrt(d2) : 0.0f;
-    // The cone of directions from p that hold the box's bounding sphere; all of them when p
-    // is inside it.
-    float cosThetaB = -1, sinThetaB = 0;
-    if (d2 > radius2_) {
-        sinThetaB = radius_ * inverseD;
-        cosThetaB = safeSqrt(1.0f - sinThetaB * sinThetaB);
-    }
-    const Vec3 fromLight = d2 > 0 ? (p - centre_) * inverseD : Vec3(0, 0, 1);
+    const BoundsOf<float, bool> b{centre_.x, centre_.y,  centre_.z,  axis_.x,    axis_.y,     axis_.z,   radius_,
+                                  radius2_,  intensity_, cosThetaO_, sinThetaO_, cosThetaE_, twoSided_};
+    return importanceAt(b, p, n);
+}
 
-    // The emitter's side: the smallest angle between an emitting direction and a direction
-    // toward p.
-    float cosThetaW = dot(axis_, fromLight);
-    if (twoSided_) cosThetaW = std::abs(cosThetaW);
-    const float sinThetaW = safeSqrt(1.0f - cosThetaW * cosThetaW);
-    const float cosThetaX = cosOfDifferenceClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
-    const float sinThetaX = sinOfDifferenceClamped(sinThetaW, cosThetaW, sinThetaO_, cosThetaO_);
-    const float cosThetaP = cosOfDifferenceClamped(sinThetaX, cosThetaX, sinThetaB, cosThetaB);
-    // Strictly beyond: a hard-edged spot (thetaE 0, cosThetaE 1) still lights its cone.
-    if (cosThetaP < cosThetaE_) return 0.0f;
-
-    float result = intensity_ * cosThetaP / std::max(d2, radius2_);
-    if (n.x != 0 || n.y != 0 || n.z != 0) {
-        // The receiver's side: the smallest angle between n and a direction into the box.
-        const float cosThetaI = -dot(fromLight, n);
-        const float sinThetaI = safeSqrt(1.0f - cosThetaI * cosThetaI);
-        const float cosBound = cosOfDifferenceClamped(sinThetaI, cosThetaI, sinThetaB, cosThetaB);
-        if (!(cosBound > 0)) return 0.0f;
-        result *= cosBound;
+LightImportances::LightImportances(const std::vector<LightBounds>& bounds) : size_(bounds.size()) {
+    // Room for a last group of eight read whole from any first light.
+    const size_t padded = bounds.size() + kLanes;
+    for (std::vector<float>* column : {&c_.cx, &c_.cy, &c_.cz, &c_.ax, &c_.ay, &c_.az, &c_.radius, &c_.radius2,
+                                       &c_.intensity, &c_.cosThetaO, &c_.sinThetaO, &c_.cosThetaE})
+        column->assign(padded, 0.0f);
+    c_.radius2.assign(padded, 1.0f);  // the padding's figure stays finite (0 / 1)
+    c_.twoSided.assign(padded, 0);
+    for (size_t i = 0; i < bounds.size(); ++i) {
+        const LightBounds& b = bounds[i];
+        const Vec3 centre = (b.lo + b.hi) * 0.5f;
+        c_.cx[i] = centre.x, c_.cy[i] = centre.y, c_.cz[i] = centre.z;
+        c_.ax[i] = b.axis.x, c_.ay[i] = b.axis.y, c_.az[i] = b.axis.z;
+        c_.radius2[i] = lengthSquared(b.hi - centre);
+        c_.radius[i] = std::sqrt(c_.radius2[i]);
+        c_.intensity[i] = b.intensity;
+        c_.cosThetaO[i] = b.cosThetaO;
+        c_.sinThetaO[i] = safeSqrt(1.0f - b.cosThetaO * b.cosThetaO);
+        c_.cosThetaE[i] = b.cosThetaE;
+        c_.twoSided[i] = b.twoSided ? -1 : 0;
     }
-    return std::max(result, 0.0f);
+}
+
+float LightImportances::evaluate(size_t first, size_t count, Vec3 p, Vec3 n, float* out) const {
+    float sum = 0;
+    for (size_t k = 0; k < count; k += kGroup) {
+        float group[kGroup];
+        const size_t inGroup = std::min(kGroup, count - k);
+        importancesInLanes(c_, first + k, inGroup, p, n, group);
+        for (size_t j = 0; j < inGroup; ++j) sum += out[k + j] = group[j];
+    }
+    return sum;
 }
 
 }  // namespace photon

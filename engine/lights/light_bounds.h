@@ -3,6 +3,8 @@
 // pbrt-v4's LightBounds (Pharr, Jakob & Humphreys, 4th ed., sec. 12.6.3), from Conty Estevez
 // & Kulla 2018 ("Importance sampling of many lights with adaptive tree splitting").
 #pragma once
+#include <cstdint>
+#include <vector>
 #include <photon/vec.h>
 
 namespace photon {
@@ -38,6 +40,32 @@ private:
     float radius_ = 0, radius2_ = 0, intensity_ = 0;
     float cosThetaO_ = -1, sinThetaO_ = 0, cosThetaE_ = 0;
     bool twoSided_ = false;
+};
+
+// Many lights' bounds, asked eight at a time in SIMD lanes (math/lanes.h) with the
+// arithmetic of LightImportance, so that each light's figure is the same to the bit whichever
+// asks. What the exhaustive light sampler and the light tree's leaves evaluate at every
+// shadow ray.
+class LightImportances {
+public:
+    LightImportances() = default;
+    explicit LightImportances(const std::vector<LightBounds>& bounds);
+    size_t size() const { return size_; }
+
+    // The importances at p (as LightImportance) of lights [first, first + count), into
+    // out[0, count); their sum, added in order.
+    float evaluate(size_t first, size_t count, Vec3 p, Vec3 n, float* out) const;
+
+    // The bounds by field, each padded by a group of lanes.
+    struct Columns {
+        std::vector<float> cx, cy, cz, ax, ay, az, radius, radius2, intensity, cosThetaO, sinThetaO, cosThetaE;
+        std::vector<int32_t> twoSided;  // -1 true, 0 false
+    };
+
+private:
+    static constexpr size_t kGroup = 16;  // lights evaluated per call of the lanes' kernel
+    Columns c_;
+    size_t size_ = 0;
 };
 
 }  // namespace photon

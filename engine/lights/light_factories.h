@@ -3,6 +3,7 @@
 #include <memory>
 #include "description/scene_description.h"
 #include "lights/light.h"
+#include <photon/render_settings.h>
 
 namespace photon {
 
@@ -12,8 +13,9 @@ std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphe
 // Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight).
 std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds);
 std::unique_ptr<Light> makeImageEnvironmentLight(const LightDescription& d, SceneSphere bounds);
-// An emissive triangle mesh (quads arrive as meshes) or sphere. The shape must outlive the light.
-std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape);
+// An emissive triangle mesh (quads arrive as meshes) or sphere. The shape must outlive the
+// light. `kind`: how a mesh's light samples pick among its triangles (render.light_sampler).
+std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape, LightSamplerKind kind);
 std::unique_ptr<Light> makeSphereAreaLight(const ShapeDescription& shape);
 
 }  // namespace photon

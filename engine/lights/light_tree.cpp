@@ -16,9 +16,6 @@ Vec3 rotated(Vec3 v, Vec3 k, float angle) {
     return v * c + cross(k, v) * s + k * (dot(k, v) * (1.0f - c));
 }
 
-// Child c's share of its parent's choice: the one expression pick() and probability() use.
-float share(float importance, float other) { return importance / (importance + other); }
-
 }  // namespace
 
 LightBounds unionOf(const LightBounds& a, const LightBounds& b) {
@@ -60,107 +57,116 @@ LightTree::LightTree(const std::vector<LightBounds>& bounds) {
         if (bounds[i].intensity > 0) order_.push_back(i);
     if (order_.empty()) return;
     nodes_.reserve(2 * order_.size() / kClusterSize + 2);
-    build(order_, 0, order_.size(), bounds, 0, 0);
+    nodes_.push_back({});
+    std::vector<LightBounds> nodeBounds(1);
+    build(0, order_, 0, order_.size(), bounds, nodeBounds, 0, 0);
+    nodeImportances_ = LightImportances(nodeBounds);
+    std::vector<LightBounds> inOrder;
     for (uint32_t k = 0; k < order_.size(); ++k) {
         place_[order_[k]] = k;
-        importances_.emplace_back(bounds[order_[k]]);
+        inOrder.push_back(bounds[order_[k]]);
     }
+    importances_ = LightImportances(inOrder);
 }
 
-// Median splits of the lights' centres along the widest axis of their box: a balanced tree
-// whose depth stays within the 64 branches a trail holds.
-uint32_t LightTree::build(std::vector<uint32_t>& lights, size_t begin, size_t end,
-                          const std::vector<LightBounds>& bounds, uint64_t trail, int depth) {
-    const uint32_t index = static_cast<uint32_t>(nodes_.size());
-    nodes_.push_back({});
+// Up to three rounds of median splits of the lights' centres along the widest axis of their
+// box cut a node's lights into at most eight children: a balanced tree, the same on every
+// machine (ties by index).
+void LightTree::build(uint32_t node, std::vector<uint32_t>& lights, size_t begin, size_t end,
+                      const std::vector<LightBounds>& bounds, std::vector<LightBounds>& nodeBounds, uint64_t trail,
+                      int depth) {
+    LightBounds all = bounds[lights[begin]];
+    for (size_t i = begin + 1; i < end; ++i) all = unionOf(all, bounds[lights[i]]);
+    nodeBounds[node] = all;
     if (end - begin <= kClusterSize) {
-        LightBounds all = bounds[lights[begin]];
-        for (size_t i = begin + 1; i < end; ++i) all = unionOf(all, bounds[lights[i]]);
-        nodes_[index] = Node{all, LightImportance(all), 0, static_cast<uint32_t>(begin),
-                             static_cast<uint32_t>(end - begin), true};
+        nodes_[node] = Node{static_cast<uint32_t>(begin), static_cast<uint32_t>(end - begin), true};
         for (size_t i = begin; i < end; ++i) {
             const uint32_t light = lights[i];
             trail_[light] = trail, depth_[light] = static_cast<uint8_t>(depth), inTree_[light] = true;
         }
-        return index;
+        return;
     }
     auto centre = [&](uint32_t i) { return (bounds[i].lo + bounds[i].hi) * 0.5f; };
-    Vec3 lo = centre(lights[begin]), hi = lo;
-    for (size_t i = begin; i < end; ++i) lo = vmin(lo, centre(lights[i])), hi = vmax(hi, centre(lights[i]));
-    const Vec3 extent = hi - lo;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
-    const size_t middle = begin + (end - begin) / 2;
-    std::nth_element(lights.begin() + begin, lights.begin() + middle, lights.begin() + end, [&](uint32_t a, uint32_t b) {
-        const float ca = centre(a)[axis], cb = centre(b)[axis];
-        return ca < cb || (ca == cb && a < b);  // ties by index: the same tree on every machine
-    });
-    build(lights, begin, middle, bounds, trail, depth + 1);
-    const uint32_t second = build(lights, middle, end, bounds, trail | (uint64_t(1) << depth), depth + 1);
-    nodes_[index].secondChild = second;
-    nodes_[index].bounds = unionOf(nodes_[index + 1].bounds, nodes_[second].bounds);
-    nodes_[index].importance = LightImportance(nodes_[index].bounds);
-    return index;
+    std::vector<std::pair<size_t, size_t>> parts{{begin, end}};
+    for (int round = 0; round < 3; ++round) {
+        std::vector<std::pair<size_t, size_t>> next;
+        for (auto [b, e] : parts) {
+            if (e - b <= kClusterSize) {
+                next.push_back({b, e});
+                continue;
+            }
+            Vec3 lo = centre(lights[b]), hi = lo;
+            for (size_t i = b; i < e; ++i) lo = vmin(lo, centre(lights[i])), hi = vmax(hi, centre(lights[i]));
+            const Vec3 extent = hi - lo;
+            const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+            const size_t middle = b + (e - b) / 2;
+            std::nth_element(lights.begin() + b, lights.begin() + middle, lights.begin() + e, [&](uint32_t x, uint32_t y) {
+                const float cx = centre(x)[axis], cy = centre(y)[axis];
+                return cx < cy || (cx == cy && x < y);
+            });
+            next.push_back({b, middle});
+            next.push_back({middle, e});
+        }
+        parts = std::move(next);
+    }
+    const uint32_t first = static_cast<uint32_t>(nodes_.size());
+    nodes_[node] = Node{first, static_cast<uint32_t>(parts.size()), false};
+    nodes_.resize(nodes_.size() + parts.size());
+    nodeBounds.resize(nodes_.size());
+    for (uint32_t c = 0; c < parts.size(); ++c)
+        build(first + c, lights, parts[c].first, parts[c].second, bounds, nodeBounds,
+              trail | (uint64_t(c) << (3 * depth)), depth + 1);
 }
 
-float LightTree::clusterImportances(const Node& leaf, Vec3 p, Vec3 n, float* out) const {
-    float sum = 0;
-    for (uint32_t k = 0; k < leaf.count; ++k) sum += out[k] = importances_[leaf.first + k](p, n);
-    return sum;
+// The one with importance whose share of [0, sum) holds u * sum; the last one with
+// importance takes what rounding leaves past the end.
+LightTree::Choice LightTree::choose(const float* each, uint32_t count, float sum, float u) {
+    const float target = u * sum;
+    uint32_t last = 0;
+    for (uint32_t k = 0; k < count; ++k)
+        if (each[k] > 0) last = k;
+    float below = 0;
+    uint32_t k = 0;
+    while (k < last && (!(each[k] > 0) || target >= below + each[k])) below += each[k++];
+    return {k, each[k] / sum, std::clamp((target - below) / each[k], 0.0f, 0.99999994f)};
 }
 
 LightTree::Pick LightTree::pick(float u, Vec3 p, Vec3 n) const {
     if (nodes_.empty()) return {};
     uint32_t node = 0;
     float probability = 1;
+    float each[kClusterSize];
     while (!nodes_[node].leaf) {
-        const uint32_t first = node + 1, second = nodes_[node].secondChild;
-        const float i1 = nodes_[first].importance(p, n), i2 = nodes_[second].importance(p, n);
-        if (!(i1 > 0) && !(i2 > 0)) return {};
-        const float p1 = share(i1, i2);
-        if (u < p1) {
-            u = std::min(u / p1, 0.99999994f);
-            probability *= p1;
-            node = first;
-        } else {
-            const float p2 = share(i2, i1);
-            u = std::min((u - p1) / p2, 0.99999994f);
-            probability *= p2;
-            node = second;
-        }
+        const Node& inner = nodes_[node];
+        const float sum = nodeImportances_.evaluate(inner.first, inner.count, p, n, each);
+        if (!(sum > 0)) return {};
+        const Choice c = choose(each, inner.count, sum, u);
+        probability *= c.probability;
+        u = c.rest;
+        node = inner.first + c.index;
     }
     const Node& leaf = nodes_[node];
-    float each[kClusterSize];
-    const float sum = clusterImportances(leaf, p, n, each);
+    const float sum = importances_.evaluate(leaf.first, leaf.count, p, n, each);
     if (!(sum > 0)) return {};
-    const float target = u * sum;
-    float below = 0;
-    uint32_t last = 0;
-    for (uint32_t k = 0; k < leaf.count; ++k)
-        if (each[k] > 0) last = k;
-    uint32_t k = 0;
-    while (k < last && (!(each[k] > 0) || target >= below + each[k])) below += each[k++];
-    return {order_[leaf.first + k], probability * (each[k] / sum)};
+    const Choice c = choose(each, leaf.count, sum, u);
+    return {order_[leaf.first + c.index], probability * c.probability, c.rest};
 }
 
 float LightTree::probability(uint32_t light, Vec3 p, Vec3 n) const {
     if (light >= inTree_.size() || !inTree_[light]) return 0;
     uint32_t node = 0;
     float probability = 1;
+    float each[kClusterSize];
     for (int d = 0; d < depth_[light]; ++d) {
-        const uint32_t first = node + 1, second = nodes_[node].secondChild;
-        const float i1 = nodes_[first].importance(p, n), i2 = nodes_[second].importance(p, n);
-        if (!(i1 > 0) && !(i2 > 0)) return 0;
-        if (trail_[light] >> d & 1) {
-            probability *= share(i2, i1);
-            node = second;
-        } else {
-            probability *= share(i1, i2);
-            node = first;
-        }
+        const Node& inner = nodes_[node];
+        const float sum = nodeImportances_.evaluate(inner.first, inner.count, p, n, each);
+        if (!(sum > 0)) return 0;
+        const uint32_t c = static_cast<uint32_t>(trail_[light] >> (3 * d) & 7u);
+        probability *= each[c] / sum;
+        node = inner.first + c;
     }
     const Node& leaf = nodes_[node];
-    float each[kClusterSize];
-    const float sum = clusterImportances(leaf, p, n, each);
+    const float sum = importances_.evaluate(leaf.first, leaf.count, p, n, each);
     return sum > 0 ? probability * (each[place_[light] - leaf.first] / sum) : 0.0f;
 }
 

@@ -109,7 +109,7 @@ void Scene::buildLights() {
         if (isBlack(s.emission)) continue;
         lightOfShape_[i] = int32_t(ownedLights_.size());
         ownedLights_.push_back(s.kind == ShapeDescription::Kind::Sphere ? makeSphereAreaLight(s)
-                                                                        : makeMeshAreaLight(s));
+                                                                        : makeMeshAreaLight(s, description_.render.lightSampler));
     }
     for (const LightDescription& d : description_.lights) {
         switch (d.kind) {

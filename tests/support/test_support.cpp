@@ -1,4 +1,6 @@
 #include "test_support.h"
+#include <gtest/gtest.h>
+#include <algorithm>
 #include "scene_builders.h"
 #include <tbb/task_arena.h>
 #include <photon/render.h>
@@ -49,6 +51,41 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
     c.width = width;
     c.height = height;
     return c;
+}
+
+SceneDescription directLitFloor(LightSamplerKind kind, uint64_t seed, int passes) {
+    SceneDescription d = pointLightPlane(0.5f, 1.0f, 1.0f, 24, 2.0f);
+    d.lights.clear();
+    d.render.integrator = IntegratorKind::Path;
+    d.render.maxDepth = 1;
+    d.render.passes = passes;
+    d.render.seed = seed;
+    d.render.lightSampler = kind;
+    return d;
+}
+
+RendersBySampler renderBySampler(const std::function<SceneDescription(LightSamplerKind, uint64_t)>& scene) {
+    return {renderImage(scene(LightSamplerKind::Spatial, 1)), renderImage(scene(LightSamplerKind::Spatial, 2)),
+            renderImage(scene(LightSamplerKind::Power, 1)), renderImage(scene(LightSamplerKind::Power, 2))};
+}
+
+void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, const Image& b2, int block,
+                          float tolerance) {
+    for (int by = 0; by + block <= a1.height; by += block)
+        for (int bx = 0; bx + block <= a1.width; bx += block) {
+            const float a = average(meanOver(a1, bx, by, bx + block, by + block) + meanOver(a2, bx, by, bx + block, by + block));
+            const float b = average(meanOver(b1, bx, by, bx + block, by + block) + meanOver(b2, bx, by, bx + block, by + block));
+            EXPECT_NEAR(a, b, tolerance * b) << "block " << bx << "," << by;
+        }
+}
+
+double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le) {
+    double sum = 0;
+    for (size_t i = 0; i < corners.size(); ++i) {
+        const Vec3 a = normalize(corners[i] - p), b = normalize(corners[(i + 1) % corners.size()] - p);
+        sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
+    }
+    return le / 2 * std::abs(sum);
 }
 
 Image renderImage(SceneDescription d) {

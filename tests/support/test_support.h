@@ -13,6 +13,8 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 }  // namespace photon::test
 
 #include <cmath>
+#include <functional>
+#include <vector>
 #include <photon/image.h>
 #include "scene/scene_loader.h"
 
@@ -53,6 +55,28 @@ inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
         for (int x = x0; x < x1; ++x) sum += image.at(x, y);
     return sum / static_cast<float>((x1 - x0) * (y1 - y0));
 }
+
+// pointLightPlane's floor (2 m square, 24 x 24 pixels) with no light yet, path-traced with
+// direct light only by the given light sampler and seed: where ways of sampling lights are
+// compared.
+SceneDescription directLitFloor(LightSamplerKind kind, uint64_t seed, int passes);
+
+// A scene (made for a light sampler and a seed) rendered by the spatial and the power light
+// samplers, each with seeds 1 and 2.
+struct RendersBySampler {
+    Image spatial, spatial2, power, power2;
+};
+RendersBySampler renderBySampler(const std::function<SceneDescription(LightSamplerKind, uint64_t)>& scene);
+
+// Two ways of rendering one image agree: over each block x block pixels, the mean of a1
+// and a2 (two seeds of one way) is within `tolerance` (relative) of b1 and b2's.
+void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, const Image& b2, int block,
+                          float tolerance);
+
+// Irradiance at p (normal n) from a uniform polygon of radiance Le, all of it above p's
+// horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's
+// component along the normal of the plane through p and the edge (Arvo 1995).
+double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le);
 
 // Component-wise closeness of two Vec3 (or Color) values, in a gtest test body; Vec3
 // must name photon::Vec3 where it is used.

@@ -104,7 +104,7 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
                                    const SurfaceHit& hit, Vec3 d) {
     const Vec3 n = bounce.sideProbability < 1 && dot(d, bounce.n) < 0 ? -bounce.n : bounce.n;
     const float pick = scene.directLights().probability(e.index, bounce.p, n);
-    const float pLight = bounce.sideProbability * pick * e.light->pdfIncidentFrom(bounce.p, hit.p, hit.ng, d);
+    const float pLight = bounce.sideProbability * pick * e.light->pdfIncidentFrom(bounce.p, n, {hit.p, hit.ng, hit.primitive}, d);
     return powerHeuristic(bounce.pdf, pLight);
 }
 
