@@ -6,6 +6,7 @@
 #include <cmath>
 #include <photon/render.h>
 #include "lights/direct_light_sampler.h"
+#include "math/lanes.h"
 #include "math/rng.h"
 #include "scene/scene.h"
 #include "scene_builders.h"
@@ -182,6 +183,54 @@ TEST(DirectLightSampler, BoundsNeverRuleOutALightThatReachesThePoint) {
     // The test means something only if both happen often.
     EXPECT_GT(reaching, 1000);
     EXPECT_GT(ruledOut, 1000);
+}
+
+// Bounds asked eight at a time (LightImportances, what the sampler and the tree's nodes and
+// leaves evaluate) give each light's figure to the bit as asked one at a time, on every
+// instruction set the lanes compile for, from any first light and count (lanes part-filled,
+// groups crossing the padding).
+TEST(DirectLightSampler, BoundsInLanesAreTheBoundsOneAtATime) {
+    Rng rng(11, 0, 0, StreamPurpose::Test);
+    std::vector<LightBounds> bounds;
+    for (int i = 0; i < 37; ++i) {
+        LightBounds b;
+        const Vec3 centre{4 * rng.uniform() - 2, 4 * rng.uniform() - 2, 4 * rng.uniform() - 2};
+        const Vec3 half{i % 5 == 0 ? 0.0f : rng.uniform(), rng.uniform(), 0.5f * rng.uniform()};
+        b.lo = centre - half, b.hi = centre + half;
+        b.intensity = i % 9 == 0 ? 0.0f : 10 * rng.uniform();
+        b.axis = randomDirection(rng);
+        b.cosThetaO = i % 4 == 0 ? -1.0f : i % 4 == 1 ? 1.0f : 2 * rng.uniform() - 1;
+        b.cosThetaE = i % 3 == 0 ? 0.0f : i % 3 == 1 ? 1.0f : rng.uniform();
+        b.twoSided = i % 2 == 0;
+        bounds.push_back(b);
+    }
+    const LightImportances inLanes(bounds);
+    ASSERT_EQ(inLanes.size(), bounds.size());
+    int positive = 0;
+    for (LanesIsa isa : {LanesIsa::Baseline, LanesIsa::Avx2, LanesIsa::Avx512}) {
+        if (isa > cpuLanesIsa()) continue;
+        SCOPED_TRACE(static_cast<int>(isa));
+        limitLanesIsa(isa);
+        for (int trial = 0; trial < 300; ++trial) {
+            // Points inside boxes too (the last light's centre), and n = 0.
+            const Vec3 p = trial % 7 == 0 ? (bounds.back().lo + bounds.back().hi) * 0.5f
+                                          : Vec3{6 * rng.uniform() - 3, 6 * rng.uniform() - 3, 6 * rng.uniform() - 3};
+            const Vec3 n = trial % 5 == 0 ? Vec3(0, 0, 0) : randomDirection(rng);
+            const size_t first = trial % bounds.size(), count = 1 + trial % (bounds.size() - first);
+            float each[64];
+            const float sum = inLanes.evaluate(first, count, p, n, each);
+            float expectedSum = 0;
+            for (size_t k = 0; k < count; ++k) {
+                const float one = LightImportance(bounds[first + k])(p, n);
+                EXPECT_EQ(each[k], one) << "light " << first + k << " at trial " << trial;
+                expectedSum += one;
+                positive += one > 0;
+            }
+            EXPECT_EQ(sum, expectedSum);
+        }
+        limitLanesIsa(LanesIsa::Avx512);
+    }
+    EXPECT_GT(positive, 1000);
 }
 
 // A floor under three quad lights facing different ways and a spot, rendered by the path
