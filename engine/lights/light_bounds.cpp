@@ -97,16 +97,17 @@ float LightImportance::operator()(Vec3 p, Vec3 n) const {
     return importanceAt(b, p, n);
 }
 
-LightImportances::LightImportances(const std::vector<LightBounds>& bounds) : size_(bounds.size()) {
+LightImportances::LightImportances(const std::vector<LightBounds>& bounds, const std::vector<uint32_t>* order)
+    : size_(order ? order->size() : bounds.size()) {
     // Room for a last group of eight read whole from any first light.
-    const size_t padded = bounds.size() + kLanes;
+    const size_t padded = size_ + kLanes;
     for (std::vector<float>* column : {&c_.cx, &c_.cy, &c_.cz, &c_.ax, &c_.ay, &c_.az, &c_.radius, &c_.radius2,
                                        &c_.intensity, &c_.cosThetaO, &c_.sinThetaO, &c_.cosThetaE})
         column->assign(padded, 0.0f);
     c_.radius2.assign(padded, 1.0f);  // the padding's figure stays finite (0 / 1)
     c_.twoSided.assign(padded, 0);
-    for (size_t i = 0; i < bounds.size(); ++i) {
-        const LightBounds& b = bounds[i];
+    for (size_t i = 0; i < size_; ++i) {
+        const LightBounds& b = bounds[order ? (*order)[i] : i];
         const Vec3 centre = (b.lo + b.hi) * 0.5f;
         c_.cx[i] = centre.x, c_.cy[i] = centre.y, c_.cz[i] = centre.z;
         c_.ax[i] = b.axis.x, c_.ay[i] = b.axis.y, c_.az[i] = b.axis.z;

@@ -49,7 +49,8 @@ private:
 class LightImportances {
 public:
     LightImportances() = default;
-    explicit LightImportances(const std::vector<LightBounds>& bounds);
+    // Light i's bounds are bounds[order[i]] (bounds[i] without an order).
+    explicit LightImportances(const std::vector<LightBounds>& bounds, const std::vector<uint32_t>* order = nullptr);
     size_t size() const { return size_; }
 
     // The importances at p (as LightImportance) of lights [first, first + count), into

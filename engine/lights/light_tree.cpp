@@ -61,12 +61,8 @@ LightTree::LightTree(const std::vector<LightBounds>& bounds) {
     std::vector<LightBounds> nodeBounds(1);
     build(0, order_, 0, order_.size(), bounds, nodeBounds, 0, 0);
     nodeImportances_ = LightImportances(nodeBounds);
-    std::vector<LightBounds> inOrder;
-    for (uint32_t k = 0; k < order_.size(); ++k) {
-        place_[order_[k]] = k;
-        inOrder.push_back(bounds[order_[k]]);
-    }
-    importances_ = LightImportances(inOrder);
+    for (uint32_t k = 0; k < order_.size(); ++k) place_[order_[k]] = k;
+    importances_ = LightImportances(bounds, &order_);
 }
 
 // Up to three rounds of median splits of the lights' centres along the widest axis of their
