@@ -183,9 +183,8 @@ private:
         const LightTree::Pick pick = byBounds_.pick(u.x, p, n);
         if (!(pick.probability > 0)) return std::nullopt;
         const EmissionTriangles::Triangle& tri = triangles_[pick.light];
-        const Vec2 b = sampleUniformTriangle({pick.rest, u.y});
-        const Vec2 barycentric{b.y, 1.0f - b.x - b.y};  // as EmissionTriangles::samplePoint
-        SurfacePoint s{tri.p0 + tri.e1 * barycentric.x + tri.e2 * barycentric.y, tri.frame.n, {}};
+        Vec2 barycentric;
+        SurfacePoint s{EmissionTriangles::pointOn(tri, {pick.rest, u.y}, barycentric), tri.frame.n, {}};
         if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(pick.light, barycentric.x, barycentric.y);
         return sampleTowards(p, s, triangleArea_[pick.light], pick.probability);
     }

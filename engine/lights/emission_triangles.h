@@ -59,11 +59,15 @@ public:
     const Triangle& samplePoint(Vec2 u, Vec3& p, Vec2& barycentric, size_t& index) const {
         index = std::min(indexAt(u.x), triangles_.size() - 1);
         const Triangle& tri = triangles_[index];
-        Vec2 b = sampleUniformTriangle({reuse(u.x, tri.cdfLow, tri.inverseWidth), u.y});
+        p = pointOn(tri, {reuse(u.x, tri.cdfLow, tri.inverseWidth), u.y}, barycentric);
+        return tri;
+    }
+    // A point uniform on the triangle from u, and its barycentrics as samplePoint's.
+    static Vec3 pointOn(const Triangle& tri, Vec2 u, Vec2& barycentric) {
+        Vec2 b = sampleUniformTriangle(u);
         // Barycentric b.x on the first vertex, b.y on the second.
         barycentric = {b.y, 1.0f - b.x - b.y};
-        p = tri.p0 + tri.e1 * barycentric.x + tri.e2 * barycentric.y;
-        return tri;
+        return tri.p0 + tri.e1 * barycentric.x + tri.e2 * barycentric.y;
     }
 
     size_t size() const { return triangles_.size(); }
