@@ -171,7 +171,7 @@ TEST(DirectLightSampler, BoundsNeverRuleOutALightThatReachesThePoint) {
                 std::optional<LightSample> s = all.light(i).sampleIncident(p, n, {(k % 16 + 0.5f) / 16, (k / 16 + 0.5f) / 16});
                 reaches = s && !isBlack(s->weight) && (lengthSquared(n) == 0 || dot(s->wi, n) > 1e-3f);
             }
-            const float importance = LightImportance(*bounds)(p, n);
+            const float importance = photon::importance(*bounds, p, n);
             if (reaches) {
                 ++reaching;
                 EXPECT_GT(importance, 0.0f) << "light " << i << " at trial " << trial;
@@ -221,7 +221,7 @@ TEST(DirectLightSampler, BoundsInLanesAreTheBoundsOneAtATime) {
             const float sum = inLanes.evaluate(first, count, p, n, each);
             float expectedSum = 0;
             for (size_t k = 0; k < count; ++k) {
-                const float one = LightImportance(bounds[first + k])(p, n);
+                const float one = importance(bounds[first + k], p, n);
                 EXPECT_EQ(each[k], one) << "light " << first + k << " at trial " << trial;
                 expectedSum += one;
                 positive += one > 0;

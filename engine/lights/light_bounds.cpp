@@ -26,7 +26,7 @@ PHOTON_LANES_INLINE F sinOfDifferenceClamped(F sinA, F cosA, F sinB, F cosB) {
     return select(cosA > cosB, broadcast<F>(0.0f), sinA * cosB - cosA * sinB);
 }
 
-// LightImportance::operator(), written once for one light and for eight: the same
+// importance(), written once for one light and for eight: the same
 // operations in the same order, so a light's figure does not depend on which code asks.
 template <class F, class M>
 PHOTON_LANES_INLINE F importanceAt(const BoundsOf<F, M>& b, Vec3 p, Vec3 n) {
@@ -66,6 +66,14 @@ PHOTON_LANES_INLINE F importanceAt(const BoundsOf<F, M>& b, Vec3 p, Vec3 n) {
     return maxValue(result, broadcast<F>(0.0f));
 }
 
+// What importanceAt reads of one light's bounds, derived once.
+BoundsOf<float, bool> prepared(const LightBounds& b) {
+    const Vec3 centre = (b.lo + b.hi) * 0.5f;
+    const float radius2 = lengthSquared(b.hi - centre);
+    return {centre.x,    centre.y, centre.z,    b.axis.x,   b.axis.y, b.axis.z, std::sqrt(radius2), radius2,
+            b.intensity, b.cosThetaO, safeSqrt(1.0f - b.cosThetaO * b.cosThetaO), b.cosThetaE, b.twoSided};
+}
+
 PHOTON_LANES_INLINE void importancesLanes(const LightImportances::Columns& c, size_t first, size_t count, Vec3 p, Vec3 n,
                                           float* out) {
     for (size_t k = 0; k < count; k += kLanes) {
@@ -84,18 +92,7 @@ PHOTON_LANES_KERNEL(importancesInLanes, importancesLanes,
 
 }  // namespace
 
-LightImportance::LightImportance(const LightBounds& b)
-    : centre_((b.lo + b.hi) * 0.5f), axis_(b.axis), intensity_(b.intensity), cosThetaO_(b.cosThetaO),
-      sinThetaO_(safeSqrt(1.0f - b.cosThetaO * b.cosThetaO)), cosThetaE_(b.cosThetaE), twoSided_(b.twoSided) {
-    radius2_ = lengthSquared(b.hi - centre_);
-    radius_ = std::sqrt(radius2_);
-}
-
-float LightImportance::operator()(Vec3 p, Vec3 n) const {
-    const BoundsOf<float, bool> b{centre_.x, centre_.y,  centre_.z,  axis_.x,    axis_.y,     axis_.z,   radius_,
-                                  radius2_,  intensity_, cosThetaO_, sinThetaO_, cosThetaE_, twoSided_};
-    return importanceAt(b, p, n);
-}
+float importance(const LightBounds& b, Vec3 p, Vec3 n) { return importanceAt(prepared(b), p, n); }
 
 LightImportances::LightImportances(const std::vector<LightBounds>& bounds, const std::vector<uint32_t>* order)
     : size_(order ? order->size() : bounds.size()) {
@@ -107,16 +104,11 @@ LightImportances::LightImportances(const std::vector<LightBounds>& bounds, const
     c_.radius2.assign(padded, 1.0f);  // the padding's figure stays finite (0 / 1)
     c_.twoSided.assign(padded, 0);
     for (size_t i = 0; i < size_; ++i) {
-        const LightBounds& b = bounds[order ? (*order)[i] : i];
-        const Vec3 centre = (b.lo + b.hi) * 0.5f;
-        c_.cx[i] = centre.x, c_.cy[i] = centre.y, c_.cz[i] = centre.z;
-        c_.ax[i] = b.axis.x, c_.ay[i] = b.axis.y, c_.az[i] = b.axis.z;
-        c_.radius2[i] = lengthSquared(b.hi - centre);
-        c_.radius[i] = std::sqrt(c_.radius2[i]);
-        c_.intensity[i] = b.intensity;
-        c_.cosThetaO[i] = b.cosThetaO;
-        c_.sinThetaO[i] = safeSqrt(1.0f - b.cosThetaO * b.cosThetaO);
-        c_.cosThetaE[i] = b.cosThetaE;
+        const BoundsOf<float, bool> b = prepared(bounds[order ? (*order)[i] : i]);
+        c_.cx[i] = b.cx, c_.cy[i] = b.cy, c_.cz[i] = b.cz;
+        c_.ax[i] = b.ax, c_.ay[i] = b.ay, c_.az[i] = b.az;
+        c_.radius[i] = b.radius, c_.radius2[i] = b.radius2, c_.intensity[i] = b.intensity;
+        c_.cosThetaO[i] = b.cosThetaO, c_.sinThetaO[i] = b.sinThetaO, c_.cosThetaE[i] = b.cosThetaE;
         c_.twoSided[i] = b.twoSided ? -1 : 0;
     }
 }

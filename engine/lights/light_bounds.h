@@ -19,31 +19,17 @@ struct LightBounds {
 
 };
 
-// A light's bounds made ready to be asked, at every shadow ray, how much light could reach
-// a point: what importance() needs of them that does not depend on the point, computed once.
-class LightImportance {
-public:
-    LightImportance() = default;
-    explicit LightImportance(const LightBounds& b);
-
-    // How much light could reach p, in proportion to the irradiance there: intensity over
-    // the squared distance to the box's centre, times a bound on the emitter's cosine
-    // (thetaW, the angle of p from the axis, less thetaO and the angle the box subtends) and,
-    // when n is not zero, on the receiver's cosine about n (one-sided: 0 when the whole box is
-    // at or below the horizon of n). Conservative: 0 only where no light can arrive from above
-    // n. The squared distance is kept above the box's half diagonal squared, so a point in or
-    // near the box does not make its light's importance unbounded.
-    float operator()(Vec3 p, Vec3 n) const;
-
-private:
-    Vec3 centre_, axis_{0, 0, 1};
-    float radius_ = 0, radius2_ = 0, intensity_ = 0;
-    float cosThetaO_ = -1, sinThetaO_ = 0, cosThetaE_ = 0;
-    bool twoSided_ = false;
-};
+// How much light could reach p from a light with bounds b, in proportion to the irradiance
+// there: intensity over the squared distance to the box's centre, times a bound on the
+// emitter's cosine (thetaW, the angle of p from the axis, less thetaO and the angle the box
+// subtends) and, when n is not zero, on the receiver's cosine about n (one-sided: 0 when the
+// whole box is at or below the horizon of n). Conservative: 0 only where no light can arrive
+// from above n. The squared distance is kept above the box's half diagonal squared, so a
+// point in or near the box does not make its light's importance unbounded.
+float importance(const LightBounds& b, Vec3 p, Vec3 n);
 
 // Many lights' bounds, asked eight at a time in SIMD lanes (math/lanes.h) with the
-// arithmetic of LightImportance, so that each light's figure is the same to the bit whichever
+// arithmetic of importance(), so that each light's figure is the same to the bit whichever
 // asks. What the exhaustive light sampler and the light tree's leaves evaluate at every
 // shadow ray.
 class LightImportances {
@@ -53,7 +39,7 @@ public:
     explicit LightImportances(const std::vector<LightBounds>& bounds, const std::vector<uint32_t>* order = nullptr);
     size_t size() const { return size_; }
 
-    // The importances at p (as LightImportance) of lights [first, first + count), into
+    // The importances at p (as importance()) of lights [first, first + count), into
     // out[0, count); their sum, added in order.
     float evaluate(size_t first, size_t count, Vec3 p, Vec3 n, float* out) const;
 
