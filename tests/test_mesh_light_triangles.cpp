@@ -42,54 +42,10 @@ ShapeDescription tiles(Color emission) {
     return s;
 }
 
-std::shared_ptr<const Scene> sceneOf(ShapeDescription light, LightSamplerKind kind) {
-    SceneDescription d;
-    d.camera = test::camera({0, 3, 3}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
-    d.materials.push_back(makeDiffuse(Color(0.5f)));
-    d.shapes.push_back(std::move(light));
-    d.render.lightSampler = kind;
-    return Scene::build(std::move(d));
-}
-
-struct Estimate {
-    double mean = 0, variance = 0;
-    int missed = 0;  // samples that found no light
-};
-
-Estimate irradianceFromSamples(const Scene& scene, Vec3 p, Vec3 n, int samples, bool checkDensity) {
-    const Light& light = scene.lights().light(0);
-    Rng rng(7, 0, 0, StreamPurpose::Test);
-    double sum = 0, squares = 0;
-    Estimate e;
-    for (int k = 0; k < samples; ++k) {
-        std::optional<LightSample> ls = light.sampleIncident(p, n, {rng.uniform(), rng.uniform()});
-        if (!ls) {
-            ++e.missed;
-            continue;
-        }
-        const double value = ls->weight.x * std::max(0.0f, dot(ls->wi, n));
-        sum += value, squares += value * value;
-        if (!checkDensity) continue;
-        // The ray along the sample finds the light where the sample lies, and is given the
-        // density it was drawn with (what BSDF samples that find the light weigh against).
-        SurfaceHit hit;
-        if (!scene.intersect(Ray{p, ls->wi}, hit)) {
-            ADD_FAILURE() << "the ray along sample " << k << " found nothing";
-            continue;
-        }
-        EXPECT_NEAR(hit.t, ls->distance, 1e-4f * ls->distance);
-        const float pdf = light.pdfIncidentFrom(p, n, {hit.p, hit.ng, hit.primitive}, ls->wi);
-        EXPECT_NEAR(pdf, ls->pdf, 1e-3f * ls->pdf) << "sample " << k;
-    }
-    e.mean = sum / samples;
-    e.variance = squares / samples - e.mean * e.mean;
-    return e;
-}
-
 TEST(MeshLightTriangles, SamplesByBoundsGiveLambertsIrradianceWithLessVariance) {
     const double le = 3.0;
-    auto spatial = sceneOf(tiles(Color(float(le))), LightSamplerKind::Spatial);
-    auto byArea = sceneOf(tiles(Color(float(le))), LightSamplerKind::Power);
+    auto spatial = Scene::build(test::lightOnly(tiles(Color(float(le))), LightSamplerKind::Spatial));
+    auto byArea = Scene::build(test::lightOnly(tiles(Color(float(le))), LightSamplerKind::Power));
     const Vec3 n(0, 1, 0);
     for (Vec3 p : {Vec3(0, 0, 0), Vec3(0.45f, 0.3f, -0.15f), Vec3(-1.0f, 0.5f, 0.9f)}) {
         SCOPED_TRACE("point " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z));
@@ -98,16 +54,16 @@ TEST(MeshLightTriangles, SamplesByBoundsGiveLambertsIrradianceWithLessVariance) 
             for (int i = 0; i < kTiles; ++i)
                 if (!facesUp(i, j)) exact += test::polygonIrradiance(p, n, tileCorners(i, j), le);
         const int samples = 40000;
-        const Estimate s = irradianceFromSamples(*spatial, p, n, samples, true);
-        const Estimate a = irradianceFromSamples(*byArea, p, n, samples, false);
+        const test::LightSampleEstimate s = test::irradianceFromLightSamples(*spatial, p, n, samples, true);
+        const test::LightSampleEstimate a = test::irradianceFromLightSamples(*byArea, p, n, samples, false);
         std::printf("irradiance %.5f (Lambert %.5f), by area %.5f; variance %.4g against %.4g by area (%.3fx); "
                     "no light found %d against %d\n",
-                    s.mean, exact, a.mean, s.variance, a.variance, s.variance / a.variance, s.missed, a.missed);
+                    s.mean, exact, a.mean, s.variance, a.variance, s.variance / a.variance, s.nothing, a.nothing);
         EXPECT_NEAR(s.mean, exact, 0.01 * exact);
         EXPECT_NEAR(a.mean, exact, 5 * std::sqrt(a.variance / samples));
         // A tile facing up is never picked from below it; by area a third of samples land there.
-        EXPECT_EQ(s.missed, 0);
-        EXPECT_GT(a.missed, samples / 4);
+        EXPECT_EQ(s.nothing, 0);
+        EXPECT_GT(a.nothing, samples / 4);
         EXPECT_LT(s.variance, 0.5 * a.variance);
     }
 }

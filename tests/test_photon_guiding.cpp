@@ -147,11 +147,12 @@ TEST(PhotonGuiding, ImageAgreesWithPlainEmission) {
     };
     const auto [plain, plainHits] = render(false);
     const auto [guided, guidedHits] = render(true);
-    // Measured: 360,535 against 175,883 visible points reached; image means 0.04524 against
-    // 0.04530, regions within 1.2%.
+    // Measured: 360,535 against 175,883 visible points reached; regions within 1.2%.
     EXPECT_GT(guidedHits, 3 * plainHits / 2);
     const float whole = luminance(test::meanOver(plain, 0, 0, 16, 16));
-    EXPECT_NEAR(luminance(test::meanOver(guided, 0, 0, 16, 16)), whole, 0.01 * whole);
+    // Seeds 5, 6 and 7 put the two means 1.3%, 1.3% and under 1% apart (either way): the
+    // noise of 300 passes, which a tighter margin would mistake for a bias.
+    EXPECT_NEAR(luminance(test::meanOver(guided, 0, 0, 16, 16)), whole, 0.02 * whole);
     for (int y = 0; y < 16; y += 8)
         for (int x = 0; x < 16; x += 8) {
             const float region = luminance(test::meanOver(plain, x, y, x + 8, y + 8));

@@ -6,6 +6,7 @@
 // Le(uv) pi A sides (Jensen 2001, 5.1.3).
 #include <algorithm>
 #include <vector>
+#include "math/clipped_triangle.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "math/spherical_triangle.h"
@@ -87,7 +88,7 @@ protected:
 class MeshAreaLight final : public AreaLight {
 public:
     MeshAreaLight(const ShapeDescription& shape, const std::vector<double>& areas, double total, LightSamplerKind kind)
-        : AreaLight(shape, static_cast<float>(total)), triangles_(shape, areas, total) {
+        : AreaLight(shape, static_cast<float>(total)), triangles_(shape, areas, total), triangleArea_(areas.begin(), areas.end()) {
         // A sphere around the vertices: see solidAnglesFrom.
         Vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
         for (size_t t = 0; t < triangles_.size(); ++t)
@@ -126,7 +127,11 @@ public:
     std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
         if (!byBounds_.empty()) return sampleByBounds(p, n, u);
         std::optional<SolidAngles> angles = solidAnglesFrom(p);
-        if (!angles) return AreaLight::sampleIncident(p, n, u);
+        if (!angles) {
+            if (triangles_.size() > EmissionTriangles::kFewTriangles) return AreaLight::sampleIncident(p, n, u);
+            const PartsAbove parts = partsAbove(p, n);
+            return parts.whole ? AreaLight::sampleIncident(p, n, u) : sampleAbove(p, parts, u);
+        }
         if (!(angles->total > 0)) return std::nullopt;
         // The triangle whose share of the solid angle holds u.x, and u.x reused within it.
         const float x = u.x * angles->total;
@@ -147,11 +152,18 @@ public:
 
     float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
         if (!byBounds_.empty()) {
-            if (at.triangle >= triangleArea_.size()) return 0.0f;
-            return solidAngleDensity(p, at, wi, triangleArea_[at.triangle], byBounds_.probability(at.triangle, p, n));
+            if (at.triangle >= triangles_.size() || !(dot(wi, n) > 0)) return 0.0f;
+            return solidAngleDensity(p, at, wi, areaAbove(at.triangle, partAbove(at.triangle, p, n)),
+                                     byBounds_.probability(at.triangle, p, n));
         }
         std::optional<SolidAngles> angles = solidAnglesFrom(p);
-        if (!angles) return AreaLight::pdfIncidentFrom(p, n, at, wi);
+        if (!angles) {
+            if (triangles_.size() > EmissionTriangles::kFewTriangles) return AreaLight::pdfIncidentFrom(p, n, at, wi);
+            if (!(dot(wi, n) > 0)) return 0.0f;
+            const PartsAbove parts = partsAbove(p, n);
+            return parts.whole ? AreaLight::pdfIncidentFrom(p, n, at, wi)
+                               : solidAngleDensity(p, at, wi, parts.total, 1.0f);
+        }
         return angles->total > 0 ? 1.0f / angles->total : 0.0f;
     }
 
@@ -165,14 +177,12 @@ private:
     void pickTrianglesByBounds(const std::vector<double>& areas) {
         std::vector<LightBounds> each(triangles_.size());
         const float emission = average(shape_.meanEmission());
-        triangleArea_.resize(triangles_.size());
         for (size_t t = 0; t < triangles_.size(); ++t) {
             const EmissionTriangles::Triangle& tri = triangles_[t];
-            triangleArea_[t] = static_cast<float>(areas[t]);
             LightBounds& b = each[t];
             b.lo = vmin(tri.p0, vmin(tri.p0 + tri.e1, tri.p0 + tri.e2));
             b.hi = vmax(tri.p0, vmax(tri.p0 + tri.e1, tri.p0 + tri.e2));
-            b.intensity = emission * triangleArea_[t];
+            b.intensity = emission * static_cast<float>(areas[t]);
             b.axis = tri.frame.n;
             b.cosThetaO = 1;
             b.twoSided = sides_ > 1;
@@ -182,11 +192,60 @@ private:
     std::optional<LightSample> sampleByBounds(Vec3 p, Vec3 n, Vec2 u) const {
         const LightTree::Pick pick = byBounds_.pick(u.x, p, n);
         if (!(pick.probability > 0)) return std::nullopt;
-        const EmissionTriangles::Triangle& tri = triangles_[pick.light];
-        Vec2 barycentric;
-        SurfacePoint s{EmissionTriangles::pointOn(tri, {pick.rest, u.y}, barycentric), tri.frame.n, {}};
-        if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(pick.light, barycentric.x, barycentric.y);
-        return sampleTowards(p, s, triangleArea_[pick.light], pick.probability);
+        const ClippedTriangle part = partAbove(pick.light, p, n);
+        if (!(part.area > 0)) return std::nullopt;
+        return sampleTowards(p, pointOn(pick.light, part, {pick.rest, u.y}), areaAbove(pick.light, part),
+                             pick.probability);
+    }
+
+    // Light samples are kept from above the plane through p normal to n (the side of the
+    // receiving surface they light; Light::sampleIncident), so they are drawn uniformly by
+    // area on what of each triangle lies above it: none falls behind the receiver, and the
+    // density is one over the area above. Where a quad light stands on a surface's horizon
+    // (a lamp beside a wall, the coffee maker's lights beside its body) that was up to half
+    // of its samples.
+    ClippedTriangle partAbove(size_t i, Vec3 p, Vec3 n) const {
+        const EmissionTriangles::Triangle& tri = triangles_[i];
+        return clipTriangleAbove(tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2, p, n);
+    }
+    // Where no corner is cut off, the triangle is sampled as it always was: images of scenes
+    // without a light across a surface's horizon are the same to the bit.
+    float areaAbove(size_t i, const ClippedTriangle& part) const { return part.whole ? triangleArea_[i] : part.area; }
+    struct PartsAbove {
+        ClippedTriangle each[EmissionTriangles::kFewTriangles];
+        float total = 0;
+        bool whole = true;
+    };
+    PartsAbove partsAbove(Vec3 p, Vec3 n) const {
+        PartsAbove parts;
+        for (size_t i = 0; i < triangles_.size(); ++i) {
+            parts.each[i] = partAbove(i, p, n);
+            parts.total += parts.each[i].area;
+            parts.whole = parts.whole && parts.each[i].whole;
+        }
+        return parts;
+    }
+    // A mesh of a few triangles: the triangle by its area above, then a point on that part.
+    std::optional<LightSample> sampleAbove(Vec3 p, const PartsAbove& parts, Vec2 u) const {
+        if (!(parts.total > 0)) return std::nullopt;
+        const float x = u.x * parts.total;
+        float below = 0;
+        size_t i = 0;
+        while (i + 1 < triangles_.size() && x >= below + parts.each[i].area) below += parts.each[i++].area;
+        const float uWithin = std::clamp((x - below) / parts.each[i].area, 0.0f, 0.99999994f);
+        return sampleTowards(p, pointOn(i, parts.each[i], {uWithin, u.y}), parts.total, 1.0f);
+    }
+    SurfacePoint pointOn(size_t i, const ClippedTriangle& part, Vec2 u) const {
+        const EmissionTriangles::Triangle& tri = triangles_[i];
+        if (part.whole) {
+            Vec2 barycentric;
+            SurfacePoint s{EmissionTriangles::pointOn(tri, u, barycentric), tri.frame.n, {}};
+            if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(i, barycentric.x, barycentric.y);
+            return s;
+        }
+        SurfacePoint s{part.pointAt(u), tri.frame.n, {}};
+        if (shape_.emissionTexture) s.uv = uvOn(i, s.p);
+        return s;
     }
 
     struct SolidAngles {
@@ -260,7 +319,7 @@ private:
 
     EmissionTriangles triangles_;
     LightTree byBounds_;               // empty where triangles are picked by area
-    std::vector<float> triangleArea_;  // with byBounds_
+    std::vector<float> triangleArea_;
     Vec3 centre_;
     float radius_ = 0;
     LightBounds bounds_;

@@ -10,6 +10,7 @@ namespace {
 template <class F, class M>
 struct BoundsOf {
     F cx, cy, cz;  // the box's centre
+    F hx, hy, hz;  // and half its extent
     F ax, ay, az;  // the cone's axis
     F radius, radius2, intensity, cosThetaO, sinThetaO, cosThetaE;
     M twoSided;
@@ -59,7 +60,14 @@ PHOTON_LANES_INLINE F importanceAt(const BoundsOf<F, M>& b, Vec3 p, Vec3 n) {
         const F cosThetaI = -(fx * n.x + fy * n.y + fz * n.z);
         const F sinThetaI = safeSqrt(1.0f - cosThetaI * cosThetaI);
         const F cosBound = cosOfDifferenceClamped(sinThetaI, cosThetaI, sinThetaB, cosThetaB);
+        // The box's highest corner above the receiver's plane: none above it, no light can
+        // reach the side n faces. The bounding sphere's cone alone lets a light lying below
+        // a floor but within the sphere's radius of it count (half the picks of a wall light
+        // reaching down past the floor went below it, tests/test_area_light_horizon.cpp).
+        const F highest = (b.cx - p.x) * n.x + (b.cy - p.y) * n.y + (b.cz - p.z) * n.z + b.hx * std::fabs(n.x) +
+                          b.hy * std::fabs(n.y) + b.hz * std::fabs(n.z);
         result = select(cosBound > 0.0f, result * cosBound, broadcast<F>(0.0f));
+        result = select(highest > 0.0f, result, broadcast<F>(0.0f));
     }
     // Strictly beyond: a hard-edged spot (thetaE 0, cosThetaE 1) still lights its cone.
     result = select(cosThetaP < b.cosThetaE, broadcast<F>(0.0f), result);
@@ -70,8 +78,13 @@ PHOTON_LANES_INLINE F importanceAt(const BoundsOf<F, M>& b, Vec3 p, Vec3 n) {
 BoundsOf<float, bool> prepared(const LightBounds& b) {
     const Vec3 centre = (b.lo + b.hi) * 0.5f;
     const float radius2 = lengthSquared(b.hi - centre);
-    return {centre.x,    centre.y, centre.z,    b.axis.x,   b.axis.y, b.axis.z, std::sqrt(radius2), radius2,
-            b.intensity, b.cosThetaO, safeSqrt(1.0f - b.cosThetaO * b.cosThetaO), b.cosThetaE, b.twoSided};
+    const Vec3 half = (b.hi - b.lo) * 0.5f;
+    return {centre.x,    centre.y,   centre.z,
+            half.x,      half.y,     half.z,
+            b.axis.x,    b.axis.y,   b.axis.z,
+            std::sqrt(radius2),      radius2,
+            b.intensity, b.cosThetaO, safeSqrt(1.0f - b.cosThetaO * b.cosThetaO),
+            b.cosThetaE, b.twoSided};
 }
 
 PHOTON_LANES_INLINE void importancesLanes(const LightImportances::Columns& c, size_t first, size_t count, Vec3 p, Vec3 n,
@@ -79,7 +92,8 @@ PHOTON_LANES_INLINE void importancesLanes(const LightImportances::Columns& c, si
     for (size_t k = 0; k < count; k += kLanes) {
         const size_t i = first + k;
         auto load = [&](const std::vector<float>& column) { return loadLanes<float, FloatLanes>(column.data() + i); };
-        BoundsOf<FloatLanes, IntLanes> b{load(c.cx),        load(c.cy),        load(c.cz),         load(c.ax),
+        BoundsOf<FloatLanes, IntLanes> b{load(c.cx),        load(c.cy),        load(c.cz),
+                                         load(c.hx),        load(c.hy),        load(c.hz),         load(c.ax),
                                          load(c.ay),        load(c.az),        load(c.radius),     load(c.radius2),
                                          load(c.intensity), load(c.cosThetaO), load(c.sinThetaO), load(c.cosThetaE),
                                          loadLanes<int32_t, IntLanes>(c.twoSided.data() + i)};
@@ -98,7 +112,7 @@ LightImportances::LightImportances(const std::vector<LightBounds>& bounds, const
     : size_(order ? order->size() : bounds.size()) {
     // Room for a last group of eight read whole from any first light.
     const size_t padded = size_ + kLanes;
-    for (std::vector<float>* column : {&c_.cx, &c_.cy, &c_.cz, &c_.ax, &c_.ay, &c_.az, &c_.radius, &c_.radius2,
+    for (std::vector<float>* column : {&c_.cx, &c_.cy, &c_.cz, &c_.hx, &c_.hy, &c_.hz, &c_.ax, &c_.ay, &c_.az, &c_.radius, &c_.radius2,
                                        &c_.intensity, &c_.cosThetaO, &c_.sinThetaO, &c_.cosThetaE})
         column->assign(padded, 0.0f);
     c_.radius2.assign(padded, 1.0f);  // the padding's figure stays finite (0 / 1)
@@ -106,6 +120,7 @@ LightImportances::LightImportances(const std::vector<LightBounds>& bounds, const
     for (size_t i = 0; i < size_; ++i) {
         const BoundsOf<float, bool> b = prepared(bounds[order ? (*order)[i] : i]);
         c_.cx[i] = b.cx, c_.cy[i] = b.cy, c_.cz[i] = b.cz;
+        c_.hx[i] = b.hx, c_.hy[i] = b.hy, c_.hz[i] = b.hz;
         c_.ax[i] = b.ax, c_.ay[i] = b.ay, c_.az[i] = b.az;
         c_.radius[i] = b.radius, c_.radius2[i] = b.radius2, c_.intensity[i] = b.intensity;
         c_.cosThetaO[i] = b.cosThetaO, c_.sinThetaO[i] = b.sinThetaO, c_.cosThetaE[i] = b.cosThetaE;

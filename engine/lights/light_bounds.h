@@ -45,7 +45,7 @@ public:
 
     // The bounds by field, each padded by a group of lanes.
     struct Columns {
-        std::vector<float> cx, cy, cz, ax, ay, az, radius, radius2, intensity, cosThetaO, sinThetaO, cosThetaE;
+        std::vector<float> cx, cy, cz, hx, hy, hz, ax, ay, az, radius, radius2, intensity, cosThetaO, sinThetaO, cosThetaE;
         std::vector<int32_t> twoSided;  // -1 true, 0 false
     };
 

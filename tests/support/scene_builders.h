@@ -20,6 +20,10 @@ SceneDescription pointLightPlane(float rho, float intensity, float height, int r
 // red for u < 0.5 and blue above, whose lookup shows the uv a hit carried.
 SceneDescription hitTestScene();
 
+// One light shape (material 0, grey diffuse) and nothing else, for sampling the light; the
+// camera at (0, 3, 3) looking at the origin plays no part.
+SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind = LightSamplerKind::Spatial);
+
 // Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
 SceneDescription furnace(float rho, float emission, int resolution);
 

@@ -5,6 +5,7 @@
 #include <tbb/task_arena.h>
 #include <photon/render.h>
 #include "integrators/integrator.h"
+#include "math/rng.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
 #include "texture/image_texture.h"
@@ -29,6 +30,46 @@ ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emis
     s.material = material;
     s.emission = emission;
     return s;
+}
+
+SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind) {
+    SceneDescription d;
+    d.camera = camera({0, 3, 3}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
+    d.materials.push_back(makeDiffuse(Color(0.5f)));
+    d.shapes.push_back(std::move(light));
+    d.render.lightSampler = kind;
+    return d;
+}
+
+void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, Vec3 n, const LightSample& ls, int k) {
+    SurfaceHit hit;
+    if (!scene.intersect(Ray{p, ls.wi}, hit)) {
+        ADD_FAILURE() << "the ray along sample " << k << " found nothing";
+        return;
+    }
+    EXPECT_NEAR(hit.t, ls.distance, 1e-4f * ls.distance);
+    const float pdf = light.pdfIncidentFrom(p, n, {hit.p, hit.ng, hit.primitive}, ls.wi);
+    EXPECT_NEAR(pdf, ls.pdf, 1e-3f * ls.pdf) << "sample " << k;
+}
+
+LightSampleEstimate irradianceFromLightSamples(const Scene& scene, Vec3 p, Vec3 n, int samples, bool checkDensity) {
+    const Light& light = scene.lights().light(0);
+    Rng rng(7, 0, 0, StreamPurpose::Test);
+    double sum = 0, squares = 0;
+    LightSampleEstimate e;
+    for (int k = 0; k < samples; ++k) {
+        std::optional<LightSample> ls = light.sampleIncident(p, n, {rng.uniform(), rng.uniform()});
+        const double value = ls ? ls->weight.x * std::max(0.0f, dot(ls->wi, n)) : 0.0;
+        if (!(value > 0)) {
+            ++e.nothing;
+            continue;
+        }
+        sum += value, squares += value * value;
+        if (checkDensity) expectRayFindsLightSample(scene, light, p, n, *ls, k);
+    }
+    e.mean = sum / samples;
+    e.variance = squares / samples - e.mean * e.mean;
+    return e;
 }
 
 ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emission, bool flipNormals) {

@@ -16,6 +16,8 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 #include <functional>
 #include <vector>
 #include <photon/image.h>
+#include "lights/light.h"
+#include "scene/scene.h"
 #include "scene/scene_loader.h"
 
 namespace photon::test {
@@ -77,6 +79,20 @@ void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, con
 // horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's
 // component along the normal of the plane through p and the edge (Arvo 1995).
 double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le);
+
+// The ray from p along a light sample (the k-th) meets the light where the sample lies, and
+// the light gives that point the density the sample was drawn with (what BSDF samples that
+// find the light weigh themselves against).
+void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, Vec3 n, const LightSample& ls, int k);
+
+// The irradiance at p (normal n) from the scene's light 0 by `samples` of its light samples:
+// their mean, variance, and how many brought nothing (no sample, or one from behind p). With
+// checkDensity, expectRayFindsLightSample for each.
+struct LightSampleEstimate {
+    double mean = 0, variance = 0;
+    int nothing = 0;
+};
+LightSampleEstimate irradianceFromLightSamples(const Scene& scene, Vec3 p, Vec3 n, int samples, bool checkDensity);
 
 // Component-wise closeness of two Vec3 (or Color) values, in a gtest test body; Vec3
 // must name photon::Vec3 where it is used.
