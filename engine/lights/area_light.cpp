@@ -232,6 +232,8 @@ private:
         float below = 0;
         size_t i = 0;
         while (i + 1 < triangles_.size() && x >= below + parts.each[i].area) below += parts.each[i++].area;
+        // (x rounded up to the total may pass the last part with area into one without.)
+        if (!(parts.each[i].area > 0)) return std::nullopt;
         const float uWithin = std::clamp((x - below) / parts.each[i].area, 0.0f, 0.99999994f);
         return sampleTowards(p, pointOn(i, parts.each[i], {uWithin, u.y}), parts.total, 1.0f);
     }
