@@ -269,6 +269,13 @@ export function createJobsList({ list, status, filters, onSelect, onConnection }
     return inFlight;
   }
 
+  // A job changed through this page (submitted, finished, cancelled, deleted). The event
+  // stream brings the change to the list by itself; a listing then would only repeat it.
+  // Without a stream, list again now.
+  function changed() {
+    if (!streaming) refresh();
+  }
+
   function setSelected(id) {
     selectedId = id;
     for (const [rowId, row] of rows) row.button.setAttribute('aria-current', rowId === id ? 'true' : 'false');
@@ -286,5 +293,5 @@ export function createJobsList({ list, status, filters, onSelect, onConnection }
   filters.sort.addEventListener('change', () => draw());
 
   subscribe();
-  return { refresh, setSelected };
+  return { refresh, changed, setSelected };
 }

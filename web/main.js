@@ -37,7 +37,7 @@ function start() {
   });
 
   const view = createJobView({
-    onChanged: () => jobs.refresh(),
+    onChanged: () => jobs.changed(),
     onDeleted: (id) => {
       jobs.setSelected(null);
       if (jobIdFromHash() === id) history.replaceState(null, '', window.location.pathname);
@@ -55,7 +55,7 @@ function start() {
       openJob(job.id);
       // On a phone the job view is below the form: bring it up to follow the new job.
       if (window.matchMedia('(max-width: 700px)').matches) $('job-view').scrollIntoView({ block: 'start' });
-      jobs.refresh();
+      jobs.changed();
     },
   });
 
