@@ -186,7 +186,8 @@ fuzz_run() {
 #    (FarmServerTest.ARestartedServer..., .AWholeJob..., FarmRedisRestartTest: about a minute
 #    and a half under ASan; the farm's code paths are run by the other farm tests);
 #  - the slowest convergence comparisons, 330 s of the stage's 1,160 (cold CI, two lanes),
-#    the adaptive photon count's image check, and five more SPPM-against-path-tracer means of
+#    the adaptive photon count's image check, photon guiding in bands against one band (28 s;
+#    PhotonGuiding's and SppmBands' other cases run each), and five more SPPM-against-path-tracer means of
 #    materials and lights (about 120 s of the lanes' time; each material's and light's own
 #    tests run under ASan):
 #    they render the same code paths for hundreds of passes until a statistic settles, and
@@ -209,6 +210,7 @@ san_slow+=':ProjectionMap.SpheresApartUnderDirectionalLightSameImageTenfoldFewer
 san_slow+=':AdaptivePhotons.ImageAgreesWithFixedPhotonsPerPass:AreaLightKinds.SppmAgreesWithThePathTracer'
 san_slow+=':PhotonMap.CornellBoxWithFinalGatherIntoFullEstimatesAgreesWithPathTracer:ConductorSppmVsPath.RoughGoldBlocksAgreeInMean'
 san_slow+=':MixMaterial.SppmAgreesWithThePathTracer:SceneLoaderErrors.MutatedScenesNeverCrash'
+san_slow+=':SppmBands.PhotonGuidingGivesTheOneBandImage'
 san_tests() {
     GTEST_FILTER="-PhotonMap.GlassBoxAgreesWithSppm:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:ConnectionsTest.ASlowloris*:$san_slow" \
     ASAN_OPTIONS="detect_leaks=1:log_path=$san/sanitizer-logs/asan" \
