@@ -66,7 +66,12 @@ json smallScene(int passes, int64_t photonsPerPass, int resolution) {
 json longScene() { return smallScene(50000, 20000, 48); }
 
 int passesLasting(double seconds, int64_t photonsPerPass, int resolution) {
-    Renderer renderer(SceneFile::parseJson(smallScene(4, photonsPerPass, resolution).dump(), PHOTON_SOURCE_DIR));
+    return passesLasting(seconds, smallScene(4, photonsPerPass, resolution));
+}
+
+int passesLasting(double seconds, json scene) {
+    scene["render"]["passes"] = 4;
+    Renderer renderer(SceneFile::parseJson(scene.dump(), PHOTON_SOURCE_DIR));
     CancelToken cancel;
     renderer.renderPass(cancel);  // the first pass also builds caches
     auto start = std::chrono::steady_clock::now();

@@ -27,9 +27,11 @@ json smallScene(int passes = 3, int64_t photonsPerPass = 2000, int resolution = 
 // The same scene with passes enough to run for minutes: for cancel, delete and restart.
 json longScene();
 
-// Passes of smallScene(.., photonsPerPass, resolution) that take about `seconds` on this
-// machine, measured in process (at least 20): a job that must still be running after some
-// time lasts that long however many cores render it.
+// Passes of `scene` (its integrator and settings) that take about `seconds` on this machine,
+// measured in process (at least 20): a job that must still be running after some time lasts
+// that long however many cores render it.
+int passesLasting(double seconds, json scene);
+// The same for smallScene(.., photonsPerPass, resolution).
 int passesLasting(double seconds, int64_t photonsPerPass, int resolution);
 
 // The image the engine renders in-process for the same scene: the server must serve exactly

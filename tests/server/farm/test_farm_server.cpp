@@ -150,8 +150,9 @@ TEST_F(FarmServerTest, AWholeJobMovesToAnotherWorkerWhenItsWorkerDies) {
     std::optional<WorkerProcess> first;
     first.emplace(redis_.address(), "first", PHOTON_WORKER_BINARY, "1");
     startServer({"--redis", redis_.address().url(), "--workers", "0", "--checkpoint-seconds", "1"});
-    json scene = smallScene(passesLasting(8, 3000, 32), 3000, 32);
-    scene["render"]["integrator"] = "path";
+    json scene = smallScene(1, 3000, 32);
+    scene["render"]["integrator"] = "path";  // timed as such: its passes are far shorter than SPPM's
+    scene["render"]["passes"] = passesLasting(8, scene);
     const std::string id = submitOk(scene);
     waitFor(id, [](const json& j) { return j["pass"].get<int>() >= 4; }, std::chrono::seconds(60));
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // a checkpoint on the way
