@@ -165,18 +165,10 @@ TEST(PhotonMap, ResumedRenderIsBitIdenticalToUninterrupted) {
     CancelToken cancel;
     Renderer whole(Scene::build(d));
     whole.run(cancel);
-    std::stringstream saved;
-    {
-        Renderer first(Scene::build(d));
-        for (int i = 0; i < 2; ++i) ASSERT_TRUE(first.renderPass(cancel));
-        first.saveCheckpoint(saved);
-    }
-    Renderer resumed(Scene::build(d));
-    resumed.restoreCheckpoint(saved);
-    EXPECT_EQ(resumed.run(cancel), RenderOutcome::Completed);
-    EXPECT_EQ(resumed.integrator().passesDone(), 4);
-    EXPECT_EQ(resumed.progress().photonsTraced, whole.progress().photonsTraced);
-    EXPECT_TRUE(resumed.snapshot().rgb == whole.snapshot().rgb);
+    const std::unique_ptr<Renderer> resumed = test::resumedAfter(d, 2);
+    EXPECT_EQ(resumed->integrator().passesDone(), 4);
+    EXPECT_EQ(resumed->progress().photonsTraced, whole.progress().photonsTraced);
+    EXPECT_TRUE(resumed->snapshot().rgb == whole.snapshot().rgb);
 }
 
 TEST(PhotonRecord, IsTwentyBytesAndKeepsFluxAndDirection) {

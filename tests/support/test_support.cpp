@@ -1,10 +1,12 @@
 #include "test_support.h"
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <sstream>
 #include "scene_builders.h"
 #include <tbb/task_arena.h>
 #include <photon/render.h>
 #include "integrators/integrator.h"
+#include "film/pixel_errors.h"
 #include "math/rng.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -127,6 +129,36 @@ double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, doubl
         sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
     }
     return le / 2 * std::abs(sum);
+}
+
+double relativeNoiseOfLuminance(const Image& a, const Image& b) {
+    const size_t n = size_t(a.width) * a.height;
+    std::vector<float> ya(n), yb(n), mean(n);
+    for (size_t i = 0; i < n; ++i) {
+        ya[i] = luminance(a.at(int(i % a.width), int(i / a.width)));
+        yb[i] = luminance(b.at(int(i % a.width), int(i / a.width)));
+        mean[i] = 0.5f * (ya[i] + yb[i]);
+    }
+    const std::vector<bool> keep = errorPixels(mean, a.width, a.height);
+    double d2 = 0, sum = 0;
+    size_t kept = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (keep[i]) d2 += double(ya[i] - yb[i]) * (ya[i] - yb[i]), sum += mean[i], ++kept;
+    return std::sqrt(d2 / double(kept) / 2) / (sum / double(kept));
+}
+
+std::unique_ptr<Renderer> resumedAfter(const SceneDescription& d, int passes) {
+    CancelToken cancel;
+    std::stringstream saved;
+    {
+        Renderer first(Scene::build(d));
+        for (int i = 0; i < passes; ++i) EXPECT_TRUE(first.renderPass(cancel));
+        first.saveCheckpoint(saved);
+    }
+    auto resumed = std::make_unique<Renderer>(Scene::build(d));
+    resumed->restoreCheckpoint(saved);
+    EXPECT_EQ(resumed->run(cancel), RenderOutcome::Completed);
+    return resumed;
 }
 
 Image renderImage(SceneDescription d) {

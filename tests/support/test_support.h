@@ -14,8 +14,10 @@ inline std::filesystem::path sourcePath(const std::string& relative) {
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <vector>
 #include <photon/image.h>
+#include <photon/render.h>
 #include "lights/light.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -50,6 +52,10 @@ PathAndSppmMeans renderPathAndSppm(SceneDescription d, int pathPasses, int sppmP
 // The same with at most `threads` oneTBB threads (determinism tests).
 Image renderWithThreads(SceneDescription d, int threads);
 
+// A render of `d` stopped after `passes` passes and checkpointed, then resumed from that
+// checkpoint in a new renderer and run to its end.
+std::unique_ptr<Renderer> resumedAfter(const SceneDescription& d, int passes);
+
 // Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
 inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
     Color sum(0.0f);
@@ -74,6 +80,11 @@ RendersBySampler renderBySampler(const std::function<SceneDescription(LightSampl
 // and a2 (two seeds of one way) is within `tolerance` (relative) of b1 and b2's.
 void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, const Image& b2, int block,
                           float tolerance);
+
+// One render's relative noise from two with different seeds, in luminance: RMS of their
+// difference / sqrt 2 over the mean, with lights seen directly and their neighbours left out
+// (film/pixel_errors.h), whose edge pixels are as noisy for every method.
+double relativeNoiseOfLuminance(const Image& a, const Image& b);
 
 // Irradiance at p (normal n) from a uniform polygon of radiance Le, all of it above p's
 // horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's

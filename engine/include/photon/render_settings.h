@@ -31,6 +31,11 @@ enum class RadiusSchedule { PerPixel, Global };
 // How a shadow ray picks its light (render.light_sampler; engine/lights/direct_light_sampler.h):
 // among finite lights by a bound on what each could bring to the point, or by power alone.
 enum class LightSamplerKind { Spatial, Power };
+// How SPPM's camera path chooses between a material's diffuse base and its other lobes (a
+// coat's or plastic's highlight) at the path's first such choice (render.lobe_choice;
+// docs/sppm.md, "Learned lobe choice"): by the probability each pixel's earlier passes found
+// best, or by the material's albedos alone.
+enum class LobeChoice { Learned, Material };
 
 // Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
 // the form factors and the linear system are computed.
@@ -105,6 +110,7 @@ struct RenderSettings {
     // bands of at most 1 Mpx (docs/sppm.md, "Memory").
     int bands = 0;
     LightSamplerKind lightSampler = LightSamplerKind::Spatial;
+    LobeChoice lobeChoice = LobeChoice::Learned;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -141,6 +147,16 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Visited only when not the default: a checkpoint written before the spatial light
     // sampler existed (by power) goes on with it, both being unbiased.
     if (s.lightSampler != LightSamplerKind::Spatial) visit(s.lightSampler);
+    // Likewise: a checkpoint written before learned lobe choices existed goes on learning
+    // from its resume (both choices are unbiased).
+    if (s.lobeChoice != LobeChoice::Learned) visit(s.lobeChoice);
+}
+
+// Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):
+// with the per-pixel schedule only, whose passes already depend on the passes before them.
+inline bool learnsLobeChoice(const RenderSettings& s) {
+    return s.lobeChoice == LobeChoice::Learned && s.integrator == IntegratorKind::Sppm &&
+           s.radiusSchedule == RadiusSchedule::PerPixel && !s.lightweight;
 }
 
 }  // namespace photon

@@ -46,6 +46,17 @@ struct ViewBuffer : std::streambuf {
         char* begin = const_cast<char*>(bytes.data());  // read only: no put area is set
         setg(begin, begin, begin + bytes.size());
     }
+    // tellg and seekg, for blocks a restore recognises by a tag it reads ahead.
+    pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
+        const off_type from = dir == std::ios_base::beg ? 0 : dir == std::ios_base::cur ? gptr() - eback() : egptr() - eback();
+        const off_type to = from + off;
+        if (to < 0 || to > egptr() - eback()) return pos_type(off_type(-1));
+        setg(eback(), eback() + to, egptr());
+        return pos_type(to);
+    }
+    pos_type seekpos(pos_type pos, std::ios_base::openmode which) override {
+        return seekoff(off_type(pos), std::ios_base::beg, which);
+    }
 };
 // The buffer is a base listed first, so it exists before the stream is handed it.
 class ViewInputStream : private ViewBuffer, public std::istream {

@@ -26,7 +26,8 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)),
-      halves_(global() ? 0 : static_cast<size_t>(width_) * height_) {
+      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)) {
+    if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
         sums_.width = width_, sums_.height = height_;
@@ -71,7 +72,8 @@ void SppmIntegrator::releasePassBuffers() {
 }
 
 size_t SppmIntegrator::bytesPerPixel() const {
-    const size_t state = global() ? 4 * sizeof(int64_t) : sizeof(PixelState) + 2 * sizeof(float);
+    const size_t state = global() ? 4 * sizeof(int64_t)
+                         : sizeof(PixelState) + 2 * sizeof(float) + (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0);
     const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
                         static_cast<size_t>(std::max(height_, 1));
     return state + sizeof(PassResult) + band;
@@ -228,9 +230,13 @@ void SppmIntegrator::buildGrid() {
 void SppmIntegrator::updateStatistics() {
     std::lock_guard<std::mutex> lock(stateMutex_);
     tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
-        halves_.add(passIndex_, i, luminance(passEstimate(i)));
-        PixelState& px = pixels_[i];
         const PassResult& r = results_[i];
+        const float passLuminance = luminance(passEstimate(i));
+        halves_.add(passIndex_, i, passLuminance);
+        if (learnsLobeChoice_ && r.choice.made())
+            lobeChoice_.add(i, r.choice.others(), r.choice.probability(),
+                            std::max(passLuminance - r.choice.directBeforeChoice(), 0.0f));
+        PixelState& px = pixels_[i];
         px.directSum += r.direct;
         if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
         uint32_t m = r.photonCount;
@@ -243,6 +249,7 @@ void SppmIntegrator::updateStatistics() {
         px.n = nNew;
     });
     halves_.countPass(passIndex_);
+    if (learnsLobeChoice_) lobeChoice_.countPass();
     ++passes_;
     emitted_ += photons_;
     if (adaptivePhotons_) adaptPhotons();
@@ -273,6 +280,7 @@ void SppmIntegrator::saveState(std::ostream& out) const {
             writeRaw(out, &emitted_, 1);
             budget_.save(out);
         }
+        if (learnsLobeChoice_) lobeChoice_.save(out);
         halves_.save(out);
     }
 }
@@ -329,8 +337,11 @@ void SppmIntegrator::restoreState(std::istream& in) {
             throw CheckpointError("checkpoint: invalid photon counts");
         budget.restore(in);
     }
+    LearnedLobeChoice lobeChoice = lobeChoice_;
+    if (learnsLobeChoice_) lobeChoice.restore(in, passes);
     std::lock_guard<std::mutex> lock(stateMutex_);
     halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
+    lobeChoice_ = std::move(lobeChoice);
     passes_ = passes;
     pixels_ = std::move(pixels);
     photons_ = photons;

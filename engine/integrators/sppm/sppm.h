@@ -19,6 +19,7 @@
 #include "scene/scene.h"
 #include "integrators/common/shading.h"
 #include "integrators/integrator.h"
+#include "integrators/sppm/lobe_choice.h"
 #include "integrators/sppm/photon_budget.h"
 
 namespace photon {
@@ -82,12 +83,17 @@ private:
     };
 
     // What a pass leaves at each pixel for the statistics once all its bands are done (the
-    // visible points, their discs and the grid hold one band at a time): 32 bytes a pixel.
+    // visible points, their discs and the grid hold one band at a time): 36 bytes a pixel.
     struct PassResult {
         Color direct;              // the camera path's direct light (lightweight: its path-traced light)
         Color flux;                // Phi, the flux its photons brought, in the lights' units
         uint32_t photonCount = 0;  // M
         float radiusSquared = 0;   // the pass's gather radius; 0: no visible point
+        // render.lobe_choice: the branch the path took at its first choice between a
+        // diffuse base and other lobes, and the luminance of the direct light found before
+        // it, in 4 bytes (4 more a pixel would take a 4K frame past 1 GiB): only the learned
+        // probability reads them, which 16 bits of each serve.
+        LobeChoiceRecord choice;
     };
 
     // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
@@ -203,6 +209,9 @@ private:
     // estimate: their spread tracks the noise of the progressive estimate, whose radius
     // shrinks as the global schedule's does (checked against two seeds in the tests).
     PassHalves halves_;
+    // render.lobe_choice "learned" (learnsLobeChoice): each pixel's moments of its choices.
+    bool learnsLobeChoice_;
+    LearnedLobeChoice lobeChoice_;
     // The band under way: its rows [bandFirstRow_, bandFirstRow_ + bandRows_) (fewer in the
     // last band), whose pixel i is at discs_ and visible_ [i - bandOffset_].
     int bandRows_ = 1;

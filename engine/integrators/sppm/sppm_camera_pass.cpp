@@ -48,6 +48,8 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     // the environment is shared between shadow rays and BSDF samples (BounceSampling).
     BounceSampling bounce;
     float pathLength = 0;
+    // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
+    LobeChoiceRecord choice;
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
@@ -67,7 +69,9 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         const unsigned others = m.lobes() & ~kDiffuseLobe;
         const bool splits = m.hasDiffuse() && others && !lastVertex;
         const Vec3 woLocal = sp.frame.toLocal(wo);
-        const float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
+        float pd = splits ? m.diffuseShare(woLocal, sp.inputs) : 1.0f;
+        const bool firstChoice = splits && !choice.made();
+        if (firstChoice && learnsLobeChoice_) pd = 1.0f - lobeChoice_.othersProbability(index, 1.0f - pd);
         // At the last vertex a material with lobes beside the diffuse one also traces one
         // BSDF sample, only for the light it shares with the light sample (as the path tracer
         // does): a narrow highlight found by light samples alone is mostly noise.
@@ -84,6 +88,7 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
             direct += beta * sampleDirectLight(scene, sp, wo, rng, others, next), ++rays;
         float uLobe = rng.uniform();
         Vec2 u{rng.uniform(), rng.uniform()};
+        if (firstChoice) choice = LobeChoiceRecord::of(uLobe >= pd, uLobe >= pd ? 1.0f - pd : pd, luminance(direct));
         if (storesHere) {
             if (uLobe >= pd) {
                 std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.inputs, TransportMode::Radiance, others);
@@ -103,7 +108,9 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-    results_[index].direct = direct;
+    PassResult& result = results_[index];
+    result.direct = direct;
+    result.choice = choice;
     return rays;
 }
 

@@ -86,6 +86,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     results_[index].direct = L;
+    results_[index].choice = {};
     return rays;
 }
 
