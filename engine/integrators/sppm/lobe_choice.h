@@ -1,8 +1,9 @@
 // render.lobe_choice "learned": at the first vertex of a pixel's camera path where the path
 // chooses between a material's diffuse base (stop, store the visible point) and its other
-// lobes (follow the coat's or plastic's highlight), the probability of following the others
-// comes from what that choice brought in the pixel's earlier passes, not from the
-// material's albedos alone.
+// lobes (follow the coat's or plastic's highlight), or between a smooth dielectric's
+// reflection ("others") and refraction, the probability of the others comes from what that
+// choice brought in the pixel's earlier passes, not from the material's albedos or the
+// Fresnel factor alone.
 //
 // Choosing branch b with probability q_b and weighting what it brings, C_b, by 1 / q_b has
 // second moment sum_b M_b / q_b with M_b = E[C_b^2]; minimised under sum_b q_b = 1 (one

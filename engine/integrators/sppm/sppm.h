@@ -139,6 +139,7 @@ private:
     int tracePixelLightweight(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
+    static float smoothDielectricReflectance(const Material& m, Vec3 woLocal);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
     // weighted against that vertex's light sample.
     void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,

@@ -4,6 +4,7 @@
 #include "integrators/common/direct_lighting.h"
 #include "integrators/common/pixel_loop.h"
 #include "integrators/sppm/sppm.h"
+#include "materials/fresnel.h"
 #include <numeric>
 
 namespace photon {
@@ -102,7 +103,21 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
             if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct), ++rays;
             break;
         }
-        std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
+        std::optional<BSDFSample> s;
+        const float reflectance = learnsLobeChoice_ && !choice.made() ? smoothDielectricReflectance(m, woLocal) : 0.0f;
+        if (reflectance > 0 && reflectance < 1) {
+            // The first choice between a smooth dielectric's reflection and refraction is
+            // learned as a coat's is (lobe_choice.h): reflection with probability q instead
+            // of F, so the sample's weight F / q or (1 - F) / (1 - q) (its pdf being F or 1 - F).
+            const float q = lobeChoice_.othersProbability(index, reflectance);
+            const bool reflects = uLobe < q;
+            s = m.sample(woLocal, reflects ? 0.5f * reflectance : 0.5f * (1.0f + reflectance), u, sp.inputs,
+                         TransportMode::Radiance);
+            if (s) s->weight *= s->pdf / (reflects ? q : 1.0f - q);
+            choice = LobeChoiceRecord::of(reflects, reflects ? q : 1.0f - q, luminance(direct));
+        } else {
+            s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
+        }
         if (!s) break;
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
@@ -112,6 +127,12 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     result.direct = direct;
     result.choice = choice;
     return rays;
+}
+
+// F at a smooth dielectric boundary seen along woLocal; 0 for any other material.
+float SppmIntegrator::smoothDielectricReflectance(const Material& m, Vec3 woLocal) {
+    const std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular();
+    return smooth && smooth->ior > 0 ? fresnelDielectric(woLocal.z, smooth->ior) : 0.0f;
 }
 
 void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
