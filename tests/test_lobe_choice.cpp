@@ -90,10 +90,12 @@ TEST(LearnedLobeChoice, CheckpointBlockRoundTripsAndIsOptional) {
     EXPECT_THROW(restored.restore(again, 9), CheckpointError);
 }
 
-// An example scene at 96 x 96 with fixed photon counts.
+// An example scene at 96 x 96 with fixed photon counts and one camera path a pixel a pass
+// (more would lower the noise of both choices).
 SceneDescription exampleWith(const char* name, LobeChoice choice, uint64_t seed, int passes) {
     SceneDescription d = test::exampleScene(name, 96, passes, 20'000, seed);
     d.render.adaptivePhotons = false;
+    d.render.adaptiveCameraPaths = false;
     d.render.maxDepth = 64;
     d.render.lobeChoice = choice;
     return d;

@@ -22,6 +22,7 @@ struct PassStats {
     int64_t photonSegments = 0;  // photon rays cast that hit something
     int64_t photonMisses = 0;    // emitted photons whose first ray hit nothing (photon map)
     int64_t cameraRays = 0;      // SPPM: rays its camera paths cast (vertices and light samples); else a pass's samples
+    int64_t cameraPaths = 0;     // SPPM: camera paths traced (a pixel may trace several)
     int64_t gridEntries = 0;     // visible-point entries in the hash grid (SPPM)
     int64_t gatherCandidates = 0, gatherHits = 0;  // visible points tested and accepted by photons
     double cameraMs = 0, gridMs = 0, photonMs = 0, updateMs = 0;

@@ -111,6 +111,10 @@ struct RenderSettings {
     int bands = 0;
     LightSamplerKind lightSampler = LightSamplerKind::Spatial;
     LobeChoice lobeChoice = LobeChoice::Learned;
+    // SPPM with the per-pixel schedule: each pixel traces as many camera paths a pass as its
+    // camera-side variance and the pass's costs make worth it, the first storing the visible
+    // point (docs/sppm.md, "Camera paths per pass").
+    bool adaptiveCameraPaths = true;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -150,12 +154,22 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Likewise: a checkpoint written before learned lobe choices existed goes on learning
     // from its resume (both choices are unbiased).
     if (s.lobeChoice != LobeChoice::Learned) visit(s.lobeChoice);
+    // Likewise: a checkpoint written before camera paths were counted per pixel goes on
+    // with them (one path a pixel a pass so far; AdaptiveCameraPaths::restore).
+    if (!s.adaptiveCameraPaths) visit(s.adaptiveCameraPaths);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):
 // with the per-pixel schedule only, whose passes already depend on the passes before them.
 inline bool learnsLobeChoice(const RenderSettings& s) {
     return s.lobeChoice == LobeChoice::Learned && s.integrator == IntegratorKind::Sppm &&
+           s.radiusSchedule == RadiusSchedule::PerPixel && !s.lightweight;
+}
+
+// Whether SPPM's pixels trace as many camera paths a pass as pays (adaptiveCameraPaths):
+// with the per-pixel schedule only, as the counts come from earlier passes.
+inline bool adaptsCameraPaths(const RenderSettings& s) {
+    return s.adaptiveCameraPaths && s.integrator == IntegratorKind::Sppm &&
            s.radiusSchedule == RadiusSchedule::PerPixel && !s.lightweight;
 }
 

@@ -93,6 +93,15 @@ void requireEndOfCheckpoint(std::istream& in) {
     if (in.peek() != std::char_traits<char>::eof()) throw CheckpointError("checkpoint: unexpected bytes at the end");
 }
 
+bool readBlockTag(std::istream& in, uint64_t tag) {
+    const std::istream::pos_type start = in.tellg();
+    uint64_t read = 0;
+    if (in.read(reinterpret_cast<char*>(&read), sizeof read) && read == tag) return true;
+    in.clear();
+    in.seekg(start);
+    return false;
+}
+
 int readPassCount(std::istream& in) {
     int passes = 0;
     readRaw(in, &passes, 1);

@@ -75,6 +75,9 @@ void readRaw(std::istream& in, T* data, size_t count) {
     if (!in) throw CheckpointError("checkpoint: truncated");
 }
 
+// Optional blocks (written by later builds than some checkpoints) start with a tag: true,
+// past the tag, if the stream is at `tag`; else false, the stream where it was.
+bool readBlockTag(std::istream& in, uint64_t tag);
 // Reads a count of finished passes, which cannot be negative.
 int readPassCount(std::istream& in);
 // Throws CheckpointError unless everything has been read: restores call it before they

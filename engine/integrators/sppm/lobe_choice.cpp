@@ -57,13 +57,9 @@ void LearnedLobeChoice::save(std::ostream& out) const {
 }
 
 void LearnedLobeChoice::restore(std::istream& in, int64_t renderPasses) {
-    const std::istream::pos_type start = in.tellg();
-    uint64_t tag = 0;
-    if (!in.read(reinterpret_cast<char*>(&tag), sizeof tag) || tag != kBlockTag) {
+    if (!readBlockTag(in, kBlockTag)) {
         // Written before the block existed: what follows is another block's. Learning
         // starts anew.
-        in.clear();
-        in.seekg(start);
         passes_ = 0;
         std::fill(moments_.begin(), moments_.end(), Moments{});
         return;

@@ -26,8 +26,10 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)),
-      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)) {
+      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)),
+      adaptsCameraPaths_(adaptsCameraPaths(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
+    if (adaptsCameraPaths_) cameraPaths_ = AdaptiveCameraPaths(width_, height_);
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
         sums_.width = width_, sums_.height = height_;
@@ -73,7 +75,9 @@ void SppmIntegrator::releasePassBuffers() {
 
 size_t SppmIntegrator::bytesPerPixel() const {
     const size_t state = global() ? 4 * sizeof(int64_t)
-                         : sizeof(PixelState) + 2 * sizeof(float) + (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0);
+                         : sizeof(PixelState) + 2 * sizeof(float) +
+                               (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0) +
+                               (adaptsCameraPaths_ ? AdaptiveCameraPaths::kBytesPerPixel : 0);
     const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
                         static_cast<size_t>(std::max(height_, 1));
     return state + sizeof(PassResult) + band;
@@ -236,8 +240,9 @@ void SppmIntegrator::updateStatistics() {
         if (learnsLobeChoice_ && r.choice.made())
             lobeChoice_.add(i, r.choice.others(), r.choice.probability(),
                             std::max(passLuminance - r.choice.directBeforeChoice(), 0.0f));
+        if (adaptsCameraPaths_) cameraPaths_.add(i, r.paths, r.squares);
         PixelState& px = pixels_[i];
-        px.directSum += r.direct;
+        px.directSum += r.direct * r.paths;  // the pass's direct light is its paths' mean
         if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
         uint32_t m = r.photonCount;
         if (m == 0 || px.r2 == 0) return;
@@ -252,7 +257,7 @@ void SppmIntegrator::updateStatistics() {
     if (learnsLobeChoice_) lobeChoice_.countPass();
     ++passes_;
     emitted_ += photons_;
-    if (adaptivePhotons_) adaptPhotons();
+    if (adaptivePhotons_ || adaptsCameraPaths_) adaptToError();
     double radiusSum = 0;
     size_t withRadius = 0;
     for (const PixelState& px : pixels_)
@@ -281,6 +286,7 @@ void SppmIntegrator::saveState(std::ostream& out) const {
             budget_.save(out);
         }
         if (learnsLobeChoice_) lobeChoice_.save(out);
+        if (adaptsCameraPaths_) cameraPaths_.save(out);
         halves_.save(out);
     }
 }
@@ -339,9 +345,13 @@ void SppmIntegrator::restoreState(std::istream& in) {
     }
     LearnedLobeChoice lobeChoice = lobeChoice_;
     if (learnsLobeChoice_) lobeChoice.restore(in, passes);
+    AdaptiveCameraPaths cameraPaths = cameraPaths_;
+    if (adaptsCameraPaths_)
+        cameraPaths.restore(in, passes, [&](size_t i) { return luminance(pixels[i].directSum); });
     std::lock_guard<std::mutex> lock(stateMutex_);
     halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     lobeChoice_ = std::move(lobeChoice);
+    cameraPaths_ = std::move(cameraPaths);
     passes_ = passes;
     pixels_ = std::move(pixels);
     photons_ = photons;
@@ -382,12 +392,13 @@ std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
     return e;
 }
 
-// Knaus & Zwicker 2011: the mean of the passes' direct light plus tau / (pi R^2 N_emitted).
+// Knaus & Zwicker 2011: the mean of the passes' direct light (over all camera paths, where
+// pixels trace several a pass) plus tau / (pi R^2 N_emitted).
 Color SppmIntegrator::radianceLocked(size_t i) const {
     if (passes_ == 0) return Color(0.0f);
     const double emitted = static_cast<double>(emitted_);
     const PixelState& px = pixels_[i];
-    Color L = px.directSum * (1.0f / static_cast<float>(passes_));
+    Color L = px.directSum * (1.0f / directPaths(i));
     if (px.r2 > 0) L += px.tau * static_cast<float>(1.0 / (kPi * px.r2 * emitted));
     return L;
 }

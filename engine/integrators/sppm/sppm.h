@@ -19,6 +19,7 @@
 #include "scene/scene.h"
 #include "integrators/common/shading.h"
 #include "integrators/integrator.h"
+#include "integrators/sppm/camera_paths.h"
 #include "integrators/sppm/lobe_choice.h"
 #include "integrators/sppm/photon_budget.h"
 
@@ -83,7 +84,7 @@ private:
     };
 
     // What a pass leaves at each pixel for the statistics once all its bands are done (the
-    // visible points, their discs and the grid hold one band at a time): 36 bytes a pixel.
+    // visible points, their discs and the grid hold one band at a time): 44 bytes a pixel.
     struct PassResult {
         Color direct;              // the camera path's direct light (lightweight: its path-traced light)
         Color flux;                // Phi, the flux its photons brought, in the lights' units
@@ -94,6 +95,9 @@ private:
         // it, in 4 bytes (4 more a pixel would take a 4K frame past 1 GiB): only the learned
         // probability reads them, which 16 bits of each serve.
         LobeChoiceRecord choice;
+        // render.adaptive_camera_paths: the camera paths the pixel traced in the pass (direct
+        // being their mean) and the sum of their luminances squared.
+        float paths = 1, squares = 0;
     };
 
     // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
@@ -132,8 +136,18 @@ private:
     void cameraPass(const CancelToken& cancel);
     // Clears the pixel's visible point and returns its jittered camera ray.
     Ray startPixel(size_t index, Rng& rng);
+    // Pixel `index`'s jittered camera ray.
+    Ray cameraRay(size_t index, Rng& rng) const;
+    // What a pixel's camera paths did in a pass.
+    struct CameraWork {
+        int rays = 0, paths = 0;
+    };
     // Each returns the rays it cast (render.adaptive_photons' measure of the camera's cost).
-    int tracePixel(size_t index, Rng& rng);
+    CameraWork tracePixel(size_t index, Rng& rng);
+    // One camera path from `ray`: adds the light it finds to `direct` and its first lobe
+    // choice to `choice`; the first path of a pixel's pass (`first`) stores its visible
+    // point. Returns the rays it cast.
+    int tracePath(size_t index, Ray ray, Rng& rng, bool first, Color& direct, LobeChoiceRecord& choice);
     // render.lightweight's camera path: a path-traced sample that leaves out the caustics
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
     int tracePixelLightweight(size_t index, Rng& rng);
@@ -178,9 +192,10 @@ private:
     class GatheringSink;
     void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
     void updateStatistics();
-    // render.adaptive_photons, after a pass's statistics: what the pass measured goes to the
-    // budget, which at its decisions sets the photons of the passes that follow.
-    void adaptPhotons();
+    // After a pass's statistics: with render.adaptive_photons what the pass measured goes to
+    // the budget, which at its decisions sets the photons of the passes that follow; with
+    // render.adaptive_camera_paths the camera paths' scale is set at the same decisions.
+    void adaptToError();
     // The mean over pixels of p^2 / M, the variance this pass's photons brought given its
     // camera paths (photon_budget.h), summed in a fixed order.
     double photonVarianceOfPass() const;
@@ -213,6 +228,13 @@ private:
     // render.lobe_choice "learned" (learnsLobeChoice): each pixel's moments of its choices.
     bool learnsLobeChoice_;
     LearnedLobeChoice lobeChoice_;
+    // render.adaptive_camera_paths (adaptsCameraPaths): the camera paths per pixel and pass.
+    bool adaptsCameraPaths_;
+    AdaptiveCameraPaths cameraPaths_;
+    // The camera paths pixel i's direct light sum was made of.
+    float directPaths(size_t i) const {
+        return adaptsCameraPaths_ ? cameraPaths_.pathsTraced(i) : static_cast<float>(passes_);
+    }
     // The band under way: its rows [bandFirstRow_, bandFirstRow_ + bandRows_) (fewer in the
     // last band), whose pixel i is at discs_ and visible_ [i - bandOffset_].
     int bandRows_ = 1;

@@ -1,5 +1,7 @@
-// render.adaptive_photons: each pass's measurements go to the photon budget
-// (photon_budget.h), which at its decisions sets the photons of the passes that follow.
+// render.adaptive_photons and render.adaptive_camera_paths: each pass's measurements go to
+// the photon budget (photon_budget.h), which at its decisions sets the photons of the
+// passes that follow, and at the same decisions the camera paths' scale is set
+// (camera_paths.h).
 #include "integrators/sppm/sppm.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -25,22 +27,31 @@ double SppmIntegrator::photonVarianceOfPass() const {
     return results_.empty() ? 0.0 : sum / static_cast<double>(results_.size());
 }
 
-void SppmIntegrator::adaptPhotons() {
-    if (!tracesPhotons_) return;  // lightweight photon mapping in a scene without delta lobes
-    PhotonBudget::Pass pass;
-    pass.photons = photons_;
-    pass.photonVariance = photonVarianceOfPass();
-    pass.cameraCost = static_cast<double>(stats_.cameraRays) +
-                      PhotonBudget::kGridEntryCost * static_cast<double>(stats_.gridEntries);
-    pass.photonCost = static_cast<double>(stats_.photonRays) +
-                      PhotonBudget::kCandidateCost * static_cast<double>(stats_.gatherCandidates);
-    budget_.add(pass);
+void SppmIntegrator::adaptToError() {
+    // The pass's costs in camera rays: its camera paths and grid, and its photons.
+    const double cameraCost = static_cast<double>(stats_.cameraRays) +
+                              PhotonBudget::kGridEntryCost * static_cast<double>(stats_.gridEntries);
+    const double photonCost = static_cast<double>(stats_.photonRays) +
+                              PhotonBudget::kCandidateCost * static_cast<double>(stats_.gatherCandidates);
+    // Lightweight photon mapping in a scene without delta lobes traces no photons.
+    const bool budgetsPhotons = adaptivePhotons_ && tracesPhotons_;
+    if (budgetsPhotons) budget_.add({photons_, photonVarianceOfPass(), cameraCost, photonCost});
     if (!PhotonBudget::decidesAfter(passes_)) return;
     // The halves' variance of the render's mean, times the passes: a pass's own variance.
     const std::optional<PixelErrors> errors =
         halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, 0.5);
-    if (!errors) return;  // resumed from a checkpoint without halves: the count stays
-    photons_ = budget_.next(photons_, errorMoments(*errors).variance * static_cast<double>(passes_));
+    if (!errors) return;  // resumed from a checkpoint without halves: the counts stay
+    const double passVariance = errorMoments(*errors).variance * static_cast<double>(passes_);
+    if (budgetsPhotons) photons_ = budget_.next(photons_, passVariance);
+    if (adaptsCameraPaths_ && stats_.cameraPaths > 0) {
+        // In rays alone, a band's photon rays once: the counts then do not depend on
+        // render.bands, and the image is the same in any number of bands (the grid's
+        // entries and the gather's candidates, which do, cost a fifth of the rays or less).
+        const double rays = static_cast<double>(stats_.cameraRays) +
+                            static_cast<double>(stats_.photonRays) / static_cast<double>(bandCount());
+        cameraPaths_.decide(rays, static_cast<double>(stats_.cameraRays) / static_cast<double>(stats_.cameraPaths),
+                            passVariance * static_cast<double>(results_.size()));
+    }
 }
 
 }  // namespace photon

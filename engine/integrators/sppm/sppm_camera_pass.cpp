@@ -1,6 +1,8 @@
-// SPPM camera pass: one jittered path per pixel, followed through delta bounces to the
+// SPPM camera pass: a jittered path per pixel, followed through delta bounces to the
 // first vertex with a diffuse lobe, where the visible point is stored. Direct light is
-// gathered on the way by shadow rays (or left to photons, per render.direct).
+// gathered on the way by shadow rays (or left to photons, per render.direct). With
+// render.adaptive_camera_paths a pixel may trace more paths, for their direct light alone
+// (camera_paths.h).
 #include "integrators/common/direct_lighting.h"
 #include "integrators/common/pixel_loop.h"
 #include "integrators/sppm/sppm.h"
@@ -13,12 +15,15 @@ void SppmIntegrator::cameraPass(const CancelToken& cancel) {
     const RngStream stream(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Camera);
     // Counted by row: each row is one thread's, so no thread-local look-up per pixel.
     const int endRow = std::min(height_, bandFirstRow_ + bandRows_);
-    std::vector<int64_t> rowRays(static_cast<size_t>(endRow - bandFirstRow_), 0);
+    std::vector<int64_t> rowRays(static_cast<size_t>(endRow - bandFirstRow_), 0), rowPaths(rowRays.size(), 0);
     forEachPixelOfRows(width_, bandFirstRow_, endRow, stream, cancel, [&](int, int y, size_t index, Rng& rng) {
-        rowRays[static_cast<size_t>(y - bandFirstRow_)] +=
-            settings_.lightweight ? tracePixelLightweight(index, rng) : tracePixel(index, rng);
+        const CameraWork work =
+            settings_.lightweight ? CameraWork{tracePixelLightweight(index, rng), 1} : tracePixel(index, rng);
+        rowRays[static_cast<size_t>(y - bandFirstRow_)] += work.rays;
+        rowPaths[static_cast<size_t>(y - bandFirstRow_)] += work.paths;
     });
     stats_.cameraRays += std::accumulate(rowRays.begin(), rowRays.end(), int64_t(0));
+    stats_.cameraPaths += std::accumulate(rowPaths.begin(), rowPaths.end(), int64_t(0));
 }
 
 // Starting radius from the pixel's footprint at its first visible point: the footprint
@@ -35,22 +40,62 @@ float SppmIntegrator::autoRadius(float pathLength) const {
 Ray SppmIntegrator::startPixel(size_t index, Rng& rng) {
     discs_[index - bandOffset_] = GatherDisc{};
     visible_[index - bandOffset_] = VisiblePoint{};
+    return cameraRay(index, rng);
+}
+
+Ray SppmIntegrator::cameraRay(size_t index, Rng& rng) const {
     float px = static_cast<float>(index % width_) + rng.uniform();
     float py = static_cast<float>(index / width_) + rng.uniform();
     return scene_->camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
 }
 
-int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
+SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
+    Color direct(0.0f);
+    LobeChoiceRecord choice;
+    CameraWork work{tracePath(index, startPixel(index, rng), rng, true, direct, choice), 1};
+    float squares = luminance(direct) * luminance(direct);
+    const float paths =
+        adaptsCameraPaths_
+            ? cameraPaths_.pathsAt(index, [&](size_t j) { return luminance(pixels_[j].directSum); })
+            : 1.0f;
+    if (paths > 1) {
+        // A whole number of paths of mean `paths` (the random draw only where it is not one,
+        // so that pixels that trace one path draw what they always did).
+        const float whole = std::floor(paths);
+        work.paths = static_cast<int>(whole) + (rng.uniform() < paths - whole ? 1 : 0);
+        const Color first = direct;
+        for (int k = 1; k < work.paths; ++k) {
+            Color more(0.0f);
+            LobeChoiceRecord unused;
+            work.rays += tracePath(index, cameraRay(index, rng), rng, false, more, unused);
+            direct += more;
+            squares += luminance(more) * luminance(more);
+        }
+        direct /= static_cast<float>(work.paths);
+        // The lobe choice learns from the pass's luminance less the light found before the
+        // choice (lobe_choice.h): what the first path's choice brought stays so with the
+        // paths' mean in the pass.
+        if (choice.made())
+            choice = LobeChoiceRecord::of(choice.others(), choice.probability(),
+                                          choice.directBeforeChoice() + luminance(direct) - luminance(first));
+    }
+    PassResult& result = results_[index];
+    result.direct = direct;
+    result.choice = choice;
+    result.paths = static_cast<float>(work.paths);
+    result.squares = squares;
+    return work;
+}
+
+int SppmIntegrator::tracePath(size_t index, Ray ray, Rng& rng, bool first, Color& direct, LobeChoiceRecord& choice) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
-    Color direct(0.0f), beta(1.0f);
-    Ray ray = startPixel(index, rng);
+    Color beta(1.0f);
     // Area light is counted where no shadow ray could have found it (after delta bounces);
     // the environment is shared between shadow rays and BSDF samples (BounceSampling).
     BounceSampling bounce;
     float pathLength = 0;
     // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
-    LobeChoiceRecord choice;
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
@@ -99,7 +144,7 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                 ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
                 continue;
             }
-            storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
+            if (first) storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
             if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct), ++rays;
             break;
         }
@@ -123,9 +168,6 @@ int SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-    PassResult& result = results_[index];
-    result.direct = direct;
-    result.choice = choice;
     return rays;
 }
 

@@ -87,6 +87,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     }
     results_[index].direct = L;
     results_[index].choice = {};
+    results_[index].paths = 1;
     return rays;
 }
 
