@@ -1,8 +1,8 @@
 #include "integrators/sppm/lobe_choice.h"
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include "integrators/common/checkpoint.h"
+#include "math/bfloat16.h"
 
 namespace photon {
 
@@ -18,17 +18,10 @@ constexpr float kMinProbability = 0.05f, kMaxProbability = 0.95f;
 LobeChoiceRecord LobeChoiceRecord::of(bool others, float probability, float directBefore) {
     // At least 1 in 15 bits: a choice made is never read as none.
     const auto q = static_cast<uint16_t>(std::clamp(std::lround(probability * 32767.0f), 1l, 32767l));
-    uint32_t bits;
-    std::memcpy(&bits, &directBefore, sizeof bits);
-    return {static_cast<uint16_t>(q | (others ? 0x8000u : 0u)), static_cast<uint16_t>(bits >> 16)};
+    return {static_cast<uint16_t>(q | (others ? 0x8000u : 0u)), toBfloat16(directBefore)};
 }
 
-float LobeChoiceRecord::directBeforeChoice() const {
-    const uint32_t bits = static_cast<uint32_t>(directBefore) << 16;
-    float v;
-    std::memcpy(&v, &bits, sizeof v);
-    return v;
-}
+float LobeChoiceRecord::directBeforeChoice() const { return fromBfloat16(directBefore); }
 
 float LearnedLobeChoice::othersProbability(size_t pixel, float materialOthers) const {
     if (passes_ < kWarmUpPasses || !(materialOthers > 0 && materialOthers < 1)) return materialOthers;

@@ -145,7 +145,7 @@ void SppmIntegrator::addPasses(const PassSums& batch) {
 // One pass's estimate per pixel: the direct light its camera path found plus the photons'
 // flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
 Color SppmIntegrator::passEstimate(size_t i) const {
-    Color L = results_[i].direct;
+    Color L = results_[i].direct.color();
     if (std::optional<Color> photons = passPhotonEstimate(i)) L += *photons;
     return L;
 }
@@ -155,9 +155,10 @@ std::optional<Color> SppmIntegrator::passPhotonEstimate(size_t i) const {
     if (r.photonCount == 0 || !(r.radiusSquared > 0)) return std::nullopt;
     const double emitted = static_cast<double>(photons_);
     const double toRadiance = 1.0 / (kPi * static_cast<double>(r.radiusSquared) * emitted);
-    return Color(static_cast<float>(static_cast<double>(r.flux[0]) * toRadiance),
-                 static_cast<float>(static_cast<double>(r.flux[1]) * toRadiance),
-                 static_cast<float>(static_cast<double>(r.flux[2]) * toRadiance));
+    const Color flux = r.flux.color();
+    return Color(static_cast<float>(static_cast<double>(flux[0]) * toRadiance),
+                 static_cast<float>(static_cast<double>(flux[1]) * toRadiance),
+                 static_cast<float>(static_cast<double>(flux[2]) * toRadiance));
 }
 
 void SppmIntegrator::addPassEstimate(PassSums& sums) const {
@@ -213,12 +214,16 @@ bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons) {
 
 void SppmIntegrator::collectBand() {
     const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
+    // The flux's rounding, from a stream of its own per pixel and pass: the same wherever
+    // and in whatever band the pixel is.
+    const RngStream rounding(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Rounding);
     tbb::parallel_for(size_t(0), bandPixels(), [&](size_t k) {
         const VisiblePoint& vp = visible_[k];
         PassResult& r = results_[bandOffset_ + k];
-        r.flux = Color(static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
-                       static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
-                       static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
+        const Color flux(static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
+                         static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
+                         static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
+        r.flux = SharedExponentColor::of(flux, Rng(rounding, bandOffset_ + k).uniform());
         r.photonCount = vp.photonCount;
         r.radiusSquared = discs_[k].radiusSquared;
     });
@@ -240,13 +245,13 @@ void SppmIntegrator::updateStatistics() {
         if (learnsLobeChoice_ && r.choice.made())
             lobeChoice_.add(i, r.choice.others(), r.choice.probability(),
                             std::max(passLuminance - r.choice.directBeforeChoice(), 0.0f));
-        if (adaptsCameraPaths_) cameraPaths_.add(i, r.paths, r.squares);
+        if (adaptsCameraPaths_) cameraPaths_.add(i, static_cast<float>(r.paths()), fromBfloat16(r.squares));
         PixelState& px = pixels_[i];
-        px.directSum += r.direct * r.paths;  // the pass's direct light is its paths' mean
+        px.directSum += r.direct.color() * static_cast<float>(r.paths());  // the pass's is its paths' mean
         if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
         uint32_t m = r.photonCount;
         if (m == 0 || px.r2 == 0) return;
-        const Color phi = r.flux;
+        const Color phi = r.flux.color();
         float nNew = px.n + settings_.alpha * static_cast<float>(m);
         float shrink = nNew / (px.n + static_cast<float>(m));
         px.tau = (px.tau + phi) * shrink;

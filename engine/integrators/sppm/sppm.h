@@ -21,6 +21,8 @@
 #include "integrators/integrator.h"
 #include "integrators/sppm/camera_paths.h"
 #include "integrators/sppm/lobe_choice.h"
+#include "math/bfloat16.h"
+#include "math/shared_exponent_color.h"
 #include "integrators/sppm/photon_budget.h"
 
 namespace photon {
@@ -41,7 +43,7 @@ public:
     void addPasses(const PassSums& sums) override;
     std::optional<PixelErrors> pixelErrors() const override;
     // When a render stops: the grid, the band's visible points and discs, and the pass
-    // results (32 bytes a pixel and more), which a next pass allocates again.
+    // results (24 bytes a pixel), which a next pass allocates again.
     void releasePassBuffers() override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
@@ -84,21 +86,26 @@ private:
     };
 
     // What a pass leaves at each pixel for the statistics once all its bands are done (the
-    // visible points, their discs and the grid hold one band at a time): 44 bytes a pixel.
+    // visible points, their discs and the grid hold one band at a time): 24 bytes a pixel,
+    // the colours in 4 bytes each (dithered, so that the sums over passes keep no rounding
+    // bias: math/shared_exponent_color.h), for the whole frame.
     struct PassResult {
-        Color direct;              // the camera path's direct light (lightweight: its path-traced light)
-        Color flux;                // Phi, the flux its photons brought, in the lights' units
+        // The camera paths' direct light (their mean; lightweight: the path-traced light).
+        SharedExponentColor direct;
+        SharedExponentColor flux;  // Phi, the flux its photons brought, in the lights' units
         uint32_t photonCount = 0;  // M
         float radiusSquared = 0;   // the pass's gather radius; 0: no visible point
         // render.lobe_choice: the branch the path took at its first choice between a
         // diffuse base and other lobes, and the luminance of the direct light found before
-        // it, in 4 bytes (4 more a pixel would take a 4K frame past 1 GiB): only the learned
-        // probability reads them, which 16 bits of each serve.
+        // it, in 4 bytes: only the learned probability reads them, which 16 bits of each serve.
         LobeChoiceRecord choice;
-        // render.adaptive_camera_paths: the camera paths the pixel traced in the pass (direct
-        // being their mean) and the sum of their luminances squared.
-        float paths = 1, squares = 0;
+        // render.adaptive_camera_paths: the sum of the camera paths' luminances squared
+        // (bfloat16, for the variance alone), and the paths beyond the first.
+        uint16_t squares = 0;
+        uint8_t extraPaths = 0;
+        int paths() const { return extraPaths + 1; }
     };
+    static_assert(sizeof(PassResult) == 24);
 
     // Fixed-point scale for the photon flux sums: 2^32 units per unit of normalised flux
     // (photons start with a mean flux of 1), so sums are exact integers whatever the order

@@ -53,7 +53,7 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     Color direct(0.0f);
     LobeChoiceRecord choice;
     CameraWork work{tracePath(index, startPixel(index, rng), rng, true, direct, choice), 1};
-    float squares = luminance(direct) * luminance(direct);
+    double squares = luminance(direct) * luminance(direct);
     const float paths =
         adaptsCameraPaths_
             ? cameraPaths_.pathsAt(index, [&](size_t j) { return luminance(pixels_[j].directSum); })
@@ -80,10 +80,10 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
                                           choice.directBeforeChoice() + luminance(direct) - luminance(first));
     }
     PassResult& result = results_[index];
-    result.direct = direct;
+    result.direct = SharedExponentColor::of(direct, rng.uniform());  // the pixel's last draw
     result.choice = choice;
-    result.paths = static_cast<float>(work.paths);
-    result.squares = squares;
+    result.extraPaths = static_cast<uint8_t>(work.paths - 1);
+    result.squares = toBfloat16(static_cast<float>(squares));
     return work;
 }
 

@@ -85,9 +85,9 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;  // as the path tracer
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
-    results_[index].direct = L;
+    results_[index].direct = SharedExponentColor::of(L, rng.uniform());  // the pixel's last draw
     results_[index].choice = {};
-    results_[index].paths = 1;
+    results_[index].extraPaths = 0;
     return rays;
 }
 
