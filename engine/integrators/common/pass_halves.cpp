@@ -18,7 +18,10 @@ void PassHalves::restore(std::istream& in, int64_t passes) {
     }
     int64_t counts[2];
     readRaw(in, counts, 2);
-    if (counts[0] < 0 || counts[1] < 0 || counts[0] + counts[1] != passes) throw CheckpointError("checkpoint: invalid pass halves");
+    // Each count checked against the passes before they are added: a damaged count near
+    // 2^63 must not overflow the sum.
+    if (counts[0] < 0 || counts[1] < 0 || counts[0] > passes || counts[1] != passes - counts[0])
+        throw CheckpointError("checkpoint: invalid pass halves");
     std::vector<float> sums(sums_.size());
     readRaw(in, sums.data(), sums.size());
     for (float s : sums)
