@@ -4,6 +4,7 @@
 // deterministic through threads and checkpoints.
 #include <gtest/gtest.h>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include "integrators/sppm/camera_paths.h"
 #include <photon/render.h>
@@ -77,6 +78,12 @@ TEST(AdaptiveCameraPaths, CheckpointBlockRoundTripsAndIsOptional) {
     EXPECT_FLOAT_EQ(restored.pathsAt(0, direct), 1.0f);
     old >> rest;
     EXPECT_EQ(rest, "halves");
+    // A pixel whose squares passed a float's range still writes a checkpoint that restores.
+    AdaptiveCameraPaths huge(3, 3);
+    for (size_t i = 0; i < 9; ++i) huge.add(i, 4, std::numeric_limits<float>::infinity());
+    std::stringstream hugeState;
+    huge.save(hugeState);
+    EXPECT_NO_THROW(restored.restore(hugeState, 4, direct));
     // Fewer paths than the render's passes: damaged.
     std::stringstream again;
     t.paths.save(again);

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <ostream>
 #include <vector>
 
@@ -44,7 +45,10 @@ public:
     void add(size_t pixel, float paths, float squares) {
         Pixel& p = pixels_[pixel];
         p.paths += paths;
-        p.squares += squares;
+        // A sum past a float's range (or a NaN) is held at the largest float: only the
+        // counts read it, and a checkpoint, which refuses what is not finite, must restore.
+        const float sum = p.squares + squares;
+        p.squares = sum <= std::numeric_limits<float>::max() ? sum : std::numeric_limits<float>::max();
     }
     // The paths pixel `pixel` has traced, over which its direct light is averaged.
     float pathsTraced(size_t pixel) const { return pixels_[pixel].paths; }
