@@ -107,6 +107,39 @@ Shape "sphere")")).document["render"];
     EXPECT_EQ(lightSampler("uniform"), "spatial");
 }
 
+// PixelFilter onto camera.filter, with pbrt-v4's defaults (a Gaussian when there is none).
+TEST(PbrtImport, PixelFilterMapsOntoTheCamerasFilter) {
+    auto filterOf = [](const std::string& name, const std::string& directive) {
+        const ImportedScene s = importPbrt(writeScene("filter-" + name + ".pbrt", R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+)" + directive + R"(
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere")"));
+        return std::make_pair(s.document["camera"]["filter"], s.warnings);
+    };
+    EXPECT_EQ(filterOf("none", "").first, Json::parse(R"({"type": "gaussian", "radius": 1.5, "sigma": 0.5})"));
+    EXPECT_EQ(filterOf("triangle", R"(PixelFilter "triangle" "float xradius" [1] "float yradius" [1])").first,
+              Json::parse(R"({"type": "triangle", "radius": [1.0, 1.0]})"));
+    EXPECT_EQ(filterOf("box", R"(PixelFilter "box")").first, Json::parse(R"({"type": "box", "radius": [0.5, 0.5]})"));
+    EXPECT_EQ(filterOf("gaussian", R"(PixelFilter "gaussian" "float sigma" [0.3] "float xradius" [2])").first,
+              Json::parse(R"({"type": "gaussian", "radius": [2.0, 1.5], "sigma": 0.3})"));
+    const auto [sinc, warnings] = filterOf("sinc", R"(PixelFilter "sinc" "float tau" [2])");
+    EXPECT_EQ(sinc, Json::parse(R"({"type": "lanczos", "radius": [4.0, 4.0], "tau": 2.0})"));
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_EQ(warnings.front(),
+              "filter-sinc.pbrt:4: PixelFilter \"sinc\": its negative lobes are left out (photon's pixel estimates are "
+              "not negative)");
+    const auto [mitchell, none] = filterOf("mitchell", R"(PixelFilter "mitchell" "float B" [0.5] "float C" [0.25])");
+    EXPECT_EQ(mitchell, Json::parse(R"({"type": "mitchell", "radius": [2.0, 2.0], "b": 0.5, "c": 0.25})"));
+    EXPECT_EQ(importError(R"(Camera "perspective"
+PixelFilter "gaussian" "float xradius" [20]
+WorldBegin)")
+                  .what(),
+              std::string("bad.pbrt:2: PixelFilter: xradius and yradius must be in (0, 8]"));
+}
+
 TEST(PbrtImport, CameraSeesTheImageTheRightWayRound) {
     // A red quad on the left of the view (x < 0 in a world whose camera x axis is -x ...)
     // pbrt: with this LookAt, world +x is the image's left. The red quad at x = +1 must

@@ -129,6 +129,17 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["camera"]["fov"] = 180; }, "camera.fov", "must be in (0, 180)");
     expectError([](Json& d) { d["camera"]["aperture_radius"] = -0.1; }, "camera.aperture_radius", "must be >= 0");
     expectError([](Json& d) { d["camera"]["focus_distance"] = 0; }, "camera.focus_distance", "must be > 0");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "cubic"}}; }, "camera.filter.type",
+                "unknown filter \"cubic\" (expected one of box, triangle, gaussian, mitchell, lanczos)");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "gaussian"}, {"radius", 9}}; }, "camera.filter.radius",
+                "must be in (0, 8]");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "triangle"}, {"radius", {1, 0}}}; },
+                "camera.filter.radius[1]", "must be in (0, 8]");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "triangle"}, {"sigma", 0.5}}; }, "camera.filter.sigma",
+                "unknown field");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "mitchell"}, {"b", 1.5}}; }, "camera.filter.b",
+                "must be in [0, 1]");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"radius", 1}}; }, "camera.filter.type", "missing required field");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = {0.5, 1.2, 0.5}; }, "materials.white.albedo[1]",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["metal"]["roughness"] = 2; }, "materials.metal.roughness",

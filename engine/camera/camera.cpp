@@ -5,7 +5,7 @@ namespace photon {
 
 Camera::Camera(const CameraDescription& d)
     : position_(d.position), apertureRadius_(d.apertureRadius), focusDistance_(d.focusDistance),
-      width_(d.width), height_(d.height) {
+      width_(d.width), height_(d.height), filter_(d.filter) {
     forward_ = normalize(d.lookAt - d.position);
     const Vec3 rightHanded = normalize(cross(forward_, d.up));
     up_ = cross(rightHanded, forward_);

@@ -3,6 +3,7 @@
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "math/ray.h"
+#include "camera/pixel_filter.h"
 
 namespace photon {
 
@@ -15,6 +16,27 @@ public:
 
     // A ray through film position (x, y) in pixels (y down), with lens sample uLens.
     Ray generateRay(float x, float y, Vec2 uLens) const;
+
+    // A film position for pixel (x, y) drawn from the pixel filter with u, and the weight
+    // the sample's radiance takes in the pixel's mean (pixel_filter.h): with the default
+    // box, (x, y) + u and weight 1.
+    struct FilmSample {
+        float x, y, weight;
+    };
+    FilmSample sampleFilm(int x, int y, Vec2 u) const {
+        if (filter_.unitBox()) return {static_cast<float>(x) + u.x, static_cast<float>(y) + u.y, 1.0f};
+        const PixelFilter::Sample s = filter_.sample(u);
+        return {static_cast<float>(x) + 0.5f + s.offset.x, static_cast<float>(y) + 0.5f + s.offset.y, s.weight};
+    }
+    // The ray and the weight of a sample of pixel (x, y): u for the film, uLens for the lens.
+    struct PixelSample {
+        Ray ray;
+        float weight;
+    };
+    PixelSample samplePixel(int x, int y, Vec2 u, Vec2 uLens) const {
+        const FilmSample f = sampleFilm(x, y, u);
+        return {generateRay(f.x, f.y, uLens), f.weight};
+    }
     int width() const { return width_; }
     int height() const { return height_; }
     // Side of one pixel at unit distance along the view axis.
@@ -24,6 +46,7 @@ private:
     Vec3 position_, right_, up_, forward_;
     float tanHalfFov_ = 1, aspect_ = 1, pixelAngle_ = 0, apertureRadius_ = 0, focusDistance_ = 1;
     int width_ = 1, height_ = 1;
+    PixelFilter filter_;
 };
 
 }  // namespace photon

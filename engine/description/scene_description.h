@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 #include <memory>
+#include "description/pixel_filter_description.h"
 #include "materials/material.h"
 #include "math/transform.h"
 #include "texture/image_texture.h"
@@ -25,6 +26,7 @@ struct CameraDescription {
     // The image's right is up x forward (pbrt's left-handed camera space) rather than
     // forward x up: the image mirrored left to right.
     bool leftHanded = false;
+    PixelFilterDescription filter;  // how each pixel weighs the image around it
 };
 
 // Triangles in world space; normals and uvs per vertex, either empty or one per position.

@@ -25,6 +25,34 @@ void checkOrientation(JsonObject& obj, const CameraDescription& c) {
     if (!(sinAngle > 1e-4f)) throw SceneError(childPath(obj.path(), "up"), "must not be parallel to the view direction");
 }
 
+// "filter": {"type": ..., "radius": r or [rx, ry], and the type's own parameters}.
+PixelFilterDescription readPixelFilter(const JsonValue& value) {
+    using Kind = PixelFilterDescription::Kind;
+    JsonObject obj = value.object();
+    PixelFilterDescription f;
+    f.kind = static_cast<Kind>(obj.required("type").choice({"box", "triangle", "gaussian", "mitchell", "lanczos"}, "filter"));
+    // Up to 8 pixels: a sample is then drawn from 17 x 17 pixels around its own.
+    const Range radii = Range::openClosed(0, 8);
+    const float radius = PixelFilterDescription::defaultRadius(f.kind);
+    f.radius = {radius, radius};
+    if (auto r = obj.optional("radius")) {
+        if (r->json().is_array()) {
+            f.radius = r->vec2(radii);
+        } else {
+            const float each = r->number(radii);
+            f.radius = {each, each};
+        }
+    }
+    if (f.kind == Kind::Gaussian) f.sigma = obj.number("sigma", f.sigma, Range::openClosed(0, 8));
+    if (f.kind == Kind::Mitchell) {
+        f.b = obj.number("b", f.b, Range::closed(0, 1));
+        f.c = obj.number("c", f.c, Range::closed(0, 1));
+    }
+    if (f.kind == Kind::Lanczos) f.tau = obj.number("tau", f.tau, Range::positive());
+    obj.finish();
+    return f;
+}
+
 }  // namespace
 
 CameraDescription readCamera(const JsonValue& value) {
@@ -41,6 +69,7 @@ CameraDescription readCamera(const JsonValue& value) {
     // By default the point looked at is in focus.
     c.focusDistance = obj.number("focus_distance", length(c.lookAt - c.position), Range::positive());
     c.leftHanded = obj.choice("handedness", 0, {"right", "left"}, "handedness") == 1;
+    if (auto filter = obj.optional("filter")) c.filter = readPixelFilter(*filter);
     obj.finish();
     return c;
 }

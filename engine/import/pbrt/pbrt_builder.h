@@ -42,6 +42,7 @@ private:
     void transformDirective(const Directive& d);
     // pbrt_camera.cpp: Camera, Film, Sampler, Integrator, PixelFilter and the options.
     void camera(const Directive& d);
+    void pixelFilter(const Directive& d);
     void film(const Directive& d);
     void sampler(const Directive& d);
     void integrator(const Directive& d);
@@ -97,6 +98,9 @@ private:
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
         std::optional<std::vector<double>> screenWindow;
         Location where;
+        // photon's "filter": pbrt-v4's Gaussian of radius 1.5 and sigma 0.5 unless the
+        // file has a PixelFilter.
+        Json filter = {{"type", "gaussian"}, {"radius", 1.5}, {"sigma", 0.5}};
     } camera_;
     int width_ = 1280, height_ = 720;
     bool worldBegun_ = false;

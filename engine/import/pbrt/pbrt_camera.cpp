@@ -27,6 +27,37 @@ void SceneBuilder::camera(const Directive& d) {
     p.find("frameaspectratio");
 }
 
+// pbrt-v4's filters and their parameters (sec. 8.8) as photon's camera "filter".
+void SceneBuilder::pixelFilter(const Directive& d) {
+    Params p(d);
+    const std::string& type = d.strings.at(0);
+    struct Kind {
+        const char* pbrt;
+        const char* photon;
+        double radius;
+    };
+    static constexpr Kind kKinds[] = {{"box", "box", 0.5},           {"triangle", "triangle", 2},
+                                      {"gaussian", "gaussian", 1.5}, {"mitchell", "mitchell", 2},
+                                      {"sinc", "lanczos", 4}};
+    const Kind* kind = nullptr;
+    for (const Kind& k : kKinds)
+        if (type == k.pbrt) kind = &k;
+    if (!kind) {
+        warn(d.where, "PixelFilter \"" + type + "\" is not a pbrt-v4 filter; the box filter is used");
+        camera_.filter = {{"type", "box"}};
+        return;
+    }
+    const double x = p.number("xradius", kind->radius), y = p.number("yradius", kind->radius);
+    if (!(x > 0 && x <= 8 && y > 0 && y <= 8)) fail(d.where, "PixelFilter: xradius and yradius must be in (0, 8]");
+    Json f = {{"type", kind->photon}, {"radius", {x, y}}};
+    if (type == "gaussian") f["sigma"] = p.number("sigma", 0.5);
+    if (type == "mitchell") f["b"] = p.number("B", 1.0 / 3.0), f["c"] = p.number("C", 1.0 / 3.0);
+    if (type == "sinc") f["tau"] = p.number("tau", 3);
+    if (type == "mitchell" || type == "sinc")
+        warn(d.where, "PixelFilter \"" + type + "\": its negative lobes are left out (photon's pixel estimates are not negative)");
+    camera_.filter = std::move(f);
+}
+
 void SceneBuilder::film(const Directive& d) {
     Params p(d);
     width_ = static_cast<int>(p.number("xresolution", 1280));
@@ -84,7 +115,8 @@ void SceneBuilder::writeCameraAndRender() {
                 {"look_at", {position.x + forward.x, position.y + forward.y, position.z + forward.z}},
                 {"up", {up.x, up.y, up.z}},
                 {"fov", 2 * std::atan(tanHalf) * kDegrees},
-                {"resolution", {width_, height_}}};
+                {"resolution", {width_, height_}},
+                {"filter", camera_.filter}};
     // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
     if (dot(right, cross(forward, up)) < 0) cam["handedness"] = "left";
     if (camera_.lensRadius > 0) {

@@ -54,13 +54,14 @@ void SceneBuilder::handle(Directive&& d) {
         sampler(d);
     } else if (n == "Integrator") {
         integrator(d);
-    } else if (n == "PixelFilter" || n == "Accelerator" || n == "ColorSpace" || n == "Option") {
+    } else if (n == "PixelFilter") {
+        pixelFilter(d);
+    } else if (n == "Accelerator" || n == "ColorSpace" || n == "Option") {
         if (n == "Option" && d.find("seed")) {
             Params p(d);
             render_["seed"] = static_cast<int64_t>(p.number("seed", 0));
         } else if (!(n == "ColorSpace" && !d.strings.empty() && d.strings[0] == "srgb")) {
-            const char* why = n == "PixelFilter"   ? "photon averages each pixel's samples with a box filter"
-                              : n == "Accelerator" ? "photon builds Embree's BVH"
+            const char* why = n == "Accelerator" ? "photon builds Embree's BVH"
                               : n == "ColorSpace"  ? "photon renders in linear sRGB"
                                                    : "not an option photon has";
             warn(d.where, describe(d) + " ignored (" + why + ")");

@@ -16,9 +16,12 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     auto start = std::chrono::steady_clock::now();
     const RngStream stream(s.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
     forEachPixel(width_, height_, stream, cancel, [&](int x, int y, size_t index, Rng& rng) {
-        Ray ray = scene_->camera().generateRay(static_cast<float>(x) + rng.uniform(), static_cast<float>(y) + rng.uniform(),
-                                               {rng.uniform(), rng.uniform()});
-        pass_[index] = radiance(ray, rng);
+        // The lens's numbers first, then y's, then x's: the order these were always drawn in.
+        const Vec2 uLens{rng.uniform(), rng.uniform()};
+        const float uy = rng.uniform();
+        const Vec2 uFilm{rng.uniform(), uy};
+        const Camera::PixelSample sample = scene_->camera().samplePixel(x, y, uFilm, uLens);
+        pass_[index] = radiance(sample.ray, rng) * sample.weight;
     });
     if (cancel.cancelled()) return false;
     std::lock_guard<std::mutex> lock(mutex_);

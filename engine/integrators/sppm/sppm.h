@@ -141,20 +141,21 @@ private:
     // Pixel i of the per-pixel schedule's image.
     Color radianceLocked(size_t i) const;
     void cameraPass(const CancelToken& cancel);
-    // Clears the pixel's visible point and returns its jittered camera ray.
-    Ray startPixel(size_t index, Rng& rng);
-    // Pixel `index`'s jittered camera ray.
-    Ray cameraRay(size_t index, Rng& rng) const;
+    // Clears the pixel's visible point and returns a camera ray of it, with its weight.
+    Camera::PixelSample startPixel(size_t index, Rng& rng);
+    // A camera ray of pixel `index`, drawn from the pixel filter, with its weight.
+    Camera::PixelSample cameraRay(size_t index, Rng& rng) const;
     // What a pixel's camera paths did in a pass.
     struct CameraWork {
         int rays = 0, paths = 0;
     };
     // Each returns the rays it cast (render.adaptive_photons' measure of the camera's cost).
     CameraWork tracePixel(size_t index, Rng& rng);
-    // One camera path from `ray`: adds the light it finds to `direct` and its first lobe
+    // One camera path from the camera sample: adds the light it finds to `direct` and its first lobe
     // choice to `choice`; the first path of a pixel's pass (`first`) stores its visible
     // point. Returns the rays it cast.
-    int tracePath(size_t index, Ray ray, Rng& rng, bool first, Color& direct, LobeChoiceRecord& choice);
+    int tracePath(size_t index, const Camera::PixelSample& start, Rng& rng, bool first, Color& direct,
+                  LobeChoiceRecord& choice);
     // render.lightweight's camera path: a path-traced sample that leaves out the caustics
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
     int tracePixelLightweight(size_t index, Rng& rng);

@@ -37,16 +37,16 @@ float SppmIntegrator::autoRadius(float pathLength) const {
     return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
 }
 
-Ray SppmIntegrator::startPixel(size_t index, Rng& rng) {
+Camera::PixelSample SppmIntegrator::startPixel(size_t index, Rng& rng) {
     discs_[index - bandOffset_] = GatherDisc{};
     visible_[index - bandOffset_] = VisiblePoint{};
     return cameraRay(index, rng);
 }
 
-Ray SppmIntegrator::cameraRay(size_t index, Rng& rng) const {
-    float px = static_cast<float>(index % width_) + rng.uniform();
-    float py = static_cast<float>(index / width_) + rng.uniform();
-    return scene_->camera().generateRay(px, py, {rng.uniform(), rng.uniform()});
+Camera::PixelSample SppmIntegrator::cameraRay(size_t index, Rng& rng) const {
+    const Vec2 uFilm{rng.uniform(), rng.uniform()};
+    const Vec2 uLens{rng.uniform(), rng.uniform()};
+    return scene_->camera().samplePixel(static_cast<int>(index % width_), static_cast<int>(index / width_), uFilm, uLens);
 }
 
 SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
@@ -87,10 +87,12 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     return work;
 }
 
-int SppmIntegrator::tracePath(size_t index, Ray ray, Rng& rng, bool first, Color& direct, LobeChoiceRecord& choice) {
+int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Rng& rng, bool first, Color& direct,
+                              LobeChoiceRecord& choice) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
-    Color beta(1.0f);
+    Ray ray = start.ray;
+    Color beta(start.weight);
     // Area light is counted where no shadow ray could have found it (after delta bounces);
     // the environment is shared between shadow rays and BSDF samples (BounceSampling).
     BounceSampling bounce;

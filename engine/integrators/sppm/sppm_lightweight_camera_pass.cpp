@@ -38,8 +38,9 @@ Color pathTracedShare(const GatherVertex& v) {
 
 int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
-    Color L(0.0f), beta(1.0f);
-    Ray ray = startPixel(index, rng);
+    const Camera::PixelSample start = startPixel(index, rng);
+    Color L(0.0f), beta(start.weight);
+    Ray ray = start.ray;
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
     std::optional<GatherVertex> gather;
