@@ -90,6 +90,18 @@ void restoreTungstenPlates(ImportedScene& imported) {
     imported.document["materials"] = materials;
 }
 
+// The coffee maker's silver ring (and column) interpenetrate the glass pot: light leaving
+// the pot's wall at the ring's height is inside the metal and meets its faces from behind.
+// Tungsten's reference shows those back faces black: the band of the pot's bottom seen
+// through its wall is dark in it, where a two-sided silver mirrors the base and the lights
+// (the cells there 10-17% above the reference at 1024 samples of the path tracer; with the
+// back black, within 1%). pbrt-v4 shades both sides, so the file cannot say it; the test
+// makes the metal one-sided, as the reference has it.
+void restoreTungstenMetal(ImportedScene& imported) {
+    for (auto& [name, m] : imported.document["materials"].items())
+        if (m["type"] == "conductor") m["two_sided"] = false;
+}
+
 // Adds to `lights` the pixels where the reference shows a light's face in a mirror-like
 // reflection: brighter than 25 times the mean of the pixels left. Such pixels hold a few
 // hundred times the image's mean, so their mean over a cell follows the reference's pixel
@@ -108,6 +120,7 @@ void compareWithReference(const Comparison& c) {
     const std::filesystem::path file = sceneFolder(c.scene) / "scene-v4.pbrt";
     ImportedScene imported = importSceneFile(file, {});
     if (std::string(c.scene) == "veach-mis") restoreTungstenPlates(imported);
+    if (std::string(c.scene) == "coffee") restoreTungstenMetal(imported);
     const std::vector<SettingOverride> overrides = {
         {"camera.resolution", "[" + std::to_string(c.width) + "," + std::to_string(c.height) + "]"},
         // The reference is box-averaged down to the render's size, which is a box filter of
@@ -175,12 +188,12 @@ INSTANTIATE_TEST_SUITE_P(Imported, BitterliScenes,
                          // Tungsten's references: 64 bounces for the Cornell box and the coffee
                          // maker, direct light only for veach-mis (at max depth 1 every cell off
                          // the plates agrees within 0.7%; at 64 the walls come out 9-50% brighter).
-                         // coffee: SPPM's red is 3% above the reference (the path tracer's 1.3%),
-                         // all of it in the cells seen through the glass pot, up to 16% (the path
-                         // tracer is within 1% in 52 of 64 cells; docs/import.md).
+                         // coffee, its metal one-sided as in the reference: SPPM's red 2.1%
+                         // above the reference (the path tracer's 0.3% below), the worst cell
+                         // 8.2% (the orange top at 128 passes; docs/import.md).
                          testing::Values(Comparison{"cornell-box", 128, 128, 64, 200000, 64},
                                          Comparison{"veach-mis", 160, 90, 128, 200000, 1},
-                                         Comparison{"coffee", 100, 125, 128, 200000, 64, 0.04f, 0.2f}),
+                                         Comparison{"coffee", 100, 125, 128, 200000, 64, 0.03f, 0.1f}),
                          [](const testing::TestParamInfo<Comparison>& info) {
                              std::string name = info.param.scene;
                              std::replace(name.begin(), name.end(), '-', '_');

@@ -30,8 +30,16 @@ float analyticPixel(const Camera& camera, int x, int y) {
     return static_cast<float>(sum / (n * n));
 }
 
-Image render(DirectLighting direct, int passes, int64_t photons, KernelKind kernel = KernelKind::Uniform) {
+// How the plane is made: as usual; one-sided ("two_sided": false) facing the light and the
+// camera; or one-sided facing away from both.
+enum class Sides { Two, OneFacingLight, OneFacingAway };
+
+Image render(DirectLighting direct, int passes, int64_t photons, KernelKind kernel = KernelKind::Uniform,
+             Sides sides = Sides::Two, IntegratorKind integrator = IntegratorKind::Sppm) {
     SceneDescription d = test::pointLightPlane(kRho, kIntensity, kHeight, kResolution);
+    if (sides != Sides::Two) d.materials[0] = makeOneSided(d.materials[0]);
+    if (sides == Sides::OneFacingAway) d.shapes[0].flipNormals = !d.shapes[0].flipNormals;
+    d.render.integrator = integrator;
     d.render.direct = direct;
     d.render.kernel = kernel;
     d.render.passes = passes;
@@ -70,6 +78,20 @@ TEST(PointLightPlane, BiweightKernelEstimateMatchesAnalyticRadiance) {
 
 TEST(PointLightPlane, ConeKernelEstimateMatchesAnalyticRadiance) {
     expectBlocksMatch(render(DirectLighting::Photons, 64, 100000, KernelKind::Cone), 0.03f);
+}
+
+// A one-sided plane facing the light is the two-sided plane; facing away, it is black to
+// photons, shadow rays and the path tracer alike (its back absorbs and reflects nothing).
+TEST(PointLightPlane, OneSidedPlaneIsLitOnItsFrontAndBlackBehind) {
+    expectBlocksMatch(render(DirectLighting::Photons, 64, 100000, KernelKind::Uniform, Sides::OneFacingLight), 0.03f);
+    expectBlocksMatch(render(DirectLighting::LightSampling, 64, 1000, KernelKind::Uniform, Sides::OneFacingLight,
+                             IntegratorKind::Path),
+                      0.02f);
+    for (const Image& image :
+         {render(DirectLighting::Photons, 4, 100000, KernelKind::Uniform, Sides::OneFacingAway),
+          render(DirectLighting::LightSampling, 4, 100000, KernelKind::Uniform, Sides::OneFacingAway),
+          render(DirectLighting::LightSampling, 4, 1000, KernelKind::Uniform, Sides::OneFacingAway, IntegratorKind::Path)})
+        for (float v : image.rgb) ASSERT_EQ(v, 0.0f);
 }
 
 TEST(PointLightPlane, ShadowRaysMatchAnalyticRadiance) {

@@ -145,6 +145,10 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["materials"]["metal"]["roughness"] = 2; }, "materials.metal.roughness",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["glass"]["ior"] = 0; }, "materials.glass.ior", "must be > 0");
+    expectError([](Json& d) { d["materials"]["glass"]["two_sided"] = false; }, "materials.glass.two_sided",
+                "must be true for a material that lets light through");
+    expectError([](Json& d) { d["materials"]["metal"]["two_sided"] = 1; }, "materials.metal.two_sided",
+                "must be true or false");
     expectError([](Json& d) { d["materials"]["glass"]["roughness"] = -0.1; }, "materials.glass.roughness",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["glass"].update({{"thin", true}, {"roughness", 0.2}}); },

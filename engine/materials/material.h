@@ -165,6 +165,9 @@ MaterialPtr makeNormalMapped(MaterialPtr base, std::shared_ptr<const Texture> no
 // `base` with its shading normal bent by the height field `height` (scene units) along the
 // normal: a bump map.
 MaterialPtr makeBumpMapped(MaterialPtr base, FloatParam height);
+// An opaque material whose back (the side away from its surface's normal) is black
+// (materials/one_sided.cpp); base must be two-sided.
+MaterialPtr makeOneSided(MaterialPtr base);
 // Diffuse base under a dielectric coat with internal reflections summed and the rough
 // coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
 MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);

@@ -166,6 +166,14 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         if (map) bump->fail("cannot be given with \"normal_map\"");
         m = makeBumpMapped(m, readFloatParam(*bump, ctx, Range::any()));
     }
+    // An opaque material is seen alike from both sides unless "two_sided" is false; a
+    // dielectric's or a translucent sheet's two sides differ already.
+    if (auto sided = obj.optional("two_sided")) {
+        if (!sided->boolean()) {
+            if (type == Dielectric || !m->twoSided() || m->transmits()) sided->fail("must be true for a material that lets light through");
+            m = makeOneSided(m);
+        }
+    }
     obj.finish();
     return m;
 }

@@ -20,7 +20,7 @@ Camera "perspective" "float fov" [45]
 Film "rgb" "integer xresolution" [24] "integer yresolution" [16]
 Sampler "halton" "integer pixelsamples" [2]
 Integrator "sppm" "integer photonsperiteration" [2000]
-PixelFilter "gaussian"
+PixelFilter "mitchell"
 WorldBegin
 Material "diffuse" "rgb reflectance" [0.6 0.6 0.6]
 Shape "plymesh" "string filename" "meshes/floor.ply"
@@ -132,8 +132,8 @@ TEST_F(ImportsTest, APbrtSceneRendersAsTheEngineRendersItWithItsWarnings) {
     const std::string id = job["id"];
     EXPECT_EQ(job["name"], "Room");
     EXPECT_EQ(job["warnings"],
-              json({"scene.pbrt:6: PixelFilter \"gaussian\" ignored (photon averages each pixel's samples with a box "
-                    "filter)"}));
+              json({"scene.pbrt:6: PixelFilter \"mitchell\": its negative lobes are left out (photon's pixel estimates "
+                    "are not negative)"}));
     EXPECT_EQ(job["settings"]["passes"], 2);
     EXPECT_EQ(job["settings"]["photons_per_pass"], 2000);
     EXPECT_EQ(job["settings"]["seed"], 7);

@@ -308,7 +308,7 @@ test('an imported pbrt file is sent as it is and its warnings are shown', { time
     'LookAt 0 1 4  0 1 0  0 1 0',
     'Camera "perspective" "float fov" [45]',
     'Film "rgb" "integer xresolution" [16] "integer yresolution" [16]',
-    'PixelFilter "gaussian"',
+    'PixelFilter "mitchell"',
     'WorldBegin',
     'AreaLightSource "diffuse" "rgb L" [4 4 4]',
     'Shape "trianglemesh" "integer indices" [0 1 2 0 2 3] "point3 P" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]',
@@ -323,7 +323,7 @@ test('an imported pbrt file is sent as it is and its warnings are shown', { time
   const record = await (await fetch(new URL(`api/v1/jobs/${id}`, server.baseUrl))).json();
   assert.equal(record.name, 'room');
   assert.deepEqual(record.warnings, [
-    'scene.pbrt:4: PixelFilter "gaussian" ignored (photon averages each pixel\'s samples with a box filter)',
+    'scene.pbrt:4: PixelFilter "mitchell": its negative lobes are left out (photon\'s pixel estimates are not negative)',
   ]);
   const warnings = page.locator('#job-warnings');
   await warnings.waitFor({ state: 'visible' });
