@@ -47,10 +47,13 @@ FeatureBuffers renderFeatureBuffers(const Scene& scene, int samplesPerPixel) {
                 Color albedo(0.0f);
                 Vec3 normal(0.0f);
                 for (int s = 0; s < samplesPerPixel; ++s) {
-                    float px = static_cast<float>(x) + rng.uniform(), py = static_cast<float>(y) + rng.uniform();
-                    FirstHit h = traceFirstHit(scene, px, py, rng);
-                    albedo += h.albedo;
-                    normal += h.normal;
+                    // Through the pixel filter as the image's samples, so that the guide's
+                    // edges are as soft as the image's (x's number drawn first, then y's).
+                    const float ux = rng.uniform();
+                    const Camera::FilmSample film = scene.camera().sampleFilm(x, y, {ux, rng.uniform()});
+                    FirstHit h = traceFirstHit(scene, film.x, film.y, rng);
+                    albedo += h.albedo * film.weight;
+                    normal += h.normal * film.weight;
                 }
                 f.albedo.set(x, y, albedo * weight);
                 f.normal.set(x, y, normal * weight);
