@@ -138,6 +138,11 @@ PixelFilter "gaussian" "float xradius" [20]
 WorldBegin)")
                   .what(),
               std::string("bad.pbrt:2: PixelFilter: xradius and yradius must be in (0, 8]"));
+    EXPECT_EQ(importError(R"(Camera "perspective"
+PixelFilter "mitchell" "float B" [2]
+WorldBegin)")
+                  .what(),
+              std::string("bad.pbrt:2: PixelFilter: B must be in [0, 1]"));
 }
 
 TEST(PbrtImport, CameraSeesTheImageTheRightWayRound) {
