@@ -10,9 +10,12 @@
 namespace photon {
 namespace {
 
-Image renderWithThreads(int threads, IntegratorKind kind) {
+Image renderWithThreads(int threads, IntegratorKind kind,
+                        PixelFilterDescription::Kind filter = PixelFilterDescription::Kind::Box) {
     SceneDescription d = test::exampleScene("cornell-glass", 48, 3, 30000, 42);
     d.render.integrator = kind;
+    d.camera.filter.kind = filter;
+    d.camera.filter.radius = {PixelFilterDescription::defaultRadius(filter), PixelFilterDescription::defaultRadius(filter)};
     return test::renderWithThreads(std::move(d), threads);
 }
 
@@ -29,6 +32,19 @@ TEST(Determinism, SppmSameSeedOneAndTwoThreadsGiveIdenticalPixels) {
 TEST(Determinism, PathSameSeedOneAndTwoThreadsGiveIdenticalPixels) {
     Image one = renderWithThreads(1, IntegratorKind::Path), two = renderWithThreads(2, IntegratorKind::Path);
     EXPECT_TRUE(one.rgb == two.rgb);
+}
+
+// Samples drawn from a pixel filter (here pbrt-v4's Gaussian, from a table) are keyed by
+// pixel as the box's are.
+TEST(Determinism, AFilteredImageIsTheSameOnOneAndTwoThreads) {
+    using Kind = PixelFilterDescription::Kind;
+    EXPECT_TRUE(renderWithThreads(1, IntegratorKind::Sppm, Kind::Gaussian).rgb ==
+                renderWithThreads(2, IntegratorKind::Sppm, Kind::Gaussian).rgb);
+    EXPECT_TRUE(renderWithThreads(1, IntegratorKind::Path, Kind::Mitchell).rgb ==
+                renderWithThreads(2, IntegratorKind::Path, Kind::Mitchell).rgb);
+    // And the filter is in effect: the Gaussian image differs from the box's.
+    EXPECT_FALSE(renderWithThreads(2, IntegratorKind::Sppm, Kind::Gaussian).rgb ==
+                 renderWithThreads(2, IntegratorKind::Sppm).rgb);
 }
 
 TEST(Determinism, DifferentSeedsGiveDifferentImages) {
