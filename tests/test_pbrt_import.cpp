@@ -137,7 +137,7 @@ Shape "sphere")"));
 PixelFilter "gaussian" "float xradius" [20]
 WorldBegin)")
                   .what(),
-              std::string("bad.pbrt:2: PixelFilter: xradius and yradius must be in (0, 8]"));
+              std::string("bad.pbrt:2: PixelFilter: xradius and yradius must be in [0.05, 8]"));
     EXPECT_EQ(importError(R"(Camera "perspective"
 PixelFilter "mitchell" "float B" [2]
 WorldBegin)")

@@ -132,14 +132,18 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["camera"]["filter"] = {{"type", "cubic"}}; }, "camera.filter.type",
                 "unknown filter \"cubic\" (expected one of box, triangle, gaussian, mitchell, lanczos)");
     expectError([](Json& d) { d["camera"]["filter"] = {{"type", "gaussian"}, {"radius", 9}}; }, "camera.filter.radius",
-                "must be in (0, 8]");
+                "must be in [0.05, 8]");
     expectError([](Json& d) { d["camera"]["filter"] = {{"type", "triangle"}, {"radius", {1, 0}}}; },
-                "camera.filter.radius[1]", "must be in (0, 8]");
+                "camera.filter.radius[1]", "must be in [0.05, 8]");
     expectError([](Json& d) { d["camera"]["filter"] = {{"type", "triangle"}, {"sigma", 0.5}}; }, "camera.filter.sigma",
                 "unknown field");
     expectError([](Json& d) { d["camera"]["filter"] = {{"type", "mitchell"}, {"b", 1.5}}; }, "camera.filter.b",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["camera"]["filter"] = {{"radius", 1}}; }, "camera.filter.type", "missing required field");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "gaussian"}, {"sigma", 1e-30}}; },
+                "camera.filter.sigma", "must be in [0.01, 8]");
+    expectError([](Json& d) { d["camera"]["filter"] = {{"type", "lanczos"}, {"tau", 0}}; }, "camera.filter.tau",
+                "must be in [0.01, 100]");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = {0.5, 1.2, 0.5}; }, "materials.white.albedo[1]",
                 "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["metal"]["roughness"] = 2; }, "materials.metal.roughness",

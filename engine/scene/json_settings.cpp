@@ -31,8 +31,9 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
     JsonObject obj = value.object();
     PixelFilterDescription f;
     f.kind = static_cast<Kind>(obj.required("type").choice({"box", "triangle", "gaussian", "mitchell", "lanczos"}, "filter"));
-    // Up to 8 pixels: a sample is then drawn from 17 x 17 pixels around its own.
-    const Range radii = Range::openClosed(0, 8);
+    // Up to 8 pixels: a sample is then drawn from 17 x 17 pixels around its own. At least a
+    // twentieth of one, where a Gaussian's values still differ in a float.
+    const Range radii = Range::closed(0.05, 8);
     const float radius = PixelFilterDescription::defaultRadius(f.kind);
     f.radius = {radius, radius};
     if (auto r = obj.optional("radius")) {
@@ -43,12 +44,14 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
             f.radius = {each, each};
         }
     }
-    if (f.kind == Kind::Gaussian) f.sigma = obj.number("sigma", f.sigma, Range::openClosed(0, 8));
+    // A sigma or tau below a hundredth of a pixel would leave a table of zeros (or floats
+    // past their range) to sample from.
+    if (f.kind == Kind::Gaussian) f.sigma = obj.number("sigma", f.sigma, Range::closed(0.01, 8));
     if (f.kind == Kind::Mitchell) {
         f.b = obj.number("b", f.b, Range::closed(0, 1));
         f.c = obj.number("c", f.c, Range::closed(0, 1));
     }
-    if (f.kind == Kind::Lanczos) f.tau = obj.number("tau", f.tau, Range::positive());
+    if (f.kind == Kind::Lanczos) f.tau = obj.number("tau", f.tau, Range::closed(0.01, 100));
     obj.finish();
     return f;
 }

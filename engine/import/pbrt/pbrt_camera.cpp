@@ -48,18 +48,18 @@ void SceneBuilder::pixelFilter(const Directive& d) {
         return;
     }
     const double x = p.number("xradius", kind->radius), y = p.number("yradius", kind->radius);
-    if (!(x > 0 && x <= 8 && y > 0 && y <= 8)) fail(d.where, "PixelFilter: xradius and yradius must be in (0, 8]");
+    if (!(x >= 0.05 && x <= 8 && y >= 0.05 && y <= 8))
+        fail(d.where, "PixelFilter: xradius and yradius must be in [0.05, 8]");
     Json f = {{"type", kind->photon}, {"radius", {x, y}}};
-    auto within = [&](const char* name, double fallback, double lo, double hi, bool openLow) {
+    // The ranges photon's camera.filter takes (scene-format.md), named with the file's line.
+    auto within = [&](const char* name, double fallback, double lo, double hi, const char* range) {
         const double v = p.number(name, fallback);
-        if (!((openLow ? v > lo : v >= lo) && v <= hi))
-            fail(d.where, "PixelFilter: " + std::string(name) + " must be in " + (openLow ? "(" : "[") +
-                              std::to_string(static_cast<int>(lo)) + ", " + std::to_string(static_cast<int>(hi)) + "]");
+        if (!(v >= lo && v <= hi)) fail(d.where, "PixelFilter: " + std::string(name) + " must be in " + range);
         return v;
     };
-    if (type == "gaussian") f["sigma"] = within("sigma", 0.5, 0, 8, true);
-    if (type == "mitchell") f["b"] = within("B", 1.0 / 3.0, 0, 1, false), f["c"] = within("C", 1.0 / 3.0, 0, 1, false);
-    if (type == "sinc") f["tau"] = within("tau", 3, 0, 1000, true);
+    if (type == "gaussian") f["sigma"] = within("sigma", 0.5, 0.01, 8, "[0.01, 8]");
+    if (type == "mitchell") f["b"] = within("B", 1.0 / 3.0, 0, 1, "[0, 1]"), f["c"] = within("C", 1.0 / 3.0, 0, 1, "[0, 1]");
+    if (type == "sinc") f["tau"] = within("tau", 3, 0.01, 100, "[0.01, 100]");
     if (type == "mitchell" || type == "sinc")
         warn(d.where, "PixelFilter \"" + type + "\": its negative lobes are left out (photon's pixel estimates are not negative)");
     camera_.filter = std::move(f);
