@@ -92,6 +92,18 @@ TEST(PointLightPlane, OneSidedPlaneIsLitOnItsFrontAndBlackBehind) {
           render(DirectLighting::LightSampling, 4, 100000, KernelKind::Uniform, Sides::OneFacingAway),
           render(DirectLighting::LightSampling, 4, 1000, KernelKind::Uniform, Sides::OneFacingAway, IntegratorKind::Path)})
         for (float v : image.rgb) ASSERT_EQ(v, 0.0f);
+    // Radiosity's patches hold the light leaving one side, whatever reaches the other: it
+    // refuses the scene rather than light the back.
+    SceneDescription d = test::pointLightPlane(kRho, kIntensity, kHeight, 8);
+    d.materials[0] = makeOneSided(d.materials[0]);
+    d.render.integrator = IntegratorKind::Radiosity;
+    try {
+        test::renderImage(std::move(d));
+        FAIL() << "radiosity rendered a one-sided plane";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "radiosity: material \"plane\" is one-sided (two_sided: false), which radiosity "
+                                         "does not model; render the scene with sppm, path or photonmap");
+    }
 }
 
 TEST(PointLightPlane, ShadowRaysMatchAnalyticRadiance) {

@@ -88,16 +88,19 @@ Color diffuseFactor(const Material& m) {
 }
 
 // A patch holds the light leaving one side of a surface; a sheet that transmits would need
-// both sides coupled, which the solver does not model. Rather than drop the transmitted
-// light in silence, the render fails naming the material.
+// both sides coupled, and a one-sided surface its back black to the light arriving there,
+// which the solver does not model. Rather than render either wrong in silence, the render
+// fails naming the material.
 void rejectTransmission(const Scene& scene) {
     const SceneDescription& d = scene.description();
     for (const ShapeDescription& s : d.shapes) {
-        if (!scene.materialAt(s.material).transmits()) continue;
+        const Material& m = scene.materialAt(s.material);
+        const bool transmits = m.transmits(), oneSided = m.hasDiffuse() && !m.twoSided();
+        if (!transmits && !oneSided) continue;
         std::string name = s.material < d.materialNames.size() ? d.materialNames[s.material] : std::to_string(s.material);
         throw std::runtime_error("radiosity: material \"" + name +
-                                 "\" transmits light (diffuse_transmission), which radiosity does not model; render "
-                                 "the scene with sppm, path or photonmap");
+                                 (transmits ? "\" transmits light (diffuse_transmission)" : "\" is one-sided (two_sided: false)") +
+                                 ", which radiosity does not model; render the scene with sppm, path or photonmap");
     }
 }
 
