@@ -98,9 +98,9 @@ private:
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
         std::optional<std::vector<double>> screenWindow;
         Location where;
-        // photon's "filter": pbrt-v4's Gaussian of radius 1.5 and sigma 0.5 unless the
-        // file has a PixelFilter.
-        Json filter = {{"type", "gaussian"}, {"radius", 1.5}, {"sigma", 0.5}};
+        // photon's "filter": pbrt-v4's default Gaussian (radius 1.5, sigma 0.5; written by
+        // SceneBuilder::pixelFilter) unless the file has a PixelFilter.
+        Json filter;
     } camera_;
     int width_ = 1280, height_ = 720;
     bool worldBegun_ = false;

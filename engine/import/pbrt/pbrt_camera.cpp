@@ -1,5 +1,6 @@
 // Camera, Film, Sampler and Integrator: photon's camera and render settings.
 #include <cmath>
+#include "description/pixel_filter_description.h"
 #include "import/pbrt/pbrt_builder.h"
 
 namespace photon::pbrt {
@@ -27,39 +28,56 @@ void SceneBuilder::camera(const Directive& d) {
     p.find("frameaspectratio");
 }
 
+namespace {
+// pbrt-v4's filter when a file names none: the Gaussian, with photon's (and pbrt's) defaults.
+Json defaultFilter() {
+    using Kind = PixelFilterDescription::Kind;
+    return {{"type", "gaussian"},
+            {"radius", PixelFilterDescription::defaultRadius(Kind::Gaussian)},
+            {"sigma", PixelFilterDescription{}.sigma}};
+}
+}  // namespace
+
 // pbrt-v4's filters and their parameters (sec. 8.8) as photon's camera "filter".
 void SceneBuilder::pixelFilter(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
-    struct Kind {
+    using Kind = PixelFilterDescription::Kind;
+    struct Name {
         const char* pbrt;
         const char* photon;
-        double radius;
+        Kind kind;
     };
-    static constexpr Kind kKinds[] = {{"box", "box", 0.5},           {"triangle", "triangle", 2},
-                                      {"gaussian", "gaussian", 1.5}, {"mitchell", "mitchell", 2},
-                                      {"sinc", "lanczos", 4}};
-    const Kind* kind = nullptr;
-    for (const Kind& k : kKinds)
-        if (type == k.pbrt) kind = &k;
-    if (!kind) {
+    static constexpr Name kNames[] = {{"box", "box", Kind::Box},
+                                      {"triangle", "triangle", Kind::Triangle},
+                                      {"gaussian", "gaussian", Kind::Gaussian},
+                                      {"mitchell", "mitchell", Kind::Mitchell},
+                                      {"sinc", "lanczos", Kind::Lanczos}};
+    const Name* name = nullptr;
+    for (const Name& n : kNames)
+        if (type == n.pbrt) name = &n;
+    if (!name) {
         warn(d.where, "PixelFilter \"" + type + "\" is not a pbrt-v4 filter; the box filter is used");
         camera_.filter = {{"type", "box"}};
         return;
     }
-    const double x = p.number("xradius", kind->radius), y = p.number("yradius", kind->radius);
+    // pbrt-v4's defaults are photon's (pixel_filter_description.h).
+    const PixelFilterDescription defaults;
+    const double radius = PixelFilterDescription::defaultRadius(name->kind);
+    const double x = p.number("xradius", radius), y = p.number("yradius", radius);
     if (!(x >= 0.05 && x <= 8 && y >= 0.05 && y <= 8))
         fail(d.where, "PixelFilter: xradius and yradius must be in [0.05, 8]");
-    Json f = {{"type", kind->photon}, {"radius", {x, y}}};
+    Json f = {{"type", name->photon}, {"radius", {x, y}}};
     // The ranges photon's camera.filter takes (scene-format.md), named with the file's line.
-    auto within = [&](const char* name, double fallback, double lo, double hi, const char* range) {
-        const double v = p.number(name, fallback);
-        if (!(v >= lo && v <= hi)) fail(d.where, "PixelFilter: " + std::string(name) + " must be in " + range);
+    auto within = [&](const char* param, double fallback, double lo, double hi, const char* range) {
+        const double v = p.number(param, fallback);
+        if (!(v >= lo && v <= hi)) fail(d.where, "PixelFilter: " + std::string(param) + " must be in " + range);
         return v;
     };
-    if (type == "gaussian") f["sigma"] = within("sigma", 0.5, 0.01, 8, "[0.01, 8]");
-    if (type == "mitchell") f["b"] = within("B", 1.0 / 3.0, 0, 1, "[0, 1]"), f["c"] = within("C", 1.0 / 3.0, 0, 1, "[0, 1]");
-    if (type == "sinc") f["tau"] = within("tau", 3, 0.01, 100, "[0.01, 100]");
+    if (name->kind == Kind::Gaussian) f["sigma"] = within("sigma", defaults.sigma, 0.01, 8, "[0.01, 8]");
+    if (name->kind == Kind::Mitchell)
+        f["b"] = within("B", defaults.b, 0, 1, "[0, 1]"), f["c"] = within("C", defaults.c, 0, 1, "[0, 1]");
+    if (name->kind == Kind::Lanczos) f["tau"] = within("tau", defaults.tau, 0.01, 100, "[0.01, 100]");
     if (type == "mitchell" || type == "sinc")
         warn(d.where, "PixelFilter \"" + type + "\": its negative lobes are left out (photon's pixel estimates are not negative)");
     camera_.filter = std::move(f);
@@ -123,7 +141,7 @@ void SceneBuilder::writeCameraAndRender() {
                 {"up", {up.x, up.y, up.z}},
                 {"fov", 2 * std::atan(tanHalf) * kDegrees},
                 {"resolution", {width_, height_}},
-                {"filter", camera_.filter}};
+                {"filter", camera_.filter.is_null() ? defaultFilter() : camera_.filter}};
     // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
     if (dot(right, cross(forward, up)) < 0) cam["handedness"] = "left";
     if (camera_.lensRadius > 0) {
