@@ -4,8 +4,8 @@
 // 2006, pbrt-v4 sec. 8.8.2), so that every pixel stays an independent mean of its own
 // samples, as SPPM's visible points and the error estimate need: a sample at offset d
 // weighs f(d) / (p(d) integral(f)), exactly 1 for the box and the triangle (sampled by
-// inverting their distributions) and within a few parts in a thousand of it for the
-// others (sampled from a table of their cells' integrals; still unbiased).
+// inverting their distributions) and near 1 for the others (sampled from a table of their
+// cells' integrals: up to about 2 in the cells where the filter falls to 0; unbiased).
 //
 // Every filter here is separable, f(x, y) = f(x) f(y). Estimates are non-negative in
 // photon (shared-exponent colours, visible points' throughputs), so the Mitchell and
