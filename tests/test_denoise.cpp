@@ -167,8 +167,11 @@ TEST_F(DenoiseCornell, IsCloserToTheReferenceThanTheRawImage) {
     const double rawAll = rmse(*raw_, *reference_), denoisedAll = rmse(*denoised_, *reference_);
     std::printf("RMSE below 1: raw %.4f denoised %.4f (%.2fx); whole image: raw %.4f denoised %.4f (%.2fx)\n", raw,
                 denoised, denoised / raw, rawAll, denoisedAll, denoisedAll / rawAll);
-    EXPECT_LT(denoised, 0.65 * raw);        // measured 0.57x
-    EXPECT_LT(denoisedAll, 0.8 * rawAll);  // measured 0.73x
+    EXPECT_LT(denoised, 0.65 * raw);  // measured 0.60x
+    // Measured 0.96x: Sobol passes (render.sampler) stratify the 4 film samples of the
+    // light's edge pixels, so the raw image's error there is already 12% below what
+    // independent numbers gave (0.164 against 0.187; the denoiser then took it to 0.77x).
+    EXPECT_LT(denoisedAll, rawAll);
 }
 
 // A render farm worker sends its raw image across processes; the coordinator's Renderer of

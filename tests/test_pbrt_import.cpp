@@ -107,6 +107,29 @@ Shape "sphere")")).document["render"];
     EXPECT_EQ(lightSampler("uniform"), "spatial");
 }
 
+// pbrt-v4's samplers: "independent" stays independent; the stratifying ones (zsobol, its
+// default, sobol, halton, pmj02bn, stratified...) become photon's Sobol passes; the
+// sample count becomes the passes.
+TEST(PbrtImport, SamplerMapsOntoPhotonsSamplerAndPasses) {
+    auto renderOf = [](const std::string& name, const std::string& directive) {
+        return importPbrt(writeScene("pixel-sampler-" + name + ".pbrt", R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+)" + directive + R"(
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere")")).document["render"];
+    };
+    const Json independent = renderOf("independent", R"(Sampler "independent" "integer pixelsamples" [8])");
+    EXPECT_EQ(independent["sampler"], "independent");
+    EXPECT_EQ(independent["passes"], 8);
+    EXPECT_EQ(renderOf("zsobol", R"(Sampler "zsobol")")["sampler"], "sobol");
+    EXPECT_EQ(renderOf("halton", R"(Sampler "halton")")["sampler"], "sobol");
+    EXPECT_EQ(renderOf("pmj02bn", R"(Sampler "pmj02bn")")["sampler"], "sobol");
+    // None: pbrt-v4's default, zsobol, and photon's own default alike.
+    EXPECT_FALSE(renderOf("none", "").contains("sampler"));
+}
+
 // PixelFilter onto camera.filter, with pbrt-v4's defaults (a Gaussian when there is none).
 TEST(PbrtImport, PixelFilterMapsOntoTheCamerasFilter) {
     auto filterOf = [](const std::string& name, const std::string& directive) {

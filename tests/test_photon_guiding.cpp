@@ -149,8 +149,9 @@ TEST(PhotonGuiding, ImageAgreesWithPlainEmission) {
     };
     const auto [plain, plainHits] = render(false);
     const auto [guided, guidedHits] = render(true);
-    // Measured: 360,535 against 175,883 visible points reached; regions within 1.2%.
-    EXPECT_GT(guidedHits, 3 * plainHits / 2);
+    // Measured: 61,681 against 46,953 visible points reached (1.31x; with independent camera
+    // numbers, render.sampler, 79,025 against 49,498, 1.60x); regions within 1.2%.
+    EXPECT_GT(guidedHits, 6 * plainHits / 5);
     const float whole = luminance(test::meanOver(plain, 0, 0, 16, 16));
     // Seeds 5, 6 and 7 put the two means 1.3%, 1.3% and under 1% apart (either way): the
     // noise of 300 passes, which a tighter margin would mistake for a bias.

@@ -37,6 +37,8 @@ public:
         const FilmSample f = sampleFilm(x, y, u);
         return {generateRay(f.x, f.y, uLens), f.weight};
     }
+    // Whether rays start across a lens (the uLens of samplePixel matters) or at a pinhole.
+    bool hasLens() const { return apertureRadius_ > 0; }
     int width() const { return width_; }
     int height() const { return height_; }
     // Side of one pixel at unit distance along the view axis.

@@ -175,6 +175,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.photonGuiding = obj.boolean("photon_guiding", r.photonGuiding);
     r.lobeChoice = LobeChoice(obj.choice("lobe_choice", 0, {"learned", "material"}));
     r.adaptiveCameraPaths = obj.boolean("adaptive_camera_paths", r.adaptiveCameraPaths);
+    r.sampler = SamplerKind(obj.choice("sampler", 0, {"sobol", "independent"}));
     if (auto adaptive = obj.optional("adaptive_photons")) {
         r.adaptivePhotons = adaptive->boolean();
         // The global schedule's passes are rendered apart (on a farm's workers too), each

@@ -93,6 +93,10 @@ void SceneBuilder::film(const Directive& d) {
 void SceneBuilder::sampler(const Directive& d) {
     Params p(d);
     render_["passes"] = static_cast<int64_t>(p.number("pixelsamples", 16));
+    // pbrt-v4's "independent" draws independent numbers, as photon's does; its other samplers
+    // (zsobol, the default, sobol, paddedsobol, halton, pmj02bn, stratified) stratify each
+    // pixel's samples, as photon's Owen-scrambled Sobol passes do.
+    render_["sampler"] = d.strings.at(0) == "independent" ? "independent" : "sobol";
 }
 
 void SceneBuilder::integrator(const Directive& d) {

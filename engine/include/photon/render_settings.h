@@ -36,6 +36,10 @@ enum class LightSamplerKind { Spatial, Power };
 // docs/sppm.md, "Learned lobe choice"): by the probability each pixel's earlier passes found
 // best, or by the material's albedos alone.
 enum class LobeChoice { Learned, Material };
+// Where a camera path's random numbers come from (render.sampler; engine/math/path_sampler.h):
+// Owen-scrambled Sobol sequences over each pixel's passes (or samples), or independent
+// numbers.
+enum class SamplerKind { Sobol, Independent };
 
 // Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
 // the form factors and the linear system are computed.
@@ -111,6 +115,7 @@ struct RenderSettings {
     int bands = 0;
     LightSamplerKind lightSampler = LightSamplerKind::Spatial;
     LobeChoice lobeChoice = LobeChoice::Learned;
+    SamplerKind sampler = SamplerKind::Sobol;
     // SPPM with the per-pixel schedule: each pixel traces as many camera paths a pass as its
     // camera-side variance and the pass's costs make worth it, the first storing the visible
     // point (docs/sppm.md, "Camera paths per pass").
@@ -157,6 +162,9 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Likewise: a checkpoint written before camera paths were counted per pixel goes on
     // with them (one path a pixel a pass so far; AdaptiveCameraPaths::restore).
     if (!s.adaptiveCameraPaths) visit(s.adaptiveCameraPaths);
+    // Likewise: a checkpoint written before the Sobol sampler existed goes on with it (both
+    // samplers' passes are unbiased, and its odd and even passes stay independent).
+    if (s.sampler != SamplerKind::Sobol) visit(s.sampler);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):

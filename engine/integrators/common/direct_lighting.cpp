@@ -2,10 +2,10 @@
 
 namespace photon {
 
-Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes,
+Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler, unsigned lobes,
                         BsdfContinuation next) {
-    const float uLight = rng.uniform();
-    Vec2 u{rng.uniform(), rng.uniform()};
+    const float uLight = sampler.get1D();
+    const Vec2 u = sampler.get2D();
     // Light is kept only from above n: a surface that only reflects sees none from below its
     // shading normal (its BSDF is zero there), and one that transmits picks a side with
     // probability 1/2 and keeps only light from that side, which is unbiased either way (the
@@ -14,7 +14,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng
     // environment does).
     Vec3 n = sp.hit.ns;
     const float sideProbability = lightSampleSideProbability(*sp.material);
-    if (sideProbability < 1.0f && rng.uniform() < 0.5f) n = -n;
+    if (sideProbability < 1.0f && sampler.get1D() < 0.5f) n = -n;
     LightSampler::Pick pick = scene.directLights().pick(uLight, sp.hit.p, n);
     if (!pick.light) return Color(0.0f);
     std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, n, u);

@@ -1,7 +1,7 @@
 // Direct light at a surface point by one light sample and a shadow ray (next-event
 // estimation), shared by the SPPM camera pass and the path tracer.
 #pragma once
-#include "math/rng.h"
+#include "math/path_sampler.h"
 #include "integrators/common/shading.h"
 
 namespace photon {
@@ -18,8 +18,15 @@ struct BsdfContinuation {
 };
 
 // Reflected radiance toward wo (world space) from one light picked by Scene::directLights,
-// through the material's `lobes` only.
-Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng, unsigned lobes = kAllLobes,
-                        BsdfContinuation next = {});
+// through the material's `lobes` only. Its draws: the light (1D), the point on it (2D), and
+// for a material that transmits, the side (1D).
+Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler,
+                        unsigned lobes = kAllLobes, BsdfContinuation next = {});
+// The same with every number from `rng`.
+inline Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng,
+                               unsigned lobes = kAllLobes, BsdfContinuation next = {}) {
+    PathSampler sampler(rng);
+    return sampleDirectLight(scene, sp, wo, sampler, lobes, next);
+}
 
 }  // namespace photon

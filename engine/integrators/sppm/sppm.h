@@ -16,6 +16,7 @@
 #include "integrators/common/photon_emitter.h"
 #include "math/octahedral.h"
 #include "math/rng.h"
+#include "math/path_sampler.h"
 #include "scene/scene.h"
 #include "integrators/common/shading.h"
 #include "integrators/integrator.h"
@@ -142,9 +143,12 @@ private:
     Color radianceLocked(size_t i) const;
     void cameraPass(const CancelToken& cancel);
     // Clears the pixel's visible point and returns a camera ray of it, with its weight.
-    Camera::PixelSample startPixel(size_t index, Rng& rng);
+    Camera::PixelSample startPixel(size_t index, PathSampler& sampler);
+    // The numbers of camera path `path` of pixel `index` in this pass (render.sampler);
+    // `rng` is the pixel's stream.
+    PathSampler pathSampler(size_t index, Rng& rng, int path) const;
     // A camera ray of pixel `index`, drawn from the pixel filter, with its weight.
-    Camera::PixelSample cameraRay(size_t index, Rng& rng) const;
+    Camera::PixelSample cameraRay(size_t index, PathSampler& sampler) const;
     // What a pixel's camera paths did in a pass.
     struct CameraWork {
         int rays = 0, paths = 0;
@@ -154,7 +158,7 @@ private:
     // One camera path from the camera sample: adds the light it finds to `direct` and its first lobe
     // choice to `choice`; the first path of a pixel's pass (`first`) stores its visible
     // point. Returns the rays it cast.
-    int tracePath(size_t index, const Camera::PixelSample& start, Rng& rng, bool first, Color& direct,
+    int tracePath(size_t index, const Camera::PixelSample& start, PathSampler& sampler, bool first, Color& direct,
                   LobeChoiceRecord& choice);
     // render.lightweight's camera path: a path-traced sample that leaves out the caustics
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
@@ -164,7 +168,7 @@ private:
     static float smoothDielectricReflectance(const Material& m, Vec3 woLocal);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
     // weighted against that vertex's light sample.
-    void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
+    void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, PathSampler& sampler,
                      Color& direct) const;
     void buildGrid();
     void photonPass(const CancelToken& cancel, int64_t photons);

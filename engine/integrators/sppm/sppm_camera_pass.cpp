@@ -37,22 +37,28 @@ float SppmIntegrator::autoRadius(float pathLength) const {
     return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
 }
 
-Camera::PixelSample SppmIntegrator::startPixel(size_t index, Rng& rng) {
+Camera::PixelSample SppmIntegrator::startPixel(size_t index, PathSampler& sampler) {
     discs_[index - bandOffset_] = GatherDisc{};
     visible_[index - bandOffset_] = VisiblePoint{};
-    return cameraRay(index, rng);
+    return cameraRay(index, sampler);
 }
 
-Camera::PixelSample SppmIntegrator::cameraRay(size_t index, Rng& rng) const {
-    const Vec2 uFilm{rng.uniform(), rng.uniform()};
-    const Vec2 uLens{rng.uniform(), rng.uniform()};
+PathSampler SppmIntegrator::pathSampler(size_t index, Rng& rng, int path) const {
+    if (settings_.sampler == SamplerKind::Independent) return PathSampler(rng);
+    return PathSampler(rng, settings_.seed, passIndex_, index, static_cast<uint64_t>(path));
+}
+
+Camera::PixelSample SppmIntegrator::cameraRay(size_t index, PathSampler& sampler) const {
+    const Vec2 uFilm = sampler.get2D();
+    const Vec2 uLens = scene_->camera().hasLens() ? sampler.get2D() : Vec2{0.5f, 0.5f};
     return scene_->camera().samplePixel(static_cast<int>(index % width_), static_cast<int>(index / width_), uFilm, uLens);
 }
 
 SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     Color direct(0.0f);
     LobeChoiceRecord choice;
-    CameraWork work{tracePath(index, startPixel(index, rng), rng, true, direct, choice), 1};
+    PathSampler sampler = pathSampler(index, rng, 0);
+    CameraWork work{tracePath(index, startPixel(index, sampler), sampler, true, direct, choice), 1};
     double squares = luminance(direct) * luminance(direct);
     const float paths =
         adaptsCameraPaths_
@@ -67,7 +73,8 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
         for (int k = 1; k < work.paths; ++k) {
             Color more(0.0f);
             LobeChoiceRecord unused;
-            work.rays += tracePath(index, cameraRay(index, rng), rng, false, more, unused);
+            PathSampler extraSampler = pathSampler(index, rng, k);
+            work.rays += tracePath(index, cameraRay(index, extraSampler), extraSampler, false, more, unused);
             direct += more;
             squares += luminance(more) * luminance(more);
         }
@@ -87,7 +94,7 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     return work;
 }
 
-int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Rng& rng, bool first, Color& direct,
+int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, PathSampler& sampler, bool first, Color& direct,
                               LobeChoiceRecord& choice) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
@@ -131,15 +138,25 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Rn
                                       : splits                  ? BsdfContinuation{others, 1.0f - pd}
                                                                 : BsdfContinuation{};
         if (!m.isDeltaOnly() && (directBySampling || !storesHere))
-            direct += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next), ++rays;
+            direct += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next), ++rays;
         else if (splits)  // photons bring direct light through the diffuse lobe only
-            direct += beta * sampleDirectLight(scene, sp, wo, rng, others, next), ++rays;
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
+            direct += beta * sampleDirectLight(scene, sp, wo, sampler, others, next), ++rays;
+        const float reflectance =
+            learnsLobeChoice_ && !choice.made() && !storesHere ? smoothDielectricReflectance(m, woLocal) : 0.0f;
+        const bool learnedDielectricChoice = reflectance > 0 && reflectance < 1;
+        // Draws only what the path uses: a path that stops on a plain diffuse surface (most
+        // of them) draws none here. A choice whose probability was learned from earlier
+        // passes draws from the pixel's independent stream: a Sobol number is stratified
+        // against those passes' numbers, so it would not fall below the learned probability
+        // with that probability, and the choice's weight would be wrong.
+        const bool learnedChoice = (firstChoice && learnsLobeChoice_) || learnedDielectricChoice;
+        const float uLobe = storesHere && !splits ? 0.0f : learnedChoice ? sampler.rng().uniform() : sampler.get1D();
         if (firstChoice) choice = LobeChoiceRecord::of(uLobe >= pd, uLobe >= pd ? 1.0f - pd : pd, luminance(direct));
         if (storesHere) {
             if (uLobe >= pd) {
-                std::optional<BSDFSample> s = m.sample(woLocal, rng.uniform(), u, sp.inputs, TransportMode::Radiance, others);
+                const Vec2 u = sampler.get2D();
+                const float uOthers = sampler.get1D();
+                std::optional<BSDFSample> s = m.sample(woLocal, uOthers, u, sp.inputs, TransportMode::Radiance, others);
                 if (!s) break;
                 beta *= s->weight / (1.0f - pd);
                 bounce = bounceFrom(sp, *s, 1.0f - pd);
@@ -147,12 +164,12 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Rn
                 continue;
             }
             if (first) storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
-            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, rng, direct), ++rays;
+            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, sampler, direct), ++rays;
             break;
         }
+        const Vec2 u = sampler.get2D();
         std::optional<BSDFSample> s;
-        const float reflectance = learnsLobeChoice_ && !choice.made() ? smoothDielectricReflectance(m, woLocal) : 0.0f;
-        if (reflectance > 0 && reflectance < 1) {
+        if (learnedDielectricChoice) {
             // The first choice between a smooth dielectric's reflection and refraction is
             // learned as a coat's is (lobe_choice.h): reflection with probability q instead
             // of F, so the sample's weight F / q or (1 - F) / (1 - q) (its pdf being F or 1 - F).
@@ -179,10 +196,10 @@ float SppmIntegrator::smoothDielectricReflectance(const Material& m, Vec3 woLoca
     return smooth && smooth->ior > 0 ? fresnelDielectric(woLocal.z, smooth->ior) : 0.0f;
 }
 
-void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, Rng& rng,
-                                 Color& direct) const {
-    float uLobe = rng.uniform();
-    Vec2 u{rng.uniform(), rng.uniform()};
+void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta,
+                                 PathSampler& sampler, Color& direct) const {
+    const float uLobe = sampler.get1D();
+    const Vec2 u = sampler.get2D();
     std::optional<BSDFSample> s = sp.material->sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
     if (!s) return;
     SurfaceHit hit;

@@ -38,7 +38,8 @@ Color pathTracedShare(const GatherVertex& v) {
 
 int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     const Scene& scene = *scene_;
-    const Camera::PixelSample start = startPixel(index, rng);
+    PathSampler sampler = pathSampler(index, rng, 0);
+    const Camera::PixelSample start = startPixel(index, sampler);
     Color L(0.0f), beta(start.weight);
     Ray ray = start.ray;
     BounceSampling bounce;
@@ -62,7 +63,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         const Vec3 woLocal = sp.frame.toLocal(wo);
-        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next), ++rays;
+        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next), ++rays;
         const bool gathersHere = !gather && m.hasDiffuse();
         if (gathersHere) {
             // Photons are gathered through the diffuse lobe alone where there are others
@@ -71,8 +72,8 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
             storeVisiblePoint(index, sp, wo, beta, lobes, pathLength);
             gather = GatherVertex{sp, woLocal, lobes, {}};
         }
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
+        const float uLobe = sampler.get1D();
+        const Vec2 u = sampler.get2D();
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
         if (!s) break;
         if (gathersHere) {
@@ -83,7 +84,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         }
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
-        if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;  // as the path tracer
+        if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;  // as the path tracer
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     results_[index].direct = SharedExponentColor::of(L, rng.uniform());  // the pixel's last draw
