@@ -15,13 +15,22 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     const RenderSettings& s = scene_->settings();
     auto start = std::chrono::steady_clock::now();
     const RngStream stream(s.seed, static_cast<uint64_t>(passes_), StreamPurpose::Camera);
+    const bool stratified = s.sampler == SamplerKind::Sobol;
+    const Camera& camera = scene_->camera();
     forEachPixel(width_, height_, stream, cancel, [&](int x, int y, size_t index, Rng& rng) {
-        // The lens's numbers first, then y's, then x's: the order these were always drawn in.
-        const Vec2 uLens{rng.uniform(), rng.uniform()};
-        const float uy = rng.uniform();
-        const Vec2 uFilm{rng.uniform(), uy};
-        const Camera::PixelSample sample = scene_->camera().samplePixel(x, y, uFilm, uLens);
-        pass_[index] = radiance(sample.ray, rng) * sample.weight;
+        PathSampler sampler = stratified ? PathSampler(rng, s.seed, passes_, index, 0) : PathSampler(rng);
+        Vec2 uFilm, uLens{0.5f, 0.5f};
+        if (stratified) {
+            uFilm = sampler.get2D();
+            if (camera.hasLens()) uLens = sampler.get2D();
+        } else {
+            // The lens's numbers first, then y's, then x's: the order these were always drawn in.
+            uLens = {rng.uniform(), rng.uniform()};
+            const float uy = rng.uniform();
+            uFilm = {rng.uniform(), uy};
+        }
+        const Camera::PixelSample sample = camera.samplePixel(x, y, uFilm, uLens);
+        pass_[index] = radiance(sample.ray, sampler) * sample.weight;
     });
     if (cancel.cancelled()) return false;
     std::lock_guard<std::mutex> lock(mutex_);

@@ -5,7 +5,7 @@
 #include <mutex>
 #include <vector>
 #include "integrators/common/pass_halves.h"
-#include "math/rng.h"
+#include "math/path_sampler.h"
 #include "scene/scene.h"
 #include "integrators/integrator.h"
 
@@ -28,8 +28,9 @@ protected:
     explicit PixelMeanIntegrator(std::shared_ptr<const Scene> scene);
     // Work before a pass's camera rays (e.g. a solve on the first pass); false if cancelled.
     virtual bool preparePass(const CancelToken& cancel) { return true; }
-    // Radiance arriving along a camera ray; rng is the pixel's stream for this pass.
-    virtual Color radiance(const Ray& ray, Rng& rng) const = 0;
+    // Radiance arriving along a camera ray; `sampler` draws the path's numbers for this pass
+    // (render.sampler), its rng() is the pixel's stream.
+    virtual Color radiance(const Ray& ray, PathSampler& sampler) const = 0;
 
     std::shared_ptr<const Scene> scene_;
     PassStats stats_;

@@ -13,14 +13,14 @@ public:
     explicit PathIntegrator(std::shared_ptr<const Scene> scene) : PixelMeanIntegrator(std::move(scene)) {}
 
 private:
-    Color radiance(const Ray& ray, Rng& rng) const override {
-        return traceRadiance(*scene_, ray, rng, scene_->settings().maxDepth);
+    Color radiance(const Ray& ray, PathSampler& sampler) const override {
+        return traceRadiance(*scene_, ray, sampler, scene_->settings().maxDepth);
     }
 };
 
 }  // namespace
 
-Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
+Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDepth) {
     Color L(0.0f), beta(1.0f);
     // Area light found by shadow rays is not counted again; the environment is shared
     // between shadow rays and BSDF samples by multiple importance sampling.
@@ -35,16 +35,16 @@ Color traceRadiance(const Scene& scene, Ray ray, Rng& rng, int maxDepth) {
         if (depth == maxDepth) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
-        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, rng, kAllLobes, next);
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
+        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next);
+        const float uLobe = sampler.get1D();
+        const Vec2 u = sampler.get2D();
         std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,
                                                           TransportMode::Radiance);
         if (!s) break;
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
         // Russian roulette after a few bounces, on the throughput's largest channel.
-        if (depth >= 3 && !survivesRoulette(beta, rng.uniform())) break;
+        if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
     }
     return L;

@@ -70,7 +70,7 @@ bool PhotonMapIntegrator::preparePass(const CancelToken& cancel) {
 
 // The camera path follows delta lobes only (E S*), adding emission it reaches that way;
 // at every vertex with non-delta lobes the rest of the light comes from reflectedAt.
-Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
+Color PhotonMapIntegrator::radiance(const Ray& cameraRay, PathSampler& sampler) const {
     const Scene& scene = *scene_;
     Ray ray = cameraRay;
     Color L(0.0f), beta(1.0f);
@@ -80,17 +80,17 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         unsigned lobes = sp.material->lobes();
-        if (lobes & kSmoothLobes) L += beta * reflectedAt(sp, wo, lobes & kSmoothLobes, rng);
+        if (lobes & kSmoothLobes) L += beta * reflectedAt(sp, wo, lobes & kSmoothLobes, sampler);
         if (!(lobes & kDeltaLobe) || depth + 1 == settings_.maxDepth) break;
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
+        const float uLobe = sampler.get1D();
+        const Vec2 u = sampler.get2D();
         std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,
                                                           TransportMode::Radiance, kDeltaLobe);
         if (!s) break;
         beta *= s->weight;
         if (depth >= 3) {  // Russian roulette on long specular chains
             float q = std::min(1.0f, maxComponent(beta));
-            if (rng.uniform() >= q) break;
+            if (sampler.get1D() >= q) break;
             beta /= q;
         }
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
@@ -99,11 +99,12 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, Rng& rng) const {
 }
 
 // Direct light (L D), caustics (L S+ D) and indirect light (L ... D ... D), disjoint.
-Color PhotonMapIntegrator::reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const {
-    Color L = sampleDirectLight(*scene_, sp, wo, rng, lobes);
+Color PhotonMapIntegrator::reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, PathSampler& sampler) const {
+    Color L = sampleDirectLight(*scene_, sp, wo, sampler, lobes);
     L += caustic_.radiance(sp, wo, lobes, causticLookup_);
     if (settings_.photonMap.gatherRays == 0) return L + global_.radiance(sp, wo, lobes, globalLookup_, true);
-    return L + finalGather(sp, wo, lobes, rng);
+    // The gather's many rays take the pixel's stream.
+    return L + finalGather(sp, wo, lobes, sampler.rng());
 }
 
 // Final gathering (Jensen 2001, sec. 9.3.4): rays sampled from the BSDF; where each first

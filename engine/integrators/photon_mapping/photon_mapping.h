@@ -40,9 +40,9 @@ public:
 private:
     bool preparePass(const CancelToken& cancel) override;
     bool buildMaps(const CancelToken& cancel);
-    Color radiance(const Ray& cameraRay, Rng& rng) const override;
+    Color radiance(const Ray& cameraRay, PathSampler& sampler) const override;
     // Light reflected at a camera hit through its non-specular lobes.
-    Color reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
+    Color reflectedAt(const ShadingPoint& sp, Vec3 wo, unsigned lobes, PathSampler& sampler) const;
     Color finalGather(const ShadingPoint& sp, Vec3 wo, unsigned lobes, Rng& rng) const;
     // Light leaving a gather ray's hit y toward wo: from the precomputed irradiance at y
     // for purely diffuse surfaces where there is one, else the full global-map estimate.

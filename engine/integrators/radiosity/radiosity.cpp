@@ -25,8 +25,8 @@ private:
         return true;
     }
 
-    Color radiance(const Ray& ray, Rng& rng) const override {
-        return radiosityRadiance(*scene_, *solution_, ray, rng, scene_->settings().maxDepth);
+    Color radiance(const Ray& ray, PathSampler& sampler) const override {
+        return radiosityRadiance(*scene_, *solution_, ray, sampler, scene_->settings().maxDepth);
     }
 
     std::unique_ptr<RadiositySolution> solution_;
@@ -34,7 +34,8 @@ private:
 
 }  // namespace
 
-Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, Ray ray, Rng& rng, int maxDepth) {
+Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, Ray ray, PathSampler& sampler,
+                        int maxDepth) {
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
@@ -44,8 +45,8 @@ Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, R
         const Material& m = *sp.material;
         Vec3 woLocal = sp.frame.toLocal(wo);
         const unsigned others = m.lobes() & ~kDiffuseLobe;
-        float uLobe = rng.uniform();
-        Vec2 u{rng.uniform(), rng.uniform()};
+        float uLobe = sampler.get1D();
+        const Vec2 u = sampler.get2D();
         float pDiffuse = 0;
         if (m.hasDiffuse()) {
             // Like SPPM's camera pass: stop on the diffuse lobe with its share of the
@@ -57,7 +58,7 @@ Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, R
                          (kInvPi / pDiffuse);
                 break;
             }
-            uLobe = rng.uniform();
+            uLobe = sampler.get1D();
         }
         std::optional<BSDFSample> s = m.sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance, others);
         if (!s) break;

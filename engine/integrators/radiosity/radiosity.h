@@ -1,7 +1,7 @@
 // Finite-element radiosity (docs/radiosity.md): the diffuse light of the scene solved once
 // on patches, then shown through the camera pass after pass.
 #pragma once
-#include "math/rng.h"
+#include "math/path_sampler.h"
 #include "integrators/integrator.h"
 #include "integrators/radiosity/radiosity_solver.h"
 
@@ -11,7 +11,8 @@ namespace photon {
 // Gouraud-interpolated radiosity of the first diffuse surface (L = rho I / pi, rho the
 // reflectance at the hit), and specular surfaces followed by sampling their BSDF for up
 // to maxDepth vertices.
-Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, Ray ray, Rng& rng, int maxDepth);
+Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, Ray ray, PathSampler& sampler,
+                        int maxDepth);
 
 std::unique_ptr<Integrator> makeRadiosityIntegrator(std::shared_ptr<const Scene> scene);
 
