@@ -24,6 +24,10 @@ class PathSampler {
 public:
     static constexpr int kStratifiedDraws = 24;
 
+    // Stratified (render.sampler "sobol") or every draw from `rng` ("independent").
+    static PathSampler of(bool stratified, Rng& rng, uint64_t seed, int64_t pass, uint64_t pixel, uint64_t path) {
+        return stratified ? PathSampler(rng, seed, pass, pixel, path) : PathSampler(rng);
+    }
     // Every draw from `rng`.
     explicit PathSampler(Rng& rng) : rng_(rng) {}
     // Draws stratified over the passes of path `path` of pixel `pixel`.

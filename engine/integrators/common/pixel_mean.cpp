@@ -18,7 +18,7 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     const bool stratified = s.sampler == SamplerKind::Sobol;
     const Camera& camera = scene_->camera();
     forEachPixel(width_, height_, stream, cancel, [&](int x, int y, size_t index, Rng& rng) {
-        PathSampler sampler = stratified ? PathSampler(rng, s.seed, passes_, index, 0) : PathSampler(rng);
+        PathSampler sampler = PathSampler::of(stratified, rng, s.seed, passes_, index, 0);
         Vec2 uFilm, uLens{0.5f, 0.5f};
         if (stratified) {
             uFilm = sampler.get2D();

@@ -44,8 +44,8 @@ Camera::PixelSample SppmIntegrator::startPixel(size_t index, PathSampler& sample
 }
 
 PathSampler SppmIntegrator::pathSampler(size_t index, Rng& rng, int path) const {
-    if (settings_.sampler == SamplerKind::Independent) return PathSampler(rng);
-    return PathSampler(rng, settings_.seed, passIndex_, index, static_cast<uint64_t>(path));
+    return PathSampler::of(settings_.sampler == SamplerKind::Sobol, rng, settings_.seed, passIndex_, index,
+                           static_cast<uint64_t>(path));
 }
 
 Camera::PixelSample SppmIntegrator::cameraRay(size_t index, PathSampler& sampler) const {
@@ -94,8 +94,8 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
     return work;
 }
 
-int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, PathSampler& sampler, bool first, Color& direct,
-                              LobeChoiceRecord& choice) {
+int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, PathSampler& sampler, bool first,
+                              Color& direct, LobeChoiceRecord& choice) {
     const Scene& scene = *scene_;
     const bool directBySampling = settings_.direct == DirectLighting::LightSampling;
     Ray ray = start.ray;
