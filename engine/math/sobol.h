@@ -74,17 +74,19 @@ inline float toUnit(uint32_t x) { return static_cast<float>(x >> 8) * 0x1p-24f; 
 // indices onto another.
 inline uint32_t shuffle(uint32_t index, uint32_t seed) { return owenScramble(index, seed); }
 
+// The first dimension at (shuffled) index i, i reversed, Owen-scrambled:
+// reverse(LK(reverse(reverse(i)))).
+inline float firstDimension(uint32_t i, uint32_t seed) { return toUnit(reverseBits(laineKarrasPermutation(i, seed))); }
+
 // Sample `index` of the 1D draw whose seeds are `key`'s two halves.
 inline float sample1D(uint32_t index, uint64_t key) {
-    const uint32_t i = shuffle(index, static_cast<uint32_t>(key));
-    // The first dimension, i reversed, Owen-scrambled: reverse(LK(reverse(reverse(i)))).
-    return toUnit(reverseBits(laineKarrasPermutation(i, static_cast<uint32_t>(key >> 32))));
+    return firstDimension(shuffle(index, static_cast<uint32_t>(key)), static_cast<uint32_t>(key >> 32));
 }
 
 // Sample `index` of the 2D draw whose seeds are `key`'s two halves and `seed2`.
 inline Vec2 sample2D(uint32_t index, uint64_t key, uint32_t seed2) {
     const uint32_t i = shuffle(index, static_cast<uint32_t>(key));
-    return {toUnit(reverseBits(laineKarrasPermutation(i, static_cast<uint32_t>(key >> 32)))),
+    return {firstDimension(i, static_cast<uint32_t>(key >> 32)),
             toUnit(reverseBits(laineKarrasPermutation(secondDimensionReversed(i), seed2)))};
 }
 
