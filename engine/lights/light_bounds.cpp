@@ -91,7 +91,7 @@ PHOTON_LANES_INLINE void importancesLanes(const LightImportances::Columns& c, si
                                           float* out) {
     for (size_t k = 0; k < count; k += kLanes) {
         const size_t i = first + k;
-        auto load = [&](const std::vector<float>& column) { return loadLanes<float, FloatLanes>(column.data() + i); };
+        auto load = [&](const std::vector<float>& column) PHOTON_LANES_LAMBDA { return loadLanes<float, FloatLanes>(column.data() + i); };
         BoundsOf<FloatLanes, IntLanes> b{load(c.cx),        load(c.cy),        load(c.cz),
                                          load(c.hx),        load(c.hy),        load(c.hz),         load(c.ax),
                                          load(c.ay),        load(c.az),        load(c.radius),     load(c.radius2),

@@ -17,6 +17,12 @@ namespace photon {
 // out-of-line helper would run the baseline code, with a different way of passing vectors,
 // from inside the wider ones.
 #define PHOTON_LANES_INLINE inline __attribute__((always_inline))
+// The same for a lambda inside a kernel, written after its parameters: its closure type is
+// one for all three variants, so an out-of-line call operator would be compiled for the
+// baseline CPU alone. GCC's inlining limits count per translation unit, so whether it
+// inlines a plain lambda changed with what else a unity build put beside it, and an
+// AVX-512 kernel then called the baseline body with vectors passed its own way (a crash).
+#define PHOTON_LANES_LAMBDA __attribute__((always_inline))
 
 // A kernel for lanes is written once, as an always-inline body; PHOTON_LANES_KERNEL makes
 // from it an AVX-512 function, an AVX2 one and a baseline one, and calls the widest the CPU

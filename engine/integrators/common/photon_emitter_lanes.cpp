@@ -27,7 +27,7 @@ PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonE
     // The position's two numbers, then the direction's (PhotonEmitter::emitFrom).
     // Moved into each lane's guide cell (EmissionGuide::remap).
     const FloatLanes scale = broadcast<FloatLanes>(in.scale);
-    auto guided = [&](int d) {
+    auto guided = [&](int d) PHOTON_LANES_LAMBDA {
         const FloatLanes v = loadLanes<float, FloatLanes>(in.offset[d]) + uniformLanes(out.state, out.increment, waiting) * scale;
         const FloatLanes limit = loadLanes<float, FloatLanes>(in.limit[d]);
         return select(v < limit, v, limit);
@@ -49,7 +49,7 @@ PHOTON_LANES_INLINE void emitFromTrianglesLanes(const TriangleLanes& in, PhotonE
     }
     // Field by field, built in registers (lanes written one by one to memory and read back
     // as a vector stall the load).
-    auto field = [&](auto value) {
+    auto field = [&](auto value) PHOTON_LANES_LAMBDA {
         if (fewTriangles) {
             const EmissionTriangles& tris = *in.shared;
             FloatLanes v = broadcast<FloatLanes>(value(tris[0]));
