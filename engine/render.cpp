@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include "film/error_decay.h"
 #include "film/pixel_errors.h"
 #include "integrators/common/checkpoint.h"
 #include "integrator_factory.h"
@@ -17,7 +18,8 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 Image Renderer::rawSnapshot() const { return integrator_->snapshot(); }
 
-Renderer::Renderer(std::shared_ptr<const Scene> scene) : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)) {
+Renderer::Renderer(std::shared_ptr<const Scene> scene)
+    : scene_(std::move(scene)), integrator_(makeIntegrator(scene_)), errorDecay_(std::make_unique<ErrorDecay>()) {
     progress_.totalPasses = scene_->settings().passes;
     const DenoiseSettings& denoise = scene_->settings().denoise;
     if (denoise.enabled) denoiser_ = std::make_shared<const Denoiser>(*scene_, denoise);
@@ -64,8 +66,9 @@ bool Renderer::renderPass(const CancelToken& cancel) {
     return true;
 }
 
-// The error falls as passes^-decay (film/pixel_errors.h), so reaching the target e_t from
-// e after N passes takes N (e / e_t)^(1 / decay) passes in all.
+// The error falls as passes^-decay, so reaching the target e_t from e after N passes takes
+// N (e / e_t)^(1 / decay) passes in all; decay is measured from the render's own estimates
+// (film/error_decay.h), the integrator's model rate until there are enough of them.
 void Renderer::updateErrorEstimate() {
     progress_.relativeError.reset();
     progress_.passesToTarget.reset();
@@ -75,11 +78,10 @@ void Renderer::updateErrorEstimate() {
     if (!e) return;
     const double error = relativeErrorOf(*e);
     progress_.relativeError = error;
+    errorDecay_->add(progress_.pass, error);
     const double target = scene_->settings().targetError;
-    if (target > 0 && e->decay > 0) {
-        const double passes = progress_.pass;
-        progress_.passesToTarget = error <= target ? 0.0 : passes * std::pow(error / target, 1 / e->decay) - passes;
-    }
+    const double decay = errorDecay_->measured().value_or(e->decay);
+    if (target > 0 && decay > 0) progress_.passesToTarget = passesToTarget(progress_.pass, error, target, decay);
     errors_ = std::make_shared<const PixelErrors>(std::move(*e));
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <photon/error_map.h>
 #include <photon/render.h>
+#include "film/error_decay.h"
 #include "film/pixel_errors.h"
 #include "integrators/integrator.h"
 #include "scene/scene.h"
@@ -113,24 +114,69 @@ TEST(ErrorEstimate, TheHeatMapsScaleStepsByFactorsOfTen) {
 }
 
 TEST(ErrorEstimate, TheRenderStopsAtTheTargetError) {
+    constexpr double kTarget = 0.025;  // ~200 passes
     SceneDescription d = test::exampleScene("cornell-box", 32, 100000, 5000, 1);
-    d.render.targetError = 0.08;
+    d.render.targetError = kTarget;
     Renderer renderer(Scene::build(std::move(d)));
     CancelToken cancel;
     std::vector<RenderProgress> seen;
     EXPECT_EQ(renderer.run(cancel, [&](const RenderProgress& p) { seen.push_back(p); }), RenderOutcome::TargetError);
     ASSERT_GE(seen.size(), 3u);
     EXPECT_FALSE(seen[0].relativeError.has_value());  // one half is still empty after pass 1
-    EXPECT_LE(*seen.back().relativeError, 0.08);
+    EXPECT_LE(*seen.back().relativeError, kTarget);
     EXPECT_EQ(*seen.back().passesToTarget, 0.0);
     const RenderProgress& before = seen[seen.size() - 2];
-    EXPECT_GT(*before.relativeError, 0.08);
+    EXPECT_GT(*before.relativeError, kTarget);
     EXPECT_GT(*before.passesToTarget, 0.0);
-    // The prediction at half way is within a factor of two of where the render stopped.
+    // The predictions from half way on are within 30% of where the render stopped, and
+    // from a quarter of the way on nearer than the model's rate, passes^-1/3, would be (the
+    // rate measured from the render's own estimates: film/error_decay.h). Over seeds 1-5
+    // the predictions at half way were 0.89-1.23 times the passes the render took, the
+    // model's 1.4-2.4 times.
+    const int stopped = seen.back().pass;
+    for (double fraction : {0.25, 0.5, 0.75}) {
+        const RenderProgress& p = seen[size_t(fraction * double(seen.size()))];
+        const double predicted = p.pass + *p.passesToTarget;
+        const double model = p.pass + passesToTarget(p.pass, *p.relativeError, kTarget, 1.0 / 3);
+        std::printf("at pass %d of %d: predicted %.1f (the model's rate: %.1f)\n", p.pass, stopped, predicted, model);
+        EXPECT_LT(std::abs(std::log(predicted / stopped)), std::abs(std::log(model / stopped))) << p.pass;
+        if (fraction >= 0.5) EXPECT_NEAR(std::log(predicted / stopped), 0.0, std::log(1.3)) << predicted << " vs " << stopped;
+    }
     const RenderProgress& half = seen[seen.size() / 2];
-    const double predicted = half.pass + *half.passesToTarget;
-    EXPECT_NEAR(std::log2(predicted / seen.back().pass), 0.0, 1.0) << predicted << " vs " << seen.back().pass;
-    EXPECT_LE(seen[seen.size() / 2].etaSeconds, seen[seen.size() / 2].elapsedSeconds * 4);
+    EXPECT_LE(half.etaSeconds, half.elapsedSeconds * 2);
+}
+
+// The rate is the slope of log(error) on log(passes) over the latest half of the passes.
+TEST(ErrorEstimate, TheRateIsMeasuredOverTheLatestHalf) {
+    ErrorDecay decay;
+    for (int n = 1; n <= 3; ++n) decay.add(n, std::pow(n, -0.7));
+    EXPECT_FALSE(decay.measured());  // too few passes to span a factor of 1.4
+    // Falling as passes^-1 for the first 40 passes, then as passes^-0.4: after 200 passes
+    // the points from 100 on hold only the second slope.
+    double at40 = std::pow(40.0, -1.0);
+    for (int n = 4; n <= 40; ++n) decay.add(n, std::pow(n, -1.0));
+    ASSERT_TRUE(decay.measured());
+    EXPECT_NEAR(*decay.measured(), 1.0, 1e-9);
+    for (int n = 41; n <= 200; ++n) decay.add(n, at40 * std::pow(n / 40.0, -0.4));
+    EXPECT_NEAR(*decay.measured(), 0.4, 1e-9);
+    // Noise in the estimate cannot make the rate absurd.
+    ErrorDecay flat;
+    for (int n = 10; n <= 40; ++n) flat.add(n, 0.1 * (1 + 0.01 * (n % 2)));
+    EXPECT_EQ(*flat.measured(), 0.1);
+    // A render that starts over (fewer passes than last seen) forgets the old points.
+    decay.add(5, 0.5);
+    EXPECT_FALSE(decay.measured());
+    // The same pass count again replaces its point (a batch re-added).
+    ErrorDecay same;
+    for (int n = 10; n <= 20; ++n) same.add(n, std::pow(n, -0.5));
+    same.add(20, std::pow(20, -0.5));
+    EXPECT_NEAR(*same.measured(), 0.5, 1e-9);
+}
+
+TEST(ErrorEstimate, PassesToTargetFollowsThePowerLaw) {
+    // 0.1 after 100 passes, falling as passes^-1/2: 0.05 after 400.
+    EXPECT_NEAR(passesToTarget(100, 0.1, 0.05, 0.5), 300.0, 1e-9);
+    EXPECT_EQ(passesToTarget(100, 0.04, 0.05, 0.5), 0.0);
 }
 
 TEST(ErrorEstimate, TheHeatMapLayerHoldsTheEstimate) {

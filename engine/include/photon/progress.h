@@ -50,7 +50,8 @@ struct RenderProgress {
     // passes are not independent estimates, and before each half has a pass.
     std::optional<double> relativeError;
     // With render.target_error: passes still to render until the estimate reaches it, from
-    // the rate the error falls at (passes^-1/2; SPPM's passes^-alpha/2).
+    // the rate the estimate has fallen at over the render's latest half (until it can be
+    // measured, the model's: passes^-1/2; SPPM's passes^-alpha/2).
     std::optional<double> passesToTarget;
     PassStats lastPass;
 };

@@ -17,6 +17,7 @@ namespace photon {
 
 class Scene;
 class Integrator;
+class ErrorDecay;
 
 class Renderer {
 public:
@@ -84,6 +85,7 @@ private:
     std::shared_ptr<const Denoiser> denoiser_;  // null when render.denoise is off
     RenderProgress progress_;
     std::shared_ptr<const PixelErrors> errors_;  // after the last pass; null without an estimate
+    std::unique_ptr<ErrorDecay> errorDecay_;     // the rate the estimate falls at, measured
     double renderSeconds_ = 0;
     // The passes since the photons per pass last changed (render.adaptive_photons): their
     // mean time is what each pass left will take. Photon count -1: not yet seen (a new or
