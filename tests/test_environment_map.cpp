@@ -351,8 +351,8 @@ TEST(EnvironmentMapRender, LatLongOrientationAndRotation) {
     // The light's own answer for the world directions.
     SceneSphere bounds{{0, 0, 0}, 1};
     auto rotated = makeEnvironmentLight(environmentOf(image, Layout::LatLong, 1, quarterTurn), bounds);
-    EXPECT_EQ(rotated->radianceFromDirection(normalize(Vec3(0.01f, 0.01f, -1))).x, L);
-    EXPECT_EQ(rotated->radianceFromDirection(Vec3(1, 0, 0)).x, 0.0f);
+    EXPECT_EQ(rotated->radianceFromDirection({}, normalize(Vec3(0.01f, 0.01f, -1))).x, L);
+    EXPECT_EQ(rotated->radianceFromDirection({}, Vec3(1, 0, 0)).x, 0.0f);
 }
 
 // SPPM's mean, with either way of finding direct light, within `tolerance` (relative) of

@@ -333,6 +333,16 @@ TEST(SceneLoaderErrors, Lights) {
                 "only one environment light is allowed");
     expectError([](Json& d) { d["lights"][2]["direction"] = {0, 0, 0}; }, "lights[2].direction",
                 "must not be the zero vector");
+    auto portal = [](Json corners) {
+        return [corners](Json& d) {
+            d["lights"].push_back({{"type", "environment"}, {"radiance", {1, 1, 1}}, {"portal", corners}});
+        };
+    };
+    expectError(portal({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}), "lights[4].portal", "must be 4 corners, not 3");
+    expectError(portal({{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {1, 1, 0}}), "lights[4].portal",
+                "must be a rectangle: the edges from the first corner are not at right angles");
+    expectError(portal({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}}), "lights[4].portal",
+                "the corners must span a rectangle of non-zero area");
 }
 
 TEST(SceneLoaderErrors, FilePaths) {

@@ -3,6 +3,8 @@
 // Plain data, world space, SI-style units as documented in docs/scene-format.md.
 #pragma once
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -134,6 +136,9 @@ struct LightDescription {
         Transform toWorld;  // a rotation: the light's frame to the world
     };
     EnvironmentImage environment;  // image null: constant `radiance`
+    // Environment: the light comes in only through this rectangle (world space, corners in
+    // order; light arrives from the side of cross(p3 - p0, p1 - p0)), as pbrt-v4's portals.
+    std::optional<std::array<Vec3, 4>> portal;
 };
 
 struct SceneDescription {

@@ -33,7 +33,7 @@ public:
         return PhotonEmission{bounds_.pointOnDiscFacing(travel, uPosition), travel.n, power(), Vec3{}};
     }
 
-    Color radianceFromDirection(Vec3) const override { return radiance_; }
+    Color radianceFromDirection(Vec3, Vec3) const override { return radiance_; }
 
 private:
     Color radiance_;
@@ -43,6 +43,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds) {
+    if (d.portal) return makePortalEnvironmentLight(d, bounds);
     if (d.environment.image) return makeImageEnvironmentLight(d, bounds);
     return std::make_unique<EnvironmentLight>(d, bounds);
 }

@@ -36,18 +36,12 @@ public:
                               s->radiance * (scale_ * discArea() / s->pdf), Vec3{}};
     }
 
-    Color radianceFromDirection(Vec3 d) const override { return map_.radiance(toLocal(d)) * scale_; }
+    Color radianceFromDirection(Vec3, Vec3 d) const override { return map_.radiance(toLocal(d)) * scale_; }
 
 private:
     float discArea() const { return kPi * bounds_.radius * bounds_.radius; }
     Vec3 toWorld(Vec3 local) const { return normalize(toWorld_.vector(local)); }
-    // The rotation's inverse is its transpose.
-    Vec3 toLocal(Vec3 world) const {
-        const std::array<float, 12>& m = toWorld_.m;
-        return normalize(Vec3{m[0] * world.x + m[4] * world.y + m[8] * world.z,
-                              m[1] * world.x + m[5] * world.y + m[9] * world.z,
-                              m[2] * world.x + m[6] * world.y + m[10] * world.z});
-    }
+    Vec3 toLocal(Vec3 world) const { return normalize(toWorld_.inverseRotation(world)); }
 
     EnvironmentMap map_;
     float scale_;

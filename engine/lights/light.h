@@ -66,8 +66,9 @@ public:
     // directions above the surface).
     virtual std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const = 0;
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
-    // Infinite lights: radiance arriving along a ray that leaves the scene in direction d.
-    virtual Color radianceFromDirection(Vec3 d) const { return Color(0.0f); }
+    // Infinite lights: radiance arriving along a ray from `origin` that leaves the scene in
+    // direction d (a light behind a portal shines only along rays through it).
+    virtual Color radianceFromDirection(Vec3 origin, Vec3 d) const { return Color(0.0f); }
     // Infinite lights: the solid-angle density with which sampleIncident(p, n, .) returns
     // the direction wi, for weighting it against BSDF sampling (multiple importance
     // sampling, Veach 1997 ch. 9). 0 for lights no ray can find (delta lights).

@@ -10,9 +10,12 @@ namespace photon {
 std::unique_ptr<Light> makePointLight(const LightDescription& d);
 std::unique_ptr<Light> makeSpotLight(const LightDescription& d);
 std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphere bounds);
-// Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight).
+// Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight);
+// behind d.portal when it is set.
 std::unique_ptr<Light> makeEnvironmentLight(const LightDescription& d, SceneSphere bounds);
 std::unique_ptr<Light> makeImageEnvironmentLight(const LightDescription& d, SceneSphere bounds);
+// Either of those seen only through the rectangle d.portal (portal_environment_light.cpp).
+std::unique_ptr<Light> makePortalEnvironmentLight(const LightDescription& d, SceneSphere bounds);
 // An emissive triangle mesh (quads arrive as meshes) or sphere. The shape must outlive the
 // light. `kind`: how a mesh's light samples pick among its triangles (render.light_sampler).
 std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape, LightSamplerKind kind);

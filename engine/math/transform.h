@@ -38,6 +38,11 @@ struct Transform {
         return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
                 m[8] * v.x + m[9] * v.y + m[10] * v.z};
     }
+    // A rotation's inverse applied to v: its transpose (only for rotations).
+    Vec3 inverseRotation(Vec3 v) const {
+        return {m[0] * v.x + m[4] * v.y + m[8] * v.z, m[1] * v.x + m[5] * v.y + m[9] * v.z,
+                m[2] * v.x + m[6] * v.y + m[10] * v.z};
+    }
     // Normals transform by the inverse transpose: the cofactor matrix has the same
     // direction and needs no inverse (the scale is lost to normalisation anyway).
     Vec3 normal(Vec3 n) const {

@@ -1,4 +1,5 @@
 // The "lights" section: point, spot, directional and environment lights (constant or an image).
+#include "description/portal.h"
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
@@ -43,6 +44,17 @@ void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
     if (auto rotate = obj.optional("rotate")) e.toWorld = readRotation(*rotate);
 }
 
+// Four corners in order, a rectangle: the light comes in through it from the side of
+// cross(p3 - p0, p1 - p0) (pbrt-v4's portal convention).
+std::array<Vec3, 4> readPortal(const JsonValue& value) {
+    const std::vector<JsonValue> corners = value.elements();
+    if (corners.size() != 4) value.fail("must be 4 corners, not " + std::to_string(corners.size()));
+    std::array<Vec3, 4> q;
+    for (size_t i = 0; i < 4; ++i) q[i] = corners[i].vec3();
+    if (auto problem = portalProblem(q)) value.fail(*problem);
+    return q;
+}
+
 LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     LightDescription l;
@@ -63,7 +75,10 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
             l.direction = obj.required("direction").direction();
             l.irradiance = power(obj, "irradiance");
             break;
-        case Kind::Environment: readEnvironment(obj, ctx, l); break;
+        case Kind::Environment:
+            readEnvironment(obj, ctx, l);
+            if (auto portal = obj.optional("portal")) l.portal = readPortal(*portal);
+            break;
     }
     obj.finish();
     return l;

@@ -283,8 +283,8 @@ Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
     return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt(hit.uv) : Color(0.0f);
 }
 
-Color Scene::environment(Vec3 d) const {
-    return environmentLight_ ? environmentLight_->radianceFromDirection(d) : Color(0.0f);
+Color Scene::environment(const Ray& ray) const {
+    return environmentLight_ ? environmentLight_->radianceFromDirection(ray.o, ray.d) : Color(0.0f);
 }
 
 }  // namespace photon

@@ -128,8 +128,8 @@ public:
     SurfaceTangents tangentsAt(const SurfaceHit& hit) const;
     // Radiance emitted from the hit toward direction w (zero on the back side).
     Color emitted(const SurfaceHit& hit, Vec3 w) const;
-    // Radiance arriving along a ray that leaves the scene in direction d.
-    Color environment(Vec3 d) const;
+    // Radiance arriving along a ray that leaves the scene.
+    Color environment(const Ray& ray) const;
     // The environment light (null if there is none) and the probability with which
     // lights().pick() returns it: what a BSDF-sampled ray that leaves the scene needs to
     // weigh itself against light sampling.

@@ -2,6 +2,7 @@
 // to unit luminance (pbrt_spectra.h); "scale" multiplies, and "power" (area lights) becomes
 // photon's emission_power, whose definition is the same (pbrt-v4 DiffuseAreaLight::Create).
 #include <cmath>
+#include "description/portal.h"
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "scene/scene_paths.h"
@@ -83,8 +84,16 @@ void SceneBuilder::lightSource(const Directive& d) {
         }
         if (p.has("illuminance")) warn(d.where, "infinite: \"illuminance\" normalisation is not supported; \"scale\" used");
         p.find("illuminance");
-        if (p.has("portal")) warn(d.where, "infinite: \"portal\" ignored (it only guides pbrt's sampling)");
-        p.find("portal");
+        // The light comes in only through the portal (pbrt-v4's PortalImageInfiniteLight),
+        // its corners in the light's space.
+        if (p.has("portal")) {
+            const std::vector<double> v = p.numbers("portal", {"point3"});
+            if (v.size() != 12) fail(d.where, "infinite: \"portal\" must be 4 points, not " + std::to_string(v.size()) + " numbers");
+            std::array<Vec3, 4> q;
+            for (size_t i = 0; i < 4; ++i) q[i] = state_.ctm.point(Vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2])));
+            if (auto problem = portalProblem(q)) fail(d.where, "infinite: \"portal\" " + *problem);
+            for (const Vec3& c : q) light["portal"].push_back(vec(c));
+        }
     } else {
         fail(d.where, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
     }

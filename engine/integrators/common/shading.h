@@ -48,7 +48,7 @@ inline float shadingCosineRatio(const SurfaceHit& hit, Vec3 w) {
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool countEmitted, SurfaceHit& hit,
                            Color& L) {
     if (!scene.intersect(ray, hit)) {
-        if (countEmitted) L += beta * scene.environment(ray.d);
+        if (countEmitted) L += beta * scene.environment(ray);
         return false;
     }
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
@@ -118,7 +118,7 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const
                            SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
         if (scene.environmentLight())
-            L += beta * scene.environment(ray.d) * environmentBounceWeight(scene, bounce, ray.d);
+            L += beta * scene.environment(ray) * environmentBounceWeight(scene, bounce, ray.d);
         return false;
     }
     if (bounce.delta) {
