@@ -125,13 +125,13 @@ TEST(DirectLightSampler, TreePicksFollowTheirProbabilitiesAndEstimateTheIrradian
 }
 
 // The environment keeps its power's share, wherever the point: what a BSDF sample that
-// leaves the scene weighs itself against (Scene::environmentPickProbability).
+// leaves the scene weighs itself against (Scene::environmentLights).
 TEST(DirectLightSampler, InfiniteLightsKeepTheirShareOfPower) {
     LightDescription sky;
     sky.kind = LightDescription::Kind::Environment;
     sky.radiance = Color(0.3f);
     auto scene = sceneWith({pointLight({0, 1, 0}, 10), sky, pointLight({1, 2, 0}, 5)});
-    const float share = scene->environmentPickProbability();
+    const float share = scene->environmentLights().at(0).pickProbability;
     ASSERT_GT(share, 0.0f);
     for (Vec3 p : {Vec3(0, 0, 0), Vec3(1.5f, 0, 1)}) {
         EXPECT_EQ(scene->directLights().probability(1, p, {0, 1, 0}), share);

@@ -283,6 +283,13 @@ AttributeEnd
     EXPECT_VEC3_NEAR(vec(portal[2]), Vec3(1, 3, 1), 1e-6f);
     const Vec3 out = cross(vec(portal[3]) - vec(portal[0]), vec(portal[1]) - vec(portal[0]));
     EXPECT_GT(out.y, 0.0f);
+    // A light behind each of two windows: both kept, and they add up.
+    const ImportedScene two = import(R"(
+LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]
+LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [2 0 -1  2 0 1  2 1 1  2 1 -1]
+Shape "sphere"
+)");
+    EXPECT_EQ(loadImportedScene(two, scratch()).lights.size(), 2u);
     const std::string head = "Camera \"perspective\"\nWorldBegin\n";
     EXPECT_STREQ(importError(head + "LightSource \"infinite\" \"point3 portal\" [0 0 0  1 0 0  1 1 0]\n").what(),
                  "bad.pbrt:3: infinite: \"portal\" must be 4 points, not 9 numbers");

@@ -133,9 +133,10 @@ TEST(PortalLight, PhotonsCarryThePowerThroughTheWindow) {
 
 // ---- whole renders ----
 
-// A closed 2 m room, 1 m high, with a 0.5 m hole in its ceiling, under a uniform sky: with
-// the portal over the hole or without it, the light that enters is the same.
-SceneDescription roomUnder(LightDescription sky, IntegratorKind kind, int passes, uint64_t seed) {
+// A closed 2 m room, 1 m high, under a uniform sky, with `ceiling` over it: with the
+// portal over its hole or without it, the light that enters is the same.
+SceneDescription roomUnder(std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed,
+                           std::vector<ShapeDescription> ceiling) {
     SceneDescription d;
     d.camera = test::camera({0, 0.8f, 0.95f}, {0, 0, -0.3f}, {0, 1, 0}, 70, 24, 24);
     d.materials = {makeDiffuse(Color(0.6f))};
@@ -144,12 +145,9 @@ SceneDescription roomUnder(LightDescription sky, IntegratorKind kind, int passes
                 test::quad({-1, 0, -1}, {2, 0, 0}, {0, 1, 0}, 0),          // walls
                 test::quad({-1, 0, 1}, {2, 0, 0}, {0, 1, 0}, 0),
                 test::quad({-1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0),
-                test::quad({1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0),
-                test::quad({-1, 1, -1}, {2, 0, 0}, {0, 0, 0.75f}, 0),      // ceiling around the hole
-                test::quad({-1, 1, 0.25f}, {2, 0, 0}, {0, 0, 0.75f}, 0),
-                test::quad({-1, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0),
-                test::quad({0.25f, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0)};
-    d.lights = {sky};
+                test::quad({1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0)};
+    d.shapes.insert(d.shapes.end(), ceiling.begin(), ceiling.end());
+    d.lights = std::move(lights);
     d.render.integrator = kind;
     d.render.passes = passes;
     d.render.photonsPerPass = 20000;
@@ -158,11 +156,26 @@ SceneDescription roomUnder(LightDescription sky, IntegratorKind kind, int passes
     return d;
 }
 
+// The ceiling with a 0.5 m hole over the middle.
+std::vector<ShapeDescription> ceilingWithAHole() {
+    return {test::quad({-1, 1, -1}, {2, 0, 0}, {0, 0, 0.75f}, 0), test::quad({-1, 1, 0.25f}, {2, 0, 0}, {0, 0, 0.75f}, 0),
+            test::quad({-1, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0),
+            test::quad({0.25f, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0)};
+}
+
+SceneDescription roomUnder(LightDescription sky, IntegratorKind kind, int passes, uint64_t seed) {
+    return roomUnder({sky}, kind, passes, seed, ceilingWithAHole());
+}
+
+std::array<Vec3, 4> squarePortal(float x, float z, float half) {
+    return {Vec3{x - half, 1, z - half}, Vec3{x + half, 1, z - half}, Vec3{x + half, 1, z + half}, Vec3{x - half, 1, z + half}};
+}
+
 LightDescription holeSky(bool portal) {
     LightDescription l;
     l.kind = LightDescription::Kind::Environment;
     l.radiance = Color(kL);
-    if (portal) l.portal = std::array<Vec3, 4>{Vec3{-0.25f, 1, -0.25f}, Vec3{0.25f, 1, -0.25f}, Vec3{0.25f, 1, 0.25f}, Vec3{-0.25f, 1, 0.25f}};
+    if (portal) l.portal = squarePortal(0, 0, 0.25f);
     return l;
 }
 
@@ -203,6 +216,30 @@ TEST(PortalLight, ARoomUnderAnImageRendersAsWithoutThePortal) {
     test::expectSameBlockMeans(plain1, plain2, portal1, portal2, 8, 0.05);
     const Image sppm1 = render(true, IntegratorKind::Sppm, 64, 1), sppm2 = render(true, IntegratorKind::Sppm, 64, 2);
     test::expectSameBlockMeans(sppm1, sppm2, portal1, portal2, 8, 0.05);
+}
+
+// Two windows, an environment light behind each (environment lights add up), against one
+// sky without portals.
+TEST(PortalLight, TwoWindowsTwoPortals) {
+    const std::vector<ShapeDescription> ceiling = {
+        test::quad({-1, 1, -1}, {2, 0, 0}, {0, 0, 0.75f}, 0), test::quad({-1, 1, 0.25f}, {2, 0, 0}, {0, 0, 0.75f}, 0),
+        test::quad({-1, 1, -0.25f}, {0.25f, 0, 0}, {0, 0, 0.5f}, 0),
+        test::quad({-0.25f, 1, -0.25f}, {0.5f, 0, 0}, {0, 0, 0.5f}, 0),
+        test::quad({0.75f, 1, -0.25f}, {0.25f, 0, 0}, {0, 0, 0.5f}, 0)};
+    LightDescription left = holeSky(false), right = holeSky(false);
+    left.portal = squarePortal(-0.5f, 0, 0.25f);
+    right.portal = squarePortal(0.5f, 0, 0.25f);
+    auto render = [&](std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed) {
+        return test::renderImage(roomUnder(std::move(lights), kind, passes, seed, ceiling));
+    };
+    const Image plain1 = render({holeSky(false)}, IntegratorKind::Path, 256, 1);
+    const Image plain2 = render({holeSky(false)}, IntegratorKind::Path, 256, 2);
+    const Image portals1 = render({left, right}, IntegratorKind::Path, 128, 1);
+    const Image portals2 = render({left, right}, IntegratorKind::Path, 128, 2);
+    test::expectSameBlockMeans(plain1, plain2, portals1, portals2, 8, 0.04);
+    const Image sppm1 = render({left, right}, IntegratorKind::Sppm, 64, 1);
+    const Image sppm2 = render({left, right}, IntegratorKind::Sppm, 64, 2);
+    test::expectSameBlockMeans(sppm1, sppm2, portals1, portals2, 8, 0.05);
 }
 
 }  // namespace

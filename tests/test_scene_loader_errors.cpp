@@ -329,8 +329,6 @@ TEST(SceneLoaderErrors, Lights) {
             d["shapes"][5]["emission"] = {0, 0, 0};
         },
         "lights", "scene has no light (add a light or an emissive shape)");
-    expectError([](Json& d) { d["lights"].push_back({{"type", "environment"}, {"radiance", {1, 1, 1}}}); }, "lights[4]",
-                "only one environment light is allowed");
     expectError([](Json& d) { d["lights"][2]["direction"] = {0, 0, 0}; }, "lights[2].direction",
                 "must not be the zero vector");
     auto portal = [](Json corners) {

@@ -86,15 +86,10 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
 
 }  // namespace
 
+// Environment lights add up: rays that leave the scene see their sum (a scene lit through
+// two windows has one behind each, each with its portal).
 void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
-    bool haveEnvironment = false;
-    for (const JsonValue& light : value.elements()) {
-        scene.lights.push_back(readLight(light, ctx));
-        if (scene.lights.back().kind != Kind::Environment) continue;
-        // The environment is what rays that leave the scene see: there is only one.
-        if (haveEnvironment) light.fail("only one environment light is allowed");
-        haveEnvironment = true;
-    }
+    for (const JsonValue& light : value.elements()) scene.lights.push_back(readLight(light, ctx));
 }
 
 }  // namespace photon::scene_json

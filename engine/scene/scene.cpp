@@ -118,7 +118,7 @@ void Scene::buildLights() {
             case LightDescription::Kind::Directional: ownedLights_.push_back(makeDirectionalLight(d, sphere)); break;
             case LightDescription::Kind::Environment:
                 ownedLights_.push_back(makeEnvironmentLight(d, sphere));
-                environmentLight_ = ownedLights_.back().get();
+                environmentLights_.push_back({ownedLights_.back().get(), 0.0f});
                 break;
         }
     }
@@ -127,7 +127,8 @@ void Scene::buildLights() {
     lightSampler_ = LightSampler(std::move(lights));
     directLightSampler_ = DirectLightSampler(lightSampler_, description_.render.lightSampler);
     for (size_t i = 0; i < lightSampler_.size(); ++i)
-        if (&lightSampler_.light(i) == environmentLight_) environmentPickProbability_ = lightSampler_.probability(i);
+        for (EnvironmentLight& e : environmentLights_)
+            if (&lightSampler_.light(i) == e.light) e.pickProbability = lightSampler_.probability(i);
 
 }
 
@@ -284,7 +285,9 @@ Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
 }
 
 Color Scene::environment(const Ray& ray) const {
-    return environmentLight_ ? environmentLight_->radianceFromDirection(ray.o, ray.d) : Color(0.0f);
+    Color L(0.0f);
+    for (const EnvironmentLight& e : environmentLights_) L += e.light->radianceFromDirection(ray.o, ray.d);
+    return L;
 }
 
 }  // namespace photon

@@ -128,12 +128,16 @@ public:
     SurfaceTangents tangentsAt(const SurfaceHit& hit) const;
     // Radiance emitted from the hit toward direction w (zero on the back side).
     Color emitted(const SurfaceHit& hit, Vec3 w) const;
-    // Radiance arriving along a ray that leaves the scene.
+    // Radiance arriving along a ray that leaves the scene: the environment lights' sum.
     Color environment(const Ray& ray) const;
-    // The environment light (null if there is none) and the probability with which
-    // lights().pick() returns it: what a BSDF-sampled ray that leaves the scene needs to
-    // weigh itself against light sampling.
-    const Light* environmentLight() const { return environmentLight_; }
+    // The environment lights (several when each comes in through its own portal: one per
+    // window) and the probability with which lights().pick() returns each: what a
+    // BSDF-sampled ray that leaves the scene needs to weigh itself against light sampling.
+    struct EnvironmentLight {
+        const Light* light;
+        float pickProbability;
+    };
+    const std::vector<EnvironmentLight>& environmentLights() const { return environmentLights_; }
     // The area light of the emitting shape a hit landed on (null if it emits nothing) and
     // its index among the lights: for weighting emission a BSDF sample found against the
     // light sample that could have found it too (directLights().probability).
@@ -145,7 +149,6 @@ public:
         const int32_t i = lightOfShape_[hit.shape];
         return i < 0 ? Emitter{} : Emitter{&lightSampler_.light(size_t(i)), size_t(i)};
     }
-    float environmentPickProbability() const { return environmentPickProbability_; }
 
     const Camera& camera() const { return camera_; }
     const RenderSettings& settings() const { return description_.render; }
@@ -271,8 +274,7 @@ private:
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     DirectLightSampler directLightSampler_;  // refers to lightSampler_
-    const Light* environmentLight_ = nullptr;
-    float environmentPickProbability_ = 0;
+    std::vector<EnvironmentLight> environmentLights_;
     Camera camera_;
     Vec3 boundsMin_, boundsMax_;
     RTCDevice device_ = nullptr;

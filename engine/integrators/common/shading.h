@@ -85,16 +85,25 @@ inline BounceSampling bounceFrom(const ShadingPoint& sp, const BSDFSample& s, fl
     return BounceSampling{false, pick * s.pdf, sp.hit.p, sp.hit.ns, lightSampleSideProbability(*sp.material)};
 }
 
-// The power-heuristic weight of environment light arriving along d after `bounce`: 1 after
-// delta bounces; otherwise against the density with which the light sample at the vertex,
-// picking the environment among the lights, would have chosen d.
-inline float environmentBounceWeight(const Scene& scene, const BounceSampling& bounce, Vec3 d) {
-    if (bounce.delta || !scene.environmentLight()) return 1.0f;
+// Environment light arriving along the ray after `bounce`, each light's radiance weighted
+// by the power heuristic: in full after delta bounces; otherwise against the density with
+// which the light sample at the vertex, picking that light among the lights, would have
+// chosen the ray's direction.
+inline Color environmentAfterBounce(const Scene& scene, const BounceSampling& bounce, const Ray& ray) {
+    Color L(0.0f);
     // A light sample at a surface that transmits is taken for the side d leaves from.
-    const Vec3 n = bounce.sideProbability < 1 && dot(d, bounce.n) < 0 ? -bounce.n : bounce.n;
-    const float pLight = bounce.sideProbability * scene.environmentPickProbability() *
-                         scene.environmentLight()->pdfIncident(bounce.p, n, d);
-    return powerHeuristic(bounce.pdf, pLight);
+    const Vec3 n = bounce.sideProbability < 1 && dot(ray.d, bounce.n) < 0 ? -bounce.n : bounce.n;
+    for (const Scene::EnvironmentLight& e : scene.environmentLights()) {
+        const Color Le = e.light->radianceFromDirection(ray.o, ray.d);
+        if (isBlack(Le)) continue;
+        if (bounce.delta) {
+            L += Le;
+            continue;
+        }
+        const float pLight = bounce.sideProbability * e.pickProbability * e.light->pdfIncident(bounce.p, n, ray.d);
+        L += Le * powerHeuristic(bounce.pdf, pLight);
+    }
+    return L;
 }
 
 // The same for emission from the area light e where the ray from `bounce` lands (hit): the
@@ -117,8 +126,7 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
                            SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
-        if (scene.environmentLight())
-            L += beta * scene.environment(ray) * environmentBounceWeight(scene, bounce, ray.d);
+        L += beta * environmentAfterBounce(scene, bounce, ray);
         return false;
     }
     if (bounce.delta) {
