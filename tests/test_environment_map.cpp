@@ -410,6 +410,42 @@ TEST(EnvironmentMapRender, SppmMatchesPathTracerThroughPlasticCoat) {
     expectSppmMatchesPath(render, 0.03f);
 }
 
+// "illuminance": the map is scaled so that a surface facing its pole receives that much.
+// A constant map of luminance c gives pi c; a map bright only below the horizon, nothing
+// (the scale is then left as it is).
+TEST(EnvironmentMapIlluminance, ScalesTheMapToTheIrradianceAtItsPole) {
+    for (Layout layout : {Layout::LatLong, Layout::EqualArea}) {
+        const int w = layout == Layout::LatLong ? 128 : 64, h = 64;
+        const Color c(0.5f, 1.0f, 2.0f);
+        const EnvironmentMap constant(imageOf(w, h, [&](int, int) { return c; }), layout);
+        EXPECT_NEAR(constant.poleIrradiance(), kPi * luminance(c), 0.003f * kPi * luminance(c));
+        LightDescription::EnvironmentImage e{nullptr, layout, 2.0f, {}, 10.0f};
+        EXPECT_NEAR(environmentScale(e, constant), 2.0f * 10.0f / (kPi * luminance(c)), 0.003f * 20 / (kPi * luminance(c)));
+        e.illuminance = 0;
+        EXPECT_EQ(environmentScale(e, constant), 2.0f);
+    }
+    // Lat-long rows below the middle are below the horizon.
+    const EnvironmentMap below(imageOf(16, 8, [](int, int y) { return y >= 4 ? Color(1.0f) : Color(0.0f); }), Layout::LatLong);
+    EXPECT_EQ(below.poleIrradiance(), 0.0f);
+    EXPECT_EQ(environmentScale({nullptr, Layout::LatLong, 3.0f, {}, 10.0f}, below), 3.0f);
+}
+
+// The irradiance a render gives an upward-facing plane under a sky with an illuminance.
+TEST(EnvironmentMapIlluminance, APlaneUnderTheSkyReceivesIt) {
+    auto sky = imageOf(64, 32, [](int x, int y) { return Color(0.2f + 0.01f * float(x % 7), 0.5f, 1.0f + 0.1f * float(y)); });
+    LightDescription light = environmentOf(sky, Layout::LatLong, 1.0f);
+    light.environment.illuminance = 4.0f;
+    SceneDescription d;
+    d.camera = test::camera({0, 1, 0}, {0, 0, 0}, {0, 0, -1}, 20, 8, 8);
+    d.materials = {makeDiffuse(Color(kRho))};
+    d.materialNames = {"plane"};
+    d.shapes = {test::quad({-50, 0, 50}, {100, 0, 0}, {0, 0, -100}, 0)};
+    d.lights = {light};
+    setIntegrator(d, IntegratorKind::Path, 1024);
+    // Radiance rho / pi x E, in luminance.
+    EXPECT_NEAR(luminance(renderMean(d, 0, 0, 8, 8)), kRho / kPi * 4.0f, 0.02f * kRho / kPi * 4.0f);
+}
+
 // ---- the scene file ----
 
 TEST(EnvironmentMapScene, ExampleLoadsItsSkyWithTheSunUpAndToTheLeft) {

@@ -297,6 +297,21 @@ Shape "sphere"
                  "bad.pbrt:3: infinite: \"portal\" must be a rectangle: the third corner is not opposite the first");
 }
 
+// "illuminance" as pbrt-v4 applies it: the distant light's irradiance and the uniform
+// infinite light's pi L become it (times "scale"), an RGB's colour kept; an image's is
+// measured when the image is loaded.
+TEST(PbrtImport, IlluminanceSetsTheLightsLevel) {
+    const Json doc = import(R"(
+LightSource "distant" "rgb L" [1 0.5 0.25] "float scale" [2] "float illuminance" [3]
+LightSource "infinite" "rgb L" [0.5 0.5 0.5] "float illuminance" [10]
+LightSource "infinite" "string filename" "sky.exr" "float illuminance" [7]
+)").document;
+    const Json& l = doc["lights"];
+    EXPECT_VEC3_NEAR(vec(l[0]["irradiance"]), Vec3(6, 3, 1.5f), 1e-5f);
+    EXPECT_VEC3_NEAR(vec(l[1]["radiance"]), Vec3(5 / kPi), 1e-5f);
+    EXPECT_EQ(l[2]["illuminance"], 7.0);
+}
+
 TEST(PbrtImport, SpheresDisksInstancesAndPly) {
     TriangleMesh tri;
     tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};

@@ -134,6 +134,10 @@ struct LightDescription {
         EnvironmentLayout layout = EnvironmentLayout::LatLong;
         float scale = 1;
         Transform toWorld;  // a rotation: the light's frame to the world
+        // > 0: the radiance is further scaled so that a surface facing the map's pole (+y
+        // of a lat-long map, +z of an equal-area one) receives this irradiance from it
+        // (pbrt-v4's "illuminance"; EnvironmentMap::poleIrradiance).
+        float illuminance = 0;
     };
     EnvironmentImage environment;  // image null: constant `radiance`
     // Environment: the light comes in only through this rectangle (world space, corners in

@@ -63,6 +63,24 @@ Vec3 EnvironmentMap::directionAt(Vec2 p, int row) const {
     return {-sinTheta * std::sin(phi), cosTheta, sinTheta * std::cos(phi)};
 }
 
+float EnvironmentMap::poleIrradiance() const {
+    const Vec3 pole = layout_ == EnvironmentLayout::LatLong ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+    double sum = 0;
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const Vec3 d = directionAt({(float(x) + 0.5f) / float(width_), (float(y) + 0.5f) / float(height_)}, y);
+            const float cosine = dot(d, pole);
+            if (cosine > 0) sum += double(luminance(image_->texel(x, y))) * cosine * texelSolidAngle(y);
+        }
+    return float(sum);
+}
+
+float environmentScale(const LightDescription::EnvironmentImage& e, const EnvironmentMap& map) {
+    if (!(e.illuminance > 0)) return e.scale;
+    const float pole = map.poleIrradiance();
+    return pole > 0 ? e.scale * e.illuminance / pole : e.scale;
+}
+
 std::optional<EnvironmentMap::DirectionSample> EnvironmentMap::sample(Vec2 u) const {
     if (isBlack(integral_)) return std::nullopt;
     const PiecewiseConstant2D::Sample s = distribution_.sample(u);

@@ -36,6 +36,10 @@ public:
     float texelSolidAngle(int y) const { return texelSolidAngle_[size_t(y)]; }
     // The integral of the radiance over the sphere of directions, per channel.
     Color integral() const { return integral_; }
+    // The luminance of the irradiance the map gives a surface facing its pole (+y of a
+    // lat-long map, +z of an equal-area one): the sum over texels of luminance x cos x solid
+    // angle at their centres, as pbrt-v4 measures an image light's "illuminance".
+    float poleIrradiance() const;
 
     struct DirectionSample {
         Vec3 direction;  // unit, light frame
@@ -63,5 +67,9 @@ private:
     PiecewiseConstant2D distribution_;    // luminance x solid angle, by texel
     Color integral_{0.0f};
 };
+
+// The factor on an image's texels: `scale`, times illuminance / poleIrradiance when an
+// illuminance is asked for (1 if the map gives none there).
+float environmentScale(const LightDescription::EnvironmentImage& e, const EnvironmentMap& map);
 
 }  // namespace photon

@@ -13,7 +13,7 @@ class ImageEnvironmentLight final : public Light {
 public:
     ImageEnvironmentLight(const LightDescription& d, SceneSphere bounds)
         : map_(d.environment.image, d.environment.layout),
-          scale_(d.environment.scale),
+          scale_(environmentScale(d.environment, map_)),
           toWorld_(d.environment.toWorld),
           bounds_(bounds) {}
 

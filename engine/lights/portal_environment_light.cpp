@@ -45,7 +45,7 @@ public:
         frame_.n = normalize(cross(frame_.s, frame_.t));
         if (d.environment.image) {
             map_.emplace(d.environment.image, d.environment.layout);
-            scale_ = d.environment.scale;
+            scale_ = environmentScale(d.environment, *map_);
             toWorld_ = d.environment.toWorld;
         } else {
             radiance_ = d.radiance;

@@ -27,7 +27,7 @@ void readSpotAngles(JsonObject& obj, LightDescription& l) {
 void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
     auto image = obj.optional("image");
     if (!image) {
-        for (std::string_view key : {"layout", "scale", "rotate"})
+        for (std::string_view key : {"layout", "scale", "rotate", "illuminance"})
             if (auto v = obj.optional(key)) v->fail("is only allowed with \"image\"");
         l.radiance = power(obj, "radiance");
         return;
@@ -41,6 +41,7 @@ void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
         image->fail("an equal-area image must be square, not " + std::to_string(e.image->width()) + "x" +
                     std::to_string(e.image->height()));
     e.scale = obj.number("scale", 1, Range::nonNegative());
+    e.illuminance = obj.number("illuminance", 0, Range::nonNegative());
     if (auto rotate = obj.optional("rotate")) e.toWorld = readRotation(*rotate);
 }
 

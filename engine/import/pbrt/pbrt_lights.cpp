@@ -69,7 +69,9 @@ void SceneBuilder::lightSource(const Directive& d) {
         light = {{"type", "directional"},
                  {"direction", vec(normalize(state_.ctm.vector(to - from)))},
                  {"irradiance", rgb(spectrum("L") * float(scale))}};
-        if (auto e = p.number("illuminance")) light["irradiance"] = rgb(spectrum("L") * float(*e / luminance(spectrum("L"))));
+        // pbrt-v4 multiplies "scale" by the illuminance, L being of unit luminance (an RGB's
+        // illuminant is, its RGB is not divided out: DistantLight::Create).
+        if (auto e = p.number("illuminance")) light["irradiance"] = rgb(spectrum("L") * float(scale * *e));
     } else if (type == "infinite") {
         if (auto file = p.string("filename")) {
             if (auto why = checkRelativePath(*file)) fail(d.where, "infinite: \"" + *file + "\": " + *why);
@@ -79,11 +81,14 @@ void SceneBuilder::lightSource(const Directive& d) {
             if (!rotation) fail(d.where, "infinite: the light's transform must be a rotation");
             if (rotation->second != 0)
                 light["rotate"] = {{"axis", vec(rotation->first)}, {"angle", rotation->second}};
+            // The image's own irradiance on a surface facing its +z, measured when it is loaded.
+            if (auto e = p.number("illuminance")) light["illuminance"] = *e;
         } else {
-            light = {{"type", "environment"}, {"radiance", rgb(spectrum("L") * float(scale))}};
+            // Uniform: the irradiance on any surface is pi L (pbrt-v4 ImageInfiniteLight and
+            // UniformInfiniteLight's Create: scale *= E / pi for unit-luminance L).
+            const double e = p.number("illuminance", 0);
+            light = {{"type", "environment"}, {"radiance", rgb(spectrum("L") * float(e > 0 ? scale * e / kPi : scale))}};
         }
-        if (p.has("illuminance")) warn(d.where, "infinite: \"illuminance\" normalisation is not supported; \"scale\" used");
-        p.find("illuminance");
         // The light comes in only through the portal (pbrt-v4's PortalImageInfiniteLight),
         // its corners in the light's space.
         if (p.has("portal")) {
