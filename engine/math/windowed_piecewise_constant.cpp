@@ -69,7 +69,10 @@ std::optional<WindowedPiecewiseConstant2D::Sample> WindowedPiecewiseConstant2D::
     auto marginal = [&](Split s) { return atLine(s.cell) + s.fraction * (atLine(s.cell + 1) - atLine(s.cell)); };
     const double start = marginal(su0), total = marginal(su1) - start;
     if (!(total > 0)) return std::nullopt;
-    const auto [x, column] = invert(atLine, w.lo.x, w.hi.x, n_, start + double(u.x) * total);
+    // Named, not a structured binding: the lambdas below capture the column.
+    const std::pair<double, int> inU = invert(atLine, w.lo.x, w.hi.x, n_, start + double(u.x) * total);
+    const double x = inU.first;
+    const int column = inU.second;
     // Within that column the density in v is the column's own cells.
     auto columnAt = [&](int row) { return table(column + 1, row) - table(column, row); };
     auto columnAlong = [&](Split s) { return columnAt(s.cell) + s.fraction * (columnAt(s.cell + 1) - columnAt(s.cell)); };
