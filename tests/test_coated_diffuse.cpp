@@ -185,26 +185,19 @@ TEST(CoatedDiffuse, AgreesWithLayeredRandomWalk) {
         Vec3 wi = direction(wc.cosO, 0.0f);
         test::LayeredRandomWalk walk(wc.albedo, kIor, wc.roughness);
         Rng rng(23, uint64_t(wc.cosO * 100), uint64_t(wc.roughness * 100), StreamPurpose::Test);
-        BinnedAlbedo reference{};
-        for (int i = 0; i < kPaths; ++i)
-            if (auto exit = walk.trace(wi, rng))
-                for (int c = 0; c < 3; ++c) reference[hemisphereBin(exit->w)][c] += exit->weight[c] / kPaths;
+        const BinnedAlbedo reference = test::binWalk(walk, wi, kPaths, rng);
         MaterialPtr m = makeCoatedDiffuse(wc.albedo, kIor, wc.roughness);
-        BinnedAlbedo model = binBySampling(*m, wi, tinted(wc.albedo), kPaths, 29);
-        double worstAlbedo = 0, worstShape = 0, albedos[2][3] = {};
+        const BinComparison r = compareBins(binBySampling(*m, wi, tinted(wc.albedo), kPaths, 29), reference);
+        double worstAlbedo = 0, worstShape = 0;
         for (int c = 0; c < 3; ++c) {
-            double a = 0, b = 0, l1 = 0;
-            for (int k = 0; k < kBins; ++k) a += model[k][c], b += reference[k][c];
-            for (int k = 0; k < kBins; ++k) l1 += std::abs(model[k][c] - reference[k][c]) / b;
-            albedos[0][c] = a, albedos[1][c] = b;
-            EXPECT_NEAR(a, b, wc.albedoTolerance) << "albedo, channel " << c;
-            EXPECT_LE(l1, wc.shapeTolerance) << "lobe shape, channel " << c;
-            worstAlbedo = std::max(worstAlbedo, std::abs(a - b) / b);
-            worstShape = std::max(worstShape, l1);
+            EXPECT_NEAR(r.model[c], r.reference[c], wc.albedoTolerance) << "albedo, channel " << c;
+            EXPECT_LE(r.l1[c], wc.shapeTolerance) << "lobe shape, channel " << c;
+            worstAlbedo = std::max(worstAlbedo, std::abs(r.model[c] - r.reference[c]) / r.reference[c]);
+            worstShape = std::max(worstShape, r.l1[c]);
         }
         std::printf("  walk r %.1f cos %.1f %-6s  model %.4f %.4f %.4f  walk %.4f %.4f %.4f  albedo diff %.2f%%  L1 %.4f\n",
-                    wc.roughness, wc.cosO, wc.albedo == kWhite ? "white" : "colour", albedos[0][0], albedos[0][1],
-                    albedos[0][2], albedos[1][0], albedos[1][1], albedos[1][2], 100 * worstAlbedo, worstShape);
+                    wc.roughness, wc.cosO, wc.albedo == kWhite ? "white" : "colour", r.model[0], r.model[1], r.model[2],
+                    r.reference[0], r.reference[1], r.reference[2], 100 * worstAlbedo, worstShape);
     }
 }
 

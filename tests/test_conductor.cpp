@@ -347,52 +347,33 @@ TEST(NamedMetals, SymbolsAndPbrtSpectra) {
 using test::expectError;
 using test::load;
 
-const Material& loadedMetal(const Json& fields) {
-    static std::vector<SceneDescription> kept;  // keeps the materials alive for the caller
-    Json doc = test::fullScene();
-    doc["materials"]["metal"] = fields;
-    kept.push_back(load(doc));
-    const SceneDescription& d = kept.back();
-    for (size_t i = 0; i < d.materialNames.size(); ++i)
-        if (d.materialNames[i] == "metal") return *d.materials[i];
-    ADD_FAILURE() << "no material \"metal\"";
-    return *d.materials[0];
-}
-
-// The normal-incidence reflectance seen through a material's smooth mirror (with the
-// material's own inputs, as integrators pass them).
-Color smoothReflectance(const Material& m) {
-    auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(Vec2{}), TransportMode::Radiance);
-    EXPECT_TRUE(s && s->delta);
-    return s ? s->weight : Color(0.0f);
-}
 
 TEST(ConductorScene, ComplexIndexFields) {
     Color goldF0 = fresnelConductor(1.0f, metal("Au").eta, metal("Au").k);
-    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0}})), goldF0);
-    EXPECT_EQ(smoothReflectance(loadedMetal(
+    EXPECT_EQ(test::mirrorReflectance(test::loadedMaterial({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0}})), goldF0);
+    EXPECT_EQ(test::mirrorReflectance(test::loadedMaterial(
                   {{"type", "conductor"}, {"eta", "metal-Au-eta"}, {"k", "metal-Au-k"}, {"roughness", 0}})),
               goldF0);
     Color n(0.2f, 0.9f, 1.1f), k(3.6f, 2.6f, 2.3f);
-    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"},
+    EXPECT_EQ(test::mirrorReflectance(test::loadedMaterial({{"type", "conductor"},
                                              {"eta", {n.x, n.y, n.z}},
                                              {"k", {k.x, k.y, k.z}},
                                              {"roughness", 0}})),
               fresnelConductor(1.0f, n, k));
     // Anisotropic and remapped roughness load as glossy lobes; uroughness 0 alone is not smooth.
-    EXPECT_EQ(loadedMetal({{"type", "conductor"}, {"metal", "Cu"}, {"uroughness", 0}, {"vroughness", 0.3}}).lobes(),
+    EXPECT_EQ(test::loadedMaterial({{"type", "conductor"}, {"metal", "Cu"}, {"uroughness", 0}, {"vroughness", 0.3}}).lobes(),
               unsigned(kGlossyLobe));
-    EXPECT_EQ(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.01}, {"remap_roughness", true}})
+    EXPECT_EQ(test::loadedMaterial({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.01}, {"remap_roughness", true}})
                   .lobes(),
               unsigned(kGlossyLobe));
     // The Schlick form is unchanged.
-    EXPECT_EQ(smoothReflectance(loadedMetal({{"type", "conductor"}, {"reflectance", {0.9, 0.6, 0.3}}, {"roughness", 0}})),
+    EXPECT_EQ(test::mirrorReflectance(test::loadedMaterial({{"type", "conductor"}, {"reflectance", {0.9, 0.6, 0.3}}, {"roughness", 0}})),
               fresnelSchlick(Color(0.9f, 0.6f, 0.3f), 1.0f));
 }
 
 TEST(ConductorScene, TexturedIndex) {
     // eta from an image, looked up at the hit's uv (8-bit texels are sRGB-decoded, so in [0, 1]).
-    const Material& m = loadedMetal({{"type", "conductor"},
+    const Material& m = test::loadedMaterial({{"type", "conductor"},
                                      {"eta", {{"texture", "textures/wood.png"}}},
                                      {"k", {3.0, 2.5, 2.0}},
                                      {"roughness", 0}});
@@ -404,13 +385,13 @@ TEST(ConductorScene, TexturedIndex) {
         Color eta = vmax(wood->lookup(uv), Color(1e-3f));
         EXPECT_EQ(s->weight, fresnelConductor(1.0f, eta, Color(3.0f, 2.5f, 2.0f))) << uv.x << " " << uv.y;
     }
-    EXPECT_FALSE(loadedMetal({{"type", "conductor"}, {"metal", "Au"}}).textured());
+    EXPECT_FALSE(test::loadedMaterial({{"type", "conductor"}, {"metal", "Au"}}).textured());
 }
 
 TEST(ConductorScene, TexturedRoughness) {
     // A roughness texture reads the mean of its channels at the hit's uv; the lobe there is the
     // one of that constant roughness (remapped the same way).
-    const Material& m = loadedMetal({{"type", "conductor"},
+    const Material& m = test::loadedMaterial({{"type", "conductor"},
                                      {"metal", "Au"},
                                      {"uroughness", {{"texture", "textures/wood.png"}}},
                                      {"vroughness", 0.3},
@@ -428,7 +409,7 @@ TEST(ConductorScene, TexturedRoughness) {
         EXPECT_EQ(m.eval(wo, wi, at, TransportMode::Radiance), constant->eval(wo, wi, at, TransportMode::Radiance));
         EXPECT_EQ(m.pdf(wo, wi, at), constant->pdf(wo, wi, at));
     }
-    EXPECT_FALSE(loadedMetal({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0.3}}).textured());
+    EXPECT_FALSE(test::loadedMaterial({{"type", "conductor"}, {"metal", "Au"}, {"roughness", 0.3}}).textured());
 }
 
 TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
@@ -436,21 +417,21 @@ TEST(ConductorScene, RemapRoughnessFollowsPbrt) {
     auto albedoAt = [](const Material& m) {
         return estimateBySampling(m, direction(0.5f, 0.3f), tinted(kWhite), TransportMode::Radiance, 23).mean[0];
     };
-    double remapped = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", true}}));
+    double remapped = albedoAt(test::loadedMaterial({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", true}}));
     double direct = albedoAt(*makeConductor(metal("Ag"), GgxAlpha{0.2f, 0.2f}));
     EXPECT_NEAR(remapped, direct, 1e-6);
-    double unremapped = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", false}}));
-    double photonMapping = albedoAt(loadedMetal({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.2}}));
+    double unremapped = albedoAt(test::loadedMaterial({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.04}, {"remap_roughness", false}}));
+    double photonMapping = albedoAt(test::loadedMaterial({{"type", "conductor"}, {"metal", "Ag"}, {"roughness", 0.2}}));
     EXPECT_NEAR(unremapped, photonMapping, 1e-6);  // 0.2^2 in float is not quite 0.04
 }
 
 TEST(ConductorScene, DistributionField) {
     Vec3 wo = direction(0.6f, 0.4f), wi = direction(0.7f, 3.0f);
     auto evalOf = [&](const Material& m) { return m.eval(wo, wi, tinted(kWhite), TransportMode::Radiance); };
-    const Material& beckmann = loadedMetal(
+    const Material& beckmann = test::loadedMaterial(
         {{"type", "conductor"}, {"metal", "Cu"}, {"roughness", 0.3}, {"remap_roughness", false}, {"distribution", "beckmann"}});
     EXPECT_EQ(evalOf(beckmann), evalOf(*beckmannConductor(metal("Cu"), 0.3f, 0.3f)));
-    const Material& ggx = loadedMetal(
+    const Material& ggx = test::loadedMaterial(
         {{"type", "conductor"}, {"metal", "Cu"}, {"roughness", 0.3}, {"remap_roughness", false}, {"distribution", "ggx"}});
     EXPECT_EQ(evalOf(ggx), evalOf(*makeConductor(metal("Cu"), GgxAlpha{0.3f, 0.3f})));
     EXPECT_NE(evalOf(ggx), evalOf(beckmann));

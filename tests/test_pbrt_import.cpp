@@ -11,6 +11,7 @@
 #include <photon/render.h>
 #include <photon/scene_convert.h>
 #include "import/pbrt/pbrt_import.h"
+#include "materials/fresnel.h"
 #include "scene/ply_mesh.h"
 #include "scene/scene.h"
 #include "scene/scene_loader.h"
@@ -243,6 +244,40 @@ MakeNamedMaterial "both" "string type" "mix" "string materials" ["gold" "plastic
     EXPECT_NEAR(m["sheet"]["transmittance"][0].get<double>(), 0.25, 1e-6);
     EXPECT_NEAR(m["sheet"]["reflectance"][0].get<double>(), 0.125, 1e-6);
     EXPECT_EQ(m["both"], Json::parse(R"({"type": "mix", "materials": ["gold", "plastic"], "amount": 0.25})"));
+}
+
+// coatedconductor becomes photon's coated_conductor: the interface's index and roughness
+// (alpha = sqrt(0.01) remapped, so photon's perceptual roughness is sqrt(0.1)), the metal's
+// index as pbrt gives it (the material divides it by the coat's) and roughness; a constant
+// reflectance becomes pbrt-v4's index for it, eta 1 and k = 2 sqrt(r) / sqrt(1 - r), whose
+// Fresnel at normal incidence is r again.
+TEST(PbrtImport, CoatedConductorAndReflectanceIndex) {
+    const ImportedScene s = import(R"(
+MakeNamedMaterial "paint" "string type" "coatedconductor" "float interface.eta" [1.6]
+  "float interface.roughness" [0.01] "spectrum conductor.eta" "metal-Al-eta" "spectrum conductor.k" "metal-Al-k"
+  "float conductor.roughness" [0.09] "float thickness" [0.02]
+MakeNamedMaterial "smooth" "string type" "coatedconductor" "rgb reflectance" [0.9 0.5 0.2]
+MakeNamedMaterial "plain" "string type" "conductor" "rgb reflectance" [0.64 0.25 0]
+)");
+    const Json& m = s.document["materials"];
+    EXPECT_EQ(m["paint"]["type"], "coated_conductor");
+    EXPECT_NEAR(m["paint"]["ior"].get<double>(), 1.6, 1e-6);  // read as a float
+    EXPECT_NEAR(m["paint"]["roughness"].get<double>(), std::sqrt(0.1), 1e-6);
+    EXPECT_EQ(m["paint"]["conductor"], Json::parse(R"({"eta": "metal-Al-eta", "k": "metal-Al-k",
+        "uroughness": 0.09, "vroughness": 0.09, "remap_roughness": true})"));
+    EXPECT_EQ(m["smooth"]["ior"], 1.5);
+    EXPECT_FALSE(m["smooth"].contains("roughness"));
+    EXPECT_EQ(m["smooth"]["conductor"]["roughness"], 0);
+    EXPECT_EQ(m["plain"]["type"], "conductor");
+    EXPECT_EQ(m["plain"]["eta"], Json::parse("[1, 1, 1]"));
+    const double r[3] = {0.64, 0.25, 0};
+    for (int c = 0; c < 3; ++c) {
+        const double k = m["plain"]["k"][c].get<double>();
+        EXPECT_NEAR(k, 2 * std::sqrt(r[c]) / std::sqrt(1 - r[c]), 1e-6);  // from a float reflectance
+        EXPECT_NEAR(fresnelConductor(1.0f, 1.0f, float(k)), r[c], 1e-6);
+    }
+    // Nothing of the coat is left out, so nothing is warned.
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
 }
 
 TEST(PbrtImport, LightsMapOntoPhotons) {

@@ -29,7 +29,8 @@
 // came from, so how much the coat lets through is all that matters of its transmission.
 // Not modelled: anisotropic roughness, and a medium between coat and base (pbrt-v4's
 // thickness, albedo and g).
-#include <array>
+#include <algorithm>
+#include "materials/coat_albedo.h"
 #include "materials/coat_over_diffuse.h"
 
 namespace photon {
@@ -37,18 +38,9 @@ namespace {
 
 class CoatedDiffuse final : public CoatOverDiffuse {
 public:
-    CoatedDiffuse(ColorParam albedo, float ior, float roughness) : CoatOverDiffuse(std::move(albedo), ior, roughness) {
-        if (!smooth())
-            for (int k = 0; k < kTableSize; ++k) table_[k] = integrateRoughCoatAlbedo(tableCosine(k));
-        // Ebar = 2 int_0^1 E(mu) mu dmu by the midpoint rule, with E as the lobes use it
-        // (interpolated), so that a white base keeps exactly what the coat does not reflect.
-        constexpr int kSteps = 4096;
-        double sum = 0;
-        for (int i = 0; i < kSteps; ++i) {
-            float mu = (float(i) + 0.5f) / kSteps;
-            sum += 2.0 * double(coatAlbedo(mu)) * mu / kSteps;
-        }
-        internalReflectance_ = std::clamp(1.0f - (1.0f - float(sum)) / (ior_ * ior_), 0.0f, 1.0f);
+    CoatedDiffuse(ColorParam albedo, float ior, float roughness)
+        : CoatOverDiffuse(std::move(albedo), ior, roughness), coat_(ior_, ggx_) {
+        internalReflectance_ = std::clamp(1.0f - (1.0f - coat_.cosineWeighted()) / (ior_ * ior_), 0.0f, 1.0f);
     }
 
 private:
@@ -58,39 +50,9 @@ private:
         return albedo * through / internal;
     }
 
-    float coatAlbedo(float cosThetaO) const override {
-        if (smooth()) return fresnel(cosThetaO);
-        // Linear in sqrt(cos): the nodes crowd toward grazing, where E changes fastest.
-        float t = std::sqrt(std::clamp(cosThetaO, 0.0f, 1.0f)) * (kTableSize - 1);
-        int k = std::min(int(t), kTableSize - 2);
-        float f = t - float(k);
-        return table_[k] * (1.0f - f) + table_[k + 1] * f;
-    }
+    float coatAlbedo(float cosThetaO) const override { return coat_(cosThetaO); }
 
-    static constexpr int kTableSize = 64;
-    static float tableCosine(int k) {
-        float t = float(k) / (kTableSize - 1);
-        return std::max(t * t, 1e-4f);
-    }
-
-    // E(mu) = int F(wo.h) D G2 / (4 mu cos_i) cos_i dwi, by visible-normal sampling on a
-    // stratified grid: with wi = reflect(wo, h) and h drawn from D_wo, the integrand over
-    // the density is F(wo.h) G2 / G1(wo) (Heitz 2018, sec. 2), 0 where wi is below.
-    float integrateRoughCoatAlbedo(float mu) const {
-        constexpr int kGrid = 48;
-        Vec3 wo(std::sqrt(1.0f - mu * mu), 0.0f, mu);
-        double sum = 0;
-        for (int i = 0; i < kGrid; ++i)
-            for (int j = 0; j < kGrid; ++j) {
-                Vec3 h = ggx_.sampleVisibleNormal(wo, {(float(i) + 0.5f) / kGrid, (float(j) + 0.5f) / kGrid});
-                Vec3 wi = reflect(wo, h);
-                if (wi.z <= 0) continue;
-                sum += fresnel(dot(wo, h)) * ggx_.G2(wo, wi) / ggx_.G1(wo);
-            }
-        return float(sum / (kGrid * kGrid));
-    }
-
-    std::array<float, kTableSize> table_{};
+    CoatAlbedo coat_;
     float internalReflectance_ = 0;  // Fint
 };
 

@@ -58,6 +58,8 @@ public:
         return fresnel(dot(wo, *h), in) * lobeAt(in.uv).reflectionNoFresnel(wo, wi, *h);
     }
 
+    Color normalReflectance(const MaterialInputs& in) const override { return fresnel(1.0f, in); }
+
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
         if (smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);

@@ -80,6 +80,9 @@ public:
     // (materials/normal_map.h); bentNormal then gives it at uv for the unbent n.
     virtual bool bendsNormal() const { return false; }
     virtual Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const { return n; }
+    // A reflector's reflectance at normal incidence (its Fresnel term there), for a coat
+    // laid over it (coated_conductor.cpp); black for materials that are not reflectors.
+    virtual Color normalReflectance(const MaterialInputs& in) const { return Color(0.0f); }
     bool isDeltaOnly() const { return lobes() == kDeltaLobe; }
     bool hasDiffuse() const { return (lobes() & kDiffuseLobe) != 0; }
 
@@ -168,6 +171,11 @@ MaterialPtr makeBumpMapped(MaterialPtr base, FloatParam height);
 // An opaque material whose back (the side away from its surface's normal) is black
 // (materials/one_sided.cpp); base must be two-sided.
 MaterialPtr makeOneSided(MaterialPtr base);
+// A conductor (makeConductor's) under a clear dielectric coat of index `ior`, GGX-rough or
+// smooth (roughness 0): car paint's clear coat over metal, pbrt-v4's coatedconductor
+// (materials/coated_conductor.cpp). `conductor` is the base as it is inside the coat: a
+// complex index relative to the coat's (eta / ior, k / ior).
+MaterialPtr makeCoatedConductor(MaterialPtr conductor, float ior, float roughness);
 // Diffuse base under a dielectric coat with internal reflections summed and the rough
 // coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
 MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);

@@ -2,6 +2,7 @@
 // materials/material.h.
 #include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
+#include "texture/textures.h"
 
 namespace photon::scene_json {
 
@@ -77,6 +78,34 @@ MicrofacetRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) 
     return r;
 }
 
+// The part of an index that a coat of index `coatIor` sees: eta / coatIor or k / coatIor
+// (pbrt-v4's CoatedConductorMaterial divides the same way).
+ColorParam relativeTo(ColorParam part, float coatIor) {
+    if (coatIor == 1.0f) return part;
+    if (!part.textured()) return ColorParam(part.value / coatIor);
+    return ColorParam(makeProductTexture(std::move(part), Color(1.0f / coatIor)));
+}
+
+// A conductor's fields: its Fresnel term (reflectance, metal, or eta and k) and roughness.
+// Under a coat of index coatIor the complex index is taken relative to the coat's.
+MaterialPtr readConductor(JsonObject& obj, LoadContext& ctx, float coatIor = 1.0f) {
+    std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
+    MicrofacetRoughness roughness = conductorRoughnessFields(obj, ctx);
+    if (!ior) return makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), roughness);
+    return makeConductor(ComplexIorParam{relativeTo(ior->eta, coatIor), relativeTo(ior->k, coatIor)}, roughness);
+}
+
+// {"type": "coated_conductor", "ior": 1.5, "roughness": 0, "conductor": {conductor fields}}:
+// the coat's index and roughness, and the metal under it.
+MaterialPtr readCoatedConductor(JsonObject& obj, LoadContext& ctx) {
+    const float ior = iorField(obj);
+    const float roughness = roughnessField(obj, 0.0f);
+    JsonObject metal = obj.required("conductor").object();
+    MaterialPtr conductor = readConductor(metal, ctx, ior);
+    metal.finish();
+    return makeCoatedConductor(std::move(conductor), ior, roughness);
+}
+
 // A boundary (rough if roughness > 0), or with "thin": true a thin slab, whose faces are
 // smooth.
 MaterialPtr readDielectric(JsonObject& obj) {
@@ -127,22 +156,16 @@ MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<Materia
 
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, DiffuseTransmission, Mix };
-    auto type = Type(obj.required("type").choice(
-        {"diffuse", "dielectric", "mirror", "conductor", "plastic", "coated_diffuse", "diffuse_transmission", "mix"},
-        "type"));
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, CoatedConductor, DiffuseTransmission, Mix };
+    auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic",
+                                                  "coated_diffuse", "coated_conductor", "diffuse_transmission", "mix"},
+                                                 "type"));
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
         case Dielectric: m = readDielectric(obj); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
-        case Conductor: {
-            std::optional<ComplexIorParam> ior = complexIorFields(obj, ctx);
-            MicrofacetRoughness roughness = conductorRoughnessFields(obj, ctx);
-            m = ior ? makeConductor(*ior, roughness)
-                    : makeConductor(colorField(obj, "reflectance", Color(0.9f), ctx), roughness);
-            break;
-        }
+        case Conductor: m = readConductor(obj, ctx); break;
         case Plastic: {
             ColorParam albedo = colorField(obj, "albedo", Color(0.5f), ctx);
             float ior = iorField(obj);
@@ -155,6 +178,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
             m = makeCoatedDiffuse(albedo, ior, roughnessField(obj, 0.0f));
             break;
         }
+        case CoatedConductor: m = readCoatedConductor(obj, ctx); break;
         case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
     }

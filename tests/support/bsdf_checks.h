@@ -198,6 +198,20 @@ inline BinnedAlbedo binBySampling(const Material& m, Vec3 wo, const MaterialInpu
     return bins;
 }
 
+// Two binned lobes compared per channel: their albedos (the sums over the bins) and L1, the
+// sum over the bins of |model - reference| over the reference's albedo.
+struct BinComparison {
+    Channels model{}, reference{}, l1{};
+};
+inline BinComparison compareBins(const BinnedAlbedo& model, const BinnedAlbedo& reference) {
+    BinComparison r;
+    for (int c = 0; c < 3; ++c) {
+        for (int k = 0; k < kBins; ++k) r.model[c] += model[k][c], r.reference[c] += reference[k][c];
+        for (int k = 0; k < kBins; ++k) r.l1[c] += std::abs(model[k][c] - reference[k][c]) / r.reference[c];
+    }
+    return r;
+}
+
 // Deterministic quadrature of g(wi) over the whole sphere, independent of sample() and of
 // any half-vector mapping: polar coordinates about `axis`, midpoint rule. The polar angle
 // is spaced geometrically from kTheta0 to kThetaNear (theta = kTheta0 (kThetaNear /

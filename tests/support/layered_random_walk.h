@@ -1,4 +1,5 @@
-// A brute-force reference for a Lambertian base under a dielectric coat: light is
+// A brute-force reference for a Lambertian base, or any reflecting material (a metal),
+// under a dielectric coat: light is
 // followed as a random walk between the two interfaces: it enters the coat (Fresnel's
 // choice at a smooth coat; a rough one's microsurface walked, microsurface_walk.h),
 // bounces on the base, meets the coat again from inside (reflected or transmitted, total
@@ -9,7 +10,9 @@
 // so its exit directions, weighted, are distributed as f(wi, wo) cos(theta_o).
 #pragma once
 #include <optional>
+#include "bsdf_checks.h"
 #include "materials/fresnel.h"
+#include "materials/material.h"
 #include "materials/microfacet.h"
 #include "math/rng.h"
 #include "math/sampling.h"
@@ -26,6 +29,11 @@ class LayeredRandomWalk {
 public:
     LayeredRandomWalk(Color baseAlbedo, float ior, float roughness)
         : albedo_(baseAlbedo), ior_(ior), alpha_(roughnessToAlpha(roughness)), microsurface_(alpha_, ior) {}
+    // A material base, scattered by its own sample() as a photon would be (importance
+    // transport), with `inputs` as its inputs.
+    LayeredRandomWalk(MaterialPtr base, MaterialInputs inputs, float ior, float roughness)
+        : albedo_(1.0f), base_(std::move(base)), inputs_(inputs), ior_(ior), alpha_(roughnessToAlpha(roughness)),
+          microsurface_(alpha_, ior) {}
 
     // Light arriving from direction wi (above the coat, pointing toward the light).
     // Nothing when the base absorbs it.
@@ -36,6 +44,16 @@ public:
             std::optional<Vec3> next = scatterAtCoat(wo, rng);
             if (!next) return std::nullopt;
             if (next->z > 0) return LayeredExit{*next, beta};  // reflected above, or out through the coat
+            if (base_) {
+                // Down to a material base: its sample from where the light came.
+                const float uLobe = rng.uniform();
+                const Vec2 u{rng.uniform(), rng.uniform()};
+                std::optional<BSDFSample> s = base_->sample(-*next, uLobe, u, inputs_, TransportMode::Importance);
+                if (!s || s->wi.z <= 0) return std::nullopt;
+                beta *= s->weight;
+                wo = -s->wi;
+                continue;
+            }
             // Down to the base: Lambertian, so the weight is its albedo and the direction
             // cosine-distributed upward, back to the coat from inside.
             beta *= albedo_;
@@ -69,8 +87,20 @@ private:
     }
 
     Color albedo_;
+    MaterialPtr base_;
+    MaterialInputs inputs_{};
     float ior_, alpha_;
     MicrosurfaceDielectricWalk microsurface_;
 };
+
+// The walk's exit directions for `paths` lights arriving from wi, binned as
+// bsdf_checks::binBySampling bins a material's samples.
+inline bsdf_checks::BinnedAlbedo binWalk(const LayeredRandomWalk& walk, Vec3 wi, int paths, Rng& rng) {
+    bsdf_checks::BinnedAlbedo bins{};
+    for (int i = 0; i < paths; ++i)
+        if (auto exit = walk.trace(wi, rng))
+            for (int c = 0; c < 3; ++c) bins[bsdf_checks::hemisphereBin(exit->w)][c] += exit->weight[c] / paths;
+    return bins;
+}
 
 }  // namespace photon::test

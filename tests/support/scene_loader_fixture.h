@@ -170,4 +170,25 @@ inline void expectError(const std::function<void(Json&)>& edit, const std::strin
     EXPECT_EQ(std::string(e.what()), path.empty() ? message : path + ": " + message);
 }
 
+// The material `fields` loaded as "tested" in the full scene (kept alive for the caller).
+inline const Material& loadedMaterial(const Json& fields) {
+    static std::vector<SceneDescription> kept;
+    Json doc = fullScene();
+    doc["materials"]["tested"] = fields;
+    kept.push_back(load(doc));
+    const SceneDescription& d = kept.back();
+    for (size_t i = 0; i < d.materialNames.size(); ++i)
+        if (d.materialNames[i] == "tested") return *d.materials[i];
+    ADD_FAILURE() << "no material \"tested\"";
+    return *d.materials[0];
+}
+
+// The reflectance at normal incidence of a material whose reflection there is a mirror (with
+// the material's own inputs, as integrators pass them).
+inline Color mirrorReflectance(const Material& m) {
+    auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(Vec2{}), TransportMode::Radiance);
+    EXPECT_TRUE(s && s->delta);
+    return s ? s->weight : Color(0.0f);
+}
+
 }  // namespace photon::test

@@ -76,9 +76,10 @@ double number(const Json& v) { return v.is_number() ? v.get<double>() : -1; }
 
 // pbrt's (u, v) roughness and remap flag as one perceptual roughness (photon's dielectric
 // and coated diffuse are isotropic).
-Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic) {
+Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic, const std::string& prefix) {
     const Location& where = p.directive().where;
-    std::optional<Json> r = floatValue(p, "roughness"), u = floatValue(p, "uroughness"), v = floatValue(p, "vroughness");
+    std::optional<Json> r = floatValue(p, prefix + "roughness"), u = floatValue(p, prefix + "uroughness"),
+                        v = floatValue(p, prefix + "vroughness");
     const bool remap = p.boolean("remaproughness", true);
     if (!u) u = r;
     if (!v) v = r;
@@ -108,8 +109,9 @@ namespace {
 
 // A dielectric's index: a float, or a spectrum's value (named glasses have one; a sampled
 // spectrum's dispersion is lost: its mean over the visible colour channels is used).
-double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, std::vector<std::string>& warnings) {
-    const Param* eta = p.find("eta");
+double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, std::vector<std::string>& warnings,
+                         const std::string& name = "eta") {
+    const Param* eta = p.find(name);
     if (!eta) return 1.5;
     if (eta->type == "texture") fail(eta->where, "a textured eta is not supported");
     const Color c = spectrumColor(*eta, SpectrumKind::Index, baseDir);
@@ -148,31 +150,48 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
             m.update(roughnessFields(p, false));
         }
     } else if (type == "conductor" || type == "coatedconductor") {
-        m = {{"type", "conductor"}};
         const bool coated = type == "coatedconductor";
         const std::string prefix = coated ? "conductor." : "";
+        Json metal = Json::object();
         if (auto r = colorValue(p, "reflectance", int(SpectrumKind::Reflectance))) {
-            m["reflectance"] = reflectance(*r, where, out_.warnings);
-            warn(where, "conductor \"reflectance\": taken as the reflectance at normal incidence (Schlick's Fresnel)");
+            const Json f0 = reflectance(*r, where, out_.warnings);
+            if (f0.is_array()) {
+                // pbrt-v4 makes a constant reflectance r an index: eta 1, k = 2 sqrt(r) /
+                // sqrt(1 - r), whose Fresnel is r at normal incidence (r at most 0.9999).
+                Json k = Json::array();
+                for (const Json& c : f0) {
+                    const double v = std::min(c.get<double>(), 0.9999);
+                    k.push_back(2 * std::sqrt(v) / std::sqrt(1 - v));
+                }
+                metal["eta"] = {1, 1, 1};
+                metal["k"] = k;
+            } else {
+                metal["reflectance"] = f0;
+                warn(where, "conductor \"reflectance\" from a texture: taken as the reflectance at normal incidence "
+                            "(Schlick's Fresnel); pbrt-v4 derives an index from it");
+            }
         } else {
-            m["eta"] = colorValue(p, prefix + "eta", int(SpectrumKind::Index)).value_or(Json("metal-Cu-eta"));
-            m["k"] = colorValue(p, prefix + "k", int(SpectrumKind::Index)).value_or(Json("metal-Cu-k"));
+            metal["eta"] = colorValue(p, prefix + "eta", int(SpectrumKind::Index)).value_or(Json("metal-Cu-eta"));
+            metal["k"] = colorValue(p, prefix + "k", int(SpectrumKind::Index)).value_or(Json("metal-Cu-k"));
         }
-        if (coated) {
-            warn(where, "coatedconductor: the dielectric coat is left out (rendered as its conductor)");
-            for (const char* name : {"interface.roughness", "interface.uroughness", "interface.vroughness", "interface.eta",
-                                     "thickness", "g", "albedo", "maxdepth", "nsamples"})
-                p.find(name);
-            const Json isotropic = floatValue(p, "conductor.roughness").value_or(Json(0));
-            const Json u = floatValue(p, "conductor.uroughness").value_or(isotropic);
-            m["uroughness"] = u;
-            m["vroughness"] = floatValue(p, "conductor.vroughness").value_or(u);
-            m["remap_roughness"] = p.boolean("remaproughness", true);
+        Json r = roughnessFields(p, true, prefix);
+        // pbrt's conductor is smooth without a roughness; photon's defaults to 0.2.
+        if (!r.contains("uroughness")) r = {{"roughness", 0}};
+        metal.update(r);
+        if (!coated) {
+            m = {{"type", "conductor"}};
+            m.update(metal);
         } else {
-            Json r = roughnessFields(p, true);
-            // pbrt's conductor is smooth without a roughness; photon's defaults to 0.2.
-            if (!r.contains("uroughness")) r = {{"roughness", 0}};
-            m.update(r);
+            // The metal's index is given as pbrt-v4 gives it; photon's coated_conductor takes
+            // it relative to the coat, as pbrt-v4 does (docs/scene-format.md).
+            m = {{"type", "coated_conductor"},
+                 {"ior", indexOfRefraction(p, baseDir_, out_.warnings, "interface.eta")},
+                 {"conductor", metal}};
+            m.update(roughnessFields(p, false, "interface."));
+            if (auto albedo = colorValue(p, "albedo", int(SpectrumKind::Reflectance));
+                albedo && !(albedo->is_array() && (*albedo)[0] == 0 && (*albedo)[1] == 0 && (*albedo)[2] == 0))
+                warn(where, "coatedconductor: the medium between coat and metal (albedo, g, thickness) is left out");
+            for (const char* name : {"thickness", "g", "maxdepth", "nsamples"}) p.find(name);
         }
     } else if (type == "diffusetransmission") {
         const double scale = p.number("scale", 1);
