@@ -305,6 +305,35 @@ TEST(GltfImport, MaterialMapping) {
     EXPECT_TRUE(d.shapes[4].twoSidedEmission);
 }
 
+// KHR_materials_clearcoat on a metal: photon's coated_conductor (ior 1.5, the coat's
+// roughness), mixed with the bare metal by clearcoatFactor; on a non-metal it is warned.
+TEST(GltfImport, ClearcoatOnAMetal) {
+    Gltf g = lit();
+    auto coat = [](double factor, double roughness) {
+        return Json{{"KHR_materials_clearcoat", {{"clearcoatFactor", factor}, {"clearcoatRoughnessFactor", roughness}}}};
+    };
+    const Json pbr = {{"baseColorFactor", {0.9, 0.1, 0.1, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0.5}};
+    const int paint = g.material({{"pbrMetallicRoughness", pbr}, {"extensions", coat(1, 0.1)}});
+    const int half = g.material({{"pbrMetallicRoughness", pbr}, {"extensions", coat(0.5, 0)}});
+    const int plastic = g.material({{"pbrMetallicRoughness", {{"metallicFactor", 0}}}, {"extensions", coat(1, 0)}});
+    for (int m : {paint, half, plastic}) g.node({{"mesh", g.mesh(kTriangle, {0, 1, 2}, m)}});
+    const ImportedScene s = import(g);
+    const Json& mats = s.document["materials"];
+    const Json metal = {{"reflectance", {0.9, 0.1, 0.1}}, {"roughness", 0.5}};
+    EXPECT_EQ(mats["material-0"], Json({{"type", "coated_conductor"}, {"ior", 1.5}, {"roughness", 0.1}, {"conductor", metal}}));
+    EXPECT_EQ(mats["material-1"]["type"], "mix");
+    EXPECT_EQ(mats["material-1"]["amount"], 0.5);
+    EXPECT_EQ(mats["material-1"]["materials"][0],
+              Json({{"type", "conductor"}, {"reflectance", {0.9, 0.1, 0.1}}, {"roughness", 0.5}}));
+    EXPECT_EQ(mats["material-1"]["materials"][1]["type"], "coated_conductor");
+    EXPECT_EQ(mats["material-2"]["type"], "coated_diffuse");
+    EXPECT_NE(std::find(s.warnings.begin(), s.warnings.end(),
+                        "scene.gltf: /materials/2/extensions/KHR_materials_clearcoat: a clear coat over a non-metal is "
+                        "left out (photon's coated_diffuse has one coat)"),
+              s.warnings.end());
+    load(s);  // and the loader takes what the importer wrote
+}
+
 // What the emission texture shows at the quad's point (x, y), found by a ray.
 Color emissionAt(const SceneDescription& d, float x, float y) {
     auto scene = Scene::build(d);

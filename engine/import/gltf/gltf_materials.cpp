@@ -12,8 +12,9 @@
 namespace photon::gltf {
 namespace {
 
-const std::set<std::string> kMaterialExtensions = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                   "KHR_materials_transmission", "KHR_materials_volume"};
+const std::set<std::string> kMaterialExtensions = {"KHR_materials_clearcoat", "KHR_materials_emissive_strength",
+                                                   "KHR_materials_ior", "KHR_materials_transmission",
+                                                   "KHR_materials_volume"};
 
 Json product(Json a, Json b) { return {{"type", "product"}, {"a", std::move(a)}, {"b", std::move(b)}}; }
 
@@ -68,11 +69,36 @@ double constantRoughness(Context& ctx, const Source& s, const char* what) {
     return fraction(pbr.roughnessFactor);
 }
 
+// KHR_materials_clearcoat on the metal: a clear coat of index 1.5 (the extension's) over the
+// conductor, as photon's coated_conductor, in the share clearcoatFactor. The dielectric
+// part keeps its own coat (coated_diffuse's), so a second coat over it is left out.
+Json clearcoated(Context& ctx, const Source& s, Json conductor) {
+    const tinygltf::Value* ext = extension(s.m, "KHR_materials_clearcoat");
+    if (!ext) return conductor;
+    const std::string at = s.pointer + "/extensions/KHR_materials_clearcoat/";
+    for (const char* texture : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+        if (ext->Has(texture)) ctx.warn(at + texture, "ignored: photon's coat takes constant factors");
+    const double factor = fraction(numberIn(*ext, "clearcoatFactor", 0.0));
+    if (factor == 0) return conductor;
+    Json metal = conductor;
+    metal.erase("type");
+    Json coated = {{"type", "coated_conductor"},
+                   {"ior", 1.5},
+                   {"roughness", fraction(numberIn(*ext, "clearcoatRoughnessFactor", 0.0))},
+                   {"conductor", metal}};
+    if (factor == 1) return coated;
+    return {{"type", "mix"}, {"materials", {conductor, coated}}, {"amount", factor}};
+}
+
 Json opaqueMaterial(Context& ctx, const Source& s) {
     const auto& pbr = s.m.pbrMetallicRoughness;
     const Json base = baseColor(s);
     const Json metallic = packedFraction(ctx, s, pbr.metallicFactor, "b");
-    Json conductor = {{"type", "conductor"}, {"reflectance", base}, {"roughness", packedFraction(ctx, s, pbr.roughnessFactor, "g")}};
+    Json conductor = clearcoated(
+        ctx, s, {{"type", "conductor"}, {"reflectance", base}, {"roughness", packedFraction(ctx, s, pbr.roughnessFactor, "g")}});
+    if (metallic == 0.0 && extension(s.m, "KHR_materials_clearcoat"))
+        ctx.warn(s.pointer + "/extensions/KHR_materials_clearcoat",
+                 "a clear coat over a non-metal is left out (photon's coated_diffuse has one coat)");
     if (metallic == 1.0) return conductor;
     Json coated = {{"type", "coated_diffuse"}, {"albedo", base}, {"ior", iorOf(ctx, s)},
                    {"roughness", constantRoughness(ctx, s, "coated_diffuse")}};
