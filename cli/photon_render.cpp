@@ -77,7 +77,7 @@ void writeImages(const photon::Renderer& renderer, const RenderOptions& options)
 int render(const RenderOptions& options) {
     std::optional<photon::ThreadLimit> threads;
     if (options.threads) threads.emplace(static_cast<size_t>(*options.threads));
-    photon::SceneFile scene = photon::SceneFile::read(options.scene, options.overrides(), {options.camera});
+    photon::SceneFile scene = photon::SceneFile::read(options.scene, options.overrides(), {options.camera, options.lenient});
     // An import never leaves out or approximates anything silently.
     for (const std::string& w : scene.warnings()) std::fprintf(stderr, "photon-render: warning: %s\n", w.c_str());
     if (options.check) {

@@ -58,6 +58,7 @@ void declareOptions(CLI::App& app, RenderOptions& o) {
                    "write the render's state here every 30 s and when it stops, to --resume it later");
     app.add_option("--resume", o.resume, "continue the render saved in this checkpoint (same scene and settings)")
         ->check(CLI::ExistingFile);
+    app.add_flag("--lenient", o.lenient, "pbrt: leave out or replace what photon cannot render (media, unknown materials, textures, shapes, lights), with a warning for each, instead of refusing the scene");
     app.add_flag("--check", o.check, "load and check the scene, print what it asks for, render nothing");
     app.add_flag("--quiet", o.quiet, "no progress bar");
 }

@@ -19,6 +19,7 @@ struct RenderOptions {
     std::optional<double> targetError;
     std::string integrator;
     std::string camera;      // glTF: the camera's name
+    bool lenient = false;    // pbrt: leave out what photon cannot render (ImportOptions::lenient)
     std::string resolution;  // "WxH"
     std::vector<std::string> defines;  // -D key=value
     std::string checkpoint, resume;

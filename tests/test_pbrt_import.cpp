@@ -409,6 +409,53 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
     EXPECT_EQ(importError(head + "Shape \"sphere\" \"float radius\" [1\n").path(), "bad.pbrt:3");
 }
 
+// A lenient import (photon-render --lenient) leaves out or replaces what photon cannot
+// render, each with a warning naming the line and what was done, and keeps the rest: the
+// same features refuse the strict import (ErrorsNameFileAndLine).
+TEST(PbrtImport, LenientImportLeavesOutWhatPhotonCannotRender) {
+    const std::string body = R"(
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1]
+MediumInterface "" "fog"
+Attribute "shape" "float radius" [2]
+Texture "noise" "spectrum" "fbm" "integer octaves" [4]
+MakeNamedMaterial "fur" "string type" "hair" "float eumelanin" [1.3]
+MakeNamedMaterial "painted" "string type" "diffuse" "texture reflectance" "noise"
+NamedMaterial "fur"
+Shape "curve" "point3 P" [0 0 0 1 0 0 1 1 0 0 1 0] "float width" [0.1]
+Shape "sphere" "float radius" [0.5] "float zmax" [0.2]
+LightSource "goniometric" "string filename" "profile.exr"
+)";
+    const ImportedScene s = importPbrt(writeScene("scene.pbrt", kHeader + body), true);
+    const std::vector<std::string> expected = {
+        "scene.pbrt:13: participating media (MakeNamedMedium \"fog\") are not supported by photon; left out (lenient import)",
+        "scene.pbrt:14: MediumInterface: participating media are not supported by photon; left out (lenient import)",
+        "scene.pbrt:15: Attribute \"shape\": default parameters by directive are not supported; give them on each "
+        "directive; left out (lenient import)",
+        "scene.pbrt:16: Texture \"noise\": class \"fbm\" is not supported (photon imports imagemap, checkerboard, scale, "
+        "mix, constant); the constant 0.5 used (lenient import)",
+        "scene.pbrt:17: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+        "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface); rendered as a grey diffuse "
+        "material (lenient import)",
+        "scene.pbrt:20: Shape \"curve\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, bilinearmesh, "
+        "loopsubdiv); left out (lenient import)",
+        "scene.pbrt:21: sphere: partial spheres (zmin, zmax, phimax) are not supported; the whole sphere rendered (lenient "
+        "import)",
+        "scene.pbrt:22: LightSource \"goniometric\" is not supported (photon imports point, spot, distant, infinite); left "
+        "out (lenient import)"};
+    EXPECT_EQ(s.warnings, expected);
+    const Json& m = s.document["materials"];
+    EXPECT_EQ(m["fur"], Json::parse(R"({"type": "diffuse", "albedo": [0.5, 0.5, 0.5]})"));
+    EXPECT_EQ(m["painted"]["albedo"], Json::parse("[0.5, 0.5, 0.5]"));
+    // The header's quad light and two triangle meshes, and the whole sphere; no curve.
+    ASSERT_EQ(s.document["shapes"].size(), 3u);
+    EXPECT_EQ(s.document["shapes"][2]["type"], "sphere");
+    EXPECT_EQ(s.document["shapes"][2]["material"], "fur");
+    EXPECT_FALSE(s.document.contains("lights"));
+    loadImportedScene(s, scratch());  // what the lenient import wrote loads
+    // Strict, the first of them is refused.
+    EXPECT_THROW(importPbrt(writeScene("scene.pbrt", kHeader + body)), SceneError);
+}
+
 TEST(PbrtImport, WhatIsLeftOutIsWarned) {
     const ImportedScene s = import(R"(
 Shape "trianglemesh" "point3 P" [0 0 0 1 0 0 0 1 0] "vector3 S" [1 0 0 1 0 0 1 0 0]

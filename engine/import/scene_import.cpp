@@ -25,7 +25,7 @@ SceneFormat sceneFormatOf(const std::filesystem::path& file) {
 
 ImportedScene importSceneFile(const std::filesystem::path& file, const ImportOptions& options) {
     switch (sceneFormatOf(file)) {
-        case SceneFormat::Pbrt: return importPbrt(file);
+        case SceneFormat::Pbrt: return importPbrt(file, options.lenient);
         case SceneFormat::Gltf: return importGltf(file, GltfImportOptions{options.camera});
         case SceneFormat::Json: break;
     }

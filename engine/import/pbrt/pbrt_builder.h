@@ -32,7 +32,8 @@ struct GraphicsState {
 
 class SceneBuilder {
 public:
-    SceneBuilder(std::filesystem::path baseDir, ImportedScene& out) : baseDir_(std::move(baseDir)), out_(out) {}
+    SceneBuilder(std::filesystem::path baseDir, ImportedScene& out, bool lenient = false)
+        : baseDir_(std::move(baseDir)), out_(out), lenient_(lenient) {}
     void handle(Directive&& d);
     // Writes camera, render settings and the rest into the document once every directive is read.
     void finish();
@@ -75,10 +76,14 @@ private:
     void objectInstance(const Directive& d);
 
     void warn(const Location& where, const std::string& message);
+    // What photon cannot render: refused (SceneError) unless the import is lenient, when it
+    // is warned with what is done `instead` and the directive's parameters count as read.
+    void unsupported(const Directive& d, const std::string& message, const std::string& instead = "left out");
     Json matrixJson(const Transform& t) const;
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;
+    bool lenient_ = false;
     Json materials_ = Json::object(), shapes_ = Json::array(), objects_ = Json::object(), lights_ = Json::array();
     Json render_ = Json::object();
 

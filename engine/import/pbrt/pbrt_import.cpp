@@ -95,19 +95,25 @@ void SceneBuilder::handle(Directive&& d) {
     } else if (n == "ObjectInstance") {
         objectInstance(d);
     } else if (n == "MakeNamedMedium") {
-        fail(d.where, "participating media (MakeNamedMedium \"" + (d.strings.empty() ? "" : d.strings[0]) +
-                          "\") are not supported by photon");
+        return unsupported(d, "participating media (MakeNamedMedium \"" + (d.strings.empty() ? "" : d.strings[0]) +
+                                  "\") are not supported by photon");
     } else if (n == "MediumInterface") {
         for (const std::string& s : d.strings)
-            if (!s.empty()) fail(d.where, "MediumInterface: participating media are not supported by photon");
+            if (!s.empty()) return unsupported(d, "MediumInterface: participating media are not supported by photon");
         return;
     } else if (n == "Attribute") {
-        fail(d.where, "Attribute \"" + (d.strings.empty() ? "" : d.strings[0]) +
-                          "\": default parameters by directive are not supported; give them on each directive");
+        return unsupported(d, "Attribute \"" + (d.strings.empty() ? "" : d.strings[0]) +
+                                  "\": default parameters by directive are not supported; give them on each directive");
     } else {
         fail(d.where, "directive " + n + " is not supported");
     }
     Params(d).warnUnused(out_.warnings);
+}
+
+void SceneBuilder::unsupported(const Directive& d, const std::string& message, const std::string& instead) {
+    if (!lenient_) fail(d.where, message);
+    warn(d.where, message + "; " + instead + " (lenient import)");
+    Params(d).markAllRead();
 }
 
 void SceneBuilder::finish() {
@@ -127,10 +133,10 @@ void SceneBuilder::finish() {
 
 }  // namespace pbrt
 
-ImportedScene importPbrt(const std::filesystem::path& file) {
+ImportedScene importPbrt(const std::filesystem::path& file, bool lenient) {
     ImportedScene out;
     const std::filesystem::path root = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-    pbrt::SceneBuilder builder(root, out);
+    pbrt::SceneBuilder builder(root, out, lenient);
     try {
         pbrt::parseFile(file, root, [&](pbrt::Directive&& d) { builder.handle(std::move(d)); });
     } catch (const pbrt::ParseError& e) {

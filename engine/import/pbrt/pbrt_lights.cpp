@@ -100,14 +100,18 @@ void SceneBuilder::lightSource(const Directive& d) {
             for (const Vec3& c : q) light["portal"].push_back(vec(c));
         }
     } else {
-        fail(d.where, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
+        return unsupported(d, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
     }
     lights_.push_back(std::move(light));
 }
 
 void SceneBuilder::areaLightSource(const Directive& d) {
     Params p(d);
-    if (d.strings.at(0) != "diffuse") fail(d.where, "AreaLightSource \"" + d.strings[0] + "\" is not supported (diffuse only)");
+    if (d.strings.at(0) != "diffuse") {
+        state_.areaLight.reset();
+        return unsupported(d, "AreaLightSource \"" + d.strings[0] + "\" is not supported (diffuse only)",
+                           "the shapes it lights emit nothing");
+    }
     Json e = Json::object();
     if (auto file = p.string("filename")) {
         if (auto why = checkRelativePath(*file)) fail(d.where, "AreaLightSource: \"" + *file + "\": " + *why);

@@ -220,8 +220,10 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         }
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
     } else {
-        fail(where, "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                                           "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)");
+        unsupported(p.directive(), "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+                                   "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)",
+                    "rendered as a grey diffuse material");
+        return Json{{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
     }
     if (auto d = floatValue(p, "displacement")) m["bump"] = *d;
     if (auto n = p.string("normalmap")) {
@@ -281,7 +283,8 @@ void SceneBuilder::texture(const Directive& d) {
     };
     auto mapping = [&](Json& t) {
         const std::string map = p.string("mapping", "uv");
-        if (map != "uv") fail(d.where, "Texture \"" + name + "\": mapping \"" + map + "\" is not supported (uv only)");
+        if (map != "uv")
+            unsupported(d, "Texture \"" + name + "\": mapping \"" + map + "\" is not supported (uv only)", "uv used");
         const double su = p.number("uscale", 1), sv = p.number("vscale", 1), du = p.number("udelta", 0),
                      dv = p.number("vdelta", 0);
         if (su != 1 || sv != 1) t["uv_scale"] = {su, sv};
@@ -298,14 +301,15 @@ void SceneBuilder::texture(const Directive& d) {
         if (encoding != "sRGB")
             warn(d.where, "Texture \"" + name + "\": encoding \"" + encoding +
                               "\" not honoured (8-bit images are read as sRGB, float images as linear)");
-        if (p.boolean("invert", false)) fail(d.where, "Texture \"" + name + "\": \"invert\" is not supported");
+        if (p.boolean("invert", false)) unsupported(d, "Texture \"" + name + "\": \"invert\" is not supported", "not inverted");
         const std::string wrap = p.string("wrap", "repeat");
         if (wrap != "repeat") warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
         for (const char* ignored : {"filter", "maxanisotropy"}) p.find(ignored);  // photon filters bilinearly
         const double scale = p.number("scale", 1);
         if (scale != 1) t = {{"type", "product"}, {"a", t}, {"b", color ? rgb(Color(float(scale))) : Json(scale)}};
     } else if (cls == "checkerboard") {
-        if (p.number("dimension", 2) != 2) fail(d.where, "Texture \"" + name + "\": only 2D checkerboards are supported");
+        if (p.number("dimension", 2) != 2)
+            unsupported(d, "Texture \"" + name + "\": only 2D checkerboards are supported", "its 2D checkerboard in uv used");
         t = {{"type", "checkerboard"}, {"even", value("tex1", 1)}, {"odd", value("tex2", 0)}};
         mapping(t);
     } else if (cls == "scale") {
@@ -316,8 +320,10 @@ void SceneBuilder::texture(const Directive& d) {
     } else if (cls == "constant") {
         t = value("value", 1);
     } else {
-        fail(d.where, "Texture \"" + name + "\": class \"" + cls +
-                          "\" is not supported (photon imports imagemap, checkerboard, scale, mix, constant)");
+        unsupported(d, "Texture \"" + name + "\": class \"" + cls +
+                           "\" is not supported (photon imports imagemap, checkerboard, scale, mix, constant)",
+                    "the constant 0.5 used");
+        t = color ? rgb(Color(0.5f)) : Json(0.5);
     }
     (color ? spectrumTextures_ : floatTextures_)[name] = t;
 }

@@ -81,6 +81,10 @@ Vec3 Params::vec3(std::string_view name, Vec3 fallback) const {
     return {float(c.numbers.at(0)), float(c.numbers.at(1)), float(c.numbers.at(2))};
 }
 
+void Params::markAllRead() const {
+    for (const Param& p : d_.params) p.used = true;
+}
+
 void Params::warnUnused(std::vector<std::string>& warnings) const {
     for (const Param& p : d_.params)
         if (!p.used)

@@ -41,6 +41,8 @@ public:
     // Warnings for the parameters nothing read: "scene.pbrt:12: Shape \"trianglemesh\": parameter
     // \"S\" (normal3) ignored".
     void warnUnused(std::vector<std::string>& warnings) const;
+    // Marks every parameter read: for a directive left out as a whole.
+    void markAllRead() const;
 
 private:
     const Param& checked(const Param& p, std::initializer_list<std::string_view> types, size_t count) const;

@@ -164,7 +164,7 @@ void SceneBuilder::addSphere(const Params& p, const Directive& d) {
     const double r = p.number("radius", 1);
     if (!(r > 0)) fail(d.where, "sphere: radius must be > 0");
     if (p.number("zmin", -r) > -r || p.number("zmax", r) < r || p.number("phimax", 360) < 360)
-        fail(d.where, "sphere: partial spheres (zmin, zmax, phimax) are not supported");
+        unsupported(d, "sphere: partial spheres (zmin, zmax, phimax) are not supported", "the whole sphere rendered");
     Json s = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", r}, {"material", currentMaterial()}};
     if (state_.reverseOrientation) s["flip_normals"] = true;
     s.update(commonShapeFields(p));
@@ -221,14 +221,14 @@ void SceneBuilder::shape(const Directive& d) {
     if (type == "sphere") return addSphere(p, d);
     if (type == "disk") {
         const double r = p.number("radius", 1), ri = p.number("innerradius", 0), h = p.number("height", 0);
-        if (p.number("phimax", 360) < 360) fail(d.where, "disk: a partial disk (phimax) is not supported");
+        if (p.number("phimax", 360) < 360) unsupported(d, "disk: a partial disk (phimax) is not supported", "the whole disk rendered");
         if (!(r > 0) || !(ri >= 0 && ri < r)) fail(d.where, "disk: needs radius > innerradius >= 0");
         TriangleMesh mesh = diskMesh(h, r, ri);
         orient(mesh, state_.reverseOrientation);
         return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
     }
-    fail(d.where, "Shape \"" + type + "\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
-                                      "bilinearmesh, loopsubdiv)");
+    unsupported(d, "Shape \"" + type + "\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
+                                   "bilinearmesh, loopsubdiv)");
 }
 
 void SceneBuilder::objectBegin(const Directive& d) {
