@@ -133,38 +133,8 @@ TEST(PortalLight, PhotonsCarryThePowerThroughTheWindow) {
 
 // ---- whole renders ----
 
-// A closed 2 m room, 1 m high, under a uniform sky, with `ceiling` over it: with the
-// portal over its hole or without it, the light that enters is the same.
-SceneDescription roomUnder(std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed,
-                           std::vector<ShapeDescription> ceiling) {
-    SceneDescription d;
-    d.camera = test::camera({0, 0.8f, 0.95f}, {0, 0, -0.3f}, {0, 1, 0}, 70, 24, 24);
-    d.materials = {makeDiffuse(Color(0.6f))};
-    d.materialNames = {"room"};
-    d.shapes = {test::quad({-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, 0),          // floor
-                test::quad({-1, 0, -1}, {2, 0, 0}, {0, 1, 0}, 0),          // walls
-                test::quad({-1, 0, 1}, {2, 0, 0}, {0, 1, 0}, 0),
-                test::quad({-1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0),
-                test::quad({1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0)};
-    d.shapes.insert(d.shapes.end(), ceiling.begin(), ceiling.end());
-    d.lights = std::move(lights);
-    d.render.integrator = kind;
-    d.render.passes = passes;
-    d.render.photonsPerPass = 20000;
-    d.render.maxDepth = 16;
-    d.render.seed = seed;
-    return d;
-}
-
-// The ceiling with a 0.5 m hole over the middle.
-std::vector<ShapeDescription> ceilingWithAHole() {
-    return {test::quad({-1, 1, -1}, {2, 0, 0}, {0, 0, 0.75f}, 0), test::quad({-1, 1, 0.25f}, {2, 0, 0}, {0, 0, 0.75f}, 0),
-            test::quad({-1, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0),
-            test::quad({0.25f, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0)};
-}
-
 SceneDescription roomUnder(LightDescription sky, IntegratorKind kind, int passes, uint64_t seed) {
-    return roomUnder({sky}, kind, passes, seed, ceilingWithAHole());
+    return test::roomUnder({sky}, kind, passes, seed, test::ceilingWithAHole());
 }
 
 std::array<Vec3, 4> squarePortal(float x, float z, float half) {
@@ -183,13 +153,11 @@ TEST(PortalLight, ARoomRendersAsWithoutThePortalAndWithLessNoise) {
     auto render = [](bool portal, IntegratorKind kind, int passes, uint64_t seed) {
         return test::renderImage(roomUnder(holeSky(portal), kind, passes, seed));
     };
+    const test::NoiseWithoutAndWith noise = test::expectSameMeansAndMeasureNoise(
+        [&](bool portal, uint64_t seed) { return render(portal, IntegratorKind::Path, 256, seed); }, 8, 0.04f);
+    std::printf("path tracer, 256 passes: relative noise %.4f without the portal, %.4f with it\n", noise.without, noise.with);
+    EXPECT_LT(noise.with, 0.5 * noise.without);
     const Image plain1 = render(false, IntegratorKind::Path, 256, 1), plain2 = render(false, IntegratorKind::Path, 256, 2);
-    const Image portal1 = render(true, IntegratorKind::Path, 256, 1), portal2 = render(true, IntegratorKind::Path, 256, 2);
-    test::expectSameBlockMeans(plain1, plain2, portal1, portal2, 8, 0.04);
-    const double plainNoise = test::relativeNoiseOfLuminance(plain1, plain2);
-    const double portalNoise = test::relativeNoiseOfLuminance(portal1, portal2);
-    std::printf("path tracer, 256 passes: relative noise %.4f without the portal, %.4f with it\n", plainNoise, portalNoise);
-    EXPECT_LT(portalNoise, 0.5 * plainNoise);
     // SPPM's photons all come through the window: held to the path tracer without it.
     const Image sppm1 = render(true, IntegratorKind::Sppm, 64, 1), sppm2 = render(true, IntegratorKind::Sppm, 64, 2);
     test::expectSameBlockMeans(sppm1, sppm2, plain1, plain2, 8, 0.05);
@@ -230,7 +198,7 @@ TEST(PortalLight, TwoWindowsTwoPortals) {
     left.portal = squarePortal(-0.5f, 0, 0.25f);
     right.portal = squarePortal(0.5f, 0, 0.25f);
     auto render = [&](std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed) {
-        return test::renderImage(roomUnder(std::move(lights), kind, passes, seed, ceiling));
+        return test::renderImage(test::roomUnder(std::move(lights), kind, passes, seed, ceiling));
     };
     const Image plain1 = render({holeSky(false)}, IntegratorKind::Path, 256, 1);
     const Image plain2 = render({holeSky(false)}, IntegratorKind::Path, 256, 2);

@@ -27,5 +27,13 @@ SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind = Light
 // Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
 SceneDescription furnace(float rho, float emission, int resolution);
 
+// A closed 2 m room of grey walls (albedo 0.6), 1 m high, under `lights` (an environment
+// light's come in through the holes of `ceiling`), seen from one corner at 24 x 24: for
+// the environment light's sampling (portals, the environment guide).
+SceneDescription roomUnder(std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed,
+                           std::vector<ShapeDescription> ceiling);
+// The room's ceiling with a 0.5 m square hole over the middle.
+std::vector<ShapeDescription> ceilingWithAHole();
+
 
 }  // namespace photon::test

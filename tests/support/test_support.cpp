@@ -85,6 +85,34 @@ ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emis
     return s;
 }
 
+SceneDescription roomUnder(std::vector<LightDescription> lights, IntegratorKind kind, int passes, uint64_t seed,
+                           std::vector<ShapeDescription> ceiling) {
+    SceneDescription d;
+    d.camera = test::camera({0, 0.8f, 0.95f}, {0, 0, -0.3f}, {0, 1, 0}, 70, 24, 24);
+    d.materials = {makeDiffuse(Color(0.6f))};
+    d.materialNames = {"room"};
+    d.shapes = {test::quad({-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, 0),          // floor
+                test::quad({-1, 0, -1}, {2, 0, 0}, {0, 1, 0}, 0),          // walls
+                test::quad({-1, 0, 1}, {2, 0, 0}, {0, 1, 0}, 0),
+                test::quad({-1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0),
+                test::quad({1, 0, -1}, {0, 0, 2}, {0, 1, 0}, 0)};
+    d.shapes.insert(d.shapes.end(), ceiling.begin(), ceiling.end());
+    d.lights = std::move(lights);
+    d.render.integrator = kind;
+    d.render.passes = passes;
+    d.render.photonsPerPass = 20000;
+    d.render.maxDepth = 16;
+    d.render.seed = seed;
+    return d;
+}
+
+std::vector<ShapeDescription> ceilingWithAHole() {
+    return {test::quad({-1, 1, -1}, {2, 0, 0}, {0, 0, 0.75f}, 0), test::quad({-1, 1, 0.25f}, {2, 0, 0}, {0, 0, 0.75f}, 0),
+            test::quad({-1, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0),
+            test::quad({0.25f, 1, -0.25f}, {0.75f, 0, 0}, {0, 0, 0.5f}, 0)};
+}
+
+
 CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height) {
     CameraDescription c;
     c.position = position;
@@ -129,6 +157,14 @@ double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, doubl
         sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
     }
     return le / 2 * std::abs(sum);
+}
+
+NoiseWithoutAndWith expectSameMeansAndMeasureNoise(const std::function<Image(bool with, uint64_t seed)>& render, int block,
+                                                   float tolerance) {
+    const Image without1 = render(false, 1), without2 = render(false, 2);
+    const Image with1 = render(true, 1), with2 = render(true, 2);
+    expectSameBlockMeans(without1, without2, with1, with2, block, tolerance);
+    return {relativeNoiseOfLuminance(without1, without2), relativeNoiseOfLuminance(with1, with2)};
 }
 
 double relativeNoiseOfLuminance(const Image& a, const Image& b) {

@@ -86,6 +86,15 @@ void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, con
 // (film/pixel_errors.h), whose edge pixels are as noisy for every method.
 double relativeNoiseOfLuminance(const Image& a, const Image& b);
 
+// A render without and with a change that must not change its expectation (`render(with,
+// seed)`, seeds 1 and 2 each): block means held to each other by expectSameBlockMeans, and
+// each way's relative noise in luminance.
+struct NoiseWithoutAndWith {
+    double without, with;
+};
+NoiseWithoutAndWith expectSameMeansAndMeasureNoise(const std::function<Image(bool with, uint64_t seed)>& render, int block,
+                                                   float tolerance);
+
 // Irradiance at p (normal n) from a uniform polygon of radiance Le, all of it above p's
 // horizon: Lambert's formula, Le / 2 sum over edges of the angle each subtends times n's
 // component along the normal of the plane through p and the edge (Arvo 1995).
