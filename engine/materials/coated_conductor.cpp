@@ -178,7 +178,9 @@ private:
     // rest, until less than 1/1000 is left. Then Mbar = 2 int M(mu) mu dmu.
     void tabulateTrapped() {
         constexpr int kGrid = 16, kMaxBounces = 64;
-        const MaterialInputs in = metal_->inputsAt({0.5f, 0.5f});
+        // A textured colour at its mean, so that a dark texel at the middle does not stand
+        // for the whole texture.
+        const MaterialInputs in{{0.5f, 0.5f}, metal_->tint().average()};
         referenceReflectance_ = metal_->normalReflectance(in);
         // Each node from its own random stream, so the table is the same on any thread count.
         tbb::parallel_for(0, kTable, [&](int k) {
