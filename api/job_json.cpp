@@ -44,6 +44,7 @@ nlohmann::json toJson(const server::JobRecord& job) {
           {"integrator", s.integrator},
           {"resolution", {s.width, s.height}},
           {"camera", s.camera.empty() ? nlohmann::json() : nlohmann::json(s.camera)},
+          {"lenient", s.lenient},
           {"denoise", s.denoise},
           {"target_error", s.targetError}}},
         {"pass", p.pass},

@@ -26,6 +26,13 @@ std::optional<std::string> stringParam(const httplib::Request& req, const std::s
     return req.get_param_value(name);
 }
 
+std::optional<bool> booleanParam(const httplib::Request& req, const std::string& name) {
+    std::optional<std::string> text = stringParam(req, name);
+    if (!text) return std::nullopt;
+    if (*text != "true" && *text != "false") throwBadRequest("query parameter " + name + ": must be true or false");
+    return *text == "true";
+}
+
 std::optional<int64_t> integerParam(const httplib::Request& req, const std::string& name, int64_t lo, int64_t hi) {
     std::optional<std::string> text = stringParam(req, name);
     if (!text) return std::nullopt;

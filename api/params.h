@@ -27,6 +27,8 @@ std::optional<uint64_t> unsignedParam(const httplib::Request& req, const std::st
 // A finite decimal number (e.g. "1.5", "-2", "2e-1") in [lo, hi].
 std::optional<double> numberParam(const httplib::Request& req, const std::string& name, double lo, double hi);
 std::optional<std::string> stringParam(const httplib::Request& req, const std::string& name);
+// "true" or "false"; anything else is a 400 naming the parameter.
+std::optional<bool> booleanParam(const httplib::Request& req, const std::string& name);
 // Every value of a parameter that may be repeated ("label=a&label=b"), in order; a value
 // holding commas counts as that many ("status=queued,running").
 std::vector<std::string> stringParams(const httplib::Request& req, const std::string& name);

@@ -27,6 +27,7 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
     o.seed = unsignedParam(req, "seed");
     o.targetError = numberParam(req, "target_error", 0, 1e9);
     o.camera = stringParam(req, "camera");
+    o.lenient = booleanParam(req, "lenient");
     o.priority = int(integerParam(req, "priority", INT_MIN, INT_MAX).value_or(0));
     o.name = stringParam(req, "name").value_or("");
     o.labels = stringParams(req, "label");

@@ -30,6 +30,7 @@ struct JobSettings {
     // render.target_error: the render stops at this estimated relative error (0: none); the
     // scene's, or the submission's target_error.
     double targetError = 0;
+    bool lenient = false;  // the import leaves out what photon cannot render (ImportOptions::lenient)
 };
 
 // What a method reports besides passes and photons, as its render last reported it.

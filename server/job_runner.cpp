@@ -112,6 +112,7 @@ farm::FarmScene JobRunner::farmScene(const JobTable::Started& started) const {
             return name == sceneFile.filename().string() || !JobFolders::isServiceFile(name);
         });
     scene.camera = settings.camera;
+    scene.lenient = settings.lenient;
     return scene;
 }
 

@@ -320,6 +320,7 @@ SubmitResult JobService::clone(const std::string& id, const SubmitOptions& overr
     if (!options.photonsPerPass) options.photonsPerPass = original.settings.photonsPerPass;
     if (!options.seed) options.seed = original.settings.seed;
     if (!options.camera && !original.settings.camera.empty()) options.camera = original.settings.camera;
+    if (!options.lenient) options.lenient = original.settings.lenient;
     if (options.name.empty()) options.name = original.name;
     if (options.labels.empty()) options.labels = original.labels;
     SubmitResult result = submit(*upload, {options, client, std::nullopt, ""});

@@ -59,35 +59,29 @@ UPDATE jobs SET updated_at = COALESCE(finished_at, started_at, created_at);
 PRAGMA user_version = 3;
 COMMIT;
 )sql";
+// Versions 4 on each add one column to the jobs: what the job's record says of the jobs
+// before it (NULL, 0).
+std::string addColumn(int version, const std::string& column) {
+    return "BEGIN IMMEDIATE;\nALTER TABLE jobs ADD COLUMN " + column + ";\nPRAGMA user_version = " +
+           std::to_string(version) + ";\nCOMMIT;\n";
+}
 // Version 4: the camera an imported glTF scene was asked to render from (NULL: its first,
 // and every job before).
-const char* kMigrateTo4 = R"sql(
-BEGIN IMMEDIATE;
-ALTER TABLE jobs ADD COLUMN camera TEXT;
-PRAGMA user_version = 4;
-COMMIT;
-)sql";
+const std::string kMigrateTo4 = addColumn(4, "camera TEXT");
 // Version 5: whether the job's scene asks for the denoiser (0 for every job before, which is
 // only what the record says: their images are as rendered).
-const char* kMigrateTo5 = R"sql(
-BEGIN IMMEDIATE;
-ALTER TABLE jobs ADD COLUMN denoise INTEGER NOT NULL DEFAULT 0;
-PRAGMA user_version = 5;
-COMMIT;
-)sql";
+const std::string kMigrateTo5 = addColumn(5, "denoise INTEGER NOT NULL DEFAULT 0");
 // Version 6: the relative error the render stops at (0, none, for every job before).
-const char* kMigrateTo6 = R"sql(
-BEGIN IMMEDIATE;
-ALTER TABLE jobs ADD COLUMN target_error REAL NOT NULL DEFAULT 0;
-PRAGMA user_version = 6;
-COMMIT;
-)sql";
-constexpr int64_t kSchemaVersion = 6;
+const std::string kMigrateTo6 = addColumn(6, "target_error REAL NOT NULL DEFAULT 0");
+// Version 7: whether an imported pbrt scene's import left out what photon cannot render (0 for
+// every job before: they were imported strictly).
+const std::string kMigrateTo7 = addColumn(7, "lenient INTEGER NOT NULL DEFAULT 0");
+constexpr int64_t kSchemaVersion = 7;
 
 const char* kInsert =
     "INSERT INTO jobs (id, status, priority, created_at, passes, photons_per_pass, seed, integrator, width, height,"
-    " client, upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error)"
-    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19)";
+    " client, upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error, lenient)"
+    " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20)";
 
 const char* kUpdate =
     "UPDATE jobs SET status = ?2, started_at = ?3, finished_at = ?4, pass = ?5, photons_traced = ?6,"
@@ -105,7 +99,7 @@ const char* kFindKey =
 const char* kSelectAll =
     "SELECT seq, id, status, priority, created_at, started_at, finished_at, passes, photons_per_pass, seed,"
     " integrator, width, height, pass, photons_traced, mean_radius, elapsed_seconds, eta_seconds, error, client,"
-    " upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error FROM jobs ORDER BY seq";
+    " upload_bytes, warnings, name, labels, updated_at, camera, denoise, target_error, lenient FROM jobs ORDER BY seq";
 
 int64_t schemaVersion(sql::Database& db) {
     sql::Statement version = db.prepare("PRAGMA user_version");
@@ -149,9 +143,10 @@ sql::Database& withSchema(sql::Database& db) {
                                  ") than this server knows (" + std::to_string(kSchemaVersion) + ")");
     if (version < 2) migrate(db, kMigrateTo2);
     if (version < 3) migrate(db, kMigrateTo3);
-    if (version < 4) migrate(db, kMigrateTo4);
-    if (version < 5) migrate(db, kMigrateTo5);
-    if (version < 6) migrate(db, kMigrateTo6);
+    if (version < 4) migrate(db, kMigrateTo4.c_str());
+    if (version < 5) migrate(db, kMigrateTo5.c_str());
+    if (version < 6) migrate(db, kMigrateTo6.c_str());
+    if (version < 7) migrate(db, kMigrateTo7.c_str());
     return db;
 }
 
@@ -202,6 +197,7 @@ JobRecord readRow(const sql::Statement& s) {
     job.settings.camera = s.text(25);
     job.settings.denoise = s.integer(26) != 0;
     job.settings.targetError = s.real(27);
+    job.settings.lenient = s.integer(28) != 0;
     return job;
 }
 
@@ -231,6 +227,7 @@ int64_t JobStore::insert(const JobRecord& job, const std::optional<IdempotencyEn
         insert_.bindTextOrNull(14, job.name).bindTextOrNull(15, joinLines(job.labels));
         insert_.bindTextOrNull(16, job.updatedAt).bindTextOrNull(17, job.settings.camera);
         insert_.bind(18, int64_t(job.settings.denoise)).bind(19, job.settings.targetError);
+        insert_.bind(20, int64_t(job.settings.lenient));
         insert_.run();
         seq = db_.lastInsertRowId();
         if (!key) return;

@@ -26,7 +26,8 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     std::optional<SceneFile> scene;
     try {
         // JSON from its text, as ever; an import reads its file, already stored beside its assets.
-        if (imported) scene = SceneFile::read(sceneFile, {}, ImportOptions{options.camera.value_or("")});
+        if (imported)
+            scene = SceneFile::read(sceneFile, {}, ImportOptions{options.camera.value_or(""), options.lenient.value_or(false)});
         else scene = SceneFile::parseJson(sceneText, sceneFile.parent_path());
     } catch (const SceneError& e) {
         // An imported file's place ("scene.pbrt:12") is no path into photon's JSON scene.
@@ -58,6 +59,7 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
     s.width = scene->width();
     s.height = scene->height();
     s.camera = options.camera.value_or("");
+    s.lenient = imported && options.lenient.value_or(false);
     s.denoise = render.denoise.enabled;
     s.targetError = render.targetError;
     std::vector<std::string> warnings = scene->warnings();
@@ -66,7 +68,7 @@ AcceptedScene validateScene(const std::string& sceneText, const std::filesystem:
 }
 
 SceneFile readJobScene(const std::filesystem::path& sceneFile, const JobSettings& settings) {
-    SceneFile scene = SceneFile::read(sceneFile, {}, ImportOptions{settings.camera});
+    SceneFile scene = SceneFile::read(sceneFile, {}, ImportOptions{settings.camera, settings.lenient});
     applySettings(settings, scene.render());
     return scene;
 }

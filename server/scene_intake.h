@@ -22,6 +22,9 @@ struct SubmitOptions {
     std::optional<uint64_t> seed;
     std::optional<double> targetError;  // render.target_error instead of the scene's
     std::optional<std::string> camera;  // an imported glTF's camera, by name (default: its first)
+    // An imported pbrt scene's parts photon cannot render left out, with warnings, instead of
+    // refused (ImportOptions::lenient).
+    std::optional<bool> lenient;
     int priority = 0;
     std::string name;                 // see job_labels.h
     std::vector<std::string> labels;

@@ -45,13 +45,14 @@ FarmScene FarmScene::fromFolder(const std::filesystem::path& folder, const std::
 }
 
 SceneFile FarmScene::read(const std::filesystem::path& main) const {
-    return SceneFile::read(main, overrides, ImportOptions{camera});
+    return SceneFile::read(main, overrides, ImportOptions{camera, lenient});
 }
 
 void FarmScene::store(RedisClient& redis, const std::string& job) const {
     std::string overrideLines;
     for (const SettingOverride& o : overrides) overrideLines += o.key + "=" + o.value + "\n";
-    std::vector<std::string> args = {"HSET", sceneKey(job), "main", mainFile, "overrides", overrideLines, "camera", camera};
+    std::vector<std::string> args = {"HSET", sceneKey(job), "main", mainFile, "overrides", overrideLines, "camera", camera,
+                                     "lenient", lenient ? "1" : "0"};
     for (const auto& [path, bytes] : files) {
         args.push_back(std::string(kFilePrefix) + path);
         args.push_back(bytes);
@@ -70,6 +71,8 @@ std::optional<FarmScene> FarmScene::load(RedisClient& redis, const std::string& 
             s.mainFile = value;
         } else if (field == "camera") {
             s.camera = value;
+        } else if (field == "lenient") {
+            s.lenient = value == "1";
         } else if (field == "overrides") {
             std::istringstream lines(value);
             for (std::string line; std::getline(lines, line);) {

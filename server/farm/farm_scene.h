@@ -19,6 +19,7 @@ struct FarmScene {
     std::vector<std::pair<std::string, std::string>> files;  // relative path, bytes
     std::vector<SettingOverride> overrides;
     std::string camera;    // glTF: the camera to render (empty: the first)
+    bool lenient = false;  // pbrt: what photon cannot render left out (ImportOptions::lenient)
 
     // Every file under `folder` that `include` accepts (by its relative path; all when
     // empty), `mainFile` naming the scene file in it.

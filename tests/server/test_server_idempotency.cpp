@@ -185,7 +185,7 @@ TEST_F(IdempotencyTest, AVersion1DatabaseIsMigrated) {
     EXPECT_EQ(post(smallScene(), "after-migration")->status, 200);
     EXPECT_EQ(jobCount(), 2u);
     ASSERT_EQ(stopServer(), 0);
-    EXPECT_EQ(queryInteger(dataDir() / "jobs.db", "PRAGMA user_version"), 6);
+    EXPECT_EQ(queryInteger(dataDir() / "jobs.db", "PRAGMA user_version"), 7);
     // And it opens again as the current version.
     startServer({"--workers", "0"});
     EXPECT_EQ(jobCount(), 2u);

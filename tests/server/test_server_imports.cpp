@@ -121,6 +121,15 @@ std::string quadGlb() {
     return glb;
 }
 
+// The room with its floor's material one photon has no model for.
+httplib::MultipartFormDataItems velvetRoomParts() {
+    std::string velvet = kRoomPbrt;
+    velvet.replace(velvet.find("Material \"diffuse\""), std::strlen("Material \"diffuse\""), "Material \"velvet\"");
+    httplib::MultipartFormDataItems items = roomParts();
+    items[0].content = velvet;
+    return items;
+}
+
 using ImportsTest = ServerTest;
 
 TEST_F(ImportsTest, APbrtSceneRendersAsTheEngineRendersItWithItsWarnings) {
@@ -210,10 +219,7 @@ TEST_F(ImportsTest, TheServerLimitsHoldForTheImportedScene) {
 
 TEST_F(ImportsTest, ABrokenPbrtSceneIs400WithItsFileAndLine) {
     startServer({"--workers", "0"});
-    std::string broken = kRoomPbrt;
-    broken.replace(broken.find("Material \"diffuse\""), std::strlen("Material \"diffuse\""), "Material \"velvet\"");
-    httplib::MultipartFormDataItems items = roomParts();
-    items[0].content = broken;
+    httplib::MultipartFormDataItems items = velvetRoomParts();
     json problem = problemOf(client().Post("/api/v1/jobs", items));
     EXPECT_EQ(problem["status"], 400);
     EXPECT_EQ(problem["type"], "urn:photon:problem:scene-invalid");
@@ -230,6 +236,28 @@ TEST_F(ImportsTest, ABrokenPbrtSceneIs400WithItsFileAndLine) {
     EXPECT_EQ(problem["error"], "scene.pbrt:10: Include \"parts/light.pbrt\": file not found");
     EXPECT_TRUE(fs::is_empty(dataDir() / "jobs"));
     EXPECT_TRUE(fs::is_empty(dataDir() / "tmp"));
+}
+
+// ?lenient=true: the material photon has no model for becomes grey diffuse, with a warning,
+// and the job renders; the setting is kept with the job (a restart imports alike) and shown.
+TEST_F(ImportsTest, LenientRendersWhatAStrictImportRefuses) {
+    startServer({"--workers", "1"});
+    const httplib::MultipartFormDataItems items = velvetRoomParts();
+    EXPECT_EQ(problemOf(client().Post("/api/v1/jobs?lenient=false", items))["status"], 400);
+    json wrong = problemOf(client().Post("/api/v1/jobs?lenient=yes", items));
+    EXPECT_EQ(wrong["status"], 400);
+    EXPECT_EQ(wrong["error"], "query parameter lenient: must be true or false");
+    httplib::Result r = client().Post("/api/v1/jobs?lenient=true", items);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    json job = json::parse(r->body);
+    EXPECT_EQ(job["settings"]["lenient"], true);
+    ASSERT_EQ(job["warnings"].size(), 2u) << job.dump();
+    EXPECT_EQ(job["warnings"][1],
+              "scene.pbrt:8: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+              "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface); rendered as a grey "
+              "diffuse material (lenient import)");
+    EXPECT_EQ(waitForStatus(job["id"], "completed")["settings"]["lenient"], true);
 }
 
 TEST_F(ImportsTest, AnUnknownSceneExtensionIs400NamingTheAcceptedOnes) {

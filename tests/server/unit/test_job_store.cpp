@@ -37,7 +37,7 @@ JobRecord newJob(const std::string& id) {
     job.status = JobStatus::Queued;
     job.priority = 0;
     job.createdAt = "2024-05-01T09:00:00.000Z";
-    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240, "", true, 0.025};
+    job.settings = JobSettings{16, 100000, 42, "sppm", 320, 240, "", true, 0.025, true};
     job.client = "127.0.0.1";
     return job;
 }
@@ -66,6 +66,7 @@ void expectSameJob(const JobRecord& actual, const JobRecord& expected) {
     EXPECT_EQ(actual.settings.camera, expected.settings.camera);
     EXPECT_EQ(actual.settings.denoise, expected.settings.denoise);
     EXPECT_EQ(actual.settings.targetError, expected.settings.targetError);
+    EXPECT_EQ(actual.settings.lenient, expected.settings.lenient);
     EXPECT_EQ(actual.client, expected.client);
     EXPECT_EQ(actual.uploadBytes, expected.uploadBytes);
     EXPECT_EQ(actual.warnings, expected.warnings);
@@ -388,13 +389,13 @@ TEST_F(JobStoreTest, RefusesADatabaseOfANewerSchemaVersion) {
     { JobStore store(dbFile()); }
     {
         sql::Database db(dbFile());
-        db.exec("PRAGMA user_version = 7");
+        db.exec("PRAGMA user_version = 8");
     }
     try {
         JobStore store(dbFile());
-        FAIL() << "opened a version 7 database";
+        FAIL() << "opened a version 8 database";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("newer version (7)"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("newer version (8)"), std::string::npos) << e.what();
     }
 }
 
