@@ -348,6 +348,11 @@ TEST(EnvironmentMapRender, LatLongOrientationAndRotation) {
     EXPECT_EQ(facing({-1, 0, 0}, none), 0.0f);
     EXPECT_NEAR(facing({0, 0, -1}, quarterTurn), expected, 0.02f * expected);
     EXPECT_EQ(facing({0, 0, 1}, quarterTurn), 0.0f);
+    // A mirror image (x to -x, as pbrt files with a handedness flip write) puts the block
+    // toward -x: light samples, their density and the map's lookups all go through it.
+    const Transform mirror = Transform::scale({-1, 1, 1});
+    EXPECT_NEAR(facing({-1, 0, 0}, mirror), expected, 0.02f * expected);
+    EXPECT_EQ(facing({1, 0, 0}, mirror), 0.0f);
     // The light's own answer for the world directions.
     SceneSphere bounds{{0, 0, 0}, 1};
     auto rotated = makeEnvironmentLight(environmentOf(image, Layout::LatLong, 1, quarterTurn), bounds);
@@ -512,6 +517,24 @@ TEST(EnvironmentMapScene, FieldsAndErrors) {
     EXPECT_NE(notSquare.find("square, not 8x4"), std::string::npos) << notSquare;
     failsAt(R"({"type": "environment", "image": "../sky.exr"})", "lights[0].image");
     failsAt(R"({"type": "environment", "image": "sky.exr", "layout": "cube"})", "lights[0].layout");
+    // "matrix": a rotation or a mirror image, without translation, and not with "rotate".
+    const SceneDescription mirrored = loadSceneJson(
+        sceneWith(R"({"type": "environment", "image": "sky.exr",
+                      "matrix": [-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})"),
+        dir);
+    EXPECT_VEC3_NEAR(mirrored.lights[0].environment.toWorld.vector({1, 2, 3}), Vec3(-1, 2, 3), 1e-6f);
+    const std::string scaled = errorOf(R"({"type": "environment", "image": "sky.exr",
+                                           "matrix": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})");
+    EXPECT_NE(scaled.find("lights[0].matrix: must be a rotation or a mirror image"), std::string::npos) << scaled;
+    const std::string moved = errorOf(R"({"type": "environment", "image": "sky.exr",
+                                          "matrix": [1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})");
+    EXPECT_NE(moved.find("lights[0].matrix: an environment has no position"), std::string::npos) << moved;
+    failsAt(R"({"type": "environment", "image": "sky.exr", "rotate": {"axis": [0, 1, 0], "angle": 9},
+                "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})",
+            "lights[0].matrix");
+    failsAt(R"({"type": "environment", "radiance": [1, 1, 1],
+                "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]})",
+            "lights[0].matrix");
     fs::remove_all(dir);
 }
 

@@ -347,6 +347,30 @@ LightSource "infinite" "string filename" "sky.exr" "float illuminance" [7]
     EXPECT_EQ(l[2]["illuminance"], 7.0);
 }
 
+// An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
+// flips x) "matrix" with the linear part as written; a scale is refused.
+TEST(PbrtImport, InfiniteLightsFrame) {
+    const Json l = import(R"(
+AttributeBegin
+  Rotate 90 0 1 0
+  LightSource "infinite" "string filename" "sky.exr"
+AttributeEnd
+AttributeBegin
+  Transform [-0.386527 0 0.922278 0  -0.922278 0 -0.386527 0  0 1 0 0  0 0 0 1]
+  LightSource "infinite" "string filename" "sky.exr"
+AttributeEnd
+)").document["lights"];
+    EXPECT_EQ(l[0]["rotate"]["angle"].get<double>(), 90.0);
+    EXPECT_FALSE(l[0].contains("matrix"));
+    ASSERT_TRUE(l[1].contains("matrix"));
+    EXPECT_FALSE(l[1].contains("rotate"));
+    // pbrt's Transform lists columns; photon's matrix is row-major.
+    const std::vector<double> expected{-0.386527, -0.922278, 0, 0, 0, 0, 1, 0, 0.922278, -0.386527, 0, 0, 0, 0, 0, 1};
+    for (size_t i = 0; i < 16; ++i) EXPECT_NEAR(l[1]["matrix"][i].get<double>(), expected[i], 1e-6) << i;
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nScale 2 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n").what(),
+                 "bad.pbrt:4: infinite: the light's transform must be a rotation or a mirror image (it scales or shears)");
+}
+
 TEST(PbrtImport, SpheresDisksInstancesAndPly) {
     TriangleMesh tri;
     tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};

@@ -133,7 +133,7 @@ struct LightDescription {
         std::shared_ptr<const ImageTexture> image;
         EnvironmentLayout layout = EnvironmentLayout::LatLong;
         float scale = 1;
-        Transform toWorld;  // a rotation: the light's frame to the world
+        Transform toWorld;  // a rotation or a mirror image: the light's frame to the world
         // > 0: the radiance is further scaled so that a surface facing the map's pole (+y
         // of a lat-long map, +z of an equal-area one) receives this irradiance from it
         // (pbrt-v4's "illuminance"; EnvironmentMap::poleIrradiance).

@@ -1,6 +1,7 @@
 // Affine transforms for mesh instancing: a 3x4 row-major matrix.
 #pragma once
 #include <array>
+#include <cmath>
 #include <photon/vec.h>
 
 namespace photon {
@@ -38,7 +39,15 @@ struct Transform {
         return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
                 m[8] * v.x + m[9] * v.y + m[10] * v.z};
     }
-    // A rotation's inverse applied to v: its transpose (only for rotations).
+    // Whether the linear part is a rotation or a reflection: orthonormal rows, within
+    // `tolerance` (then inverseRotation is its inverse).
+    bool orthonormal(float tolerance = 1e-3f) const {
+        const Vec3 r0{m[0], m[1], m[2]}, r1{m[4], m[5], m[6]}, r2{m[8], m[9], m[10]};
+        for (float d : {dot(r0, r0) - 1, dot(r1, r1) - 1, dot(r2, r2) - 1, dot(r0, r1), dot(r1, r2), dot(r0, r2)})
+            if (!(std::abs(d) <= tolerance)) return false;
+        return true;
+    }
+    // A rotation's (or reflection's) inverse applied to v: its transpose.
     Vec3 inverseRotation(Vec3 v) const {
         return {m[0] * v.x + m[4] * v.y + m[8] * v.z, m[1] * v.x + m[5] * v.y + m[9] * v.z,
                 m[2] * v.x + m[6] * v.y + m[10] * v.z};

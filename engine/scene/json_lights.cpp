@@ -22,12 +22,12 @@ void readSpotAngles(JsonObject& obj, LightDescription& l) {
     }
 }
 
-// A constant "radiance", or an "image" with its "layout", "scale" and "rotate" (the light's
-// frame to the world), documented in docs/scene-format.md.
+// A constant "radiance", or an "image" with its "layout", "scale" and "rotate" or "matrix"
+// (the light's frame to the world), documented in docs/scene-format.md.
 void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
     auto image = obj.optional("image");
     if (!image) {
-        for (std::string_view key : {"layout", "scale", "rotate", "illuminance"})
+        for (std::string_view key : {"layout", "scale", "rotate", "matrix", "illuminance"})
             if (auto v = obj.optional(key)) v->fail("is only allowed with \"image\"");
         l.radiance = power(obj, "radiance");
         return;
@@ -43,6 +43,10 @@ void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
     e.scale = obj.number("scale", 1, Range::nonNegative());
     e.illuminance = obj.number("illuminance", 0, Range::nonNegative());
     if (auto rotate = obj.optional("rotate")) e.toWorld = readRotation(*rotate);
+    if (auto matrix = obj.optional("matrix")) {
+        if (obj.has("rotate")) matrix->fail("give \"rotate\" or \"matrix\", not both");
+        e.toWorld = readOrientation(*matrix);
+    }
 }
 
 // Four corners in order, a rectangle: the light comes in through it from the side of

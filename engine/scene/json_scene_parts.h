@@ -74,6 +74,9 @@ void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scen
 
 // {"axis": [x, y, z], "angle": degrees}: a rotation about the axis (right-handed).
 Transform readRotation(const JsonValue& value);
+// 16 numbers, row-major, whose linear part is a rotation or a mirror image and whose
+// translation is 0: an environment's frame.
+Transform readOrientation(const JsonValue& value);
 // {"scale", "rotate", "translate"} or {"matrix"}; the result is invertible.
 Transform readTransform(const JsonValue& value);
 

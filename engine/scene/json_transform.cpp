@@ -41,6 +41,13 @@ bool invertible(const Transform& t) {
 
 }  // namespace
 
+Transform readOrientation(const JsonValue& value) {
+    const Transform t = readMatrix(value);
+    if (t.m[3] != 0 || t.m[7] != 0 || t.m[11] != 0) value.fail("an environment has no position: the translation must be 0");
+    if (!t.orthonormal()) value.fail("must be a rotation or a mirror image (orthonormal rows): it scales or shears");
+    return t;
+}
+
 Transform readRotation(const JsonValue& value) {
     JsonObject obj = value.object();
     Vec3 axis = obj.required("axis").direction();

@@ -33,6 +33,12 @@ std::optional<std::pair<Vec3, float>> axisAngle(const Transform& t) {
     return std::make_pair(normalize(axis), angle * 180.0f / kPi);
 }
 
+// The linear part as photon's 16-number row-major "matrix" (an environment has no position).
+Json orientationMatrix(const Transform& t) {
+    const float* m = t.m.data();
+    return Json::array({m[0], m[1], m[2], 0, m[4], m[5], m[6], 0, m[8], m[9], m[10], 0, 0, 0, 0, 1});
+}
+
 }  // namespace
 
 void SceneBuilder::lightSource(const Directive& d) {
@@ -77,10 +83,17 @@ void SceneBuilder::lightSource(const Directive& d) {
             if (auto why = checkRelativePath(*file)) fail(d.where, "infinite: \"" + *file + "\": " + *why);
             if (p.has("L")) fail(d.where, "infinite: give \"L\" or \"filename\", not both");
             light = {{"type", "environment"}, {"image", *file}, {"layout", "equal_area"}, {"scale", scale}};
-            auto rotation = axisAngle(state_.ctm);
-            if (!rotation) fail(d.where, "infinite: the light's transform must be a rotation");
-            if (rotation->second != 0)
-                light["rotate"] = {{"axis", vec(rotation->first)}, {"angle", rotation->second}};
+            // pbrt-v4 looks the map up in the light's frame, whatever the transform; a
+            // rotation and a mirror image (a handedness flip, as exporters write) keep
+            // solid angle, which photon's sampling needs.
+            if (auto rotation = axisAngle(state_.ctm)) {
+                if (rotation->second != 0)
+                    light["rotate"] = {{"axis", vec(rotation->first)}, {"angle", rotation->second}};
+            } else if (state_.ctm.orthonormal()) {
+                light["matrix"] = orientationMatrix(state_.ctm);
+            } else {
+                fail(d.where, "infinite: the light's transform must be a rotation or a mirror image (it scales or shears)");
+            }
             // The image's own irradiance on a surface facing its +z, measured when it is loaded.
             if (auto e = p.number("illuminance")) light["illuminance"] = *e;
         } else {
