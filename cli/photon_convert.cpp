@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", output, "the JSON scene to write (meshes and images go beside it)")->required();
     app.add_option("--camera", camera, "glTF: the camera to keep, by name (default: the first)");
     app.add_flag("--overwrite", overwrite, "replace files of the same names that hold something else");
-    app.add_flag("--lenient", lenient, "pbrt: leave out or replace what photon cannot render (media, unknown materials, textures, shapes, lights), with a warning for each, instead of refusing the scene");
+    app.add_flag("--lenient", lenient, "pbrt: leave out or replace what photon cannot render (media that scatter, unknown materials, textures, shapes, lights), with a warning for each, instead of refusing the scene");
     if (int exit = photon::cli::parseCommandLine(app, argc, argv); exit >= 0) return exit;
     if (photon::sceneFormatOf(input) == photon::SceneFormat::Json) {
         std::fprintf(stderr, "photon-convert: %s: not a format to convert (.pbrt, .gltf, .glb)\n", input.c_str());

@@ -98,8 +98,8 @@ TEST(Cli, BadSceneExitsWithTheJsonPath) {
     std::filesystem::remove_all(dir);
 }
 
-// A pbrt scene with a medium: refused, naming its line; with --lenient rendered without it,
-// the warning printed.
+// A pbrt scene with a medium that scatters: refused, naming its line; with --lenient
+// rendered with its absorption alone, the warning printed.
 TEST(Cli, LenientRendersAPbrtSceneWithoutWhatItCannot) {
     auto dir = tempDir();
     std::ofstream(dir / "fog.pbrt") << R"(LookAt 0 1 5  0 1 0  0 1 0
@@ -113,12 +113,12 @@ Shape "sphere" "float radius" [1]
     const std::string args = (dir / "fog.pbrt").string() + " -o " + (dir / "fog.exr").string() + " --passes 1 --quiet";
     CommandResult strict = runRender(args);
     EXPECT_EQ(strict.exitCode, 1);
-    EXPECT_NE(strict.output.find("fog.pbrt:5: participating media (MakeNamedMedium \"fog\") are not supported by photon"),
+    EXPECT_NE(strict.output.find("fog.pbrt:5: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only"),
               std::string::npos) << strict.output;
     CommandResult lenient = runRender(args + " --lenient");
     EXPECT_EQ(lenient.exitCode, 0) << lenient.output;
-    EXPECT_NE(lenient.output.find("fog.pbrt:5: participating media (MakeNamedMedium \"fog\") are not supported by photon; "
-                                  "left out (lenient import)"),
+    EXPECT_NE(lenient.output.find("fog.pbrt:5: medium \"fog\" scatters light (sigma_s): photon renders media that absorb "
+                                  "only; its absorption kept, its scattering left out (lenient import)"),
               std::string::npos) << lenient.output;
     EXPECT_TRUE(std::filesystem::exists(dir / "fog.exr"));
     std::filesystem::remove_all(dir);

@@ -278,7 +278,9 @@ TEST(GltfImport, MaterialMapping) {
     const int metal = g.material({{"pbrMetallicRoughness", pbr(1, 0.2)}});
     const int pane = g.material({{"pbrMetallicRoughness", pbr(0, 0)}, {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}});
     const int solid = g.material({{"pbrMetallicRoughness", pbr(0, 0)},
-                                  {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}, {"KHR_materials_volume", Json::object()}}}});
+                                  {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                                                  {"KHR_materials_volume", {{"thicknessFactor", 0.1}, {"attenuationDistance", 2},
+                                                                            {"attenuationColor", {0.5, 1, 0.25}}}}}}});
     const int lamp = g.material({{"emissiveFactor", {1, 0.5, 0}}, {"doubleSided", true},
                                  {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5}}}, {"EXT_sheen_made_up", Json::object()}}}});
     for (int m : {mixed, metal, pane, solid, lamp}) g.node({{"mesh", g.mesh(kTriangle, {0, 1, 2}, m)}});
@@ -293,6 +295,13 @@ TEST(GltfImport, MaterialMapping) {
     EXPECT_EQ(mats["material-1"], Json({{"type", "conductor"}, {"reflectance", {0.5, 0.25, 1.0}}, {"roughness", 0.2}}));
     EXPECT_EQ(mats["material-2"], Json({{"type", "dielectric"}, {"ior", 1.5}, {"roughness", 0.0}, {"thin", true}}));
     EXPECT_EQ(mats["material-3"], Json({{"type", "dielectric"}, {"ior", 1.5}, {"roughness", 0.0}}));
+    // Its volume's attenuation: the medium inside, absorption = -ln(colour) / distance.
+    EXPECT_EQ(s.document["shapes"][3]["medium"], Json({{"inside", "material-3"}}));
+    const Json& absorption = s.document["media"]["material-3"]["absorption"];
+    EXPECT_NEAR(absorption[0].get<double>(), std::log(2.0) / 2, 1e-12);
+    EXPECT_EQ(absorption[1].get<double>(), 0.0);
+    EXPECT_NEAR(absorption[2].get<double>(), std::log(4.0) / 2, 1e-12);
+    EXPECT_FALSE(s.document["shapes"][2].contains("medium"));
     const Json& lampShape = s.document["shapes"][4];
     EXPECT_EQ(lampShape["emission"], Json({1.0, 0.5, 0.0}));
     EXPECT_EQ(lampShape["emission_scale"], 5.0);

@@ -347,6 +347,49 @@ LightSource "infinite" "string filename" "sky.exr" "float illuminance" [7]
     EXPECT_EQ(l[2]["illuminance"], 7.0);
 }
 
+// Media that absorb (pbrt-v4's homogeneous medium with sigma_s 0): under "media", sigma_a
+// times scale; shapes under a MediumInterface that differs on its two sides bound them
+// (inside, then outside); an "interface" material there becomes a dielectric of index 1
+// (a boundary with no surface), and is left out where it bounds nothing.
+TEST(PbrtImport, AbsorbingMediaAndTheShapesThatBoundThem) {
+    const ImportedScene s = import(R"(
+MakeNamedMedium "tea" "string type" "homogeneous" "rgb sigma_a" [0.1 0.3 0.7] "rgb sigma_s" [0 0 0] "float scale" [2]
+MakeNamedMaterial "water" "string type" "dielectric" "float eta" [1.33]
+MakeNamedMaterial "boundary" "string type" "interface"
+AttributeBegin
+  MediumInterface "tea" ""
+  NamedMaterial "water"
+  Shape "sphere" "float radius" [1]
+  NamedMaterial "boundary"
+  Shape "sphere" "float radius" [2]
+AttributeEnd
+AttributeBegin
+  MediumInterface "" "tea"
+  Material "interface"
+  Shape "sphere" "float radius" [3]
+AttributeEnd
+NamedMaterial "boundary"
+Shape "sphere" "float radius" [4]
+MediumInterface "tea"
+Shape "sphere" "float radius" [5]
+)");
+    const Json& doc = s.document;
+    EXPECT_EQ(doc["media"]["tea"]["absorption"], Json::parse("[0.2, 0.6, 1.4]").get<std::vector<float>>());
+    const Json& shapes = doc["shapes"];
+    ASSERT_EQ(shapes.size(), 5u);  // the header's light and floor, then the three spheres that bound tea
+    EXPECT_FALSE(shapes[1].contains("medium"));
+    EXPECT_EQ(shapes[2]["radius"], 1.0);
+    EXPECT_EQ(shapes[2]["material"], "water");
+    EXPECT_EQ(shapes[2]["medium"], Json::parse(R"({"inside": "tea"})"));
+    EXPECT_EQ(shapes[3]["material"], "medium boundary");
+    EXPECT_EQ(shapes[4]["medium"], Json::parse(R"({"outside": "tea"})"));
+    EXPECT_EQ(shapes[4]["material"], "medium boundary");
+    EXPECT_EQ(doc["materials"]["medium boundary"], Json::parse(R"({"type": "dielectric", "ior": 1})"));
+    // Spheres 4 (an interface bounding nothing) and 5 (tea on both sides): no boundary.
+    SceneDescription d = loadImportedScene(s, scratch());
+    EXPECT_EQ(d.media.size(), 1u);
+}
+
 // An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
 // flips x) "matrix" with the linear part as written; a scale is refused.
 TEST(PbrtImport, InfiniteLightsFrame) {
@@ -417,7 +460,12 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
                  "bad.pbrt:3: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
                  "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n").what(),
-                 "bad.pbrt:3: participating media (MakeNamedMedium \"fog\") are not supported by photon");
+                 "bad.pbrt:3: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\"\n").what(),
+                 "bad.pbrt:3: medium \"smoke\": a \"nanovdb\" medium is not supported (photon renders homogeneous "
+                 "media that absorb)");
+    EXPECT_STREQ(importError(head + "MediumInterface \"tea\" \"\"\n").what(),
+                 "bad.pbrt:3: MediumInterface: no medium named \"tea\"");
     EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(), "bad.pbrt:3: NamedMaterial \"nope\" was not defined");
     EXPECT_STREQ(importError(head + "Shape \"sphere\" \"float zmax\" [0.5]\n").what(),
                  "bad.pbrt:3: sphere: partial spheres (zmin, zmax, phimax) are not supported");
@@ -451,8 +499,8 @@ LightSource "goniometric" "string filename" "profile.exr"
 )";
     const ImportedScene s = importPbrt(writeScene("scene.pbrt", kHeader + body), true);
     const std::vector<std::string> expected = {
-        "scene.pbrt:13: participating media (MakeNamedMedium \"fog\") are not supported by photon; left out (lenient import)",
-        "scene.pbrt:14: MediumInterface: participating media are not supported by photon; left out (lenient import)",
+        "scene.pbrt:13: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only; its absorption "
+        "kept, its scattering left out (lenient import)",
         "scene.pbrt:15: Attribute \"shape\": default parameters by directive are not supported; give them on each "
         "directive; left out (lenient import)",
         "scene.pbrt:16: Texture \"noise\": class \"fbm\" is not supported (photon imports imagemap, checkerboard, scale, "
@@ -474,6 +522,8 @@ LightSource "goniometric" "string filename" "profile.exr"
     ASSERT_EQ(s.document["shapes"].size(), 3u);
     EXPECT_EQ(s.document["shapes"][2]["type"], "sphere");
     EXPECT_EQ(s.document["shapes"][2]["material"], "fur");
+    EXPECT_EQ(s.document["shapes"][2]["medium"], Json::parse(R"({"outside": "fog"})"));
+    EXPECT_EQ(s.document["media"], Json::parse(R"({"fog": {"absorption": [1, 1, 1]}})"));
     EXPECT_FALSE(s.document.contains("lights"));
     loadImportedScene(s, scratch());  // what the lenient import wrote loads
     // Strict, the first of them is refused.

@@ -71,6 +71,14 @@ inline Vec2 sphereUv(Vec3 n) {
     return {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }
 
+// A homogeneous medium that absorbs and does not scatter (coloured glass, a liquid): light
+// crossing a distance d of it keeps exp(-absorption d) per channel (Beer-Lambert).
+// Shapes bound it (ShapeDescription::insideMedium); docs/scene-format.md#media.
+struct MediumDescription {
+    std::string name;
+    Color absorption{0.0f};  // per unit of scene length, >= 0
+};
+
 struct ShapeDescription {
     enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
     TriangleMesh mesh;        // Kind::Mesh (quads arrive as two triangles with uvs)
@@ -88,6 +96,11 @@ struct ShapeDescription {
     // cutoff the surface is opaque, elsewhere fully transparent.
     float alphaCutoff = 0;
     std::string name;         // for messages: the JSON path it came from
+    // The media on either side (indices into SceneDescription::media, -1: none): outside is
+    // the side the normal faces (after flip_normals). Where both are the same the shape is
+    // no boundary and a path keeps the medium it is in.
+    int32_t insideMedium = -1, outsideMedium = -1;
+    bool boundsMedium() const { return insideMedium != outsideMedium; }
 
     float surfaceArea() const {
         if (kind == Kind::Sphere) return 4.0f * kPi * radius * radius;
@@ -153,6 +166,7 @@ struct SceneDescription {
     std::vector<ObjectDescription> objects;
     std::vector<InstanceDescription> instances;
     std::vector<LightDescription> lights;
+    std::vector<MediumDescription> media;
     RenderSettings render;
     // Files the scene named (meshes, textures), relative to its folder in normal form, sorted.
     std::vector<std::string> files;

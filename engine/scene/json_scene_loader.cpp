@@ -99,11 +99,18 @@ SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
     scene.camera = readCamera(top.required("camera"));
     // Materials before shapes: shapes refer to them by name.
     readMaterials(top.required("materials"), ctx, scene);
+    // Media before shapes too: shapes name the media on their sides.
+    auto media = top.optional("media");
+    if (media) readMedia(*media, ctx, scene);
     // Objects before shapes: instances among the shapes refer to them by name.
     if (auto objects = top.optional("objects")) readObjects(*objects, ctx, scene);
     readShapes(top.required("shapes"), ctx, scene);
     if (auto lights = top.optional("lights")) readLights(*lights, ctx, scene);
     if (auto render = top.optional("render")) scene.render = readRender(*render);
+    // Only the integrators that follow paths one by one carry the medium along them.
+    if (media && !scene.media.empty() && scene.render.integrator != IntegratorKind::Sppm &&
+        scene.render.integrator != IntegratorKind::Path)
+        media->fail("media are rendered by the \"sppm\" and \"path\" integrators only");
     top.finish();
     checkHasLight(scene);
     scene.files.assign(ctx.files.begin(), ctx.files.end());

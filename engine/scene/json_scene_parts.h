@@ -28,6 +28,8 @@ struct LoadContext {
     std::map<std::pair<std::filesystem::path, int>, std::shared_ptr<const ImageTexture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
+    // Medium name -> index, for shapes' "medium".
+    std::unordered_map<std::string, int32_t> mediumIndex;
     // Object name -> index, for instances.
     std::unordered_map<std::string, uint32_t> objectIndex;
     // Every file resolveFile was asked for, relative and in normal form: a record of what was
@@ -71,6 +73,9 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx);
 // Named groups of shapes that instances place ("objects", json_objects.cpp).
 void readObjects(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+// "media" (json_media.cpp), and a shape's "medium" {"inside", "outside"}.
+void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
+void readShapeMedia(const JsonValue& value, const LoadContext& ctx, ShapeDescription& shape);
 
 // {"axis": [x, y, z], "angle": degrees}: a rotation about the axis (right-handed).
 Transform readRotation(const JsonValue& value);

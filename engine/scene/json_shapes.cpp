@@ -135,6 +135,7 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     shape.material = readMaterialRef(obj.required("material"), ctx);
     readEmission(obj, ctx, shape);
     shape.flipNormals = obj.boolean("flip_normals", false);
+    if (auto medium = obj.optional("medium")) readShapeMedia(*medium, ctx, shape);
     if (auto alpha = obj.optional("alpha")) {
         shape.alpha = readFloatParam(*alpha, ctx, Range::closed(0, 1), ImageChannels::Alpha);
         // A light's power and its samples assume all of its surface emits.

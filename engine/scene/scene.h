@@ -124,6 +124,28 @@ public:
     const Material& material(const SurfaceHit& hit) const { return *materials_[materialOf_[hit.shape]]; }
     uint32_t materialIndex(const SurfaceHit& hit) const { return materialOf_[hit.shape]; }
     const Material& materialAt(uint32_t index) const { return *materials_[index]; }
+    // Absorbing media (MediumDescription, docs/scene-format.md#media). A path carries the
+    // medium it is in (-1: none), changed where it crosses a shape that bounds one.
+    bool hasMedia() const { return !description_.media.empty(); }
+    // What light keeps over `distance` in the medium (Beer-Lambert); an infinite distance in
+    // a medium that absorbs a channel keeps none of it.
+    Color transmittance(int32_t medium, float distance) const {
+        if (medium < 0) return Color(1.0f);
+        const Color& a = description_.media[size_t(medium)].absorption;
+        Color t;
+        for (int c = 0; c < 3; ++c) t[c] = a[c] > 0 ? std::exp(-a[c] * distance) : 1.0f;
+        return t;
+    }
+    // The medium a path is in after leaving the hit along w: the shape's outside where w
+    // leaves on the side its normal faces, else its inside; `current` where the shape bounds
+    // no medium (pbrt-v4's SurfaceInteraction::GetMedium). `hit` as intersect() gave it,
+    // before any turning toward the viewer.
+    int32_t mediumToward(const SurfaceHit& hit, Vec3 w, int32_t current) const {
+        if (!hasMedia()) return current;
+        const ShapeDescription& s = shape(hit.shape);
+        if (!s.boundsMedium()) return current;
+        return dot(w, hit.ng) > 0 ? s.outsideMedium : s.insideMedium;
+    }
     // dp/du and dp/dv at the hit: the tangent frame of normal and bump maps.
     SurfaceTangents tangentsAt(const SurfaceHit& hit) const;
     // Radiance emitted from the hit toward direction w (zero on the back side).

@@ -138,7 +138,10 @@ public:
             const std::string file = "meshes/" + std::to_string(mesh) + "-" + std::to_string(p) + ".ply";
             ctx_.out.meshes[file] = std::move(*triangles);
             Json shape = {{"type", "mesh"}, {"file", file}, {"material", material(primitives[p].material)}};
-            shape.update(materials_[primitives[p].material].shapeFields);
+            const MaterialMapping& mapping = materials_[primitives[p].material];
+            shape.update(mapping.shapeFields);
+            // A material's volume: the medium inside its shapes, named after it.
+            if (!mapping.medium.is_null()) shape["medium"] = {{"inside", name(primitives[p].material)}};
             it->second.push_back(std::move(shape));
         }
         return it->second;
@@ -146,6 +149,12 @@ public:
     Json materialsJson() const {
         Json all = Json::object();
         for (const auto& [index, mapping] : materials_) all[name(index)] = mapping.material;
+        return all;
+    }
+    Json mediaJson() const {
+        Json all = Json::object();
+        for (const auto& [index, mapping] : materials_)
+            if (!mapping.medium.is_null()) all[name(index)] = mapping.medium;
         return all;
     }
     bool anyEmission() const {
@@ -200,6 +209,7 @@ void placeMeshes(Context& ctx, const Placements& placed, MeshShapes& meshes, Jso
     }
     if (shapes.empty()) ctx.fail("", "the glTF's scene has no triangles to render");
     doc["materials"] = meshes.materialsJson();
+    if (Json media = meshes.mediaJson(); !media.empty()) doc["media"] = std::move(media);
     if (!objects.empty()) doc["objects"] = std::move(objects);
     doc["shapes"] = std::move(shapes);
 }

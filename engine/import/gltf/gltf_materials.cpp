@@ -6,6 +6,8 @@
 // (Schlick's Fresnel from the base colour) are those two, mixed by `mix` with amount =
 // metallic. Both use GGX with alpha = roughness^2, as glTF does (sec. B.3.2).
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 #include "import/gltf/gltf_parts.h"
 
@@ -106,8 +108,29 @@ Json opaqueMaterial(Context& ctx, const Source& s) {
     return {{"type", "mix"}, {"materials", {coated, conductor}}, {"amount", metallic}};
 }
 
+// KHR_materials_volume's attenuation as an absorbing medium: light crossing a distance d
+// keeps attenuationColor^(d / attenuationDistance), so absorption = -ln(colour) / distance
+// (the extension's sigma_t, all absorption). Null where it keeps all light. A colour channel
+// of 0 absorbs everything: its absorption is that of 1e-6 over the distance (a factor 1e-6).
+Json volumeMedium(Context& ctx, const std::string& pointer, const tinygltf::Value& volume) {
+    const double distance = numberIn(volume, "attenuationDistance", std::numeric_limits<double>::infinity());
+    if (!(distance > 0)) ctx.fail(pointer + "/attenuationDistance", "must be > 0");
+    if (std::isinf(distance)) return nullptr;
+    Json absorption = Json::array();
+    bool any = false;
+    const tinygltf::Value& colour = volume.Get("attenuationColor");
+    for (int c = 0; c < 3; ++c) {
+        const tinygltf::Value& v = colour.IsArray() && int(colour.ArrayLen()) == 3 ? colour.Get(c) : tinygltf::Value();
+        const double k = v.IsNumber() || v.IsInt() ? v.GetNumberAsDouble() : 1.0;
+        const double a = -std::log(std::clamp(k, 1e-6, 1.0)) / distance;
+        absorption.push_back(a);
+        any = any || a > 0;
+    }
+    return any ? Json{{"absorption", absorption}} : Json();
+}
+
 // KHR_materials_transmission (and KHR_materials_volume): glass.
-Json transmissiveMaterial(Context& ctx, const Source& s, const tinygltf::Value& transmission) {
+Json transmissiveMaterial(Context& ctx, const Source& s, const tinygltf::Value& transmission, MaterialMapping& r) {
     const std::string ext = s.pointer + "/extensions/";
     const double roughness = constantRoughness(ctx, s, "dielectric");
     Json glass = {{"type", "dielectric"}, {"ior", iorOf(ctx, s)}, {"roughness", roughness}};
@@ -119,9 +142,10 @@ Json transmissiveMaterial(Context& ctx, const Source& s, const tinygltf::Value& 
     if (s.m.pbrMetallicRoughness.baseColorTexture.index >= 0 || (f.size() == 4 && (f[0] != 1 || f[1] != 1 || f[2] != 1)))
         ctx.warn(s.pointer + "/pbrMetallicRoughness", "photon's dielectric is clear: the base colour's tint is ignored");
     if (const tinygltf::Value* volume = extension(s.m, "KHR_materials_volume")) {
-        // A volume's boundary: a solid dielectric. photon's media have no absorption.
-        for (const char* key : {"thicknessFactor", "thicknessTexture", "attenuationDistance", "attenuationColor"})
-            if (volume->Has(key)) ctx.warn(ext + "KHR_materials_volume/" + key, "ignored (photon's dielectric has no absorption)");
+        // A volume's boundary: a solid dielectric, its attenuation the medium inside. The
+        // thickness is for renderers that do not trace the geometry (the extension's own
+        // words); a ray tracer crosses the real one.
+        r.medium = volumeMedium(ctx, ext + "KHR_materials_volume", *volume);
         return glass;
     }
     // Without KHR_materials_volume the surface is thin-walled (KHR_materials_transmission:
@@ -216,7 +240,7 @@ MaterialMapping mapMaterial(Context& ctx, int index) {
         ctx.warn(s.pointer + "/extensions/KHR_materials_transmission/transmissionFactor",
                  "photon cannot mix a dielectric with an opaque material: rendered as " +
                      std::string(amount >= 0.5 ? "fully transmissive" : "opaque"));
-    r.material = amount >= 0.5 ? transmissiveMaterial(ctx, s, *transmission) : opaqueMaterial(ctx, s);
+    r.material = amount >= 0.5 ? transmissiveMaterial(ctx, s, *transmission, r) : opaqueMaterial(ctx, s);
     if (s.m.normalTexture.index >= 0)
         r.material["normal_map"] = textureFile(ctx, {s.m.normalTexture.index, s.m.normalTexture.texCoord, nullptr,
                                                      s.pointer + "/normalTexture"});

@@ -28,6 +28,9 @@ std::optional<TriangleMesh> readPrimitive(Context& ctx, int mesh, int primitive)
 struct MaterialMapping {
     Json material;
     Json shapeFields = Json::object();
+    // KHR_materials_volume's attenuation: the medium inside the shapes of this material
+    // ({"absorption"}; null: none).
+    Json medium;
 };
 // -1: the default material of glTF 2.0 sec. 3.9.6.
 MaterialMapping mapMaterial(Context& ctx, int material);

@@ -28,6 +28,7 @@ struct GraphicsState {
     bool reverseOrientation = false;
     std::string material;            // the photon material's name; empty: pbrt's default
     std::optional<Json> areaLight;   // emission fields for the shapes that follow
+    std::string insideMedium, outsideMedium;  // MediumInterface's names; empty: none
 };
 
 class SceneBuilder {
@@ -71,6 +72,10 @@ private:
     // pbrt_lights.cpp
     void lightSource(const Directive& d);
     void areaLightSource(const Directive& d);
+    // pbrt_media.cpp: MakeNamedMedium, MediumInterface, and a shape's "medium" field.
+    void makeNamedMedium(const Directive& d);
+    void mediumInterface(const Directive& d);
+    std::optional<Json> shapeMedium();
     // pbrt_objects.cpp (in pbrt_shapes.cpp)
     void objectBegin(const Directive& d);
     void objectInstance(const Directive& d);
@@ -93,6 +98,10 @@ private:
     std::map<std::string, Transform> coordinateSystems_;
     std::map<std::string, Json> floatTextures_, spectrumTextures_;
     std::map<std::string, std::string> namedMaterials_;  // pbrt name -> photon name
+    // pbrt medium name -> whether photon renders it (an absorbing medium under "media"), or
+    // false for one left out (lenient import).
+    std::map<std::string, bool> media_;
+    Json mediaJson_ = Json::object();
     std::optional<std::string> currentObject_;  // inside ObjectBegin
     std::map<std::string, std::string> plyMeshes_;  // (file, reversed) key -> mesh name
     int meshCount_ = 0, materialCount_ = 0;

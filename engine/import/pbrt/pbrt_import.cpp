@@ -95,12 +95,9 @@ void SceneBuilder::handle(Directive&& d) {
     } else if (n == "ObjectInstance") {
         objectInstance(d);
     } else if (n == "MakeNamedMedium") {
-        return unsupported(d, "participating media (MakeNamedMedium \"" + (d.strings.empty() ? "" : d.strings[0]) +
-                                  "\") are not supported by photon");
+        return makeNamedMedium(d);
     } else if (n == "MediumInterface") {
-        for (const std::string& s : d.strings)
-            if (!s.empty()) return unsupported(d, "MediumInterface: participating media are not supported by photon");
-        return;
+        return mediumInterface(d);
     } else if (n == "Attribute") {
         return unsupported(d, "Attribute \"" + (d.strings.empty() ? "" : d.strings[0]) +
                                   "\": default parameters by directive are not supported; give them on each directive");
@@ -125,6 +122,7 @@ void SceneBuilder::finish() {
         it = it.value()["shapes"].empty() ? objects_.erase(it) : std::next(it);
     if (!objects_.empty()) doc["objects"] = objects_;
     doc["materials"] = materials_;
+    if (!mediaJson_.empty()) doc["media"] = mediaJson_;
     doc["shapes"] = shapes_;
     if (!lights_.empty()) doc["lights"] = lights_;
     doc["render"] = render_;

@@ -13,8 +13,11 @@ namespace photon::pbrt {
 
 namespace {
 
-// The name photon gives what pbrt's "interface" material marks: no surface.
+// What currentMaterial() gives for pbrt's "interface" material where it bounds no medium:
+// no surface.
 const std::string kNoSurface = "";
+// The graphics state's material under pbrt's "interface" (Material or NamedMaterial).
+const std::string kInterface = "\x01";
 
 }  // namespace
 
@@ -215,7 +218,7 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         for (const std::string& n : names) {
             auto it = namedMaterials_.find(n);
             if (it == namedMaterials_.end()) fail(where, "mix: material \"" + n + "\" was not defined before");
-            if (it->second == kNoSurface) fail(where, "mix: material \"" + n + "\" is an interface (no surface)");
+            if (it->second == kInterface) fail(where, "mix: material \"" + n + "\" is an interface (no surface)");
             parts.push_back(it->second);
         }
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
@@ -239,7 +242,7 @@ void SceneBuilder::makeNamedMaterial(const Directive& d) {
     const std::string type = p.string("type", "");
     if (!p.has("type")) fail(d.where, "MakeNamedMaterial \"" + name + "\" has no \"string type\"");
     std::optional<Json> m = materialJson(type, p);
-    namedMaterials_[name] = m ? name : kNoSurface;
+    namedMaterials_[name] = m ? name : kInterface;
     if (m) materials_[name] = *m;
 }
 
@@ -247,7 +250,7 @@ void SceneBuilder::material(const Directive& d) {
     Params p(d);
     std::optional<Json> m = materialJson(d.strings.at(0), p);
     if (!m) {
-        state_.material = "\x01";  // pbrt's interface: shapes under it are no surfaces
+        state_.material = kInterface;  // shapes under it are no surfaces, or bound media
         return;
     }
     // Identical anonymous materials share one entry.
@@ -262,7 +265,13 @@ void SceneBuilder::material(const Directive& d) {
 }
 
 std::string SceneBuilder::currentMaterial() {
-    if (state_.material == "\x01") return kNoSurface;
+    if (state_.material == kInterface) {
+        if (!shapeMedium()) return kNoSurface;
+        // A boundary between media and nothing else: a dielectric of index 1 lets every ray
+        // through unbent, and the path changes medium there.
+        if (!materials_.contains("medium boundary")) materials_["medium boundary"] = {{"type", "dielectric"}, {"ior", 1}};
+        return "medium boundary";
+    }
     if (!state_.material.empty()) return state_.material;
     // pbrt-v4's default material: diffuse, reflectance 0.5.
     if (!materials_.contains("default")) materials_["default"] = {{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};

@@ -116,6 +116,7 @@ Json SceneBuilder::commonShapeFields(const Params& p) {
     }
     if (!isIdentity(state_.ctm)) s["transform"] = matrixJson(state_.ctm);
     if (state_.areaLight) s.update(*state_.areaLight);
+    if (auto medium = shapeMedium()) s["medium"] = *medium;
     return s;
 }
 
@@ -182,8 +183,9 @@ void SceneBuilder::addSphere(const Params& p, const Directive& d) {
 void SceneBuilder::shape(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
-    if (currentMaterial().empty()) {
-        // pbrt's "interface" material: a boundary between media, not a surface.
+    if (currentMaterial().empty() && !shapeMedium()) {
+        // pbrt's "interface" material: a boundary between media, not a surface; with no
+        // medium photon renders on either side, nothing.
         for (const Param& param : d.params) param.used = true;
         warn(d.where, describe(d) + " has the interface material (no surface) and is left out");
         return;

@@ -35,6 +35,7 @@ struct PhotonLanes {
     alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
     alignas(32) uint32_t cell[kWalkLanes];         // EmittedPhoton::cell
+    alignas(32) int32_t medium[kWalkLanes];        // the absorbing medium it is in (-1: none)
     // A hit waiting for its bounce in lanes, off a Lambertian or a smooth specular surface:
     // which kind, where, the normals (turned toward the photon on two-sided surfaces), the
     // surface colour, and a specular surface's index (0: a mirror).
@@ -173,6 +174,7 @@ class PhotonWalk {
         bool textured;  // its colour comes from a texture
         Color tint;     // else its colour
         float ior;      // of a smooth specular surface (0: a mirror)
+        bool boundsMedium;  // a photon crossing it changes medium (it then bounces one by one)
     };
 
 public:
@@ -185,9 +187,10 @@ public:
         // smooth dielectrics.
         for (uint32_t i = 0; i < scene.shapeCount(); ++i) {
             const Material& m = scene.materialAt(scene.shape(i).material);
-            ShapeScattering sc{&m, Bounce::OneByOne, m.twoSided(), m.tint().textured(), m.tint().value, 0.0f};
-            if (m.lambertian() && m.twoSided() && !settings.specularOnly) sc.bounce = Bounce::Lambertian;
-            if (std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular()) {
+            const bool boundsMedium = scene.hasMedia() && scene.shape(i).boundsMedium();
+            ShapeScattering sc{&m, Bounce::OneByOne, m.twoSided(), m.tint().textured(), m.tint().value, 0.0f, boundsMedium};
+            if (m.lambertian() && m.twoSided() && !settings.specularOnly && !boundsMedium) sc.bounce = Bounce::Lambertian;
+            if (std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular(); smooth && !boundsMedium) {
                 sc.bounce = Bounce::Specular;
                 sc.ior = smooth->ior;
             }
@@ -251,6 +254,7 @@ private:
                 L.depth[i] = 0;
                 L.onlySpecular[i] = -1;
                 L.cell[i] = emitted_.cell[k];
+                L.medium[i] = -1;  // lights are in no medium
                 L.alive[i] = -1;
             }
         }
@@ -283,6 +287,7 @@ private:
             return 0;
         }
         ++counters_.segments;
+        if (L.medium[i] >= 0) L.setBeta(i, L.beta(i) * scene_.transmittance(L.medium[i], hit.t));
         const Vec3 wi = -L.direction(i);
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
@@ -313,7 +318,7 @@ private:
             if (sp.material->bendsNormal()) beta *= shadingCosineRatio(sp.hit, wi);
             sink_.arrive({sp.hit.p, sp.hit.ns, wi, beta, depth, L.onlySpecular[i] != 0, L.cell[i]});
         }
-        if (!last) bounce(i, sp, wi);
+        if (!last) bounce(i, hit, shape, sp, wi);
         return 0;
     }
 
@@ -327,8 +332,9 @@ private:
         L.tintR[i] = tint.x, L.tintG[i] = tint.y, L.tintB[i] = tint.z;
     }
 
-    // Any material's bounce, by BSDF sampling.
-    void bounce(int i, const ShadingPoint& sp, Vec3 wi) {
+    // Any material's bounce, by BSDF sampling; `hit` as cast (its normal not turned), for the
+    // medium the photon goes on in.
+    void bounce(int i, const SurfaceHit& hit, const ShapeScattering& shape, const ShadingPoint& sp, Vec3 wi) {
         PhotonLanes& L = lanes_;
         Rng rng = Rng::resume(L.state[i], L.increment[i]);
         float uLobe = rng.uniform();
@@ -341,7 +347,9 @@ private:
         std::optional<Color> next = photonAfterRoulette(L.beta(i), s->weight, rng);
         if (!next) return;
         L.setBeta(i, *next);
-        L.setRay(i, spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi)));
+        const Ray ray = spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi));
+        L.setRay(i, ray);
+        if (shape.boundsMedium) L.medium[i] = scene_.mediumToward(hit, ray.d, L.medium[i]);
         L.state[i] = rng.state();
         L.onlySpecular[i] = onlySpecular ? -1 : 0;
         ++L.depth[i];

@@ -1,5 +1,6 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
+#include <limits>
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "scene/scene.h"
@@ -40,17 +41,26 @@ inline float shadingCosineRatio(const SurfaceHit& hit, Vec3 w) {
     return cosG > 1e-3f ? std::abs(dot(w, hit.ns)) / cosG : 0.0f;
 }
 
-// Casts a camera path's ray; returns whether it hit. Light the ray reaches directly (the
+// A path's throughput after its ray's segment through the medium it is in (-1: none): to
+// the hit, or for a ray that leaves the scene, to infinity.
+inline void absorbAlong(const Scene& scene, int32_t medium, float distance, Color& beta) {
+    if (medium >= 0) beta *= scene.transmittance(medium, distance);
+}
+
+// Casts a camera path's ray from inside `medium`, whose absorption on the way beta takes
+// on; returns whether it hit. Light the ray reaches directly (the
 // environment when it leaves, emission where it lands) is added to L with weight beta when
 // `countEmitted`: all of it on camera paths that no light sample could have served (the
 // photon mapper's delta-only paths, radiosity's). Integrators that sample lights at
 // non-delta vertices use the form with a BounceSampling below.
-inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, bool countEmitted, SurfaceHit& hit,
-                           Color& L) {
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t medium, bool countEmitted,
+                           SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
+        absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
         if (countEmitted) L += beta * scene.environment(ray);
         return false;
     }
+    absorbAlong(scene, medium, hit.t, beta);
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
     return true;
 }
@@ -123,12 +133,14 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
 // otherwise weighted against the light sample that could have found it too, so that a
 // small bright light in a sharp highlight comes from BSDF samples and a large dim one from
 // light samples (Veach 1997, ch. 9).
-inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color beta, const BounceSampling& bounce,
-                           SurfaceHit& hit, Color& L) {
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t medium,
+                           const BounceSampling& bounce, SurfaceHit& hit, Color& L) {
     if (!scene.intersect(ray, hit)) {
+        absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
         L += beta * environmentAfterBounce(scene, bounce, ray);
         return false;
     }
+    absorbAlong(scene, medium, hit.t, beta);
     if (bounce.delta) {
         L += beta * scene.emitted(hit, -ray.d);
     } else if (Scene::Emitter e = scene.emitterAt(hit); e.light) {

@@ -26,9 +26,10 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     // between shadow rays and BSDF samples by multiple importance sampling.
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
+    int32_t medium = -1;  // the camera is in no medium
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, bounce, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, medium, bounce, hit, L)) break;
         // The ray after the last vertex is traced only for the light its BSDF sample shares
         // with that vertex's light sample (as pbrt-v4's PathIntegrator does): without it a
         // glossy surface at the last vertex loses most of its highlight.
@@ -46,6 +47,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
         // Russian roulette after a few bounces, on the throughput's largest channel.
         if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        medium = scene.mediumToward(hit, ray.d, medium);
     }
     return L;
 }

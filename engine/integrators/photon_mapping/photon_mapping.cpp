@@ -76,7 +76,7 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, PathSampler& sampler) 
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, true, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, -1, true, hit, L)) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         unsigned lobes = sp.material->lobes();

@@ -39,7 +39,7 @@ Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, R
     Color L(0.0f), beta(1.0f);
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, true, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, -1, true, hit, L)) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;

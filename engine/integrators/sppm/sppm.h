@@ -167,9 +167,10 @@ private:
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     static float smoothDielectricReflectance(const Material& m, Vec3 woLocal);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
-    // weighted against that vertex's light sample.
-    void lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta, PathSampler& sampler,
-                     Color& direct) const;
+    // weighted against that vertex's light sample; `at` is its hit as cast, `medium` the
+    // one the path reached it in.
+    void lookUpLight(const Scene& scene, const SurfaceHit& at, const ShadingPoint& sp, Vec3 woLocal, Color beta,
+                     int32_t medium, PathSampler& sampler, Color& direct) const;
     void buildGrid();
     void photonPass(const CancelToken& cancel, int64_t photons);
     // render.photon_guiding (sppm_guide_training.cpp): before the first pass, kGuidePasses

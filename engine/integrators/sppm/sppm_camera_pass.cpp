@@ -106,10 +106,11 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     float pathLength = 0;
     // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
+    int32_t medium = -1;  // the camera is in no medium
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
-        if (!traceCameraRay(scene, ray, beta, bounce, hit, direct)) break;
+        if (!traceCameraRay(scene, ray, beta, medium, bounce, hit, direct)) break;
         pathLength += hit.t;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
@@ -161,10 +162,11 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
                 beta *= s->weight / (1.0f - pd);
                 bounce = bounceFrom(sp, *s, 1.0f - pd);
                 ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+                medium = scene.mediumToward(hit, ray.d, medium);
                 continue;
             }
             if (first) storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
-            if (lastLookup) lookUpLight(scene, sp, woLocal, beta, sampler, direct), ++rays;
+            if (lastLookup) lookUpLight(scene, hit, sp, woLocal, beta, medium, sampler, direct), ++rays;
             break;
         }
         const Vec2 u = sampler.get2D();
@@ -186,6 +188,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         beta *= s->weight;
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        medium = scene.mediumToward(hit, ray.d, medium);
     }
     return rays;
 }
@@ -196,15 +199,16 @@ float SppmIntegrator::smoothDielectricReflectance(const Material& m, Vec3 woLoca
     return smooth && smooth->ior > 0 ? fresnelDielectric(woLocal.z, smooth->ior) : 0.0f;
 }
 
-void SppmIntegrator::lookUpLight(const Scene& scene, const ShadingPoint& sp, Vec3 woLocal, Color beta,
-                                 PathSampler& sampler, Color& direct) const {
+void SppmIntegrator::lookUpLight(const Scene& scene, const SurfaceHit& at, const ShadingPoint& sp, Vec3 woLocal,
+                                 Color beta, int32_t medium, PathSampler& sampler, Color& direct) const {
     const float uLobe = sampler.get1D();
     const Vec2 u = sampler.get2D();
     std::optional<BSDFSample> s = sp.material->sample(woLocal, uLobe, u, sp.inputs, TransportMode::Radiance);
     if (!s) return;
+    const Ray ray = spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi));
+    beta *= s->weight;
     SurfaceHit hit;
-    traceCameraRay(scene, spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi)), beta * s->weight, bounceFrom(sp, *s),
-                   hit, direct);
+    traceCameraRay(scene, ray, beta, scene.mediumToward(at, ray.d, medium), bounceFrom(sp, *s), hit, direct);
 }
 
 void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,

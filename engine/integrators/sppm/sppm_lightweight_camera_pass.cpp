@@ -51,11 +51,12 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     float pathLength = 0;
     const int maxDepth = settings_.maxDepth;
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
+    int32_t medium = -1;  // the camera is in no medium
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         Color found(0.0f);
         ++rays;
-        const bool hitSurface = traceCameraRay(scene, ray, beta, bounce, hit, found);
+        const bool hitSurface = traceCameraRay(scene, ray, beta, medium, bounce, hit, found);
         L += deltaChain > 0 ? found * pathTracedShare(*gather) : found;
         if (!hitSurface || depth == maxDepth) break;
         pathLength += hit.t;
@@ -86,6 +87,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         bounce = bounceFrom(sp, *s);
         if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;  // as the path tracer
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        medium = scene.mediumToward(hit, ray.d, medium);
     }
     results_[index].direct = SharedExponentColor::of(L, rng.uniform());  // the pixel's last draw
     results_[index].choice = {};

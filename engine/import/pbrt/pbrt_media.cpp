@@ -1,0 +1,63 @@
+// MakeNamedMedium and MediumInterface. photon renders homogeneous media that absorb
+// (docs/scene-format.md#media), which is what coloured glass and liquids in pbrt files are:
+// pbrt-v4's "homogeneous" medium with sigma_s 0. A medium that scatters, emits or varies in
+// space is refused, or under a lenient import keeps only what photon can render.
+#include "import/pbrt/pbrt_builder.h"
+#include "import/pbrt/pbrt_spectra.h"
+
+namespace photon::pbrt {
+
+void SceneBuilder::makeNamedMedium(const Directive& d) {
+    Params p(d);
+    const std::string& name = d.strings.at(0);
+    const std::string type = p.string("type", "");
+    const std::string what = "medium \"" + name + "\"";
+    if (type != "homogeneous") {
+        media_[name] = false;
+        return unsupported(d, what + ": a \"" + type + "\" medium is not supported (photon renders homogeneous media that absorb)");
+    }
+    // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale".
+    auto coefficient = [&](std::string_view key) {
+        const Param* param = p.find(key);
+        return (param ? spectrumColor(*param, SpectrumKind::Reflectance, baseDir_) : Color(1.0f)) * float(p.number("scale", 1));
+    };
+    if (p.has("preset")) {
+        media_[name] = false;
+        return unsupported(d, what + ": measured scattering presets (\"preset\") are not supported");
+    }
+    const Color absorption = coefficient("sigma_a"), scattering = coefficient("sigma_s");
+    const Param* emission = p.find("Le");
+    const bool emits = emission && !isBlack(spectrumColor(*emission, SpectrumKind::Illuminant, baseDir_)) && p.number("Lescale", 1) != 0;
+    if (!isBlack(scattering) || emits) {
+        unsupported(d, what + (emits ? " emits light (Le)" : " scatters light (sigma_s)") +
+                           ": photon renders media that absorb only",
+                    "its absorption kept, its " + std::string(emits ? "emission and " : "") + "scattering left out");
+    }
+    p.find("g");  // the phase function's asymmetry: nothing without scattering
+    media_[name] = true;
+    mediaJson_[name] = {{"absorption", rgb(absorption)}};
+    p.warnUnused(out_.warnings);
+}
+
+void SceneBuilder::mediumInterface(const Directive& d) {
+    // One name: the same medium on both sides; two: inside, then outside.
+    const std::string& inside = d.strings.at(0);
+    const std::string& outside = d.strings.size() > 1 ? d.strings[1] : inside;
+    for (const std::string& n : {inside, outside})
+        if (!n.empty() && !media_.count(n)) fail(d.where, "MediumInterface: no medium named \"" + n + "\"");
+    state_.insideMedium = inside;
+    state_.outsideMedium = outside;
+}
+
+std::optional<Json> SceneBuilder::shapeMedium() {
+    // A medium left out (lenient import) is no medium.
+    auto rendered = [&](const std::string& n) { return !n.empty() && media_[n] ? n : std::string(); };
+    const std::string inside = rendered(state_.insideMedium), outside = rendered(state_.outsideMedium);
+    if (inside == outside) return std::nullopt;
+    Json m = Json::object();
+    if (!inside.empty()) m["inside"] = inside;
+    if (!outside.empty()) m["outside"] = outside;
+    return m;
+}
+
+}  // namespace photon::pbrt

@@ -1,0 +1,37 @@
+// "media": named homogeneous media that absorb (Beer-Lambert), and a shape's "medium": the
+// media on its two sides (docs/scene-format.md#media).
+#include "scene/json_scene_parts.h"
+
+namespace photon::scene_json {
+
+void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
+    JsonObject media = value.object();
+    for (auto& [name, medium] : media.members()) {
+        JsonObject obj = medium.object();
+        MediumDescription m;
+        m.name = name;
+        // Per unit of scene length; the scale lets a file keep a measured colour's ratios.
+        m.absorption = obj.required("absorption").vec3(Range::nonNegative()) *
+                       obj.number("scale", 1.0f, Range::nonNegative());
+        obj.finish();
+        ctx.mediumIndex[name] = int32_t(scene.media.size());
+        scene.media.push_back(std::move(m));
+    }
+}
+
+void readShapeMedia(const JsonValue& value, const LoadContext& ctx, ShapeDescription& shape) {
+    JsonObject obj = value.object();
+    auto side = [&](std::string_view key) {
+        auto v = obj.optional(key);
+        if (!v) return -1;
+        auto it = ctx.mediumIndex.find(v->string());
+        if (it == ctx.mediumIndex.end()) v->fail("unknown medium \"" + v->string() + "\" (define it under \"media\")");
+        return it->second;
+    };
+    shape.insideMedium = side("inside");
+    shape.outsideMedium = side("outside");
+    obj.finish();
+    if (!shape.boundsMedium()) value.fail("\"inside\" and \"outside\" are the same: the shape bounds no medium");
+}
+
+}  // namespace photon::scene_json
