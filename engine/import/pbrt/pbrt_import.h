@@ -7,7 +7,7 @@
 namespace photon {
 
 // Reads `file` and what it includes. Throws SceneError at "file:line" for what photon
-// cannot render as the file means it (participating media, unknown materials, ...).
+// cannot render as the file means it (media that scatter, unknown materials, ...).
 // lenient: what photon cannot render is left out or replaced with a warning, not refused.
 ImportedScene importPbrt(const std::filesystem::path& file, bool lenient = false);
 

@@ -8,6 +8,7 @@
 #include <utility>
 #include "description/shape_transform.h"
 #include "import/pbrt/pbrt_builder.h"
+#include "import/pbrt/pbrt_quadrics.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene_paths.h"
 
@@ -86,27 +87,6 @@ std::vector<uint32_t> meshIndices(const Params& p, const Directive& d, size_t ve
     return out;
 }
 
-// pbrt-v4's disk: radius r at height h on the z axis, facing +z, with a hole of innerradius;
-// u = phi / 2pi, v = (r - rho) / (r - ri). 256 segments: the polygon's area is 0.01% short.
-TriangleMesh diskMesh(double h, double r, double ri) {
-    constexpr int kSegments = 256;
-    TriangleMesh m;
-    for (int i = 0; i <= kSegments; ++i) {
-        const double phi = 2 * 3.14159265358979323846 * i / kSegments;
-        const float u = float(i) / kSegments;
-        m.positions.push_back({float(r * std::cos(phi)), float(r * std::sin(phi)), float(h)});
-        m.uvs.push_back({u, 0});
-        m.positions.push_back({float(ri * std::cos(phi)), float(ri * std::sin(phi)), float(h)});
-        m.uvs.push_back({u, 1});
-    }
-    for (uint32_t i = 0; i < kSegments; ++i) {
-        const uint32_t o0 = 2 * i, i0 = o0 + 1, o1 = o0 + 2, i1 = o0 + 3;
-        m.indices.insert(m.indices.end(), {o0, o1, i1});  // counter-clockwise seen from +z
-        if (ri > 0) m.indices.insert(m.indices.end(), {o0, i1, i0});
-    }
-    return m;
-}
-
 }  // namespace
 
 Json SceneBuilder::commonShapeFields(const Params& p) {
@@ -164,8 +144,15 @@ std::string SceneBuilder::meshFromPly(const Params& p, const Directive& d) {
 void SceneBuilder::addSphere(const Params& p, const Directive& d) {
     const double r = p.number("radius", 1);
     if (!(r > 0)) fail(d.where, "sphere: radius must be > 0");
-    if (p.number("zmin", -r) > -r || p.number("zmax", r) < r || p.number("phimax", 360) < 360)
-        unsupported(d, "sphere: partial spheres (zmin, zmax, phimax) are not supported", "the whole sphere rendered");
+    const double zMin = p.number("zmin", -r), zMax = p.number("zmax", r), phiMax = p.number("phimax", 360);
+    if (zMin > -r || zMax < r || phiMax < 360) {
+        // Part of a sphere: a mesh of it (pbrt_quadrics.h).
+        if (!(phiMax > 0) || !(std::max(zMin, zMax) > -r && std::min(zMin, zMax) < r && zMin != zMax))
+            fail(d.where, "sphere: zmin, zmax and phimax leave nothing of it");
+        TriangleMesh mesh = partialSphereMesh(r, zMin, zMax, phiMax);
+        orient(mesh, state_.reverseOrientation);
+        return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
+    }
     Json s = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", r}, {"material", currentMaterial()}};
     if (state_.reverseOrientation) s["flip_normals"] = true;
     s.update(commonShapeFields(p));
@@ -221,16 +208,24 @@ void SceneBuilder::shape(const Directive& d) {
         return addShapeJson(std::move(s));
     }
     if (type == "sphere") return addSphere(p, d);
-    if (type == "disk") {
-        const double r = p.number("radius", 1), ri = p.number("innerradius", 0), h = p.number("height", 0);
-        if (p.number("phimax", 360) < 360) unsupported(d, "disk: a partial disk (phimax) is not supported", "the whole disk rendered");
-        if (!(r > 0) || !(ri >= 0 && ri < r)) fail(d.where, "disk: needs radius > innerradius >= 0");
-        TriangleMesh mesh = diskMesh(h, r, ri);
+    if (type == "disk" || type == "cylinder") {
+        const double r = p.number("radius", 1), phiMax = p.number("phimax", 360);
+        if (!(phiMax > 0)) fail(d.where, type + ": phimax must be > 0");
+        TriangleMesh mesh;
+        if (type == "disk") {
+            const double ri = p.number("innerradius", 0), h = p.number("height", 0);
+            if (!(r > 0) || !(ri >= 0 && ri < r)) fail(d.where, "disk: needs radius > innerradius >= 0");
+            mesh = diskMesh(h, r, ri, phiMax);
+        } else {
+            const double zMin = p.number("zmin", -1), zMax = p.number("zmax", 1);
+            if (!(r > 0) || !(zMin != zMax)) fail(d.where, "cylinder: needs radius > 0 and zmin != zmax");
+            mesh = cylinderMesh(r, zMin, zMax, phiMax);
+        }
         orient(mesh, state_.reverseOrientation);
         return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
     }
     unsupported(d, "Shape \"" + type + "\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
-                                   "bilinearmesh, loopsubdiv)");
+                                   "cylinder, bilinearmesh, loopsubdiv)");
 }
 
 void SceneBuilder::objectBegin(const Directive& d) {

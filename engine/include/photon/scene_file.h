@@ -29,8 +29,8 @@ SceneFormat sceneFormatOf(const std::filesystem::path& file);
 // Choices an import needs beyond the file.
 struct ImportOptions {
     std::string camera;  // glTF: the camera's name (empty: the first)
-    // pbrt: what photon cannot render (participating media, unknown materials, textures,
-    // shapes and lights, partial spheres and disks) is left out or replaced, each with a
+    // pbrt: what photon cannot render (media that scatter, unknown materials, textures,
+    // shapes and lights) is left out or replaced, each with a
     // warning, instead of failing the import (docs/import.md, "Lenient import").
     bool lenient = false;
 };
