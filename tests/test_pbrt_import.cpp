@@ -429,6 +429,36 @@ Shape "cylinder"
         EXPECT_NEAR(hemisphere.positions[v].z, 2 * std::sin(hemisphere.uvs[v].y * pi / 2), 1e-5) << v;
 }
 
+// Attribute: parameters for the directives of its kind that do not give their own, for the
+// rest of the attribute block (pbrt-v4's GraphicsState attributes); unused ones are silent.
+TEST(PbrtImport, AttributesGiveDefaultParameters) {
+    const ImportedScene s = import(R"(
+AttributeBegin
+  Attribute "shape" "float radius" [2] "float zmin" [-5]
+  Attribute "material" "rgb reflectance" [0.1 0.2 0.3]
+  Attribute "light" "float scale" [3]
+  Material "diffuse"
+  Shape "sphere"
+  Shape "sphere" "float radius" [0.5]
+  AreaLightSource "diffuse" "rgb L" [1 1 1]
+  Shape "sphere" "float radius" [0.25]
+AttributeEnd
+Shape "sphere"
+)");
+    const Json& shapes = s.document["shapes"];
+    ASSERT_EQ(shapes.size(), 6u);
+    EXPECT_EQ(shapes[2]["radius"], 2.0);
+    EXPECT_EQ(shapes[3]["radius"], 0.5);
+    EXPECT_EQ(shapes[4]["emission_scale"], 3.0);
+    EXPECT_EQ(shapes[5]["radius"], 1.0);  // after AttributeEnd, pbrt's default
+    EXPECT_EQ(s.document["materials"][shapes[2]["material"].get<std::string>()]["albedo"],
+              Json::parse("[0.1, 0.2, 0.3]").get<std::vector<float>>());
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nAttribute \"camera\" \"float fov\" [10]\n").what(),
+                 "bad.pbrt:3: Attribute \"camera\": the target must be \"shape\", \"light\", \"material\", \"medium\" or "
+                 "\"texture\"");
+}
+
 // An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
 // flips x) "matrix" with the linear part as written; a scale is refused.
 TEST(PbrtImport, InfiniteLightsFrame) {
@@ -542,8 +572,6 @@ LightSource "goniometric" "string filename" "profile.exr"
     const std::vector<std::string> expected = {
         "scene.pbrt:13: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only; its absorption "
         "kept, its scattering left out (lenient import)",
-        "scene.pbrt:15: Attribute \"shape\": default parameters by directive are not supported; give them on each "
-        "directive; left out (lenient import)",
         "scene.pbrt:16: Texture \"noise\": class \"fbm\" is not supported (photon imports imagemap, checkerboard, scale, "
         "mix, constant); the constant 0.5 used (lenient import)",
         "scene.pbrt:17: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "

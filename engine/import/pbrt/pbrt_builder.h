@@ -29,6 +29,9 @@ struct GraphicsState {
     std::string material;            // the photon material's name; empty: pbrt's default
     std::optional<Json> areaLight;   // emission fields for the shapes that follow
     std::string insideMedium, outsideMedium;  // MediumInterface's names; empty: none
+    // Attribute "shape" | "light" | "material" | "medium" | "texture": parameters the
+    // directives of that kind take where they do not give their own (pbrt-v4 GraphicsState).
+    std::map<std::string, std::vector<Param>> attributes;
 };
 
 class SceneBuilder {
@@ -79,6 +82,10 @@ private:
     // pbrt_objects.cpp (in pbrt_shapes.cpp)
     void objectBegin(const Directive& d);
     void objectInstance(const Directive& d);
+
+    // Attribute, and the parameters it gives a directive that leaves them out.
+    void attribute(const Directive& d);
+    void addAttributes(Directive& d) const;
 
     void warn(const Location& where, const std::string& message);
     // What photon cannot render: refused (SceneError) unless the import is lenient, when it

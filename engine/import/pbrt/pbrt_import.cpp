@@ -1,4 +1,5 @@
 #include "import/pbrt/pbrt_import.h"
+#include <algorithm>
 #include <photon/errors.h>
 #include "import/pbrt/pbrt_builder.h"
 
@@ -18,6 +19,7 @@ Json SceneBuilder::matrixJson(const Transform& t) const {
 }
 
 void SceneBuilder::handle(Directive&& d) {
+    addAttributes(d);
     const std::string& n = d.name;
     if (n == "AttributeBegin") {
         stack_.push_back(state_);
@@ -99,12 +101,47 @@ void SceneBuilder::handle(Directive&& d) {
     } else if (n == "MediumInterface") {
         return mediumInterface(d);
     } else if (n == "Attribute") {
-        return unsupported(d, "Attribute \"" + (d.strings.empty() ? "" : d.strings[0]) +
-                                  "\": default parameters by directive are not supported; give them on each directive");
+        return attribute(d);
     } else {
         fail(d.where, "directive " + n + " is not supported");
     }
     Params(d).warnUnused(out_.warnings);
+}
+
+namespace {
+
+// The kind of directive each Attribute target gives parameters to.
+const std::map<std::string, std::vector<std::string>, std::less<>> kAttributeTargets = {
+    {"shape", {"Shape"}},
+    {"light", {"LightSource", "AreaLightSource"}},
+    {"material", {"Material", "MakeNamedMaterial"}},
+    {"medium", {"MakeNamedMedium"}},
+    {"texture", {"Texture"}}};
+
+}  // namespace
+
+void SceneBuilder::attribute(const Directive& d) {
+    const std::string& target = d.strings.at(0);
+    if (!kAttributeTargets.count(target))
+        fail(d.where, "Attribute \"" + target + "\": the target must be \"shape\", \"light\", \"material\", \"medium\" or \"texture\"");
+    std::vector<Param>& list = state_.attributes[target];
+    for (const Param& p : d.params) {
+        std::erase_if(list, [&](const Param& q) { return q.name == p.name; });
+        list.push_back(p);
+        // pbrt-v4 reports a directive's own unused parameters, not the attributes it was given.
+        list.back().used = true;
+    }
+}
+
+void SceneBuilder::addAttributes(Directive& d) const {
+    for (const auto& [target, directives] : kAttributeTargets) {
+        if (std::find(directives.begin(), directives.end(), d.name) == directives.end()) continue;
+        auto it = state_.attributes.find(target);
+        if (it == state_.attributes.end()) return;
+        for (const Param& p : it->second)
+            if (!d.find(p.name)) d.params.push_back(p);
+        return;
+    }
 }
 
 void SceneBuilder::unsupported(const Directive& d, const std::string& message, const std::string& instead) {
