@@ -223,7 +223,7 @@ Shape "trianglemesh" "point3 P" [0 1 0  1 1 0  0 1 1])");
 }
 
 TEST(PbrtImport, MaterialsMapOntoPhotons) {
-    const Json m = import(R"(
+    const ImportedScene scene = import(R"(
 MakeNamedMaterial "gold" "string type" "conductor" "spectrum eta" "metal-Au-eta" "spectrum k" "metal-Au-k"
   "float roughness" [0.04]
 MakeNamedMaterial "plastic" "string type" "coateddiffuse" "rgb reflectance" [0.2 0.3 0.4]
@@ -232,7 +232,14 @@ MakeNamedMaterial "glass" "string type" "dielectric" "spectrum eta" "glass-BK7"
 MakeNamedMaterial "pane" "string type" "thindielectric" "float eta" [1.4]
 MakeNamedMaterial "sheet" "string type" "diffusetransmission" "rgb transmittance" [0.5 0.5 0.5] "float scale" [0.5]
 MakeNamedMaterial "both" "string type" "mix" "string materials" ["gold" "plastic"] "float amount" [0.25]
-)").document["materials"];
+Texture "bumps" "float" "checkerboard" "float tex1" [0.01] "float tex2" [0.2]
+MakeNamedMaterial "varnish" "string type" "coateddiffuse" "texture roughness" "bumps"
+)");
+    const Json& m = scene.document["materials"];
+    EXPECT_NO_THROW(loadImportedScene(scene, scratch()));
+    // A roughness map on coateddiffuse keeps pbrt's meaning (remaproughness, true by default).
+    EXPECT_EQ(m["varnish"]["roughness"]["type"], "checkerboard");
+    EXPECT_EQ(m["varnish"]["remap_roughness"], true);
     EXPECT_EQ(m["gold"], Json::parse(R"({"type": "conductor", "eta": "metal-Au-eta", "k": "metal-Au-k",
         "uroughness": 0.04, "vroughness": 0.04, "remap_roughness": true})"));
     // alpha = 0.01 (no remap); photon's perceptual roughness is sqrt(alpha).

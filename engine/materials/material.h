@@ -1,8 +1,10 @@
 // The one interface every material implements. All directions are in the local
 // shading frame (z = shading normal) and point away from the surface.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 #include "materials/normal_map.h"
 #include "math/frame.h"
 #include <photon/vec.h>
@@ -179,6 +181,16 @@ MaterialPtr makeCoatedConductor(MaterialPtr conductor, float ior, float roughnes
 // Diffuse base under a dielectric coat with internal reflections summed and the rough
 // coat's transmission taken from its albedo: energy-conserving (materials/coated_diffuse.cpp).
 MaterialPtr makeCoatedDiffuse(ColorParam albedo, float ior, float roughness);
+// A family's material (coated_diffuse, plastic) made at a ladder of roughnesses, for
+// textured roughness (textured_roughness.cpp). Its colour is read from MaterialInputs, so
+// materials of one family and index differing only in colour share one ladder.
+using RoughnessLevels = std::vector<MaterialPtr>;
+std::shared_ptr<const RoughnessLevels> makeRoughnessLevels(const std::function<MaterialPtr(float)>& make);
+// The family's material whose roughness is a texture: roughness^exponent at each point (1,
+// or pbrt's meanings: 1/4 with remaproughness, 1/2 without), blended between the levels.
+// `tint` is the colour parameter.
+MaterialPtr makeTexturedRoughness(ColorParam tint, FloatParam roughness, float exponent,
+                                  std::shared_ptr<const RoughnessLevels> levels);
 // Translucent sheet: Lambertian reflection (reflectance, the tint) on the side light
 // arrives from and Lambertian transmission to the other (reflectance + transmittance <= 1).
 MaterialPtr makeDiffuseTransmission(ColorParam reflectance, ColorParam transmittance);

@@ -1,5 +1,7 @@
 // The "materials" section: a name → material map, built with the factories of
 // materials/material.h.
+#include <cmath>
+#include <functional>
 #include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
 #include "texture/textures.h"
@@ -76,6 +78,23 @@ MicrofacetRoughness conductorRoughnessFields(JsonObject& obj, LoadContext& ctx) 
         else if (name != "ggx") distribution->fail("unknown distribution \"" + name + "\" (expected \"ggx\" or \"beckmann\")");
     }
     return r;
+}
+
+// A coated material's "roughness": a number or a texture in [0, 1], photon's perceptual
+// roughness (alpha = roughness^2), or with "remap_roughness" pbrt-v4's meaning (true:
+// alpha = sqrt(roughness); false: alpha = roughness). `make` builds the material at one
+// roughness; a texture blends precomputed levels (materials/textured_roughness.cpp).
+MaterialPtr withRoughness(JsonObject& obj, LoadContext& ctx, const ColorParam& tint, int family, float ior,
+                          const std::function<MaterialPtr(float)>& make) {
+    auto value = obj.optional("roughness");
+    const FloatParam roughness = value ? readFloatParam(*value, ctx, kFraction) : FloatParam(0.0f);
+    float exponent = 1;
+    if (auto remap = obj.optional("remap_roughness")) exponent = remap->boolean() ? 0.25f : 0.5f;
+    if (!roughness.textured()) return make(std::pow(roughness.value, exponent));
+    // One ladder of levels per family and index, whatever the colours (~0.2 s to make).
+    std::shared_ptr<const RoughnessLevels>& levels = ctx.roughnessLevels[{family, ior}];
+    if (!levels) levels = makeRoughnessLevels(make);
+    return makeTexturedRoughness(tint, roughness, exponent, levels);
 }
 
 // The part of an index that a coat of index `coatIor` sees: eta / coatIor or k / coatIor
@@ -166,16 +185,12 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case Dielectric: m = readDielectric(obj); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: m = readConductor(obj, ctx); break;
-        case Plastic: {
-            ColorParam albedo = colorField(obj, "albedo", Color(0.5f), ctx);
-            float ior = iorField(obj);
-            m = makePlastic(albedo, ior, roughnessField(obj, 0.0f));
-            break;
-        }
+        case Plastic:
         case CoatedDiffuse: {
             ColorParam albedo = colorField(obj, "albedo", Color(0.5f), ctx);
             float ior = iorField(obj);
-            m = makeCoatedDiffuse(albedo, ior, roughnessField(obj, 0.0f));
+            auto make = type == Plastic ? makePlastic : makeCoatedDiffuse;
+            m = withRoughness(obj, ctx, albedo, type, ior, [&](float r) { return make(albedo, ior, r); });
             break;
         }
         case CoatedConductor: m = readCoatedConductor(obj, ctx); break;

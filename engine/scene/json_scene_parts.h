@@ -28,6 +28,8 @@ struct LoadContext {
     std::map<std::pair<std::filesystem::path, int>, std::shared_ptr<const ImageTexture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
+    // Roughness ladders by material family and index, shared by textured roughnesses.
+    std::map<std::pair<int, float>, std::shared_ptr<const RoughnessLevels>> roughnessLevels;
     // Medium name -> index, for shapes' "medium".
     std::unordered_map<std::string, int32_t> mediumIndex;
     // Object name -> index, for instances.

@@ -62,7 +62,7 @@ double iorOf(Context& ctx, const Source& s) {
     return 1.5;
 }
 
-// A roughness photon takes as a number only (coated_diffuse, dielectric).
+// A roughness photon takes as a number only (dielectric).
 double constantRoughness(Context& ctx, const Source& s, const char* what) {
     const auto& pbr = s.m.pbrMetallicRoughness;
     if (pbr.metallicRoughnessTexture.index >= 0 && pbr.roughnessFactor > 0)
@@ -96,14 +96,13 @@ Json opaqueMaterial(Context& ctx, const Source& s) {
     const auto& pbr = s.m.pbrMetallicRoughness;
     const Json base = baseColor(s);
     const Json metallic = packedFraction(ctx, s, pbr.metallicFactor, "b");
-    Json conductor = clearcoated(
-        ctx, s, {{"type", "conductor"}, {"reflectance", base}, {"roughness", packedFraction(ctx, s, pbr.roughnessFactor, "g")}});
+    const Json roughness = packedFraction(ctx, s, pbr.roughnessFactor, "g");
+    Json conductor = clearcoated(ctx, s, {{"type", "conductor"}, {"reflectance", base}, {"roughness", roughness}});
     if (metallic == 0.0 && extension(s.m, "KHR_materials_clearcoat"))
         ctx.warn(s.pointer + "/extensions/KHR_materials_clearcoat",
                  "a clear coat over a non-metal is left out (photon's coated_diffuse has one coat)");
     if (metallic == 1.0) return conductor;
-    Json coated = {{"type", "coated_diffuse"}, {"albedo", base}, {"ior", iorOf(ctx, s)},
-                   {"roughness", constantRoughness(ctx, s, "coated_diffuse")}};
+    Json coated = {{"type", "coated_diffuse"}, {"albedo", base}, {"ior", iorOf(ctx, s)}, {"roughness", roughness}};
     if (metallic == 0.0) return coated;
     return {{"type", "mix"}, {"materials", {coated, conductor}}, {"amount", metallic}};
 }

@@ -63,8 +63,9 @@ private:
     // A colour or float parameter: a constant, or a named texture's photon texture object.
     std::optional<Json> colorValue(const Params& p, std::string_view name, int spectrumKind);
     std::optional<Json> floatValue(const Params& p, std::string_view name);
-    // `prefix`: "interface." or "conductor." for a coatedconductor's layers.
-    Json roughnessFields(const Params& p, bool anisotropic, const std::string& prefix = "");
+    // `prefix`: "interface." or "conductor." for a coatedconductor's layers; `texturable`:
+    // the material takes a roughness map (coated_diffuse), else a map's mean is not known.
+    Json roughnessFields(const Params& p, bool anisotropic, const std::string& prefix = "", bool texturable = false);
     // pbrt_shapes.cpp
     void shape(const Directive& d);
     void addMeshShape(TriangleMesh mesh, const std::string& name, const Params& p, const Directive& d);

@@ -79,7 +79,7 @@ double number(const Json& v) { return v.is_number() ? v.get<double>() : -1; }
 
 // pbrt's (u, v) roughness and remap flag as one perceptual roughness (photon's dielectric
 // and coated diffuse are isotropic).
-Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic, const std::string& prefix) {
+Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic, const std::string& prefix, bool texturable) {
     const Location& where = p.directive().where;
     std::optional<Json> r = floatValue(p, prefix + "roughness"), u = floatValue(p, prefix + "uroughness"),
                         v = floatValue(p, prefix + "vroughness");
@@ -95,6 +95,12 @@ Json SceneBuilder::roughnessFields(const Params& p, bool anisotropic, const std:
     }
     if (!u && !v) return Json::object();
     const Json& one = u ? *u : *v;
+    // A roughness map, on a material that takes one (coated_diffuse): pbrt's meaning kept.
+    if (texturable && (!one.is_number() || (v && !v->is_number()))) {
+        if (u && v && *u != *v)
+            warn(where, "anisotropic roughness (uroughness != vroughness) on an isotropic photon material: uroughness used");
+        return Json{{"roughness", one}, {"remap_roughness", remap}};
+    }
     if (!one.is_number() || (v && !v->is_number())) {
         warn(where, "a textured roughness on this material is not supported; its mean is not known here, 0 used");
         return Json::object();
@@ -138,7 +144,7 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
              {"albedo", reflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
                                     where, out_.warnings)},
              {"ior", indexOfRefraction(p, baseDir_, out_.warnings)}};
-        m.update(roughnessFields(p, false));
+        m.update(roughnessFields(p, false, "", true));
         if (auto albedo = colorValue(p, "albedo", int(SpectrumKind::Reflectance));
             albedo && !(albedo->is_array() && (*albedo)[0] == 0 && (*albedo)[1] == 0 && (*albedo)[2] == 0))
             warn(where, "coateddiffuse: the medium between coat and base (albedo, g, thickness) is left out");
