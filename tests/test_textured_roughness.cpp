@@ -1,4 +1,4 @@
-// A coated material with a roughness map (materials/textured_roughness.cpp): exact at the
+// Coated materials and dielectrics with a roughness map (materials/textured_roughness.cpp): exact at the
 // precomputed levels, a consistent BSDF between them (sampling against quadrature, pdf and
 // weight, reciprocity, the white furnace), close to the material at that roughness, and
 // the scene format's "roughness" texture and "remap_roughness".
@@ -75,6 +75,36 @@ TEST(TexturedRoughness, BetweenLevelsIsAConsistentBsdf) {
     }
 }
 
+// A rough dielectric (index 1.5) with a roughness map reading 0.3: sampling's mean weight
+// is the quadrature of eval |cos| over the sphere (reflection and refraction), and each
+// sample's weight and pdf are eval |cos| / pdf and pdf().
+TEST(TexturedRoughness, DielectricBetweenLevelsIsConsistent) {
+    static const auto levels = makeRoughnessLevels([](float r) { return makeRoughDielectric(kIor, r); });
+    const MaterialPtr m = makeTexturedRoughness(kWhite, uniformMap(0.3f), 1, levels);
+    EXPECT_FALSE(m->twoSided());
+    const MaterialInputs in = tinted(kWhite);
+    Rng rng(5, 0, 0, StreamPurpose::Test);
+    for (float cosO : {0.3f, 0.8f, -0.6f}) {
+        SCOPED_TRACE("cos " + std::to_string(cosO));
+        const Vec3 wo = direction(cosO);
+        const auto mc = estimateBySampling(*m, wo, in, TransportMode::Importance, 17);
+        const Channels quad = integrateSphere(wo.z > 0 ? wo : Vec3(wo.x, wo.y, -wo.z), roughnessToAlpha(0.25f), [&](Vec3 wi) {
+            const Vec3 w = wo.z > 0 ? wi : Vec3(wi.x, wi.y, -wi.z);
+            return m->eval(wo, w, in, TransportMode::Importance) * std::abs(w.z);
+        });
+        EXPECT_NEAR(mc.mean[0], quad[0], tolerance(quad[0]));
+        for (int i = 0; i < 20000; ++i) {
+            const float uLobe = rng.uniform();
+            auto sample = m->sample(wo, uLobe, {rng.uniform(), rng.uniform()}, in, TransportMode::Radiance);
+            if (!sample) continue;
+            const float p = m->pdf(wo, sample->wi, in);
+            ASSERT_NEAR(sample->pdf, p, 1e-4f * p);
+            const Color f = m->eval(wo, sample->wi, in, TransportMode::Radiance) * (std::abs(sample->wi.z) / p);
+            ASSERT_NEAR(sample->weight[0], f[0], 1e-4f * f[0] + 1e-7f);
+        }
+    }
+}
+
 // The blend against the material made at that roughness: albedo and lobe shape (binned
 // by 200k samples each; L1 summed over bins, over the albedo). Measured at 0.05, 0.1 and
 // 0.3, coloured base: albedos within 0.002, L1 at most 0.03 (the bins' own noise ~0.02).
@@ -118,6 +148,11 @@ TEST(TexturedRoughnessScene, RoughnessTextureAndRemap) {
     const MaterialPtr half = makeCoatedDiffuse(Color(0.5f), kIor, 0.5f);
     const Vec3 wo = direction(0.6f), wi = direction(0.8f, 2.5f);
     EXPECT_FLOAT_EQ(remapped.pdf(wo, wi, tinted(Color(0.5f))), half->pdf(wo, wi, tinted(Color(0.5f))));
+    // A dielectric takes a roughness map too; a thin one, whose faces are smooth, none.
+    EXPECT_TRUE(test::loadedMaterial({{"type", "dielectric"}, {"roughness", {{"texture", "textures/wood.png"}}}}).textured());
+    test::expectError(
+        [](Json& doc) { doc["materials"]["glass"] = {{"type", "dielectric"}, {"thin", true}, {"roughness", 0.2}}; },
+        "materials.glass.roughness", "must be 0 for a thin dielectric (its faces are smooth)");
     test::expectError(
         [](Json& doc) { doc["materials"]["gloss"]["roughness"] = 1.5; }, "materials.gloss.roughness", "must be in [0, 1]");
 }

@@ -125,13 +125,13 @@ MaterialPtr readCoatedConductor(JsonObject& obj, LoadContext& ctx) {
     return makeCoatedConductor(std::move(conductor), ior, roughness);
 }
 
-// A boundary (rough if roughness > 0), or with "thin": true a thin slab, whose faces are
-// smooth.
-MaterialPtr readDielectric(JsonObject& obj) {
+// A boundary (rough if roughness > 0, which may be a roughness map), or with "thin": true a
+// thin slab, whose faces are smooth.
+MaterialPtr readDielectric(JsonObject& obj, LoadContext& ctx, int family) {
     float ior = iorField(obj);
-    float roughness = roughnessField(obj, 0.0f);
-    if (!obj.boolean("thin", false)) return makeRoughDielectric(ior, roughness);
-    if (roughness > 0) obj.required("roughness").fail("must be 0 for a thin dielectric (its faces are smooth)");
+    if (!obj.boolean("thin", false))
+        return withRoughness(obj, ctx, Color(1.0f), family, ior, [&](float r) { return makeRoughDielectric(ior, r); });
+    if (roughnessField(obj, 0.0f) > 0) obj.required("roughness").fail("must be 0 for a thin dielectric (its faces are smooth)");
     return makeThinDielectric(ior);
 }
 
@@ -182,7 +182,7 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
     MaterialPtr m;
     switch (type) {
         case Diffuse: m = makeDiffuse(colorField(obj, "albedo", Color(0.8f), ctx)); break;
-        case Dielectric: m = readDielectric(obj); break;
+        case Dielectric: m = readDielectric(obj, ctx, type); break;
         case Mirror: m = makeMirror(colorField(obj, "reflectance", Color(1.0f), ctx)); break;
         case Conductor: m = readConductor(obj, ctx); break;
         case Plastic:

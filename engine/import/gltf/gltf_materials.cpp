@@ -62,15 +62,6 @@ double iorOf(Context& ctx, const Source& s) {
     return 1.5;
 }
 
-// A roughness photon takes as a number only (dielectric).
-double constantRoughness(Context& ctx, const Source& s, const char* what) {
-    const auto& pbr = s.m.pbrMetallicRoughness;
-    if (pbr.metallicRoughnessTexture.index >= 0 && pbr.roughnessFactor > 0)
-        ctx.warn(s.pointer + "/pbrMetallicRoughness/metallicRoughnessTexture",
-                 std::string("photon's ") + what + " takes a constant roughness: roughnessFactor used without the texture");
-    return fraction(pbr.roughnessFactor);
-}
-
 // KHR_materials_clearcoat on the metal: a clear coat of index 1.5 (the extension's) over the
 // conductor, as photon's coated_conductor, in the share clearcoatFactor. The dielectric
 // part keeps its own coat (coated_diffuse's), so a second coat over it is left out.
@@ -131,7 +122,7 @@ Json volumeMedium(Context& ctx, const std::string& pointer, const tinygltf::Valu
 // KHR_materials_transmission (and KHR_materials_volume): glass.
 Json transmissiveMaterial(Context& ctx, const Source& s, const tinygltf::Value& transmission, MaterialMapping& r) {
     const std::string ext = s.pointer + "/extensions/";
-    const double roughness = constantRoughness(ctx, s, "dielectric");
+    const Json roughness = packedFraction(ctx, s, s.m.pbrMetallicRoughness.roughnessFactor, "g");
     Json glass = {{"type", "dielectric"}, {"ior", iorOf(ctx, s)}, {"roughness", roughness}};
     if (transmission.Has("transmissionTexture"))
         ctx.warn(ext + "KHR_materials_transmission/transmissionTexture", "ignored; transmissionFactor used");
@@ -149,7 +140,7 @@ Json transmissiveMaterial(Context& ctx, const Source& s, const tinygltf::Value& 
     }
     // Without KHR_materials_volume the surface is thin-walled (KHR_materials_transmission:
     // "the material is thin"): photon's thin dielectric, which must be smooth.
-    if (roughness > 0) {
+    if (!roughness.is_number() || roughness.get<double>() > 0) {
         ctx.warn(ext + "KHR_materials_transmission",
                  "a thin-walled rough transmitter is rendered as the boundary of a rough solid dielectric");
         return glass;

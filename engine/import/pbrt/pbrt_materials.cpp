@@ -156,7 +156,7 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         if (type == "thindielectric") {
             m["thin"] = true;
         } else {
-            m.update(roughnessFields(p, false));
+            m.update(roughnessFields(p, false, "", true));
         }
     } else if (type == "conductor" || type == "coatedconductor") {
         const bool coated = type == "coatedconductor";
