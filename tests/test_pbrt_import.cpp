@@ -253,6 +253,22 @@ MakeNamedMaterial "varnish" "string type" "coateddiffuse" "texture roughness" "b
     EXPECT_EQ(m["both"], Json::parse(R"({"type": "mix", "materials": ["gold", "plastic"], "amount": 0.25})"));
 }
 
+// An imagemap's "encoding": "linear" is kept (the image read without the sRGB curve); a
+// gamma other than sRGB's is warned and read as sRGB.
+TEST(PbrtImport, ImagemapEncoding) {
+    const ImportedScene s = import(R"(
+Texture "plain" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "linear"
+Texture "curved" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "gamma 2.2"
+MakeNamedMaterial "m" "string type" "diffuse" "texture reflectance" "plain"
+MakeNamedMaterial "n" "string type" "diffuse" "texture reflectance" "curved"
+)");
+    EXPECT_EQ(s.document["materials"]["m"]["albedo"], Json::parse(R"({"type": "image", "file": "a.png", "encoding": "linear"})"));
+    EXPECT_FALSE(s.document["materials"]["n"]["albedo"].contains("encoding"));
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0], "scene.pbrt:14: Texture \"curved\": encoding \"gamma 2.2\" not honoured (read as sRGB; float "
+                             "images are linear either way)");
+}
+
 // coatedconductor becomes photon's coated_conductor: the interface's index and roughness
 // (alpha = sqrt(0.01) remapped, so photon's perceptual roughness is sqrt(0.1)), the metal's
 // index as pbrt gives it (the material divides it by the coat's) and roughness; a constant

@@ -55,6 +55,27 @@ TEST(TextureChannels, EachChannelReadsAsStored) {
     EXPECT_NEAR(alphaAt({{"texture", "packed.png"}}), 0.8f, 1e-6f);
 }
 
+// "encoding": "linear" reads an 8-bit colour as stored; by default it goes through the sRGB
+// curve (51 / 255 = 0.2 stored is 0.0331 linear).
+TEST(TextureChannels, EncodingLinearSkipsTheSrgbCurve) {
+    auto albedoAt = [](const Json& texture) {
+        Json doc = {{"camera", {{"position", {0, 0, 3}}, {"look_at", {0, 0, 0}}, {"fov", 30}}},
+                    {"materials", {{"m", {{"type", "diffuse"}, {"albedo", texture}}}}},
+                    {"shapes", {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", "m"}}}},
+                    {"lights", {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", {1, 1, 1}}}}}};
+        return loadSceneJson(doc.dump(), folder().dir).materials[0]->tint().eval({0.5f, 0.5f});
+    };
+    EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}, {"encoding", "linear"}}).x, 0.2f, 1e-6f);
+    EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}, {"encoding", "srgb"}}).x, 0.0331f, 1e-4f);
+    EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}}).x, 0.0331f, 1e-4f);
+    try {
+        albedoAt({{"texture", "rgb.png"}, {"encoding", "gamma"}});
+        ADD_FAILURE() << "loaded";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.path(), "materials.m.albedo.encoding");
+    }
+}
+
 TEST(TextureChannels, ChannelsOfOneImageAreCachedApart) {
     SceneDescription d = quadScene({{"alpha", {{"type", "product"},
                                                {"a", {{"texture", "packed.png"}, {"channel", "r"}}},

@@ -35,8 +35,13 @@ ImageChannels readChannels(JsonObject& obj, const ParamKind& kind) {
 }
 
 // {"texture": file} or {"type": "image", "file": file}, with a uv mapping and a channel.
+// "encoding": "linear" reads an integer image's colour as stored instead of through the
+// sRGB curve (pbrt-v4's imagemap "encoding"; a single channel is read as stored anyway).
 std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, LoadContext& ctx, const ParamKind& kind) {
-    const ImageChannels channels = readChannels(obj, kind);
+    ImageChannels channels = readChannels(obj, kind);
+    if (auto encoding = obj.optional("encoding"))
+        if (encoding->choice({"srgb", "linear"}, "encoding") == 1 && channels == ImageChannels::Color)
+            channels = ImageChannels::Data;
     auto image = loadImage(obj.required(fileKey), channels, ctx);
     return makeUvMappedTexture(image, readUvMapping(obj));
 }

@@ -313,9 +313,11 @@ void SceneBuilder::texture(const Directive& d) {
         t = {{"type", "image"}, {"file", file}};
         mapping(t);
         const std::string encoding = p.string("encoding", "sRGB");
-        if (encoding != "sRGB")
+        if (encoding == "linear")
+            t["encoding"] = "linear";
+        else if (encoding != "sRGB")
             warn(d.where, "Texture \"" + name + "\": encoding \"" + encoding +
-                              "\" not honoured (8-bit images are read as sRGB, float images as linear)");
+                              "\" not honoured (read as sRGB; float images are linear either way)");
         if (p.boolean("invert", false)) unsupported(d, "Texture \"" + name + "\": \"invert\" is not supported", "not inverted");
         const std::string wrap = p.string("wrap", "repeat");
         if (wrap != "repeat") warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
