@@ -10,6 +10,7 @@
 #include "import/gltf/gltf_import.h"
 #include "scene/scene.h"
 #include "scene_loader_fixture.h"
+#include "texture/textures.h"
 
 namespace tinygltf {
 std::string base64_encode(unsigned char const* bytes, unsigned int length);  // in libtinygltf
@@ -492,6 +493,35 @@ TEST(GltfImport, TextureTransformKeepsTheFlip) {
     EXPECT_EQ(s.document["shapes"][0]["emission"]["uv_scale"], Json({1.0, 0.5}));
     EXPECT_EQ(s.document["shapes"][0]["emission"]["uv_offset"], Json({0.0, 0.0}));
     expectNear(emissionAt(load(s), 0.5f, 0.5f), {0, 1, 0});
+}
+
+// A rotation too (22.5 degrees, as the Khronos TextureTransformTest model), with an uneven
+// scale and an offset: the uv photon looks up is, at every point, the glTF lookup
+// uv' = T R S uv with R = [cos sin; -sin cos] in glTF's top-down v (glTF issue 1563),
+// carried into photon's v (1 - v).
+TEST(GltfImport, TextureTransformRotates) {
+    Gltf g;
+    g.camera();
+    const int texture = g.image(redOverGreenPng());
+    g = emissiveSquare(texture, g);
+    const double angle = 0.392699, su = 1.5, sv = 0.75, ou = 0.2, ov = 0.1;
+    g.doc["materials"][0]["emissiveTexture"]["extensions"] = {
+        {"KHR_texture_transform", {{"scale", {su, sv}}, {"offset", {ou, ov}}, {"rotation", angle}}}};
+    const ImportedScene s = import(g);
+    const Json& e = s.document["shapes"][0]["emission"];
+    UvMapping m;
+    m.scale = {e["uv_scale"][0].get<float>(), e["uv_scale"][1].get<float>()};
+    m.offset = {e["uv_offset"][0].get<float>(), e["uv_offset"][1].get<float>()};
+    m.rotation = e["uv_rotation"].get<float>() * 3.14159265f / 180;
+    for (Vec2 p : {Vec2{0, 0}, Vec2{1, 0}, Vec2{0.3f, 0.8f}, Vec2{0.9f, 0.4f}}) {
+        const double gu = p.x, gv = 1 - p.y;
+        const double x = su * gu, y = sv * gv;
+        const double lu = std::cos(angle) * x + std::sin(angle) * y + ou, lv = -std::sin(angle) * x + std::cos(angle) * y + ov;
+        const Vec2 q = m.apply(p);
+        EXPECT_NEAR(q.x, lu, 1e-5) << p.x << ", " << p.y;
+        EXPECT_NEAR(q.y, 1 - lv, 1e-5) << p.x << ", " << p.y;
+    }
+    EXPECT_NO_THROW(load(s));
 }
 
 TEST(GltfImport, ImageUriMustStayInsideTheFolder) {

@@ -17,6 +17,8 @@ struct Folder {
         // One RGBA texel (51, 102, 153, 204): 0.2, 0.4, 0.6, 0.8 as stored.
         test::writeImage<uint8_t>(dir / "packed.png", 1, 1, 4, OIIO::TypeDesc::UINT8, {51, 102, 153, 204});
         test::writeImage<uint8_t>(dir / "rgb.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {51, 102, 153});
+        // Red on the left half (u < 0.5), blue on the right.
+        test::writeImage<uint8_t>(dir / "halves.png", 2, 1, 3, OIIO::TypeDesc::UINT8, {255, 0, 0, 0, 0, 255});
         // Alpha rising along u, texel centres 0.3 and 0.7 symmetric about 0.5 (77 + 178 = 255).
         test::writeImage<uint8_t>(dir / "ramp.png", 4, 1, 4, OIIO::TypeDesc::UINT8,
                                   {9, 9, 9, 26, 9, 9, 9, 77, 9, 9, 9, 178, 9, 9, 9, 229});
@@ -74,6 +76,23 @@ TEST(TextureChannels, EncodingLinearSkipsTheSrgbCurve) {
     } catch (const SceneError& e) {
         EXPECT_EQ(e.path(), "materials.m.albedo.encoding");
     }
+}
+
+// "uv_rotation" turns the lookup counter-clockwise (v up) after the scale: at 90 degrees
+// uv (0.25, 0.25) reads (-0.25, 0.25), the right (blue) half; (0.25, 0.75) reads (-0.75,
+// 0.25), the left (red) half.
+TEST(TextureChannels, UvRotationTurnsTheLookup) {
+    auto colourAt = [](const Json& texture, Vec2 uv) {
+        Json doc = {{"camera", {{"position", {0, 0, 3}}, {"look_at", {0, 0, 0}}, {"fov", 30}}},
+                    {"materials", {{"m", {{"type", "diffuse"}, {"albedo", texture}}}}},
+                    {"shapes", {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", "m"}}}},
+                    {"lights", {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", {1, 1, 1}}}}}};
+        return loadSceneJson(doc.dump(), folder().dir).materials[0]->tint().eval(uv);
+    };
+    const Json turned = {{"texture", "halves.png"}, {"uv_rotation", 90}};
+    EXPECT_GT(colourAt({{"texture", "halves.png"}}, {0.25f, 0.25f}).x, 0.9f);
+    EXPECT_GT(colourAt(turned, {0.25f, 0.25f}).z, 0.9f);
+    EXPECT_GT(colourAt(turned, {0.25f, 0.75f}).x, 0.9f);
 }
 
 TEST(TextureChannels, ChannelsOfOneImageAreCachedApart) {

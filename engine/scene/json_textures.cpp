@@ -20,6 +20,7 @@ UvMapping readUvMapping(JsonObject& obj) {
     UvMapping m;
     if (auto s = obj.optional("uv_scale")) m.scale = s->vec2(Range::any());
     if (auto o = obj.optional("uv_offset")) m.offset = o->vec2(Range::any());
+    if (auto r = obj.optional("uv_rotation")) m.rotation = r->number(Range::closed(-360, 360)) * kPi / 180.0f;
     return m;
 }
 

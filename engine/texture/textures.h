@@ -2,17 +2,25 @@
 // another texture, a checkerboard, a product and a mix. Each takes constants or textures
 // as its inputs (ColorParam, FloatParam), so they nest.
 #pragma once
+#include <cmath>
 #include <memory>
 #include "texture/color_param.h"
 #include "texture/float_param.h"
 
 namespace photon {
 
-// uv -> uv * scale + offset, then the texture (pbrt-v4's UVMapping: su, sv, du, dv).
+// uv -> uv * scale, turned counter-clockwise by `rotation` (radians; v up), + offset, then
+// the texture (pbrt-v4's UVMapping: su, sv, du, dv; glTF's KHR_texture_transform: T R S).
 struct UvMapping {
     Vec2 scale{1, 1}, offset{0, 0};
-    Vec2 apply(Vec2 uv) const { return {uv.x * scale.x + offset.x, uv.y * scale.y + offset.y}; }
-    bool identity() const { return scale.x == 1 && scale.y == 1 && offset.x == 0 && offset.y == 0; }
+    float rotation = 0;
+    Vec2 apply(Vec2 uv) const {
+        const Vec2 s{uv.x * scale.x, uv.y * scale.y};
+        if (rotation == 0) return {s.x + offset.x, s.y + offset.y};
+        const float c = std::cos(rotation), n = std::sin(rotation);
+        return {c * s.x - n * s.y + offset.x, n * s.x + c * s.y + offset.y};
+    }
+    bool identity() const { return scale.x == 1 && scale.y == 1 && offset.x == 0 && offset.y == 0 && rotation == 0; }
 };
 
 // `texture` looked up at mapping.apply(uv): an image tiled or shifted without a copy of it.

@@ -2,6 +2,7 @@
 // is a file next to the glTF; an embedded one (data: uri, or a .glb's buffer view) is kept
 // as its encoded bytes in ImportedScene::files, which photon's image reader decodes from
 // memory, so photon-convert can write it out unchanged.
+#include <cmath>
 #include <filesystem>
 #include "import/gltf/gltf_parts.h"
 
@@ -89,16 +90,19 @@ Json textureReference(Context& ctx, const TextureSlot& slot, const char* channel
                 ctx.warn(pointer, "unknown texture extension ignored");
                 continue;
             }
-            // uv' = scale * uv + offset in glTF's top-down v; photon's v runs up (v_photon =
-            // 1 - v_glTF), so the same lookup is scale * v + (1 - scale_v - offset_v).
+            // uv' = T R S uv in glTF's top-down v, R turning u toward -v by `rotation` (the
+            // matrix the sample model and Blender use, KhronosGroup/glTF issue 1563). In
+            // photon's v, which runs up (v_photon = 1 - v_glTF), that is the same scale, the
+            // same angle counter-clockwise, and the offset (o_u + sin s_v, 1 - cos s_v - o_v).
             const double su = value.Has("scale") ? value.Get("scale").Get(0).GetNumberAsDouble() : 1.0;
             const double sv = value.Has("scale") ? value.Get("scale").Get(1).GetNumberAsDouble() : 1.0;
             const double ou = value.Has("offset") ? value.Get("offset").Get(0).GetNumberAsDouble() : 0.0;
             const double ov = value.Has("offset") ? value.Get("offset").Get(1).GetNumberAsDouble() : 0.0;
-            if (numberIn(value, "rotation", 0.0) != 0.0) ctx.warn(pointer + "/rotation", "uv rotation is ignored");
+            const double rotation = numberIn(value, "rotation", 0.0);
             if (value.Has("texCoord")) ctx.warn(pointer + "/texCoord", "photon reads TEXCOORD_0 only; TEXCOORD_0 used");
             t["uv_scale"] = {su, sv};
-            t["uv_offset"] = {ou, 1.0 - sv - ov};
+            t["uv_offset"] = {ou + std::sin(rotation) * sv, 1.0 - std::cos(rotation) * sv - ov};
+            if (rotation != 0) t["uv_rotation"] = rotation * 180 / 3.14159265358979323846;
         }
     return t;
 }
