@@ -8,6 +8,7 @@
 #include <utility>
 #include "description/shape_transform.h"
 #include "import/pbrt/pbrt_builder.h"
+#include "import/pbrt/loop_subdivision.h"
 #include "import/pbrt/pbrt_quadrics.h"
 #include "scene/mesh_loader.h"
 #include "scene/scene_paths.h"
@@ -15,6 +16,9 @@
 namespace photon::pbrt {
 
 namespace {
+
+// A bound on what a loopsubdiv may grow to: 16M triangles, ~1.3 GB as a mesh.
+constexpr int64_t kMaxSubdividedTriangles = int64_t(1) << 24;
 
 bool isIdentity(const Transform& t) { return t.m == Transform().m; }
 
@@ -191,8 +195,12 @@ void SceneBuilder::shape(const Directive& d) {
             mesh.indices = std::move(indices);
         }
         if (type == "loopsubdiv") {
-            p.find("levels");
-            warn(d.where, "loopsubdiv: rendered as its control mesh, without subdivision");
+            // pbrt-v4's default is 3 levels; each multiplies the triangles by four.
+            const int levels = int(p.number("levels", 3));
+            if (levels < 0 || double(mesh.triangleCount()) * std::pow(4.0, levels) > double(kMaxSubdividedTriangles))
+                fail(d.where, "loopsubdiv: " + std::to_string(levels) + " levels of " + std::to_string(mesh.triangleCount()) +
+                                  " triangles would make more than " + std::to_string(kMaxSubdividedTriangles) + " (or levels < 0)");
+            mesh = loopSubdivide(mesh, levels);
         }
         if (p.has("faceIndices")) p.find("faceIndices");  // per-face material ids; one material per shape here
         orient(mesh, state_.reverseOrientation);
