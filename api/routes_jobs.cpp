@@ -38,6 +38,10 @@ server::SubmitOptions submitOptions(const httplib::Request& req) {
 void addFormFields(server::SubmitOptions& options, const httplib::Request& req, const UploadFields& fields) {
     if (!req.has_param("name")) options.name = fields.name.value_or(server::nameFromSceneFile(fields.sceneFileName));
     if (!req.has_param("camera") && fields.camera) options.camera = fields.camera;
+    if (!req.has_param("lenient") && fields.lenient) {
+        if (*fields.lenient != "true" && *fields.lenient != "false") throwBadRequest("form field lenient: must be true or false");
+        options.lenient = *fields.lenient == "true";
+    }
     options.labels.insert(options.labels.end(), fields.labels.begin(), fields.labels.end());
 }
 

@@ -50,7 +50,8 @@ public:
                 upload_.setSceneFileName(*stored);
                 target_ = Target::Scene;
                 fields_.sceneFileName = part.filename;
-            } else if (part.filename.empty() && (part.name == "name" || part.name == "label" || part.name == "camera")) {
+            } else if (part.filename.empty() &&
+                       (part.name == "name" || part.name == "label" || part.name == "camera" || part.name == "lenient")) {
                 target_ = Target::Field;
                 fieldName_ = part.name;
             } else if (!part.filename.empty()) {
@@ -58,7 +59,8 @@ public:
                 target_ = Target::Asset;
             } else {
                 throw ServiceError(ErrorKind::BadRequest, "form field \"" + part.name +
-                                                              "\" is neither the scene, a file, \"name\", \"label\" nor \"camera\"");
+                                                              "\" is neither the scene, a file, \"name\", \"label\", \"camera\" "
+                                                              "nor \"lenient\"");
             }
         });
     }
@@ -107,6 +109,7 @@ private:
         if (target_ != Target::Field) return;
         if (fieldName_ == "name") fields_.name = field_;
         else if (fieldName_ == "camera") fields_.camera = field_;
+        else if (fieldName_ == "lenient") fields_.lenient = field_;
         else fields_.labels.push_back(field_);
         field_.clear();
         target_ = Target::None;

@@ -3,7 +3,7 @@
 //   - multipart/form-data with a part named "scene" (the scene JSON, or a .pbrt, .gltf or
 //     .glb file by its file name's extension; its bytes kept as sent) and one file part per
 //     asset, whose filename is the relative path the scene uses (e.g. "meshes/x.obj"), and
-//     optionally text fields "name", "label" (repeated) and "camera" for the job.
+//     optionally text fields "name", "label" (repeated), "camera" and "lenient" for the job.
 // Asset bytes stream straight to the staging folder; nothing large is held in memory. The
 // scene text is held to its own limit, and every part (name, file name, bytes) feeds a
 // digest that recognises a retried request.
@@ -34,6 +34,7 @@ struct UploadFields {
     std::optional<std::string> name;  // a "name" field
     std::vector<std::string> labels;  // each "label" field
     std::optional<std::string> camera;  // a "camera" field: an imported glTF's camera
+    std::optional<std::string> lenient;  // a "lenient" field: "true" or "false"
     std::string sceneFileName;        // the scene part's file name, if it has one
 };
 

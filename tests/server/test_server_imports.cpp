@@ -258,6 +258,16 @@ TEST_F(ImportsTest, LenientRendersWhatAStrictImportRefuses) {
               "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface); rendered as a grey "
               "diffuse material (lenient import)");
     EXPECT_EQ(waitForStatus(job["id"], "completed")["settings"]["lenient"], true);
+    // The same as a form field; the query, where given, wins.
+    httplib::MultipartFormDataItems withField = items;
+    withField.push_back({"lenient", "true", "", ""});
+    r = client().Post("/api/v1/jobs", withField);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    EXPECT_EQ(json::parse(r->body)["settings"]["lenient"], true);
+    EXPECT_EQ(problemOf(client().Post("/api/v1/jobs?lenient=false", withField))["status"], 400);
+    withField.back().content = "maybe";
+    EXPECT_EQ(problemOf(client().Post("/api/v1/jobs", withField))["error"], "form field lenient: must be true or false");
 }
 
 TEST_F(ImportsTest, AnUnknownSceneExtensionIs400NamingTheAcceptedOnes) {
