@@ -428,12 +428,19 @@ TEST(GltfImport, Errors) {
     EXPECT_EQ(errorOf([&] { import(noCamera); }),
               "scene.gltf: the glTF has no camera (no node of its scene has a \"camera\"); photon needs one to render from");
 
+    // An orthographic camera: its view 2 ymag high, xmag / ymag wide; without magnification, refused.
     Gltf ortho;
-    ortho.camera({{"translation", {0, 0, 5}}}, {{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}});
+    ortho.camera({{"translation", {0, 0, 5}}}, {{"type", "orthographic"}, {"orthographic", {{"xmag", 2}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}});
     ortho.pointLight();
     ortho.node({{"mesh", ortho.mesh(kTriangle, {0, 1, 2})}});
+    const Json camera = import(ortho).document["camera"];
+    EXPECT_EQ(camera["type"], "orthographic");
+    EXPECT_EQ(camera["view_height"], 2.0);
+    EXPECT_EQ(camera["resolution"], Json({1440, 720}));
+    EXPECT_FALSE(camera.contains("fov"));
+    ortho.doc["cameras"][0]["orthographic"]["ymag"] = 0;
     EXPECT_EQ(errorOf([&] { import(ortho); }),
-              "scene.gltf: /cameras/0/type: \"orthographic\" cameras are not supported (photon's cameras are perspective)");
+              "scene.gltf: /cameras/0/orthographic: xmag and ymag must be > 0 for photon (the view's half width and height)");
 
     Gltf dark;
     dark.camera();

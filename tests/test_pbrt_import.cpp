@@ -482,6 +482,25 @@ Shape "sphere"
                  "\"texture\"");
 }
 
+// An orthographic camera: the screen [-aspect, aspect] x [-1, 1] (the shorter axis spans
+// 2) in camera space, which the camera transform scales: under Scale 0.5 (world to camera)
+// the view is 4 units high; a lens is refused.
+TEST(PbrtImport, OrthographicCamera) {
+    const Json camera = importPbrt(writeScene("ortho.pbrt", R"(Scale 0.5 0.5 0.5
+LookAt 0 0 5  0 0 0  0 1 0
+Camera "orthographic"
+Film "rgb" "integer xresolution" [64] "integer yresolution" [32]
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere"
+)")).document["camera"];
+    EXPECT_EQ(camera["type"], "orthographic");
+    EXPECT_NEAR(camera["view_height"].get<double>(), 4.0, 1e-5);
+    EXPECT_FALSE(camera.contains("fov"));
+    EXPECT_STREQ(importError("Camera \"orthographic\" \"float lensradius\" [0.1]\nWorldBegin\n").what(),
+                 "bad.pbrt:1: Camera \"orthographic\": a lens (lensradius) is not supported");
+}
+
 // An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
 // flips x) "matrix" with the linear part as written; a scale is refused.
 TEST(PbrtImport, InfiniteLightsFrame) {

@@ -1,4 +1,4 @@
-// Perspective camera with an optional thin lens.
+// Perspective camera with an optional thin lens, or an orthographic one.
 #pragma once
 #include "math/frame.h"
 #include "math/sampling.h"
@@ -41,12 +41,15 @@ public:
     bool hasLens() const { return apertureRadius_ > 0; }
     int width() const { return width_; }
     int height() const { return height_; }
-    // Side of one pixel at unit distance along the view axis.
-    float pixelAngle() const { return pixelAngle_; }
+    // Side of one pixel where a camera ray has travelled `distance` (along the view axis, and
+    // past mirrors): grows with it through a perspective camera, not through an orthographic one.
+    float pixelFootprint(float distance) const { return orthographic_ ? pixelSize_ : distance * pixelAngle_; }
 
 private:
     Vec3 position_, right_, up_, forward_;
     float tanHalfFov_ = 1, aspect_ = 1, pixelAngle_ = 0, apertureRadius_ = 0, focusDistance_ = 1;
+    bool orthographic_ = false;
+    float halfHeight_ = 1, pixelSize_ = 0;  // orthographic: half the view's height, one pixel's side
     int width_ = 1, height_ = 1;
     PixelFilter filter_;
 };

@@ -22,6 +22,10 @@ namespace photon {
 struct CameraDescription {
     Vec3 position{0, 1, 6.8f}, lookAt{0, 1, 0}, up{0, 1, 0};
     float fovDegrees = 19.5f;  // vertical field of view
+    // An orthographic camera: parallel rays along the view, the image viewHeight scene
+    // units high (fovDegrees unused).
+    bool orthographic = false;
+    float viewHeight = 2;
     int width = 512, height = 512;
     float apertureRadius = 0;  // 0: pinhole
     float focusDistance = 1;   // distance to the plane in focus when apertureRadius > 0

@@ -61,12 +61,20 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
 CameraDescription readCamera(const JsonValue& value) {
     JsonObject obj = value.object();
     CameraDescription c;
-    obj.choice("type", 0, {"perspective"}, "type");
+    c.orthographic = obj.choice("type", 0, {"perspective", "orthographic"}, "type") == 1;
     c.position = obj.required("position").vec3();
     c.lookAt = obj.required("look_at").vec3();
     if (auto up = obj.optional("up")) c.up = up->direction();
     checkOrientation(obj, c);
-    c.fovDegrees = obj.required("fov").number(Range::open(0, 180));
+    if (c.orthographic) {
+        c.viewHeight = obj.required("view_height").number(Range::positive());
+        if (auto fov = obj.optional("fov")) fov->fail("is not used by an orthographic camera (its view is \"view_height\" high)");
+        if (auto lens = obj.optional("aperture_radius"); lens && lens->number() != 0)
+            lens->fail("must be 0 for an orthographic camera (it has no lens)");
+    } else {
+        c.fovDegrees = obj.required("fov").number(Range::open(0, 180));
+        if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");
+    }
     if (auto res = obj.optional("resolution")) readResolution(*res, c);
     c.apertureRadius = obj.number("aperture_radius", 0, Range::nonNegative());
     // By default the point looked at is in focus.

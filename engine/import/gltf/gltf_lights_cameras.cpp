@@ -25,26 +25,32 @@ Json cameraJson(Context& ctx, int node, const Matrix4& toWorld) {
         ctx.fail(pointerTo("nodes", node) + "/camera", "names camera " + std::to_string(index) + ", which does not exist");
     const tinygltf::Camera& camera = ctx.model.cameras[index];
     const std::string pointer = pointerTo("cameras", index);
-    if (camera.type != "perspective")
-        ctx.fail(pointer + "/type", "\"" + camera.type + "\" cameras are not supported (photon's cameras are perspective)");
-    const double yfov = camera.perspective.yfov;
-    if (!(yfov > 0 && yfov < std::numbers::pi)) ctx.fail(pointer + "/perspective/yfov", "must be in (0, pi)");
+    const bool orthographic = camera.type == "orthographic";
+    if (camera.type != "perspective" && !orthographic)
+        ctx.fail(pointer + "/type", "\"" + camera.type + "\" cameras are not supported (photon's cameras are perspective or orthographic)");
+    const double yfov = camera.perspective.yfov, xmag = camera.orthographic.xmag, ymag = camera.orthographic.ymag;
+    if (!orthographic && !(yfov > 0 && yfov < std::numbers::pi)) ctx.fail(pointer + "/perspective/yfov", "must be in (0, pi)");
+    if (orthographic && !(xmag > 0 && ymag > 0))
+        ctx.fail(pointer + "/orthographic", "xmag and ymag must be > 0 for photon (the view's half width and height)");
     // Without an aspect ratio glTF leaves it to the viewport; photon's default viewport is
-    // 1280 x 720. With one: 720 rows and as many columns as it asks for.
+    // 1280 x 720. With one (an orthographic camera's xmag / ymag): 720 rows and as many
+    // columns as it asks for.
     int width = 1280, height = 720;
-    if (const double aspect = camera.perspective.aspectRatio; aspect > 0)
+    if (const double aspect = orthographic ? xmag / ymag : camera.perspective.aspectRatio; aspect > 0)
         width = int(std::clamp(std::lround(720 * aspect), 1L, 16384L));
     const auto position = toWorld.point(0, 0, 0);
     const auto forward = normalised(toWorld.direction(0, 0, -1));
     const auto up = normalised(toWorld.direction(0, 1, 0));
     if (!std::isfinite(forward[0] + forward[1] + forward[2]) || !std::isfinite(up[0] + up[1] + up[2]))
         ctx.fail(pointerTo("nodes", node), "the camera's node matrix is degenerate");
-    return {{"type", "perspective"},
-            {"position", vec(position)},
-            {"look_at", vec({position[0] + forward[0], position[1] + forward[1], position[2] + forward[2]})},
-            {"up", vec(up)},
-            {"fov", degrees(yfov)},
-            {"resolution", {width, height}}};
+    Json cam = {{"type", orthographic ? "orthographic" : "perspective"},
+                {"position", vec(position)},
+                {"look_at", vec({position[0] + forward[0], position[1] + forward[1], position[2] + forward[2]})},
+                {"up", vec(up)}};
+    if (orthographic) cam["view_height"] = 2 * ymag;
+    else cam["fov"] = degrees(yfov);
+    cam["resolution"] = {width, height};
+    return cam;
 }
 
 Json lightJson(Context& ctx, int index, int node, const Matrix4& toWorld) {

@@ -119,6 +119,7 @@ private:
         bool seen = false;
         Transform cameraToWorld;
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
+        bool orthographic = false;
         std::optional<std::vector<double>> screenWindow;
         Location where;
         // photon's "filter": pbrt-v4's default Gaussian (radius 1.5, sigma 0.5; written by

@@ -11,17 +11,22 @@ constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
 void SceneBuilder::camera(const Directive& d) {
     Params p(d);
-    if (d.strings.at(0) != "perspective")
-        fail(d.where, "Camera \"" + d.strings[0] + "\" is not supported (photon has perspective cameras only)");
+    if (d.strings.at(0) != "perspective" && d.strings.at(0) != "orthographic")
+        fail(d.where, "Camera \"" + d.strings[0] + "\" is not supported (photon has perspective and orthographic cameras)");
+    camera_.orthographic = d.strings[0] == "orthographic";
     if (std::abs(state_.ctm.determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
     camera_.seen = true;
     camera_.where = d.where;
     // The CTM is camera-from-world here; pbrt names its inverse "camera".
     camera_.cameraToWorld = state_.ctm.inverse();
     coordinateSystems_["camera"] = camera_.cameraToWorld;
-    camera_.fov = p.number("fov", 90);
-    if (!(camera_.fov > 0 && camera_.fov < 180)) fail(d.where, "Camera: fov must be in (0, 180)");
+    if (!camera_.orthographic) {
+        camera_.fov = p.number("fov", 90);
+        if (!(camera_.fov > 0 && camera_.fov < 180)) fail(d.where, "Camera: fov must be in (0, 180)");
+    }
     camera_.lensRadius = p.number("lensradius", 0);
+    if (camera_.orthographic && camera_.lensRadius > 0)
+        fail(d.where, "Camera \"orthographic\": a lens (lensradius) is not supported");
     camera_.focalDistance = p.number("focaldistance", 1e6);
     if (p.has("screenwindow")) camera_.screenWindow = p.numbers("screenwindow", {"float"});
     // The frame aspect ratio only matters with a screen window, which is checked against it.
@@ -124,8 +129,9 @@ void SceneBuilder::writeCameraAndRender() {
     const Vec3 position = c.point({0, 0, 0});
     const Vec3 forward = normalize(c.vector({0, 0, 1})), up = normalize(c.vector({0, 1, 0}));
     const Vec3 right = c.vector({1, 0, 0});
-    // pbrt's fov spans the shorter image axis; photon's the vertical one.
-    double tanHalf = std::tan(camera_.fov / 2 / kDegrees);
+    // pbrt's fov (or an orthographic camera's screen, [-1, 1] on that axis) spans the
+    // shorter image axis; photon's the vertical one.
+    double tanHalf = camera_.orthographic ? 1.0 : std::tan(camera_.fov / 2 / kDegrees);
     if (width_ < height_) tanHalf *= double(height_) / width_;
     if (camera_.screenWindow) {
         // A symmetric window of the image's shape scales the view; anything else shifts or
@@ -139,13 +145,18 @@ void SceneBuilder::writeCameraAndRender() {
             fail(camera_.where, "Camera: a screenwindow that is not centred or not of the image's shape is not supported");
         tanHalf *= w[3] / defaultHalfHeight;
     }
-    Json cam = {{"type", "perspective"},
+    Json cam = {{"type", camera_.orthographic ? "orthographic" : "perspective"},
                 {"position", {position.x, position.y, position.z}},
                 {"look_at", {position.x + forward.x, position.y + forward.y, position.z + forward.z}},
-                {"up", {up.x, up.y, up.z}},
-                {"fov", 2 * std::atan(tanHalf) * kDegrees},
-                {"resolution", {width_, height_}},
-                {"filter", camera_.filter.is_null() ? defaultFilter() : camera_.filter}};
+                {"up", {up.x, up.y, up.z}}};
+    if (camera_.orthographic) {
+        // The screen is in camera space, which the camera's transform scales into the world.
+        cam["view_height"] = 2 * tanHalf * double(length(c.vector({0, 1, 0})));
+    } else {
+        cam["fov"] = 2 * std::atan(tanHalf) * kDegrees;
+    }
+    cam["resolution"] = {width_, height_};
+    cam["filter"] = camera_.filter.is_null() ? defaultFilter() : camera_.filter;
     // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
     if (dot(right, cross(forward, up)) < 0) cam["handedness"] = "left";
     if (camera_.lensRadius > 0) {

@@ -34,7 +34,7 @@ float SppmIntegrator::autoRadius(float pathLength) const {
     float pixels = static_cast<float>(width_) * static_cast<float>(height_);
     float discPixels =
         std::sqrt(settings_.autoRadiusPhotons * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
-    return pathLength * scene_->camera().pixelAngle() * std::clamp(discPixels, 1.5f, 16.0f);
+    return scene_->camera().pixelFootprint(pathLength) * std::clamp(discPixels, 1.5f, 16.0f);
 }
 
 Camera::PixelSample SppmIntegrator::startPixel(size_t index, PathSampler& sampler) {
