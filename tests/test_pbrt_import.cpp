@@ -11,6 +11,7 @@
 #include <photon/render.h>
 #include <photon/scene_convert.h>
 #include "import/pbrt/pbrt_import.h"
+#include "pbrt_import_fixture.h"
 #include "materials/fresnel.h"
 #include "scene/ply_mesh.h"
 #include "scene/scene.h"
@@ -20,55 +21,7 @@
 namespace photon {
 namespace {
 
-namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
-
-fs::path scratch() {
-    static const fs::path dir = [] {
-        fs::path d = fs::temp_directory_path() / ("photon-pbrt-import-" + std::to_string(getpid()));
-        fs::remove_all(d);
-        fs::create_directories(d);
-        return d;
-    }();
-    return dir;
-}
-
-fs::path writeScene(const std::string& name, const std::string& text) {
-    const fs::path file = scratch() / name;
-    fs::create_directories(file.parent_path());
-    std::ofstream(file) << text;
-    return file;
-}
-
-// A camera looking down -z from (0, 1, 5) with a 2:1 film, an area light, a floor.
-const std::string kHeader = R"(
-LookAt 0 1 5  0 1 0  0 1 0
-Camera "perspective" "float fov" [30]
-Film "rgb" "integer xresolution" [64] "integer yresolution" [32] "string filename" "x.exr"
-Sampler "halton" "integer pixelsamples" [4]
-WorldBegin
-AttributeBegin
-  AreaLightSource "diffuse" "rgb L" [4 4 4]
-  Shape "trianglemesh" "point3 P" [-0.5 2 -0.5  0.5 2 -0.5  0.5 2 0.5  -0.5 2 0.5] "integer indices" [0 1 2 0 2 3]
-AttributeEnd
-Shape "trianglemesh" "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5] "integer indices" [0 2 1 0 3 2]
-)";
-
-ImportedScene import(const std::string& body, const std::string& name = "scene.pbrt") {
-    return importPbrt(writeScene(name, kHeader + body));
-}
-
-SceneError importError(const std::string& text) {
-    try {
-        importPbrt(writeScene("bad.pbrt", text));
-    } catch (const SceneError& e) {
-        return e;
-    }
-    ADD_FAILURE() << "imported without error";
-    return SceneError("?", "?");
-}
-
-Vec3 vec(const Json& j) { return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()}; }
+using namespace test::pbrt_import;
 
 TEST(PbrtImport, CameraFromLookAtIsLeftHandedWithFovOnTheShorterAxis) {
     const Json cam = import("").document["camera"];
@@ -303,185 +256,6 @@ MakeNamedMaterial "plain" "string type" "conductor" "rgb reflectance" [0.64 0.25
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
 }
 
-TEST(PbrtImport, LightsMapOntoPhotons) {
-    const Json doc = import(R"(
-LightSource "point" "point3 from" [1 2 3] "rgb I" [2 2 2] "float scale" [3]
-LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "float coneangle" [40] "float conedelta" [10] "blackbody I" [6500]
-AttributeBegin
-  Translate 0 0 1
-  LightSource "distant" "point3 from" [0 1 0] "point3 to" [0 0 0] "rgb L" [5 5 5]
-AttributeEnd
-LightSource "infinite" "rgb L" [0.1 0.2 0.3]
-)").document;
-    const Json& l = doc["lights"];
-    EXPECT_VEC3_NEAR(vec(l[0]["position"]), Vec3(1, 2, 3), 1e-6f);
-    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(6), 1e-5f);
-    EXPECT_EQ(l[1]["cone_angle"], 40.0);
-    EXPECT_EQ(l[1]["falloff_angle"], 30.0);
-    EXPECT_NEAR(luminance(Color(vec(l[1]["intensity"]))), 1.0f, 1e-4f);  // blackbody: unit luminance
-    EXPECT_VEC3_NEAR(vec(l[2]["direction"]), Vec3(0, -1, 0), 1e-6f);    // a translation leaves it
-    EXPECT_VEC3_NEAR(vec(l[2]["irradiance"]), Vec3(5), 1e-6f);
-    EXPECT_VEC3_NEAR(vec(l[3]["radiance"]), Vec3(0.1f, 0.2f, 0.3f), 1e-6f);
-    // The area light's quad carries the emission.
-    EXPECT_VEC3_NEAR(vec(doc["shapes"][0]["emission"]), Vec3(4), 1e-6f);
-}
-
-// A portal's corners move with the light's transform, in order: the light comes in from the
-// side of cross(p3 - p0, p1 - p0), pbrt-v4's convention, here a window in a ceiling at y = 3.
-TEST(PbrtImport, InfinitePortalsTakeTheLightsTransform) {
-    const Json doc = import(R"(
-AttributeBegin
-  Translate 0 1 0
-  LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]
-AttributeEnd
-)").document;
-    const Json& portal = doc["lights"][0]["portal"];
-    ASSERT_EQ(portal.size(), 4u);
-    EXPECT_VEC3_NEAR(vec(portal[0]), Vec3(-1, 3, -1), 1e-6f);
-    EXPECT_VEC3_NEAR(vec(portal[2]), Vec3(1, 3, 1), 1e-6f);
-    const Vec3 out = cross(vec(portal[3]) - vec(portal[0]), vec(portal[1]) - vec(portal[0]));
-    EXPECT_GT(out.y, 0.0f);
-    // A light behind each of two windows: both kept, and they add up.
-    const ImportedScene two = import(R"(
-LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]
-LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [2 0 -1  2 0 1  2 1 1  2 1 -1]
-Shape "sphere"
-)");
-    EXPECT_EQ(loadImportedScene(two, scratch()).lights.size(), 2u);
-    const std::string head = "Camera \"perspective\"\nWorldBegin\n";
-    EXPECT_STREQ(importError(head + "LightSource \"infinite\" \"point3 portal\" [0 0 0  1 0 0  1 1 0]\n").what(),
-                 "bad.pbrt:3: infinite: \"portal\" must be 4 points, not 9 numbers");
-    EXPECT_STREQ(importError(head + "LightSource \"infinite\" \"point3 portal\" [0 0 0  1 0 0  2 1 0  0 1 0]\n").what(),
-                 "bad.pbrt:3: infinite: \"portal\" must be a rectangle: the third corner is not opposite the first");
-}
-
-// "illuminance" as pbrt-v4 applies it: the distant light's irradiance and the uniform
-// infinite light's pi L become it (times "scale"), an RGB's colour kept; an image's is
-// measured when the image is loaded.
-TEST(PbrtImport, IlluminanceSetsTheLightsLevel) {
-    const Json doc = import(R"(
-LightSource "distant" "rgb L" [1 0.5 0.25] "float scale" [2] "float illuminance" [3]
-LightSource "infinite" "rgb L" [0.5 0.5 0.5] "float illuminance" [10]
-LightSource "infinite" "string filename" "sky.exr" "float illuminance" [7]
-)").document;
-    const Json& l = doc["lights"];
-    EXPECT_VEC3_NEAR(vec(l[0]["irradiance"]), Vec3(6, 3, 1.5f), 1e-5f);
-    EXPECT_VEC3_NEAR(vec(l[1]["radiance"]), Vec3(5 / kPi), 1e-5f);
-    EXPECT_EQ(l[2]["illuminance"], 7.0);
-}
-
-// Media that absorb (pbrt-v4's homogeneous medium with sigma_s 0): under "media", sigma_a
-// times scale; shapes under a MediumInterface that differs on its two sides bound them
-// (inside, then outside); an "interface" material there becomes a dielectric of index 1
-// (a boundary with no surface), and is left out where it bounds nothing.
-TEST(PbrtImport, AbsorbingMediaAndTheShapesThatBoundThem) {
-    const ImportedScene s = import(R"(
-MakeNamedMedium "tea" "string type" "homogeneous" "rgb sigma_a" [0.1 0.3 0.7] "rgb sigma_s" [0 0 0] "float scale" [2]
-MakeNamedMaterial "water" "string type" "dielectric" "float eta" [1.33]
-MakeNamedMaterial "boundary" "string type" "interface"
-AttributeBegin
-  MediumInterface "tea" ""
-  NamedMaterial "water"
-  Shape "sphere" "float radius" [1]
-  NamedMaterial "boundary"
-  Shape "sphere" "float radius" [2]
-AttributeEnd
-AttributeBegin
-  MediumInterface "" "tea"
-  Material "interface"
-  Shape "sphere" "float radius" [3]
-AttributeEnd
-NamedMaterial "boundary"
-Shape "sphere" "float radius" [4]
-MediumInterface "tea"
-Shape "sphere" "float radius" [5]
-)");
-    const Json& doc = s.document;
-    EXPECT_EQ(doc["media"]["tea"]["absorption"], Json::parse("[0.2, 0.6, 1.4]").get<std::vector<float>>());
-    const Json& shapes = doc["shapes"];
-    ASSERT_EQ(shapes.size(), 5u);  // the header's light and floor, then the three spheres that bound tea
-    EXPECT_FALSE(shapes[1].contains("medium"));
-    EXPECT_EQ(shapes[2]["radius"], 1.0);
-    EXPECT_EQ(shapes[2]["material"], "water");
-    EXPECT_EQ(shapes[2]["medium"], Json::parse(R"({"inside": "tea"})"));
-    EXPECT_EQ(shapes[3]["material"], "medium boundary");
-    EXPECT_EQ(shapes[4]["medium"], Json::parse(R"({"outside": "tea"})"));
-    EXPECT_EQ(shapes[4]["material"], "medium boundary");
-    EXPECT_EQ(doc["materials"]["medium boundary"], Json::parse(R"({"type": "dielectric", "ior": 1})"));
-    // Spheres 4 (an interface bounding nothing) and 5 (tea on both sides): no boundary.
-    SceneDescription d = loadImportedScene(s, scratch());
-    EXPECT_EQ(d.media.size(), 1u);
-}
-
-// pbrt-v4's quadrics that are not whole spheres become meshes with pbrt's parameterisation
-// and the exact normals at their vertices, facing out (or in under ReverseOrientation):
-// their areas within 0.05% of the surfaces' (256 segments a turn).
-TEST(PbrtImport, PartialSpheresCylindersAndDisksAsMeshes) {
-    const ImportedScene s = import(R"(
-Shape "sphere" "float radius" [2] "float zmin" [0]
-Shape "cylinder" "float radius" [0.5] "float zmin" [-1] "float zmax" [2] "float phimax" [90]
-Shape "disk" "float radius" [1] "float innerradius" [0.5] "float height" [3] "float phimax" [180]
-ReverseOrientation
-Shape "cylinder"
-)");
-    const Json& shapes = s.document["shapes"];
-    ASSERT_EQ(shapes.size(), 6u);
-    auto meshOf = [&](size_t i) { return s.meshes.at(shapes[i]["file"].get<std::string>()); };
-    auto area = [](const TriangleMesh& m) {
-        double a = 0;
-        for (size_t t = 0; t < m.triangleCount(); ++t) a += m.area(t);
-        return a;
-    };
-    const double pi = 3.14159265358979323846;
-    const double expected[] = {2 * pi * 4, 0.5 * pi / 2 * 3, pi / 2 * (1 - 0.25), 2 * pi * 2};
-    for (size_t i = 0; i < 4; ++i) {
-        const TriangleMesh m = meshOf(2 + i);
-        EXPECT_NEAR(area(m), expected[i], 5e-4 * expected[i]) << "shape " << 2 + i;
-        // Every triangle faces its vertex normals, which face out (the last turned in).
-        for (size_t t = 0; t < m.triangleCount(); ++t) {
-            const TriangleMesh::Corners k = m.corners(t);
-            const Vec3 n = m.normals[m.indices[3 * t]], centre = (k.a + k.b + k.c) / 3.0f;
-            ASSERT_GT(dot(cross(k.b - k.a, k.c - k.a), n), 0.0f) << "shape " << 2 + i << ", triangle " << t;
-            const Vec3 out = i == 2 ? Vec3(0, 0, 1) : i == 1 || i == 3 ? Vec3(centre.x, centre.y, 0) : centre;
-            ASSERT_GT(dot(n, out) * (i == 3 ? -1.0f : 1.0f), 0.0f) << "shape " << 2 + i << ", triangle " << t;
-        }
-    }
-    // pbrt's (u, v): the hemisphere's v runs from its equator (z = 0) to its pole.
-    const TriangleMesh hemisphere = meshOf(2);
-    for (size_t v = 0; v < hemisphere.positions.size(); v += 97)
-        EXPECT_NEAR(hemisphere.positions[v].z, 2 * std::sin(hemisphere.uvs[v].y * pi / 2), 1e-5) << v;
-}
-
-// Attribute: parameters for the directives of its kind that do not give their own, for the
-// rest of the attribute block (pbrt-v4's GraphicsState attributes); unused ones are silent.
-TEST(PbrtImport, AttributesGiveDefaultParameters) {
-    const ImportedScene s = import(R"(
-AttributeBegin
-  Attribute "shape" "float radius" [2] "float zmin" [-5]
-  Attribute "material" "rgb reflectance" [0.1 0.2 0.3]
-  Attribute "light" "float scale" [3]
-  Material "diffuse"
-  Shape "sphere"
-  Shape "sphere" "float radius" [0.5]
-  AreaLightSource "diffuse" "rgb L" [1 1 1]
-  Shape "sphere" "float radius" [0.25]
-AttributeEnd
-Shape "sphere"
-)");
-    const Json& shapes = s.document["shapes"];
-    ASSERT_EQ(shapes.size(), 6u);
-    EXPECT_EQ(shapes[2]["radius"], 2.0);
-    EXPECT_EQ(shapes[3]["radius"], 0.5);
-    EXPECT_EQ(shapes[4]["emission_scale"], 3.0);
-    EXPECT_EQ(shapes[5]["radius"], 1.0);  // after AttributeEnd, pbrt's default
-    EXPECT_EQ(s.document["materials"][shapes[2]["material"].get<std::string>()]["albedo"],
-              Json::parse("[0.1, 0.2, 0.3]").get<std::vector<float>>());
-    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
-    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nAttribute \"camera\" \"float fov\" [10]\n").what(),
-                 "bad.pbrt:3: Attribute \"camera\": the target must be \"shape\", \"light\", \"material\", \"medium\" or "
-                 "\"texture\"");
-}
-
 // An orthographic camera: the screen [-aspect, aspect] x [-1, 1] (the shorter axis spans
 // 2) in camera space, which the camera transform scales: under Scale 0.5 (world to camera)
 // the view is 4 units high; a lens is refused.
@@ -499,70 +273,6 @@ Shape "sphere"
     EXPECT_FALSE(camera.contains("fov"));
     EXPECT_STREQ(importError("Camera \"orthographic\" \"float lensradius\" [0.1]\nWorldBegin\n").what(),
                  "bad.pbrt:1: Camera \"orthographic\": a lens (lensradius) is not supported");
-}
-
-// An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
-// flips x) "matrix" with the linear part as written; a scale is refused.
-TEST(PbrtImport, InfiniteLightsFrame) {
-    const Json l = import(R"(
-AttributeBegin
-  Rotate 90 0 1 0
-  LightSource "infinite" "string filename" "sky.exr"
-AttributeEnd
-AttributeBegin
-  Transform [-0.386527 0 0.922278 0  -0.922278 0 -0.386527 0  0 1 0 0  0 0 0 1]
-  LightSource "infinite" "string filename" "sky.exr"
-AttributeEnd
-)").document["lights"];
-    EXPECT_EQ(l[0]["rotate"]["angle"].get<double>(), 90.0);
-    EXPECT_FALSE(l[0].contains("matrix"));
-    ASSERT_TRUE(l[1].contains("matrix"));
-    EXPECT_FALSE(l[1].contains("rotate"));
-    // pbrt's Transform lists columns; photon's matrix is row-major.
-    const std::vector<double> expected{-0.386527, -0.922278, 0, 0, 0, 0, 1, 0, 0.922278, -0.386527, 0, 0, 0, 0, 0, 1};
-    for (size_t i = 0; i < 16; ++i) EXPECT_NEAR(l[1]["matrix"][i].get<double>(), expected[i], 1e-6) << i;
-    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nScale 2 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n").what(),
-                 "bad.pbrt:4: infinite: the light's transform must be a rotation or a mirror image (it scales or shears)");
-}
-
-TEST(PbrtImport, SpheresDisksInstancesAndPly) {
-    TriangleMesh tri;
-    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
-    tri.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
-    tri.indices = {0, 1, 2};  // wound to face -y: turned over to face the normals
-    fs::create_directories(scratch() / "models");
-    writePlyMesh(tri, scratch() / "models/tri.ply");
-    ImportedScene s = import(R"(
-AttributeBegin
-  Translate 0 1 0
-  Scale 1 2 1
-  Shape "sphere" "float radius" [0.5]
-AttributeEnd
-Shape "disk" "float radius" [2] "float height" [0.5]
-ObjectBegin "pair"
-  Shape "sphere" "float radius" [0.1]
-  Shape "plymesh" "string filename" "models/tri.ply"
-ObjectEnd
-AttributeBegin
-  Translate 3 0 0
-  ObjectInstance "pair"
-AttributeEnd
-ObjectInstance "pair"
-)");
-    SceneDescription d = loadImportedScene(s, scratch());
-    // The unevenly scaled sphere: an object placed once; the pair: two instances.
-    ASSERT_EQ(d.instances.size(), 3u);
-    EXPECT_EQ(d.objects.size(), 2u);
-    // The disk: radius 2 at z = 0.5, facing +z, its 256-gon 0.01% short of pi r^2.
-    const ShapeDescription& disk = d.shapes[2];
-    EXPECT_NEAR(disk.surfaceArea(), 4 * kPi * (1 - 1.0e-4), 4 * kPi * 1e-5);  // (N / 2 pi) sin(2 pi / N), N = 256
-    EXPECT_VEC3_NEAR(disk.mesh.faceNormal(0), Vec3(0, 0, 1), 1e-5f);
-    EXPECT_FLOAT_EQ(disk.mesh.positions[0].z, 0.5f);
-    // The PLY, oriented to its normals, is kept in memory under a name of its own.
-    const auto pair = std::find_if(d.objects.begin(), d.objects.end(), [](auto& o) { return o.name == "pair"; });
-    ASSERT_NE(pair, d.objects.end());
-    EXPECT_VEC3_NEAR(pair->shapes[1].mesh.faceNormal(0), Vec3(0, 1, 0), 1e-6f);
-    EXPECT_TRUE(s.meshes.count("models/tri-oriented.ply"));
 }
 
 TEST(PbrtImport, ErrorsNameFileAndLine) {
@@ -668,3 +378,4 @@ Shape "disk" "float radius" [0.3] "float height" [1.2]
 
 }  // namespace
 }  // namespace photon
+

@@ -1,0 +1,110 @@
+// The pbrt-v4 importer's lights: point, spot, distant and infinite lights, portals, pbrt's
+// illuminance, and an environment light's frame, against values worked out by hand.
+#include <gtest/gtest.h>
+#include <cmath>
+#include <photon/errors.h>
+#include "description/scene_description.h"
+#include "import/pbrt/pbrt_import.h"
+#include "pbrt_import_fixture.h"
+#include "scene/ply_mesh.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+
+namespace photon {
+namespace {
+
+using namespace test::pbrt_import;
+
+TEST(PbrtImport, LightsMapOntoPhotons) {
+    const Json doc = import(R"(
+LightSource "point" "point3 from" [1 2 3] "rgb I" [2 2 2] "float scale" [3]
+LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "float coneangle" [40] "float conedelta" [10] "blackbody I" [6500]
+AttributeBegin
+  Translate 0 0 1
+  LightSource "distant" "point3 from" [0 1 0] "point3 to" [0 0 0] "rgb L" [5 5 5]
+AttributeEnd
+LightSource "infinite" "rgb L" [0.1 0.2 0.3]
+)").document;
+    const Json& l = doc["lights"];
+    EXPECT_VEC3_NEAR(vec(l[0]["position"]), Vec3(1, 2, 3), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(6), 1e-5f);
+    EXPECT_EQ(l[1]["cone_angle"], 40.0);
+    EXPECT_EQ(l[1]["falloff_angle"], 30.0);
+    EXPECT_NEAR(luminance(Color(vec(l[1]["intensity"]))), 1.0f, 1e-4f);  // blackbody: unit luminance
+    EXPECT_VEC3_NEAR(vec(l[2]["direction"]), Vec3(0, -1, 0), 1e-6f);    // a translation leaves it
+    EXPECT_VEC3_NEAR(vec(l[2]["irradiance"]), Vec3(5), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[3]["radiance"]), Vec3(0.1f, 0.2f, 0.3f), 1e-6f);
+    // The area light's quad carries the emission.
+    EXPECT_VEC3_NEAR(vec(doc["shapes"][0]["emission"]), Vec3(4), 1e-6f);
+}
+
+// A portal's corners move with the light's transform, in order: the light comes in from the
+// side of cross(p3 - p0, p1 - p0), pbrt-v4's convention, here a window in a ceiling at y = 3.
+TEST(PbrtImport, InfinitePortalsTakeTheLightsTransform) {
+    const Json doc = import(R"(
+AttributeBegin
+  Translate 0 1 0
+  LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]
+AttributeEnd
+)").document;
+    const Json& portal = doc["lights"][0]["portal"];
+    ASSERT_EQ(portal.size(), 4u);
+    EXPECT_VEC3_NEAR(vec(portal[0]), Vec3(-1, 3, -1), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(portal[2]), Vec3(1, 3, 1), 1e-6f);
+    const Vec3 out = cross(vec(portal[3]) - vec(portal[0]), vec(portal[1]) - vec(portal[0]));
+    EXPECT_GT(out.y, 0.0f);
+    // A light behind each of two windows: both kept, and they add up.
+    const ImportedScene two = import(R"(
+LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [-1 2 -1  1 2 -1  1 2 1  -1 2 1]
+LightSource "infinite" "rgb L" [1 1 1] "point3 portal" [2 0 -1  2 0 1  2 1 1  2 1 -1]
+Shape "sphere"
+)");
+    EXPECT_EQ(loadImportedScene(two, scratch()).lights.size(), 2u);
+    const std::string head = "Camera \"perspective\"\nWorldBegin\n";
+    EXPECT_STREQ(importError(head + "LightSource \"infinite\" \"point3 portal\" [0 0 0  1 0 0  1 1 0]\n").what(),
+                 "bad.pbrt:3: infinite: \"portal\" must be 4 points, not 9 numbers");
+    EXPECT_STREQ(importError(head + "LightSource \"infinite\" \"point3 portal\" [0 0 0  1 0 0  2 1 0  0 1 0]\n").what(),
+                 "bad.pbrt:3: infinite: \"portal\" must be a rectangle: the third corner is not opposite the first");
+}
+
+// "illuminance" as pbrt-v4 applies it: the distant light's irradiance and the uniform
+// infinite light's pi L become it (times "scale"), an RGB's colour kept; an image's is
+// measured when the image is loaded.
+TEST(PbrtImport, IlluminanceSetsTheLightsLevel) {
+    const Json doc = import(R"(
+LightSource "distant" "rgb L" [1 0.5 0.25] "float scale" [2] "float illuminance" [3]
+LightSource "infinite" "rgb L" [0.5 0.5 0.5] "float illuminance" [10]
+LightSource "infinite" "string filename" "sky.exr" "float illuminance" [7]
+)").document;
+    const Json& l = doc["lights"];
+    EXPECT_VEC3_NEAR(vec(l[0]["irradiance"]), Vec3(6, 3, 1.5f), 1e-5f);
+    EXPECT_VEC3_NEAR(vec(l[1]["radiance"]), Vec3(5 / kPi), 1e-5f);
+    EXPECT_EQ(l[2]["illuminance"], 7.0);
+}
+
+// An infinite light's CTM: a rotation becomes "rotate", a mirror image (Bitterli's teapot
+// flips x) "matrix" with the linear part as written; a scale is refused.
+TEST(PbrtImport, InfiniteLightsFrame) {
+    const Json l = import(R"(
+AttributeBegin
+  Rotate 90 0 1 0
+  LightSource "infinite" "string filename" "sky.exr"
+AttributeEnd
+AttributeBegin
+  Transform [-0.386527 0 0.922278 0  -0.922278 0 -0.386527 0  0 1 0 0  0 0 0 1]
+  LightSource "infinite" "string filename" "sky.exr"
+AttributeEnd
+)").document["lights"];
+    EXPECT_EQ(l[0]["rotate"]["angle"].get<double>(), 90.0);
+    EXPECT_FALSE(l[0].contains("matrix"));
+    ASSERT_TRUE(l[1].contains("matrix"));
+    EXPECT_FALSE(l[1].contains("rotate"));
+    // pbrt's Transform lists columns; photon's matrix is row-major.
+    const std::vector<double> expected{-0.386527, -0.922278, 0, 0, 0, 0, 1, 0, 0.922278, -0.386527, 0, 0, 0, 0, 0, 1};
+    for (size_t i = 0; i < 16; ++i) EXPECT_NEAR(l[1]["matrix"][i].get<double>(), expected[i], 1e-6) << i;
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nScale 2 1 1\nLightSource \"infinite\" \"string filename\" \"sky.exr\"\n").what(),
+                 "bad.pbrt:4: infinite: the light's transform must be a rotation or a mirror image (it scales or shears)");
+}
+
+}  // namespace
+}  // namespace photon
