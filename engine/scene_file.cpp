@@ -32,8 +32,10 @@ int SceneFile::height() const { return description_->camera.height; }
 int64_t SceneFile::triangleCount() const {
     int64_t total = 0;
     auto add = [&](const std::vector<ShapeDescription>& shapes) {
-        for (const ShapeDescription& shape : shapes)
+        for (const ShapeDescription& shape : shapes) {
             if (shape.kind == ShapeDescription::Kind::Mesh) total += int64_t(shape.mesh.triangleCount());
+            if (shape.kind == ShapeDescription::Kind::Curves) total += int64_t(shape.curves.segmentCount());
+        }
     };
     add(description_->shapes);
     for (const ObjectDescription& object : description_->objects) add(object.shapes);

@@ -15,9 +15,7 @@ namespace {
 // at any depth.
 SceneDescription squareAt(float z) {
     SceneDescription d;
-    d.camera = test::camera({0, 0, 2}, {0, 0, 0}, {0, 1, 0}, 40, 16, 16);
-    d.camera.orthographic = true;
-    d.camera.viewHeight = 4;
+    d.camera = test::orthographicCamera({0, 0, 2}, {0, 0, 0}, 4, 16, 16);
     d.materials = {makeDiffuse(Color(0.0f))};
     d.materialNames = {"black"};
     d.shapes = {test::quad({-1, -1, z}, {2, 0, 0}, {0, 2, 0}, 0, Color(1.0f))};

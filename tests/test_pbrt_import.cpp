@@ -277,9 +277,9 @@ Shape "sphere"
 
 TEST(PbrtImport, ErrorsNameFileAndLine) {
     const std::string head = "Camera \"perspective\"\nWorldBegin\n";
-    EXPECT_STREQ(importError(head + "Material \"hair\"\n").what(),
-                 "bad.pbrt:3: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                 "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)");
+    EXPECT_STREQ(importError(head + "Material \"measured\"\n").what(),
+                 "bad.pbrt:3: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+                 "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n").what(),
                  "bad.pbrt:3: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\"\n").what(),
@@ -292,9 +292,9 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
                  "bad.pbrt:3: sphere: zmin, zmax and phimax leave nothing of it");
     EXPECT_STREQ(importError(head + "Shape \"cylinder\" \"float zmin\" [1]\n").what(),
                  "bad.pbrt:3: cylinder: needs radius > 0 and zmin != zmax");
-    EXPECT_STREQ(importError(head + "Shape \"curve\"\n").what(),
-                 "bad.pbrt:3: Shape \"curve\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
-                 "cylinder, bilinearmesh, loopsubdiv)");
+    EXPECT_STREQ(importError(head + "Shape \"nurbs\"\n").what(),
+                 "bad.pbrt:3: Shape \"nurbs\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
+                 "cylinder, bilinearmesh, loopsubdiv, curve)");
     EXPECT_STREQ(importError(head + "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]\n").what(),
                  "bad.pbrt:3: Shape \"trianglemesh\": index 5 is out of range (3 vertices)");
     EXPECT_STREQ(importError("WorldBegin\nShape \"sphere\"\n").what(), "the pbrt scene has no Camera");
@@ -313,10 +313,10 @@ MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1]
 MediumInterface "" "fog"
 Attribute "shape" "float radius" [2]
 Texture "noise" "spectrum" "fbm" "integer octaves" [4]
-MakeNamedMaterial "fur" "string type" "hair" "float eumelanin" [1.3]
+MakeNamedMaterial "fur" "string type" "measured" "string filename" "fur.bsdf"
 MakeNamedMaterial "painted" "string type" "diffuse" "texture reflectance" "noise"
 NamedMaterial "fur"
-Shape "curve" "point3 P" [0 0 0 1 0 0 1 1 0 0 1 0] "float width" [0.1]
+Shape "nurbs" "integer nu" [4]
 Shape "sphere" "float radius" [0.5] "float zmax" [0.2]
 LightSource "goniometric" "string filename" "profile.exr"
 )";
@@ -326,18 +326,18 @@ LightSource "goniometric" "string filename" "profile.exr"
         "kept, its scattering left out (lenient import)",
         "scene.pbrt:16: Texture \"noise\": class \"fbm\" is not supported (photon imports imagemap, checkerboard, scale, "
         "mix, constant); the constant 0.5 used (lenient import)",
-        "scene.pbrt:17: material \"hair\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-        "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface); rendered as a grey diffuse "
-        "material (lenient import)",
-        "scene.pbrt:20: Shape \"curve\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, cylinder, "
-        "bilinearmesh, loopsubdiv); left out (lenient import)",
+        "scene.pbrt:17: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+        "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface); rendered as a grey "
+        "diffuse material (lenient import)",
+        "scene.pbrt:20: Shape \"nurbs\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, cylinder, "
+        "bilinearmesh, loopsubdiv, curve); left out (lenient import)",
         "scene.pbrt:22: LightSource \"goniometric\" is not supported (photon imports point, spot, distant, infinite); left "
         "out (lenient import)"};
     EXPECT_EQ(s.warnings, expected);
     const Json& m = s.document["materials"];
     EXPECT_EQ(m["fur"], Json::parse(R"({"type": "diffuse", "albedo": [0.5, 0.5, 0.5]})"));
     EXPECT_EQ(m["painted"]["albedo"], Json::parse("[0.5, 0.5, 0.5]"));
-    // The header's quad light and floor, and the part of a sphere (a mesh); no curve.
+    // The header's quad light and floor, and the part of a sphere (a mesh); no nurbs.
     ASSERT_EQ(s.document["shapes"].size(), 3u);
     EXPECT_EQ(s.document["shapes"][2]["type"], "mesh");
     EXPECT_EQ(s.document["shapes"][2]["material"], "fur");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include <memory>
+#include "description/curve_set.h"
 #include "description/pixel_filter_description.h"
 #include "materials/material.h"
 #include "math/transform.h"
@@ -84,8 +85,9 @@ struct MediumDescription {
 };
 
 struct ShapeDescription {
-    enum class Kind { Mesh, Sphere } kind = Kind::Mesh;
+    enum class Kind { Mesh, Sphere, Curves } kind = Kind::Mesh;
     TriangleMesh mesh;        // Kind::Mesh (quads arrive as two triangles with uvs)
+    CurveSet curves;          // Kind::Curves: neither emits nor bounds a medium nor has an alpha
     Vec3 center;              // Kind::Sphere
     float radius = 0;         // Kind::Sphere
     uint32_t material = 0;    // index into SceneDescription::materials
@@ -106,8 +108,10 @@ struct ShapeDescription {
     int32_t insideMedium = -1, outsideMedium = -1;
     bool boundsMedium() const { return insideMedium != outsideMedium; }
 
+    // Curves have none that a light could emit from (they cannot emit).
     float surfaceArea() const {
         if (kind == Kind::Sphere) return 4.0f * kPi * radius * radius;
+        if (kind == Kind::Curves) return 0;
         double sum = 0;
         for (size_t t = 0; t < mesh.triangleCount(); ++t) sum += mesh.area(t);
         return static_cast<float>(sum);

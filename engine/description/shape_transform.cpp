@@ -24,7 +24,21 @@ void applyTransform(const Transform& t, TriangleMesh& mesh) {
         for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
 }
 
+// Radii scale by the cube root of the volume's scale: exact under uniform scale, a mean
+// under others (a tube stays round).
+void applyTransform(const Transform& t, CurveSet& curves) {
+    const float radiusScale = std::cbrt(std::abs(t.determinant()));
+    for (CurvePoint& c : curves.points) {
+        c.p = t.point(c.p);
+        c.radius *= radiusScale;
+    }
+}
+
 bool transformShape(const Transform& t, ShapeDescription& shape) {
+    if (shape.kind == ShapeDescription::Kind::Curves) {
+        applyTransform(t, shape.curves);
+        return true;
+    }
     if (shape.kind == ShapeDescription::Kind::Mesh) {
         applyTransform(t, shape.mesh);
         return true;

@@ -10,10 +10,10 @@
 namespace photon {
 namespace {
 
-constexpr char kMagic[4] = {'P', 'H', 'P', 'S'};
-constexpr uint32_t kVersion = 2;
+constexpr char kPassSumsMagic[4] = {'P', 'H', 'P', 'S'};
+constexpr uint32_t kPassSumsVersion = 2;
 
-struct Header {
+struct PassSumsHeader {
     char magic[4];
     uint32_t version;
     int64_t first, count, oddCount;
@@ -41,9 +41,9 @@ void PassSums::add(const PassSums& other) {
 }
 
 std::string PassSums::encode() const {
-    Header h{};
-    std::memcpy(h.magic, kMagic, sizeof kMagic);
-    h.version = kVersion;
+    PassSumsHeader h{};
+    std::memcpy(h.magic, kPassSumsMagic, sizeof kPassSumsMagic);
+    h.version = kPassSumsVersion;
     h.first = first, h.count = count, h.oddCount = oddCount, h.width = width, h.height = height;
     std::vector<int64_t> both(values);
     both.insert(both.end(), oddLuminance.begin(), oddLuminance.end());
@@ -52,13 +52,13 @@ std::string PassSums::encode() const {
 }
 
 PassSums PassSums::decode(std::string_view bytes) {
-    Header h;
+    PassSumsHeader h;
     if (bytes.size() < sizeof h) throw std::invalid_argument("pass sums: shorter than their header");
     std::memcpy(&h, bytes.data(), sizeof h);
-    if (std::memcmp(h.magic, kMagic, sizeof kMagic) != 0) throw std::invalid_argument("pass sums: not pass sums");
-    if (h.version != kVersion)
+    if (std::memcmp(h.magic, kPassSumsMagic, sizeof kPassSumsMagic) != 0) throw std::invalid_argument("pass sums: not pass sums");
+    if (h.version != kPassSumsVersion)
         throw std::invalid_argument("pass sums: version " + std::to_string(h.version) + ", expected " +
-                                    std::to_string(kVersion));
+                                    std::to_string(kPassSumsVersion));
     if (h.width <= 0 || h.height <= 0 || int64_t(h.width) * h.height > (int64_t(1) << 28) || h.count <= 0 ||
         h.first < 0 || h.oddCount < 0 || h.oddCount > h.count)
         throw std::invalid_argument("pass sums: invalid size or pass range");

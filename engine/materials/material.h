@@ -80,6 +80,11 @@ public:
     virtual bool transmits() const { return false; }
     // True if the material bends its shading normal by a normal or bump map
     // (materials/normal_map.h); bentNormal then gives it at uv for the unbent n.
+    // True if the local frame's x axis must be the surface's dp/du: a fibre's scattering
+    // (hair) depends on where the fibre points, not only on its normal. The integrators
+    // then build the frame from the normal and dp/du (Scene::tangentsAt) instead of the
+    // normal alone, and store no visible point on it (a visible point keeps only a normal).
+    virtual bool alignsToTangent() const { return false; }
     virtual bool bendsNormal() const { return false; }
     virtual Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const { return n; }
     // A reflector's reflectance at normal incidence (its Fresnel term there), for a coat
@@ -191,6 +196,28 @@ std::shared_ptr<const RoughnessLevels> makeRoughnessLevels(const std::function<M
 // `tint` is the colour parameter.
 MaterialPtr makeTexturedRoughness(ColorParam tint, FloatParam roughness, float exponent,
                                   std::shared_ptr<const RoughnessLevels> levels);
+// A hair fibre: Chiang, Bitterli, Tappan and Burley 2016, "A Practical and Controllable
+// Hair and Fur Model for Production Path Tracing" (pbrt-v4's HairBxDF): specular
+// reflection R, transmission TT, TRT and the residual of higher orders, each a longitudinal
+// lobe (Mp) times its attenuation (Ap) times an azimuthal logistic lobe (Np). The local
+// frame's x axis runs along the fibre (alignsToTangent), z faces the viewer; the offset h in
+// [-1, 1] across the fibre's width is read from the texture coordinates, h = 2 uv.y - 1
+// (pbrt-v4's curves set v across their width).
+struct HairParameters {
+    Color sigmaA{0.0f};      // absorption inside the fibre, per unit of its diameter
+    float eta = 1.55f;       // the fibre's index of refraction
+    float betaM = 0.3f;      // longitudinal roughness in [0, 1]
+    float betaN = 0.3f;      // azimuthal roughness in [0, 1]
+    float alphaDegrees = 2;  // tilt of the cuticle scales
+};
+MaterialPtr makeHair(const HairParameters& parameters);
+// sigma_a of a fibre with the given concentrations of eumelanin and pheomelanin (Chiang
+// et al. 2016, eq. 8; pbrt-v4's defaults).
+Color hairSigmaAFromMelanin(float eumelanin, float pheomelanin);
+// sigma_a for which multiple scattering in a mass of such fibres has roughly the colour c
+// (Chiang et al. 2016, eq. 9), at azimuthal roughness betaN; and its inverse.
+Color hairSigmaAFromReflectance(Color c, float betaN);
+Color hairReflectanceFromSigmaA(Color sigmaA, float betaN);
 // Translucent sheet: Lambertian reflection (reflectance, the tint) on the side light
 // arrives from and Lambertian transmission to the other (reflectance + transmittance <= 1).
 MaterialPtr makeDiffuseTransmission(ColorParam reflectance, ColorParam transmittance);

@@ -42,6 +42,8 @@ private:
 MaterialPtr makeMix(MaterialPtr a, MaterialPtr b, FloatParam amount) {
     if (a->twoSided() != b->twoSided())
         throw std::invalid_argument("a mix cannot join a one-sided material (a dielectric) with a two-sided one");
+    // A hair fibre's frame runs along the fibre; the other part's would not.
+    if (a->alignsToTangent() || b->alignsToTangent()) throw std::invalid_argument("a mix cannot include a hair material");
     return std::make_shared<MixMaterial>(std::move(a), std::move(b), std::move(amount));
 }
 

@@ -30,6 +30,15 @@ struct Frame {
         orthonormalBasis(n.x, n.y, n.z, f.s.x, f.s.y, f.s.z, f.t.x, f.t.y, f.t.z);
         return f;
     }
+    // s along the tangent's part across n (Gram-Schmidt); the normal's own frame where the
+    // tangent is zero or parallel to n.
+    static Frame fromNormalAndTangent(Vec3 n, Vec3 tangent) {
+        const Vec3 across = tangent - n * dot(tangent, n);
+        const float len2 = dot(across, across);
+        if (!(len2 > 1e-12f * dot(tangent, tangent)) || !(len2 > 0)) return fromNormal(n);
+        const Vec3 s = across * (1.0f / std::sqrt(len2));
+        return {s, cross(n, s), n};
+    }
     Vec3 toLocal(Vec3 v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
     Vec3 toWorld(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }
 };

@@ -147,6 +147,30 @@ MaterialPtr readDiffuseTransmission(JsonObject& obj, LoadContext& ctx) {
     return makeDiffuseTransmission(reflectance, transmittance);
 }
 
+// {"type": "hair"}: the fibre's absorption from one of "sigma_a" (per diameter), "color"
+// (the colour of a mass of such hair) or "eumelanin" and "pheomelanin" (eumelanin 1.3, brown
+// hair, when none is given: pbrt-v4's default), and the model's roughnesses.
+MaterialPtr readHair(JsonObject& obj) {
+    HairParameters h;
+    h.eta = obj.number("eta", 1.55f, Range::open(1, 4));
+    h.betaM = obj.number("beta_m", 0.3f, Range::openClosed(0, 1));
+    h.betaN = obj.number("beta_n", 0.3f, Range::openClosed(0, 1));
+    h.alphaDegrees = obj.number("alpha", 2.0f, Range::closed(0, 45));
+    auto sigmaA = obj.optional("sigma_a"), color = obj.optional("color");
+    const bool melanin = obj.has("eumelanin") || obj.has("pheomelanin");
+    if (int(bool(sigmaA)) + int(bool(color)) + int(melanin) > 1)
+        obj.fail("give only one of \"sigma_a\", \"color\" or \"eumelanin\"/\"pheomelanin\"");
+    if (sigmaA) {
+        h.sigmaA = sigmaA->vec3(Range::nonNegative());
+    } else if (color) {
+        h.sigmaA = hairSigmaAFromReflectance(color->vec3(Range::openClosed(0, 1)), h.betaN);
+    } else {
+        const float eumelanin = obj.number("eumelanin", melanin ? 0.0f : 1.3f, Range::nonNegative());
+        h.sigmaA = hairSigmaAFromMelanin(eumelanin, obj.number("pheomelanin", 0.0f, Range::nonNegative()));
+    }
+    return makeHair(h);
+}
+
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
 
 // A part of a mix: the name of a material defined before it, or a material object.
@@ -175,9 +199,10 @@ MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<Materia
 
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, CoatedConductor, DiffuseTransmission, Mix };
+    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, CoatedConductor, DiffuseTransmission, Mix, Hair };
     auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic",
-                                                  "coated_diffuse", "coated_conductor", "diffuse_transmission", "mix"},
+                                                  "coated_diffuse", "coated_conductor", "diffuse_transmission", "mix",
+                                                  "hair"},
                                                  "type"));
     MaterialPtr m;
     switch (type) {
@@ -196,9 +221,13 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case CoatedConductor: m = readCoatedConductor(obj, ctx); break;
         case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
+        case Hair: m = readHair(obj); break;
     }
     // Any material may bend its shading normal by a tangent-space map, read as stored, or
     // by a bump map's heights (scene units).
+    if (m->alignsToTangent())
+        for (const char* field : {"normal_map", "bump"})
+            if (auto v = obj.optional(field)) v->fail("a hair fibre has no surface to bend the normal of");
     auto map = obj.optional("normal_map");
     if (map) m = makeNormalMapped(m, loadImage(*map, ImageChannels::Data, ctx));
     if (auto bump = obj.optional("bump")) {

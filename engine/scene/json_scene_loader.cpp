@@ -111,6 +111,17 @@ SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
     if (media && !scene.media.empty() && scene.render.integrator != IntegratorKind::Sppm &&
         scene.render.integrator != IntegratorKind::Path)
         media->fail("media are rendered by the \"sppm\" and \"path\" integrators only");
+    // So are curves: a fibre's frame runs along it (Material::alignsToTangent), which the
+    // photon map's and radiosity's stored points do not keep.
+    if (scene.render.integrator != IntegratorKind::Sppm && scene.render.integrator != IntegratorKind::Path) {
+        auto refuseCurves = [](const std::vector<ShapeDescription>& shapes) {
+            for (const ShapeDescription& s : shapes)
+                if (s.kind == ShapeDescription::Kind::Curves)
+                    throw SceneError(s.name, "curves are rendered by the \"sppm\" and \"path\" integrators only");
+        };
+        refuseCurves(scene.shapes);
+        for (const ObjectDescription& o : scene.objects) refuseCurves(o.shapes);
+    }
     top.finish();
     checkHasLight(scene);
     scene.files.assign(ctx.files.begin(), ctx.files.end());

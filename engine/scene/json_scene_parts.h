@@ -72,6 +72,8 @@ void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& s
 void readShapes(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 // One shape that is not an instance, in the frame its transform is relative to.
 ShapeDescription readShape(const JsonValue& value, LoadContext& ctx);
+// The strands, basis and profile of a "curves" shape (json_curves.cpp).
+CurveSet readCurves(JsonObject& obj, LoadContext& ctx);
 // Named groups of shapes that instances place ("objects", json_objects.cpp).
 void readObjects(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);

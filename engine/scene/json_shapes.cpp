@@ -93,6 +93,7 @@ uint32_t readMaterialRef(const JsonValue& value, const LoadContext& ctx) {
 void checkFinite(const JsonObject& obj, const ShapeDescription& shape) {
     bool ok = std::isfinite(shape.radius) && isFinite(shape.center);
     for (Vec3 p : shape.mesh.positions) ok = ok && isFinite(p);
+    for (const CurvePoint& p : shape.curves.points) ok = ok && isFinite(p.p) && std::isfinite(p.radius);
     if (!ok) obj.fail("coordinates are too large (not finite after the transform)");
 }
 
@@ -125,12 +126,18 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     ShapeDescription shape;
     shape.name = value.path();
-    enum Type { Quad, Sphere, Mesh, Instance };
+    enum Type { Quad, Sphere, Mesh, Curves, Instance };
     JsonValue typeValue = obj.required("type");
-    auto type = Type(typeValue.choice({"quad", "sphere", "mesh", "instance"}, "type"));
+    auto type = Type(typeValue.choice({"quad", "sphere", "mesh", "curves", "instance"}, "type"));
     // readShapes takes the world's instances before they come here.
     if (type == Instance) typeValue.fail("an object's shapes cannot be instances (one level of instancing)");
-    shape.kind = type == Sphere ? ShapeDescription::Kind::Sphere : ShapeDescription::Kind::Mesh;
+    shape.kind = type == Sphere   ? ShapeDescription::Kind::Sphere
+                 : type == Curves ? ShapeDescription::Kind::Curves
+                                  : ShapeDescription::Kind::Mesh;
+    // A fibre has no surface to emit from, cut out or close a medium with.
+    if (type == Curves)
+        for (const char* field : {"emission", "emission_power", "alpha", "medium", "flip_normals"})
+            if (auto v = obj.optional(field)) v->fail("curves cannot have \"" + std::string(field) + "\"");
     // The cheap fields first: a misspelt name should not wait for a mesh file to load.
     shape.material = readMaterialRef(obj.required("material"), ctx);
     readEmission(obj, ctx, shape);
@@ -153,6 +160,7 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
 
     if (type == Quad) shape.mesh = readQuad(obj);
     if (type == Mesh) shape.mesh = readMesh(obj, ctx);
+    if (type == Curves) shape.curves = readCurves(obj, ctx);
     if (type == Sphere) {
         shape.center = obj.required("center").vec3();
         shape.radius = obj.required("radius").number(Range::positive());

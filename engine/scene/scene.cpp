@@ -85,7 +85,11 @@ RTCGeometry Scene::newSphere(const ShapeDescription& s) {
 }
 
 void Scene::addShape(const ShapeDescription& s, RTCScene target, uint32_t id) {
-    RTCGeometry g = s.kind == ShapeDescription::Kind::Sphere ? newSphere(s) : newMesh(s.mesh);
+    if (s.kind == ShapeDescription::Kind::Curves && (hasCutout(s) || !isBlack(s.emission) || s.boundsMedium()))
+        throw std::runtime_error(s.name + ": curves cannot emit, have an alpha below 1 or bound a medium");
+    RTCGeometry g = s.kind == ShapeDescription::Kind::Sphere   ? newSphere(s)
+                    : s.kind == ShapeDescription::Kind::Curves ? newCurves(s)
+                                                               : newMesh(s.mesh);
     if (hasCutout(s)) {
         // A light's power and its samples assume all of its surface emits.
         if (!isBlack(s.emission))
@@ -133,14 +137,18 @@ void Scene::buildLights() {
 }
 
 void Scene::prepareHitData() {
-    for (const ShapeDescription* shape : slots_) materialOf_.push_back(shape->material);
+    for (const ShapeDescription* shape : slots_) {
+        materialOf_.push_back(shape->material);
+        auto curve = curveOfShape_.find(shape);
+        curveOfSlot_.push_back(curve == curveOfShape_.end() ? nullptr : curve->second);
+    }
     hitData_.resize(slots_.size());
     for (size_t i = 0; i < slots_.size(); ++i) {
         const ShapeDescription& shape = *slots_[i];
         ShapeHitData& d = hitData_[i];
         d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
         d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture;
-        if (shape.kind == ShapeDescription::Kind::Sphere) continue;
+        if (shape.kind != ShapeDescription::Kind::Mesh) continue;
         const TriangleMesh& m = shape.mesh;
         // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
         for (size_t t = 0; t < m.triangleCount() && !m.normals.empty() && !d.smoothNormals; ++t) {
@@ -158,7 +166,7 @@ void Scene::prepareHitData() {
             if (!d.needsUv) plainSpheres_[i] = {shape.center, shape.radius, d.normalSign};
             continue;
         }
-        if (d.smoothNormals || d.needsUv) continue;
+        if (shape.kind == ShapeDescription::Kind::Curves || d.smoothNormals || d.needsUv) continue;
         const TriangleMesh& m = shape.mesh;
         firstFlatTriangle_[i] = static_cast<uint32_t>(flatTriangles_.size());
         for (size_t t = 0; t < m.triangleCount(); ++t) {
@@ -174,6 +182,8 @@ void Scene::completeOtherHit(const Ray& ray, SurfaceHit& hit) const {
     if (shape.kind == ShapeDescription::Kind::Sphere) {
         hit.p = sphereHitPoint(ray, shape.center, shape.radius, hit.t);
         fillSphereHit(shape, hit);
+    } else if (shape.kind == ShapeDescription::Kind::Curves) {
+        fillCurveHit(ray, hit);
     } else {
         fillTriangleHit(shape, hit);
     }
@@ -253,6 +263,7 @@ SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
         SurfaceHit local = hit;
         local.instance = kNoInstance;
         local.p = place.toObject.point(hit.p);
+        local.ns = place.toObject.normal(hit.ns);
         const SurfaceTangents t = tangentsAt(local);
         return {place.toWorld.vector(t.dpdu), place.toWorld.vector(t.dpdv)};
     }
@@ -267,6 +278,7 @@ SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
         return {Vec3(-n.z, 0, n.x) * (2.0f * kPi * r),
                 Vec3(-n.y * n.x / cosLat, cosLat, -n.y * n.z / cosLat) * (kPi * r)};
     }
+    if (s.kind == ShapeDescription::Kind::Curves) return curveTangents(hit);
     const TriangleMesh& m = s.mesh;
     if (m.uvs.empty()) return {};
     const uint32_t* v = &m.indices[3 * hit.primitive];

@@ -1,6 +1,8 @@
 // The immutable scene an integrator renders: Embree geometry, materials, lights, camera.
 #pragma once
 #include <embree3/rtcore.h>
+#include <deque>
+#include <map>
 #include <memory>
 #include <vector>
 #include "camera/camera.h"
@@ -191,6 +193,11 @@ private:
     RTCGeometry newMesh(const TriangleMesh& mesh);
     static void padForEmbree(TriangleMesh& mesh);
     RTCGeometry newSphere(const ShapeDescription& shape);
+    // Curves (scene_curves.cpp): their Embree geometry, hit record and tangents.
+    RTCGeometry newCurves(const ShapeDescription& shape);
+    static void curveFilter(const RTCFilterFunctionNArguments* args);
+    void fillCurveHit(const Ray& ray, SurfaceHit& hit) const;
+    SurfaceTangents curveTangents(const SurfaceHit& hit) const;
     // A world-space copy of each emissive shape of each instance, among the world's shapes:
     // a light samples and emits from its surface in the world (scene_instances.cpp).
     void placeInstancedEmitters();
@@ -293,6 +300,14 @@ private:
         float normalSign = 1;
     };
     std::vector<PlainSphere> plainSpheres_;  // by shape
+    // A curve shape's control points and its segments as Embree has them.
+    struct CurveGeometry {
+        const CurveSet* curves;
+        CurveSegments segments;
+    };
+    std::deque<CurveGeometry> curveGeometry_;  // a deque: Embree keeps pointers into each
+    std::map<const ShapeDescription*, const CurveGeometry*> curveOfShape_;
+    std::vector<const CurveGeometry*> curveOfSlot_;  // by shape; null for other kinds
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     DirectLightSampler directLightSampler_;  // refers to lightSampler_

@@ -9,6 +9,8 @@ ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emis
 ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emission = Color(0.0f),
                         bool flipNormals = false);
 CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height);
+// An orthographic camera (up +y) whose image is viewHeight scene units high.
+CameraDescription orthographicCamera(Vec3 position, Vec3 lookAt, float viewHeight, int width, int height);
 
 // A square diffuse plane at y = 0 (half-size `halfSize`) of albedo rho under a point
 // light of intensity I at height h above the origin, seen from straight above at height 3

@@ -124,6 +124,13 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
     return c;
 }
 
+CameraDescription orthographicCamera(Vec3 position, Vec3 lookAt, float viewHeight, int width, int height) {
+    CameraDescription c = camera(position, lookAt, {0, 1, 0}, 40, width, height);
+    c.orthographic = true;
+    c.viewHeight = viewHeight;
+    return c;
+}
+
 SceneDescription directLitFloor(LightSamplerKind kind, uint64_t seed, int passes) {
     SceneDescription d = pointLightPlane(0.5f, 1.0f, 1.0f, 24, 2.0f);
     d.lights.clear();

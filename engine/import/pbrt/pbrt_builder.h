@@ -60,6 +60,7 @@ private:
     // for pbrt's "interface" (no surface: its shapes are left out).
     std::optional<Json> materialJson(const std::string& type, const Params& p);
     std::string currentMaterial();
+    Json hairJson(const Params& p);
     // A colour or float parameter: a constant, or a named texture's photon texture object.
     std::optional<Json> colorValue(const Params& p, std::string_view name, int spectrumKind);
     std::optional<Json> floatValue(const Params& p, std::string_view name);
@@ -73,6 +74,10 @@ private:
     void addShapeJson(Json shape);  // to the world, or to the object being defined
     Json commonShapeFields(const Params& p);
     std::string meshFromPly(const Params& p, const Directive& d);
+    // pbrt_curves.cpp: a "curve" joins the pending strands of its material, profile and
+    // object; they become one "curves" shape when the object (or the file) ends.
+    void addCurve(const Params& p, const Directive& d);
+    void flushCurves(const std::optional<std::string>& object);
     // pbrt_lights.cpp
     void lightSource(const Directive& d);
     void areaLightSource(const Directive& d);
@@ -112,7 +117,13 @@ private:
     Json mediaJson_ = Json::object();
     std::optional<std::string> currentObject_;  // inside ObjectBegin
     std::map<std::string, std::string> plyMeshes_;  // (file, reversed) key -> mesh name
-    int meshCount_ = 0, materialCount_ = 0;
+    int meshCount_ = 0, materialCount_ = 0, curveCount_ = 0;
+    struct PendingCurves {
+        CurveSet curves;
+        Json shape;
+        std::optional<std::string> object;
+    };
+    std::map<std::string, PendingCurves> pendingCurves_;  // by material, profile and object
 
     // The camera and film, written at the end (the film may follow the camera).
     struct CameraState {

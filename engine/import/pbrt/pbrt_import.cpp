@@ -90,6 +90,7 @@ void SceneBuilder::handle(Directive&& d) {
         objectBegin(d);
     } else if (n == "ObjectEnd") {
         if (!currentObject_) fail(d.where, "ObjectEnd without a matching ObjectBegin");
+        flushCurves(currentObject_);
         currentObject_.reset();
         if (stack_.empty()) fail(d.where, "ObjectEnd without a matching ObjectBegin");
         state_ = stack_.back();
@@ -153,6 +154,7 @@ void SceneBuilder::unsupported(const Directive& d, const std::string& message, c
 void SceneBuilder::finish() {
     if (!stack_.empty()) warn(Location{}, "the file ends inside an AttributeBegin block");
     writeCameraAndRender();
+    flushCurves(std::nullopt);
     Json& doc = out_.document;
     // An object with nothing photon renders (only interfaces) is never instanced.
     for (auto it = objects_.begin(); it != objects_.end();)

@@ -131,6 +131,34 @@ double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, 
 
 }  // namespace
 
+// pbrt-v4's HairMaterial: sigma_a, else reflectance, else eumelanin and pheomelanin (1.3 and
+// 0 when none is given); the model's eta, beta_m, beta_n and alpha. Its parameters may be
+// textures in pbrt; photon's hair takes constants.
+Json SceneBuilder::hairJson(const Params& p) {
+    const Location& where = p.directive().where;
+    Json m = {{"type", "hair"}};
+    auto constant = [&](const std::string& name, std::optional<Json> v) -> std::optional<Json> {
+        if (v && !v->is_array() && !v->is_number()) {
+            unsupported(p.directive(), "hair: a textured \"" + name + "\" is not supported", "its default used");
+            return std::nullopt;
+        }
+        return v;
+    };
+    if (auto sigma = constant("sigma_a", colorValue(p, "sigma_a", int(SpectrumKind::Index)))) {
+        m["sigma_a"] = *sigma;
+    } else if (auto r = constant("reflectance", colorValue(p, "reflectance", int(SpectrumKind::Reflectance)))) {
+        Json c = reflectance(*r, where, out_.warnings);
+        for (Json& x : c) x = std::clamp(x.get<double>(), 1e-4, 1.0);  // photon's "color" is in (0, 1]
+        m["color"] = c;
+    } else {
+        for (const char* name : {"eumelanin", "pheomelanin"})
+            if (auto v = constant(name, floatValue(p, name))) m[name] = *v;
+    }
+    for (const auto& [pbrtName, name] : {std::pair{"eta", "eta"}, {"beta_m", "beta_m"}, {"beta_n", "beta_n"}, {"alpha", "alpha"}})
+        if (auto v = constant(pbrtName, floatValue(p, pbrtName))) m[name] = *v;
+    return m;
+}
+
 std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Params& p) {
     const Location& where = p.directive().where;
     Json m;
@@ -217,6 +245,8 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
              {"reflectance", reflectance(scaled(colorValue(p, "reflectance", int(SpectrumKind::Reflectance))), where, out_.warnings)},
              {"transmittance",
               reflectance(scaled(colorValue(p, "transmittance", int(SpectrumKind::Reflectance))), where, out_.warnings)}};
+    } else if (type == "hair") {
+        m = hairJson(p);
     } else if (type == "mix") {
         const std::vector<std::string> names = p.strings("materials");
         if (names.size() != 2) fail(where, "mix: \"materials\" must name two materials");
@@ -230,7 +260,7 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
     } else {
         unsupported(p.directive(), "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                                   "thindielectric, conductor, coatedconductor, diffusetransmission, mix, interface)",
+                                   "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface)",
                     "rendered as a grey diffuse material");
         return Json{{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
     }

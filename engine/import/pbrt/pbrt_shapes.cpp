@@ -216,6 +216,7 @@ void SceneBuilder::shape(const Directive& d) {
         return addShapeJson(std::move(s));
     }
     if (type == "sphere") return addSphere(p, d);
+    if (type == "curve") return addCurve(p, d);
     if (type == "disk" || type == "cylinder") {
         const double r = p.number("radius", 1), phiMax = p.number("phimax", 360);
         if (!(phiMax > 0)) fail(d.where, type + ": phimax must be > 0");
@@ -233,7 +234,7 @@ void SceneBuilder::shape(const Directive& d) {
         return addMeshShape(std::move(mesh), "meshes/" + std::to_string(++meshCount_) + ".ply", p, d);
     }
     unsupported(d, "Shape \"" + type + "\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, "
-                                   "cylinder, bilinearmesh, loopsubdiv)");
+                                   "cylinder, bilinearmesh, loopsubdiv, curve)");
 }
 
 void SceneBuilder::objectBegin(const Directive& d) {

@@ -58,7 +58,8 @@ public:
     int width() const;
     int height() const;
     // Triangles of all meshes together, as held in memory: an object's once, however many
-    // times instances place it (spheres are not meshed).
+    // times instances place it (spheres are not meshed). Each curve segment counts as one:
+    // Embree's hierarchy holds about as much for it as for a triangle.
     int64_t triangleCount() const;
     // The files the scene named (meshes, textures), relative to its folder in normal form
     // ("meshes/a.obj"), sorted.

@@ -310,7 +310,8 @@ private:
             return kSpecularWaits;
         }
         ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
-        if (!sp.material->isDeltaOnly() && depth >= settings_.firstArrivalDepth) {
+        // No visible point is ever on a fibre (Material::alignsToTangent): none gathers there.
+        if (!sp.material->isDeltaOnly() && !sp.material->alignsToTangent() && depth >= settings_.firstArrivalDepth) {
             // Photons measure flux through the geometric surface, |wi.ng|; a bent shading
             // normal reflects in proportion to |wi.ns| instead (what the camera side's light
             // samples weigh by), so the arrival carries their ratio (Veach 1997, sec. 5.3).

@@ -30,7 +30,9 @@ inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, 
     ShadingPoint sp{hit, &m, {}, m.inputsAt(hit.uv)};
     turnTowardViewer(m, sp.hit, wo);
     if (m.bendsNormal()) sp.hit.ns = m.bentNormal(hit.uv, sp.hit.ns, sp.hit.ng, scene.tangentsAt(hit));
-    sp.frame = Frame::fromNormal(sp.hit.ns);
+    // A fibre's frame runs along it (Material::alignsToTangent).
+    sp.frame = m.alignsToTangent() ? Frame::fromNormalAndTangent(sp.hit.ns, scene.tangentsAt(hit).dpdu)
+                                   : Frame::fromNormal(sp.hit.ns);
     return sp;
 }
 

@@ -138,7 +138,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         const BsdfContinuation next = !storesHere || lastLookup ? BsdfContinuation{kAllLobes, 1.0f}
                                       : splits                  ? BsdfContinuation{others, 1.0f - pd}
                                                                 : BsdfContinuation{};
-        if (!m.isDeltaOnly() && (directBySampling || !storesHere))
+        if (!m.isDeltaOnly() && (directBySampling || !storesHere || m.alignsToTangent()))
             direct += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next), ++rays;
         else if (splits)  // photons bring direct light through the diffuse lobe only
             direct += beta * sampleDirectLight(scene, sp, wo, sampler, others, next), ++rays;
@@ -165,7 +165,10 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
                 medium = scene.mediumToward(hit, ray.d, medium);
                 continue;
             }
-            if (first) storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
+            // A fibre's scattering needs its tangent, which a visible point does not keep: a
+            // path that ends on one (at the last vertex) keeps only its light sample and lookup.
+            if (first && !m.alignsToTangent())
+                storeVisiblePoint(index, sp, wo, beta / pd, splits ? kDiffuseLobe : kAllLobes, pathLength);
             if (lastLookup) lookUpLight(scene, hit, sp, woLocal, beta, medium, sampler, direct), ++rays;
             break;
         }
