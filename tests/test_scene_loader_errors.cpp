@@ -204,12 +204,12 @@ TEST(SceneLoaderErrors, WrongTypes) {
 TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["shapes"][0]["material"] = "foo"; }, "shapes[0].material", "unknown material \"foo\"");
     expectError([](Json& d) { d["shapes"][1]["type"] = "cone"; }, "shapes[1].type",
-                "unknown type \"cone\" (expected one of quad, sphere, mesh, instance)");
+                "unknown type \"cone\" (expected one of quad, sphere, mesh, curves, instance)");
     expectError([](Json& d) { d["lights"][0]["type"] = "area"; }, "lights[0].type",
                 "unknown type \"area\" (expected one of point, spot, directional, environment)");
     expectError([](Json& d) { d["materials"]["white"]["type"] = "lambert"; }, "materials.white.type",
                 "unknown type \"lambert\" (expected one of diffuse, dielectric, mirror, conductor, plastic, "
-                "coated_diffuse, coated_conductor, diffuse_transmission, mix)");
+                "coated_diffuse, coated_conductor, diffuse_transmission, mix, hair)");
     expectError(
         [](Json& d) {
             d["materials"]["white"] = {{"type", "diffuse_transmission"}, {"reflectance", {0.6, 0.6, 0.6}},
