@@ -279,6 +279,35 @@ Shape "curve" "integer degree" [2] "point3 P" [0 0 2  1 2 2  2 0 2] "float width
     EXPECT_EQ(loaded.shapes.back().curves.points.size(), 15u);
 }
 
+// Curves inside ObjectBegin become the object's shape; an instance scaled by 2 doubles the
+// tube: a ray down -z meets it 2 r before its axis (r = 0.05).
+TEST(PbrtCurves, InstancedCurvesScaleWithTheirInstance) {
+    const ImportedScene s = import(R"(
+Material "hair"
+ObjectBegin "tuft"
+Shape "curve" "point3 P" [-1 0 0  -0.3 0 0  0.3 0 0  1 0 0] "float width" [0.1] "string type" "cylinder"
+ObjectEnd
+AttributeBegin
+  Translate 0 3 0
+  ObjectInstance "tuft"
+AttributeEnd
+AttributeBegin
+  Translate 0 6 0
+  Scale 2 2 2
+  ObjectInstance "tuft"
+AttributeEnd
+)");
+    EXPECT_EQ(s.document["objects"]["tuft"]["shapes"][0]["type"], "curves");
+    auto scene = Scene::build(loadImportedScene(s, scratch()));
+    for (auto [y, r] : {std::pair{3.0f, 0.05f}, {6.0f, 0.1f}}) {
+        SurfaceHit hit;
+        ASSERT_TRUE(scene->intersect(Ray{{0.2f, y, 5}, {0, 0, -1}}, hit)) << "y " << y;
+        EXPECT_NEAR(hit.t, 5 - r, 1e-3f) << "y " << y;
+        EXPECT_NEAR(hit.ng.z, 1, 1e-3f);
+        EXPECT_NEAR(hit.uv.y, 0.5f, 2e-3f);
+    }
+}
+
 TEST(PbrtCurves, RibbonsAreRefusedUnlessLenientAndBadCurvesNamed) {
     const std::string ribbon = kHeader + R"(Material "hair"
 Shape "curve" "point3 P" [0 0 0  1 1 0  2 1 0  3 0 0] "string type" "ribbon" "normal N" [0 0 1  0 0 1]

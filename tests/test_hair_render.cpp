@@ -121,5 +121,26 @@ TEST(CurvesRender, SppmAgreesWithThePathTracerOnHairOverAFloor) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(means.sppm[c], means.path[c], 0.03f * means.path[c]) << "channel " << c;
 }
 
+// The same seed gives the same image on one thread and on two, through hair: the curves'
+// hits and the filter that skips the fibre a ray leaves depend on the ray alone.
+TEST(CurvesRender, HairImageIsTheSameOnOneAndTwoThreads) {
+    SceneDescription d;
+    d.camera = test::camera({0, 1.2f, 3}, {0, 0.3f, 0}, {0, 1, 0}, 40, 16, 16);
+    HairParameters blonde;
+    blonde.sigmaA = hairSigmaAFromMelanin(0.3f, 0.0f);
+    d.materials = {makeDiffuse(Color(0.6f)), makeHair(blonde)};
+    d.materialNames = {"grey", "hair"};
+    ShapeDescription hair = tuft(300, 0.006f, 1, 5);
+    for (CurvePoint& p : hair.curves.points) p.p += Vec3(0, 0.6f, 0);
+    d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0),
+                test::quad({-0.5f, 2.5f, -0.5f}, {1, 0, 0}, {0, 0, 1}, 0, Color(8.0f)), hair};
+    d.render.passes = 4;
+    d.render.photonsPerPass = 20000;
+    for (IntegratorKind kind : {IntegratorKind::Sppm, IntegratorKind::Path}) {
+        d.render.integrator = kind;
+        EXPECT_TRUE(test::renderWithThreads(d, 1).rgb == test::renderWithThreads(d, 2).rgb) << "integrator " << int(kind);
+    }
+}
+
 }  // namespace
 }  // namespace photon
