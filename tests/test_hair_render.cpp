@@ -102,21 +102,26 @@ TEST(CurvesRender, WhiteFurnaceOfFibresThatAbsorbNothing) {
     }
 }
 
-// A tuft of brown hair (eumelanin 1.3) over a grey floor under a square light: the light
-// the floor gets through the hair is photons' in SPPM and light samples' and BSDF samples'
-// in the path tracer; the hair itself is path traced by both. The two images' means agree
-// within 3% per channel.
-TEST(CurvesRender, SppmAgreesWithThePathTracerOnHairOverAFloor) {
+// A tuft of `strands` strands of hair over a grey floor under a square light.
+SceneDescription hairOverAFloor(float eumelanin, int strands, uint64_t seed, int resolution) {
     SceneDescription d;
-    d.camera = test::camera({0, 1.2f, 3}, {0, 0.3f, 0}, {0, 1, 0}, 40, 24, 24);
-    HairParameters brown;
-    brown.sigmaA = hairSigmaAFromMelanin(1.3f, 0.0f);
-    d.materials = {makeDiffuse(Color(0.6f)), makeHair(brown)};
+    d.camera = test::camera({0, 1.2f, 3}, {0, 0.3f, 0}, {0, 1, 0}, 40, resolution, resolution);
+    HairParameters h;
+    h.sigmaA = hairSigmaAFromMelanin(eumelanin, 0.0f);
+    d.materials = {makeDiffuse(Color(0.6f)), makeHair(h)};
     d.materialNames = {"grey", "hair"};
-    ShapeDescription hair = tuft(600, 0.006f, 1, 3);
+    ShapeDescription hair = tuft(strands, 0.006f, 1, seed);
     for (CurvePoint& p : hair.curves.points) p.p += Vec3(0, 0.6f, 0);
     d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0),
                 test::quad({-0.5f, 2.5f, -0.5f}, {1, 0, 0}, {0, 0, 1}, 0, Color(8.0f)), hair};
+    return d;
+}
+
+// A tuft of brown hair (eumelanin 1.3) over the floor: the light the floor gets through the
+// hair is photons' in SPPM and light samples' and BSDF samples' in the path tracer; the hair
+// itself is path traced by both. The two images' means agree within 3% per channel.
+TEST(CurvesRender, SppmAgreesWithThePathTracerOnHairOverAFloor) {
+    const SceneDescription d = hairOverAFloor(1.3f, 600, 3, 24);
     const test::PathAndSppmMeans means = test::renderPathAndSppm(d, 64, 64, 50000);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(means.sppm[c], means.path[c], 0.03f * means.path[c]) << "channel " << c;
 }
@@ -124,16 +129,7 @@ TEST(CurvesRender, SppmAgreesWithThePathTracerOnHairOverAFloor) {
 // The same seed gives the same image on one thread and on two, through hair: the curves'
 // hits and the filter that skips the fibre a ray leaves depend on the ray alone.
 TEST(CurvesRender, HairImageIsTheSameOnOneAndTwoThreads) {
-    SceneDescription d;
-    d.camera = test::camera({0, 1.2f, 3}, {0, 0.3f, 0}, {0, 1, 0}, 40, 16, 16);
-    HairParameters blonde;
-    blonde.sigmaA = hairSigmaAFromMelanin(0.3f, 0.0f);
-    d.materials = {makeDiffuse(Color(0.6f)), makeHair(blonde)};
-    d.materialNames = {"grey", "hair"};
-    ShapeDescription hair = tuft(300, 0.006f, 1, 5);
-    for (CurvePoint& p : hair.curves.points) p.p += Vec3(0, 0.6f, 0);
-    d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0),
-                test::quad({-0.5f, 2.5f, -0.5f}, {1, 0, 0}, {0, 0, 1}, 0, Color(8.0f)), hair};
+    SceneDescription d = hairOverAFloor(0.3f, 300, 5, 16);  // blonde
     d.render.passes = 4;
     d.render.photonsPerPass = 20000;
     for (IntegratorKind kind : {IntegratorKind::Sppm, IntegratorKind::Path}) {
