@@ -138,6 +138,86 @@ AttributeEnd
     fs::remove_all(dir);
 }
 
+// A grey plane (albedo 0.5) at y = 0 under a point light of intensity 1 at height 2, seen
+// straight down from height 0.4 through a narrow view, and a box of the absorbing medium
+// spanning y in [lo, hi] over the whole plane, bounded by faces of index 1 (pbrt-v4's
+// "interface": no surface). Where the light and the camera are in the box is set by the
+// caller. The middle pixels see rho / pi I / 4 times the transmittance along the light's
+// way and the camera's.
+SceneDescription planeUnderAPointLightAndABox(IntegratorKind kind, float lo, float hi) {
+    SceneDescription d;
+    d.camera = test::camera({0, 0.4f, 0}, {0, 0, 0}, {0, 0, -1}, 5, 8, 8);
+    d.materials = {makeDiffuse(Color(0.5f)), makeDielectric(1.0f)};
+    d.materialNames = {"grey", "boundary"};
+    d.media = {{"absorbs", kAbsorption}};
+    d.shapes = {test::quad({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, 0)};
+    for (ShapeDescription& face : boxFaces({-5, lo, -5}, {5, hi, 5}, 1)) {
+        face.insideMedium = 0;
+        d.shapes.push_back(face);
+    }
+    LightDescription light;
+    light.kind = LightDescription::Kind::Point;
+    light.position = {0, 2, 0};
+    light.intensity = Color(1.0f);
+    d.lights = {light};
+    d.render.integrator = kind;
+    d.render.passes = kind == IntegratorKind::Sppm ? 64 : 16;
+    d.render.photonsPerPass = 100000;
+    return d;
+}
+
+// Shadow rays cross the box's faces (no surface) taking on the medium's absorption, and so
+// do photons: a point light behind a slab 1 thick lights the plane with exp(-absorption),
+// which a shadow ray blocked at the first face would leave black in the path tracer. Then
+// the light inside the box (0.5 from its floor; its photons start in the medium), and the
+// camera inside it (0.2 above the plane, 0.8 below the light): exp(-0.5 absorption) and
+// exp(-absorption). The path tracer within 1%, SPPM within 3% (its radius's bias).
+TEST(AbsorbingMedium, ShadowRaysCameraAndLightsInMedia) {
+    struct Case {
+        const char* what;
+        float lo, hi, depth;
+        bool lightInside, cameraInside;
+    };
+    for (const Case& c : {Case{"slab between", 0.5f, 1.5f, 1.0f, false, false},
+                          Case{"light inside", 1.5f, 2.5f, 0.5f, true, false},
+                          Case{"camera inside", 0.2f, 1.0f, 1.0f, false, true}})
+        for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+            SceneDescription d = planeUnderAPointLightAndABox(kind, c.lo, c.hi);
+            if (c.lightInside) d.lights[0].medium = 0;
+            if (c.cameraInside) d.camera.medium = 0;
+            const Color seen = test::meanOver(test::renderImage(d), 2, 2, 6, 6);
+            for (int ch = 0; ch < 3; ++ch) {
+                const float expected = 0.5f / kPi * 0.25f * std::exp(-kAbsorption[ch] * c.depth);
+                EXPECT_NEAR(seen[ch], expected, (kind == IntegratorKind::Path ? 0.01f : 0.03f) * expected)
+                    << c.what << ", integrator " << int(kind) << ", channel " << ch;
+            }
+        }
+}
+
+// pbrt-v4's camera and lights take MediumInterface's outside medium where they are declared.
+TEST(AbsorbingMedium, PbrtCameraAndLightMedia) {
+    const fs::path dir = fs::temp_directory_path() / ("photon-media-cam-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "water.pbrt") << R"(MakeNamedMedium "water" "string type" "homogeneous" "rgb sigma_a" [0.1 0.05 0.01] "rgb sigma_s" [0 0 0]
+MediumInterface "" "water"
+LookAt 0 1 3  0 0 0  0 1 0
+Camera "perspective" "float fov" [30]
+WorldBegin
+MediumInterface "" "water"
+LightSource "point" "point3 from" [0 2 0] "rgb I" [1 1 1]
+LightSource "distant" "point3 from" [0 2 0] "point3 to" [0 0 0] "rgb L" [1 1 1]
+Shape "trianglemesh" "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5] "integer indices" [0 2 1 0 3 2]
+)";
+    const ImportedScene s = importPbrt(dir / "water.pbrt");
+    EXPECT_EQ(s.document["camera"]["medium"], "water");
+    EXPECT_EQ(s.document["lights"][0]["medium"], "water");
+    EXPECT_FALSE(s.document["lights"][1].contains("medium"));
+    const SceneDescription d = loadImportedScene(s, dir);
+    EXPECT_EQ(d.camera.medium, 0);
+    EXPECT_EQ(d.lights[0].medium, 0);
+    EXPECT_EQ(d.lights[1].medium, -1);
+}
+
 // ---- the scene file ----
 
 using test::expectError;
@@ -158,6 +238,11 @@ TEST(MediaScene, MediaAndTheShapesThatBoundThem) {
     EXPECT_EQ(d.shapes[0].outsideMedium, 0);
     EXPECT_EQ(d.shapes[1].insideMedium, -1);
     EXPECT_FALSE(d.shapes[1].boundsMedium());
+    doc["camera"]["medium"] = "water";
+    doc["lights"] = {{{"type", "point"}, {"position", {0, 1, 0}}, {"intensity", {1, 1, 1}}, {"medium", "wine"}}};
+    const SceneDescription inMedia = load(doc);
+    EXPECT_EQ(inMedia.camera.medium, 1);
+    EXPECT_EQ(inMedia.lights[0].medium, 0);
 }
 
 TEST(MediaScene, Errors) {
@@ -183,6 +268,12 @@ TEST(MediaScene, Errors) {
     expectError([&](Json& doc) { doc["media"] = {{"wine", {{"absorption", {1, -2, 3}}}}}; }, "media.wine.absorption[1]",
                 "must be >= 0");
     expectError([&](Json& doc) { doc["media"] = {{"wine", Json::object()}}; }, "media.wine.absorption", "missing required field");
+    expectError(
+        [&](Json& doc) {
+            withMedia(doc);
+            doc["camera"]["medium"] = "water";
+        },
+        "camera.medium", "unknown medium \"water\" (define it under \"media\")");
     expectError(
         [&](Json& doc) {
             withMedia(doc);

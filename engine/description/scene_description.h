@@ -34,6 +34,7 @@ struct CameraDescription {
     // forward x up: the image mirrored left to right.
     bool leftHanded = false;
     PixelFilterDescription filter;  // how each pixel weighs the image around it
+    int32_t medium = -1;  // the absorbing medium the camera is in (SceneDescription::media), -1: none
 };
 
 // Triangles in world space; normals and uvs per vertex, either empty or one per position.
@@ -161,6 +162,9 @@ struct LightDescription {
         float illuminance = 0;
     };
     EnvironmentImage environment;  // image null: constant `radiance`
+    // Point and spot lights: the absorbing medium the light is in (-1: none), where its
+    // photons start.
+    int32_t medium = -1;
     // Environment: the light comes in only through this rectangle (world space, corners in
     // order; light arrives from the side of cross(p3 - p0, p1 - p0)), as pbrt-v4's portals.
     std::optional<std::array<Vec3, 4>> portal;

@@ -65,6 +65,9 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
     LightDescription l;
     // In the order of LightDescription::Kind.
     l.kind = Kind(obj.required("type").choice({"point", "spot", "directional", "environment"}, "type"));
+    // A point or spot light may sit in an absorbing medium, where its photons start.
+    if (l.kind == Kind::Point || l.kind == Kind::Spot)
+        if (auto medium = obj.optional("medium")) l.medium = mediumNamed(*medium, ctx);
     switch (l.kind) {
         case Kind::Point:
             l.position = obj.required("position").vec3();

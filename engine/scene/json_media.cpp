@@ -19,14 +19,17 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
     }
 }
 
+int32_t mediumNamed(const JsonValue& value, const LoadContext& ctx) {
+    auto it = ctx.mediumIndex.find(value.string());
+    if (it == ctx.mediumIndex.end()) value.fail("unknown medium \"" + value.string() + "\" (define it under \"media\")");
+    return it->second;
+}
+
 void readShapeMedia(const JsonValue& value, const LoadContext& ctx, ShapeDescription& shape) {
     JsonObject obj = value.object();
     auto side = [&](std::string_view key) {
         auto v = obj.optional(key);
-        if (!v) return -1;
-        auto it = ctx.mediumIndex.find(v->string());
-        if (it == ctx.mediumIndex.end()) v->fail("unknown medium \"" + v->string() + "\" (define it under \"media\")");
-        return it->second;
+        return v ? mediumNamed(*v, ctx) : -1;
     };
     shape.insideMedium = side("inside");
     shape.outsideMedium = side("outside");

@@ -96,12 +96,12 @@ SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
     ctx.baseDir = baseDir;
     ctx.imported = imported;
     SceneDescription scene;
-    scene.camera = readCamera(top.required("camera"));
-    // Materials before shapes: shapes refer to them by name.
-    readMaterials(top.required("materials"), ctx, scene);
-    // Media before shapes too: shapes name the media on their sides.
+    // Media first: the camera, lights and shapes name the media they are in or bound.
     auto media = top.optional("media");
     if (media) readMedia(*media, ctx, scene);
+    scene.camera = readCamera(top.required("camera"), ctx);
+    // Materials before shapes: shapes refer to them by name.
+    readMaterials(top.required("materials"), ctx, scene);
     // Objects before shapes: instances among the shapes refer to them by name.
     if (auto objects = top.optional("objects")) readObjects(*objects, ctx, scene);
     readShapes(top.required("shapes"), ctx, scene);

@@ -65,7 +65,8 @@ ColorParam readColorParam(const JsonValue& value, LoadContext& ctx, const Range&
 FloatParam readFloatParam(const JsonValue& value, LoadContext& ctx, const Range& range,
                           ImageChannels channels = ImageChannels::Color);
 
-CameraDescription readCamera(const JsonValue& value);
+// The camera; its "medium" names one of the media read before it.
+CameraDescription readCamera(const JsonValue& value, const LoadContext& ctx);
 RenderSettings readRender(const JsonValue& value);
 void readMaterials(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 // The world's shapes and instances of objects ("shapes").
@@ -80,6 +81,8 @@ void readLights(const JsonValue& value, LoadContext& ctx, SceneDescription& scen
 // "media" (json_media.cpp), and a shape's "medium" {"inside", "outside"}.
 void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene);
 void readShapeMedia(const JsonValue& value, const LoadContext& ctx, ShapeDescription& shape);
+// The index of the medium the string `value` names.
+int32_t mediumNamed(const JsonValue& value, const LoadContext& ctx);
 
 // {"axis": [x, y, z], "angle": degrees}: a rotation about the axis (right-handed).
 Transform readRotation(const JsonValue& value);

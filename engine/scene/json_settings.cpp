@@ -58,7 +58,7 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
 
 }  // namespace
 
-CameraDescription readCamera(const JsonValue& value) {
+CameraDescription readCamera(const JsonValue& value, const LoadContext& ctx) {
     JsonObject obj = value.object();
     CameraDescription c;
     c.orthographic = obj.choice("type", 0, {"perspective", "orthographic"}, "type") == 1;
@@ -81,6 +81,7 @@ CameraDescription readCamera(const JsonValue& value) {
     c.focusDistance = obj.number("focus_distance", length(c.lookAt - c.position), Range::positive());
     c.leftHanded = obj.choice("handedness", 0, {"right", "left"}, "handedness") == 1;
     if (auto filter = obj.optional("filter")) c.filter = readPixelFilter(*filter);
+    if (auto medium = obj.optional("medium")) c.medium = mediumNamed(*medium, ctx);
     obj.finish();
     return c;
 }

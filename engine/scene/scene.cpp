@@ -112,10 +112,14 @@ void Scene::buildLights() {
         const ShapeDescription& s = shapes_[i];
         if (isBlack(s.emission)) continue;
         lightOfShape_[i] = int32_t(ownedLights_.size());
+        // An emitter that bounds a medium sends its photons into its outside medium (the
+        // side its normal faces); one that bounds none, into the medium of no shape.
+        lightMedium_.push_back(s.outsideMedium);
         ownedLights_.push_back(s.kind == ShapeDescription::Kind::Sphere ? makeSphereAreaLight(s)
                                                                         : makeMeshAreaLight(s, description_.render.lightSampler));
     }
     for (const LightDescription& d : description_.lights) {
+        lightMedium_.push_back(d.medium);
         switch (d.kind) {
             case LightDescription::Kind::Point: ownedLights_.push_back(makePointLight(d)); break;
             case LightDescription::Kind::Spot: ownedLights_.push_back(makeSpotLight(d)); break;
@@ -139,6 +143,8 @@ void Scene::buildLights() {
 void Scene::prepareHitData() {
     for (const ShapeDescription* shape : slots_) {
         materialOf_.push_back(shape->material);
+        const std::optional<Material::SmoothSpecular> smooth = materials_[shape->material]->smoothSpecular();
+        passThrough_.push_back(smooth && smooth->ior == 1.0f);
         auto curve = curveOfShape_.find(shape);
         curveOfSlot_.push_back(curve == curveOfShape_.end() ? nullptr : curve->second);
     }
@@ -254,6 +260,26 @@ bool Scene::occluded(const Ray& ray) const {
     r.time = 0;
     rtcOccluded1(rtcScene_, &context, &r);
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+Color Scene::shadowTransmittance(Ray ray, int32_t medium) const {
+    if (!hasMedia()) return occluded(ray) ? Color(0.0f) : Color(1.0f);
+    Color t(1.0f);
+    // Each crossing moves the origin past the boundary; a ray that met more boundaries than
+    // this is taken as blocked rather than followed without end.
+    constexpr int kMaxCrossings = 64;
+    for (int crossing = 0; crossing <= kMaxCrossings; ++crossing) {
+        SurfaceHit hit;
+        if (!intersect(ray, hit)) return t * transmittance(medium, ray.tMax);
+        if (!passesThrough(hit)) return Color(0.0f);
+        t *= transmittance(medium, hit.t);
+        if (isBlack(t)) return t;
+        medium = mediumToward(hit, ray.d, medium);
+        const float left = ray.tMax - hit.t;
+        ray = spawnRay(hit.p, hit.ng, ray.d);
+        ray.tMax = left;
+    }
+    return Color(0.0f);
 }
 
 SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {

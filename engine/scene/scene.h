@@ -148,6 +148,15 @@ public:
         if (!s.boundsMedium()) return current;
         return dot(w, hit.ng) > 0 ? s.outsideMedium : s.insideMedium;
     }
+    // True if the hit is on a surface that only separates media (a smooth dielectric of
+    // index 1: pbrt-v4's "interface"): rays cross it unbent and unweakened, so camera paths
+    // and shadow rays pass it without a vertex, taking on each medium's absorption.
+    bool passesThrough(const SurfaceHit& hit) const { return passesThrough(hit.shape); }
+    bool passesThrough(uint32_t shape) const { return hasMedia() && passThrough_[shape]; }
+    // What reaches the end of a shadow ray that starts in `medium`: 0 if anything but a
+    // surface that passesThrough() blocks it, else the product of the media's
+    // transmittances along it (1 in a scene without media).
+    Color shadowTransmittance(Ray ray, int32_t medium) const;
     // dp/du and dp/dv at the hit: the tangent frame of normal and bump maps.
     SurfaceTangents tangentsAt(const SurfaceHit& hit) const;
     // Radiance emitted from the hit toward direction w (zero on the back side).
@@ -179,6 +188,9 @@ public:
     const SceneDescription& description() const { return description_; }
     // By power: how photons leave the lights.
     const LightSampler& lights() const { return lightSampler_; }
+    // The absorbing medium light i of lights() is in, where its photons start (-1: none):
+    // a point or spot light's own (LightDescription::medium), an emissive shape's outside.
+    int32_t lightMedium(size_t i) const { return lightMedium_[i]; }
     // How shadow rays pick a light (render.light_sampler).
     const DirectLightSampler& directLights() const { return directLightSampler_; }
     Vec3 boundsMin() const { return boundsMin_; }
@@ -272,6 +284,8 @@ private:
     std::vector<const ShapeDescription*> slots_;  // what shape() returns
     std::vector<uint32_t> materialOf_;            // by shape: its material, one load away
     std::vector<int32_t> lightOfShape_;           // by shape: its area light's index in lightSampler_, or -1
+    std::vector<uint8_t> passThrough_;            // by shape: see passesThrough()
+    std::vector<int32_t> lightMedium_;            // by light, in lightSampler_'s order
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).
     struct Placement {

@@ -85,6 +85,8 @@ private:
     void makeNamedMedium(const Directive& d);
     void mediumInterface(const Directive& d);
     std::optional<Json> shapeMedium();
+    // `name` if it is a medium photon renders, else empty.
+    std::string renderedMedium(const std::string& name) const;
     // pbrt_objects.cpp (in pbrt_shapes.cpp)
     void objectBegin(const Directive& d);
     void objectInstance(const Directive& d);
@@ -132,6 +134,8 @@ private:
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
         bool orthographic = false;
         std::optional<std::vector<double>> screenWindow;
+        // pbrt-v4's camera medium: MediumInterface's outside where the Camera is declared.
+        std::string medium;
         Location where;
         // photon's "filter": pbrt-v4's default Gaussian (radius 1.5, sigma 0.5; written by
         // SceneBuilder::pixelFilter) unless the file has a PixelFilter.

@@ -19,6 +19,7 @@ void SceneBuilder::camera(const Directive& d) {
     camera_.where = d.where;
     // The CTM is camera-from-world here; pbrt names its inverse "camera".
     camera_.cameraToWorld = state_.ctm.inverse();
+    camera_.medium = state_.outsideMedium;
     coordinateSystems_["camera"] = camera_.cameraToWorld;
     if (!camera_.orthographic) {
         camera_.fov = p.number("fov", 90);
@@ -163,6 +164,7 @@ void SceneBuilder::writeCameraAndRender() {
         cam["aperture_radius"] = camera_.lensRadius;
         cam["focus_distance"] = camera_.focalDistance;
     }
+    if (const std::string medium = renderedMedium(camera_.medium); !medium.empty()) cam["medium"] = medium;
     out_.document["camera"] = cam;
 }
 

@@ -115,6 +115,10 @@ void SceneBuilder::lightSource(const Directive& d) {
     } else {
         return unsupported(d, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
     }
+    // pbrt-v4 puts a light in MediumInterface's outside medium; distant and infinite lights
+    // are outside the scene.
+    if (type == "point" || type == "spot")
+        if (const std::string medium = renderedMedium(state_.outsideMedium); !medium.empty()) light["medium"] = medium;
     lights_.push_back(std::move(light));
 }
 

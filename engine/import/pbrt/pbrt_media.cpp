@@ -49,10 +49,14 @@ void SceneBuilder::mediumInterface(const Directive& d) {
     state_.outsideMedium = outside;
 }
 
-std::optional<Json> SceneBuilder::shapeMedium() {
+std::string SceneBuilder::renderedMedium(const std::string& name) const {
     // A medium left out (lenient import) is no medium.
-    auto rendered = [&](const std::string& n) { return !n.empty() && media_[n] ? n : std::string(); };
-    const std::string inside = rendered(state_.insideMedium), outside = rendered(state_.outsideMedium);
+    auto it = media_.find(name);
+    return it != media_.end() && it->second ? name : std::string();
+}
+
+std::optional<Json> SceneBuilder::shapeMedium() {
+    const std::string inside = renderedMedium(state_.insideMedium), outside = renderedMedium(state_.outsideMedium);
     if (inside == outside) return std::nullopt;
     Json m = Json::object();
     if (!inside.empty()) m["inside"] = inside;

@@ -3,7 +3,7 @@
 namespace photon {
 
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler, unsigned lobes,
-                        BsdfContinuation next) {
+                        BsdfContinuation next, int32_t medium) {
     const float uLight = sampler.get1D();
     const Vec2 u = sampler.get2D();
     // Light is kept only from above n: a surface that only reflects sees none from below its
@@ -24,7 +24,10 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
     if (isBlack(f)) return Color(0.0f);
     Ray shadow = std::isinf(ls->distance) ? spawnRay(sp.hit.p, sp.hit.ng, ls->wi)
                                           : spawnRayTo(sp.hit.p, sp.hit.ng, sp.hit.p + ls->wi * ls->distance);
-    if (scene.occluded(shadow)) return Color(0.0f);
+    // sp.hit's normal is turned toward the viewer only on two-sided (opaque) materials, which
+    // the path meets from the side of the medium it is in: mediumToward reads the right side.
+    const Color transmittance = scene.shadowTransmittance(shadow, scene.mediumToward(sp.hit, ls->wi, medium));
+    if (isBlack(transmittance)) return Color(0.0f);
     const float pickProbability = pick.probability * sideProbability;
     const unsigned shared = lobes & next.lobes;
     if (shared && ls->pdf > 0) {
@@ -35,7 +38,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
             shared == lobes ? f : sp.material->eval(woLocal, wiLocal, sp.inputs, TransportMode::Radiance, shared);
         f = (f - fShared) + fShared * w;
     }
-    return f * ls->weight * (std::abs(wiLocal.z) / pickProbability);
+    return f * ls->weight * transmittance * (std::abs(wiLocal.z) / pickProbability);
 }
 
 }  // namespace photon

@@ -19,14 +19,16 @@ struct BsdfContinuation {
 
 // Reflected radiance toward wo (world space) from one light picked by Scene::directLights,
 // through the material's `lobes` only. Its draws: the light (1D), the point on it (2D), and
-// for a material that transmits, the side (1D).
+// for a material that transmits, the side (1D). `medium`: the one the path arrived in at
+// sp; the shadow ray starts in the medium on the light's side of the surface and takes on
+// the absorption of each medium it crosses (Scene::shadowTransmittance).
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler,
-                        unsigned lobes = kAllLobes, BsdfContinuation next = {});
+                        unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1);
 // The same with every number from `rng`.
 inline Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng,
-                               unsigned lobes = kAllLobes, BsdfContinuation next = {}) {
+                               unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1) {
     PathSampler sampler(rng);
-    return sampleDirectLight(scene, sp, wo, sampler, lobes, next);
+    return sampleDirectLight(scene, sp, wo, sampler, lobes, next, medium);
 }
 
 }  // namespace photon

@@ -49,6 +49,7 @@ public:
         alignas(64) uint64_t state[kLanes], increment[kLanes];
         alignas(32) int32_t emitted[kLanes];  // -1 where a photon left a light
         alignas(32) uint32_t cell[kLanes];    // EmittedPhoton::cell
+        alignas(32) int32_t light[kLanes];    // the light it left, an index into Scene::lights()
     };
     void emitLanes(const RngStream& stream, const int64_t* index, const int32_t* want, Lanes& out) const;
 

@@ -125,6 +125,7 @@ void PhotonEmitter::emitLanes(const RngStream& stream, const int64_t* index, con
         if (!want[i]) continue;
         const LightChoice choice = pickLight(uLight[i]);
         out.cell[i] = choice.cell;
+        out.light[i] = int32_t(choice.light);
         if (choice.picked && laneTriangles_[choice.light]) {
             fromTriangles.triangles[i] = laneTriangles_[choice.light];
             fromTriangles.beta[i] = laneFlux_[choice.light];

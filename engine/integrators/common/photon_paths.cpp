@@ -166,7 +166,9 @@ PHOTON_LANES_KERNEL(bounceSpecular, bounceSpecularLanes, (PhotonLanes & L, int f
 
 class PhotonWalk {
     // What the walk needs of each shape's material, looked up once per hit.
-    enum class Bounce { Lambertian, Specular, OneByOne };  // in lanes (two kinds), or not
+    // In lanes (two kinds), or not; or none: straight on through a surface that only bounds
+    // media (Scene::passesThrough), as camera paths and shadow rays pass it.
+    enum class Bounce { Lambertian, Specular, OneByOne, PassThrough };
     struct ShapeScattering {
         const Material* material;
         Bounce bounce;
@@ -189,6 +191,11 @@ public:
             const Material& m = scene.materialAt(scene.shape(i).material);
             const bool boundsMedium = scene.hasMedia() && scene.shape(i).boundsMedium();
             ShapeScattering sc{&m, Bounce::OneByOne, m.twoSided(), m.tint().textured(), m.tint().value, 0.0f, boundsMedium};
+            if (scene.passesThrough(i)) {
+                sc.bounce = Bounce::PassThrough;
+                shapes_.push_back(sc);
+                continue;
+            }
             if (m.lambertian() && m.twoSided() && !settings.specularOnly && !boundsMedium) sc.bounce = Bounce::Lambertian;
             if (std::optional<Material::SmoothSpecular> smooth = m.smoothSpecular(); smooth && !boundsMedium) {
                 sc.bounce = Bounce::Specular;
@@ -254,7 +261,7 @@ private:
                 L.depth[i] = 0;
                 L.onlySpecular[i] = -1;
                 L.cell[i] = emitted_.cell[k];
-                L.medium[i] = -1;  // lights are in no medium
+                L.medium[i] = scene_.hasMedia() ? scene_.lightMedium(size_t(emitted_.light[k])) : -1;
                 L.alive[i] = -1;
             }
         }
@@ -292,6 +299,15 @@ private:
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
         const ShapeScattering& shape = shapes_[hit.shape];
+        if (shape.bounce == Bounce::PassThrough) {
+            // No vertex: the photon keeps its depth (its arrivals count as the light's
+            // direct light where they would without the boundary) and goes on unbent.
+            const Ray ray = spawnRay(hit.p, hit.ng, -wi);
+            L.medium[i] = scene_.mediumToward(hit, ray.d, L.medium[i]);
+            L.setRay(i, ray);
+            L.alive[i] = -1;
+            return 0;
+        }
         if (shape.bounce == Bounce::Lambertian) {
             turnTowardViewer(hit, wi);  // the material is two-sided
             if (depth >= settings_.firstArrivalDepth)

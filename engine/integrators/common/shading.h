@@ -49,20 +49,43 @@ inline void absorbAlong(const Scene& scene, int32_t medium, float distance, Colo
     if (medium >= 0) beta *= scene.transmittance(medium, distance);
 }
 
-// Casts a camera path's ray from inside `medium`, whose absorption on the way beta takes
-// on; returns whether it hit. Light the ray reaches directly (the
-// environment when it leaves, emission where it lands) is added to L with weight beta when
-// `countEmitted`: all of it on camera paths that no light sample could have served (the
-// photon mapper's delta-only paths, radiosity's). Integrators that sample lights at
-// non-delta vertices use the form with a BounceSampling below.
-inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t medium, bool countEmitted,
+// Casts the ray from inside `medium` to the first surface that is more than a boundary
+// between media (Scene::passesThrough), straight through those, as pbrt-v4's integrators
+// skip its "interface" surfaces: no path vertex there. beta takes on each medium's
+// absorption on the way (to infinity if the ray leaves the scene: returns false), `medium`
+// follows the crossings, and hit.t is the whole distance along the ray.
+inline bool castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t& medium, SurfaceHit& hit) {
+    // A ray caught between more boundaries than this stops at the last as at a surface (a
+    // dielectric of index 1, which sends it on unbent).
+    constexpr int kMaxCrossings = 64;
+    float travelled = 0;
+    for (int crossing = 0;; ++crossing) {
+        if (!scene.intersect(ray, hit)) {
+            absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
+            return false;
+        }
+        absorbAlong(scene, medium, hit.t, beta);
+        travelled += hit.t;
+        if (!scene.passesThrough(hit) || crossing == kMaxCrossings) break;
+        medium = scene.mediumToward(hit, ray.d, medium);
+        ray = spawnRay(hit.p, hit.ng, ray.d);
+    }
+    hit.t = travelled;
+    return true;
+}
+
+// Casts a camera path's ray from inside `medium` (castPastBoundaries); returns whether it
+// hit. Light the ray reaches directly (the environment when it leaves, emission where it
+// lands) is added to L with weight beta when `countEmitted`: all of it on camera paths that
+// no light sample could have served (the photon mapper's delta-only paths, radiosity's).
+// Integrators that sample lights at non-delta vertices use the form with a BounceSampling
+// below.
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium, bool countEmitted,
                            SurfaceHit& hit, Color& L) {
-    if (!scene.intersect(ray, hit)) {
-        absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
+    if (!castPastBoundaries(scene, ray, beta, medium, hit)) {
         if (countEmitted) L += beta * scene.environment(ray);
         return false;
     }
-    absorbAlong(scene, medium, hit.t, beta);
     if (countEmitted) L += beta * scene.emitted(hit, -ray.d);
     return true;
 }
@@ -135,14 +158,12 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
 // otherwise weighted against the light sample that could have found it too, so that a
 // small bright light in a sharp highlight comes from BSDF samples and a large dim one from
 // light samples (Veach 1997, ch. 9).
-inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t medium,
+inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium,
                            const BounceSampling& bounce, SurfaceHit& hit, Color& L) {
-    if (!scene.intersect(ray, hit)) {
-        absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
+    if (!castPastBoundaries(scene, ray, beta, medium, hit)) {
         L += beta * environmentAfterBounce(scene, bounce, ray);
         return false;
     }
-    absorbAlong(scene, medium, hit.t, beta);
     if (bounce.delta) {
         L += beta * scene.emitted(hit, -ray.d);
     } else if (Scene::Emitter e = scene.emitterAt(hit); e.light) {

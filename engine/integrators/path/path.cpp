@@ -26,7 +26,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     // between shadow rays and BSDF samples by multiple importance sampling.
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
-    int32_t medium = -1;  // the camera is in no medium
+    int32_t medium = scene.description().camera.medium;
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         if (!traceCameraRay(scene, ray, beta, medium, bounce, hit, L)) break;
@@ -36,7 +36,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
         if (depth == maxDepth) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
-        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next);
+        if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next, medium);
         const float uLobe = sampler.get1D();
         const Vec2 u = sampler.get2D();
         std::optional<BSDFSample> s = sp.material->sample(sp.frame.toLocal(wo), uLobe, u, sp.inputs,

@@ -74,9 +74,10 @@ Color PhotonMapIntegrator::radiance(const Ray& cameraRay, PathSampler& sampler) 
     const Scene& scene = *scene_;
     Ray ray = cameraRay;
     Color L(0.0f), beta(1.0f);
+    int32_t medium = -1;  // scenes with media are refused (scene-format.md#media)
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, -1, true, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, medium, true, hit, L)) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         unsigned lobes = sp.material->lobes();

@@ -37,9 +37,10 @@ private:
 Color radiosityRadiance(const Scene& scene, const RadiositySolution& solution, Ray ray, PathSampler& sampler,
                         int maxDepth) {
     Color L(0.0f), beta(1.0f);
+    int32_t medium = -1;  // scenes with media are refused (scene-format.md#media)
     for (int depth = 0; depth < maxDepth; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, -1, true, hit, L)) break;
+        if (!traceCameraRay(scene, ray, beta, medium, true, hit, L)) break;
         Vec3 wo = -ray.d;
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;

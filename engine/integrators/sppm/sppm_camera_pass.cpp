@@ -106,7 +106,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     float pathLength = 0;
     // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
-    int32_t medium = -1;  // the camera is in no medium
+    int32_t medium = scene.description().camera.medium;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
@@ -139,9 +139,9 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
                                       : splits                  ? BsdfContinuation{others, 1.0f - pd}
                                                                 : BsdfContinuation{};
         if (!m.isDeltaOnly() && (directBySampling || !storesHere || m.alignsToTangent()))
-            direct += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next), ++rays;
+            direct += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next, medium), ++rays;
         else if (splits)  // photons bring direct light through the diffuse lobe only
-            direct += beta * sampleDirectLight(scene, sp, wo, sampler, others, next), ++rays;
+            direct += beta * sampleDirectLight(scene, sp, wo, sampler, others, next, medium), ++rays;
         const float reflectance =
             learnsLobeChoice_ && !choice.made() && !storesHere ? smoothDielectricReflectance(m, woLocal) : 0.0f;
         const bool learnedDielectricChoice = reflectance > 0 && reflectance < 1;
@@ -211,7 +211,8 @@ void SppmIntegrator::lookUpLight(const Scene& scene, const SurfaceHit& at, const
     const Ray ray = spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi));
     beta *= s->weight;
     SurfaceHit hit;
-    traceCameraRay(scene, ray, beta, scene.mediumToward(at, ray.d, medium), bounceFrom(sp, *s), hit, direct);
+    int32_t next = scene.mediumToward(at, ray.d, medium);
+    traceCameraRay(scene, ray, beta, next, bounceFrom(sp, *s), hit, direct);
 }
 
 void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,

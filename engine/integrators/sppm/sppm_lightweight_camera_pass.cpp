@@ -51,7 +51,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
     float pathLength = 0;
     const int maxDepth = settings_.maxDepth;
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
-    int32_t medium = -1;  // the camera is in no medium
+    int32_t medium = scene.description().camera.medium;
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         Color found(0.0f);
@@ -64,7 +64,7 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         const Vec3 woLocal = sp.frame.toLocal(wo);
-        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next), ++rays;
+        if (!m.isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next, medium), ++rays;
         const bool gathersHere = !gather && m.hasDiffuse();
         if (gathersHere) {
             // Photons are gathered through the diffuse lobe alone where there are others
