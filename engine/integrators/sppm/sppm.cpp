@@ -185,12 +185,13 @@ bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
     if (guide_ && !guide_->trained() && !trainGuide(cancel)) return false;
     stats_ = PassStats{};
     if (!traceBands(cancel, photons_)) return false;
-    if (tracesPhotons_) stats_.photons = photons_;
+    if (photonsTraced_) stats_.photons = photons_;
     return true;
 }
 
 bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons) {
     allocatePassBuffers();
+    photonsTraced_ = false;
     for (bandFirstRow_ = 0; bandFirstRow_ < height_; bandFirstRow_ += bandRows_) {
         bandOffset_ = static_cast<size_t>(bandFirstRow_) * width_;
         auto t0 = std::chrono::steady_clock::now();
@@ -202,10 +203,16 @@ bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons) {
             buildGrid();
             stats_.gridMs += millisecondsSince(t0);
             stats_.gridEntries += static_cast<int64_t>(grid_.entryCount());
-            t0 = std::chrono::steady_clock::now();
-            photonPass(cancel, photons);
-            stats_.photonMs += millisecondsSince(t0);
-            if (cancel.cancelled()) return false;
+            // A band where no camera path stored a visible point (all hair, or sky) gathers
+            // nothing whatever photons it traces: its pass is the same without them, and
+            // costs its camera paths alone (a tuft of hair under the sky: docs/sppm.md).
+            if (grid_.entryCount() > 0) {
+                t0 = std::chrono::steady_clock::now();
+                photonPass(cancel, photons);
+                stats_.photonMs += millisecondsSince(t0);
+                photonsTraced_ = true;
+                if (cancel.cancelled()) return false;
+            }
         }
         collectBand();
     }

@@ -230,6 +230,7 @@ private:
     float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
     bool tracesPhotons_ = true; // false: passes are camera passes alone (sppm.cpp)
     PassStats stats_;
+    bool photonsTraced_ = false;  // the pass traced photons for at least one band
 
     std::vector<PixelState> pixels_;  // the per-pixel schedule's statistics
     PassSums sums_;                    // the global schedule's: its passes' estimates summed

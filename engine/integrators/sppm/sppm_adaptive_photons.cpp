@@ -35,7 +35,9 @@ void SppmIntegrator::adaptToError() {
                               PhotonBudget::kCandidateCost * static_cast<double>(stats_.gatherCandidates);
     // Lightweight photon mapping in a scene without delta lobes traces no photons.
     const bool budgetsPhotons = adaptivePhotons_ && tracesPhotons_;
-    if (budgetsPhotons) budget_.add({photons_, photonVarianceOfPass(), cameraCost, photonCost});
+    // A pass that traced no photons (no visible point: SppmIntegrator::traceBands) says
+    // nothing of what they cost or bring.
+    if (budgetsPhotons && photonsTraced_) budget_.add({photons_, photonVarianceOfPass(), cameraCost, photonCost});
     if (!PhotonBudget::decidesAfter(passes_)) return;
     // The halves' variance of the render's mean, times the passes: a pass's own variance.
     const std::optional<PixelErrors> errors =
