@@ -64,10 +64,10 @@ void writeFile(const fs::path& file, const std::string& bytes) {
 }
 
 // The room written to a folder of its own as the server stores it, rendered in process.
-Image renderRoomInProcess(uint64_t seed) {
+Image renderRoomInProcess(uint64_t seed, const std::string& sceneText = kRoomPbrt) {
     const fs::path dir = fs::temp_directory_path() / ("photon-import-" + std::to_string(::getpid()));
     fs::remove_all(dir);
-    writeFile(dir / "scene.pbrt", kRoomPbrt);
+    writeFile(dir / "scene.pbrt", sceneText);
     writeFile(dir / "parts" / "light.pbrt", kLightPbrt);
     writeFile(dir / "meshes" / "floor.ply", kFloorPly);
     SceneFile scene = SceneFile::read(dir / "scene.pbrt");
@@ -268,6 +268,29 @@ TEST_F(ImportsTest, LenientRendersWhatAStrictImportRefuses) {
     EXPECT_EQ(problemOf(client().Post("/api/v1/jobs?lenient=false", withField))["status"], 400);
     withField.back().content = "maybe";
     EXPECT_EQ(problemOf(client().Post("/api/v1/jobs", withField))["error"], "form field lenient: must be true or false");
+}
+
+// Hair: the room with a few pbrt curves of the hair material over its floor. Their points
+// live in memory only (the import's HAIR file): the job renders them, and stores only the
+// files uploaded. The image is the in-process render's, bit for bit.
+TEST_F(ImportsTest, APbrtSceneWithHairRenders) {
+    startServer({"--workers", "1"});
+    const std::string hairPbrt = kRoomPbrt + R"(Material "hair" "float eumelanin" [0.3]
+Shape "curve" "point3 P" [-0.5 0.2 0  -0.2 0.6 0  0.2 0.6 0  0.5 0.2 0] "float width" [0.02] "string type" "cylinder"
+Shape "curve" "string basis" "bspline" "point3 P" [-0.5 0.3 0.2  -0.2 0.7 0.2  0.2 0.7 0.2  0.5 0.3 0.2] "float width" [0.02]
+)";
+    httplib::MultipartFormDataItems parts = roomParts();
+    parts[0].content = hairPbrt;
+    httplib::Result r = client().Post("/api/v1/jobs?seed=3", parts);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 201) << r->body;
+    const std::string id = json::parse(r->body)["id"];
+    EXPECT_EQ(waitForStatus(id, "completed")["pass"], 2);
+    EXPECT_FALSE(fs::exists(dataDir() / "jobs" / id / "curves"));
+    Image served = decodeImage(client().Get("/api/v1/jobs/" + id + "/image?format=exr")->body, "exr");
+    Image direct = renderRoomInProcess(3, hairPbrt);
+    EXPECT_TRUE(served.rgb == direct.rgb);
+    EXPECT_FALSE(direct.rgb == renderRoomInProcess(3).rgb);  // the hair is in the image
 }
 
 TEST_F(ImportsTest, AnUnknownSceneExtensionIs400NamingTheAcceptedOnes) {
