@@ -206,8 +206,8 @@ MakeNamedMaterial "varnish" "string type" "coateddiffuse" "texture roughness" "b
     EXPECT_EQ(m["both"], Json::parse(R"({"type": "mix", "materials": ["gold", "plastic"], "amount": 0.25})"));
 }
 
-// An imagemap's "encoding": "linear" is kept (the image read without the sRGB curve); a
-// gamma other than sRGB's is warned and read as sRGB.
+// An imagemap's "encoding" is kept: "linear" (the image read without the sRGB curve) and
+// "gamma g" (read as stored to the power g).
 TEST(PbrtImport, ImagemapEncoding) {
     const ImportedScene s = import(R"(
 Texture "plain" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "linear"
@@ -216,10 +216,12 @@ MakeNamedMaterial "m" "string type" "diffuse" "texture reflectance" "plain"
 MakeNamedMaterial "n" "string type" "diffuse" "texture reflectance" "curved"
 )");
     EXPECT_EQ(s.document["materials"]["m"]["albedo"], Json::parse(R"({"type": "image", "file": "a.png", "encoding": "linear"})"));
-    EXPECT_FALSE(s.document["materials"]["n"]["albedo"].contains("encoding"));
-    ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0], "scene.pbrt:14: Texture \"curved\": encoding \"gamma 2.2\" not honoured (read as sRGB; float "
-                             "images are linear either way)");
+    EXPECT_EQ(s.document["materials"]["n"]["albedo"],
+              Json::parse(R"({"type": "image", "file": "a.png", "encoding": "gamma", "gamma": 2.2})"));
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_STREQ(importError(kHeader + "Texture \"odd\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\" "
+                                       "\"string encoding\" \"log\"\n").what(),
+                 "bad.pbrt:12: Texture \"odd\": encoding \"log\" is not sRGB, linear or \"gamma g\" (0 < g < 10)");
 }
 
 // coatedconductor becomes photon's coated_conductor: the interface's index and roughness

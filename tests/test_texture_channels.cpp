@@ -2,6 +2,7 @@
 // the sRGB curve) and alpha masks ("alpha_cutoff": opaque exactly where the alpha reaches
 // the cutoff), through the JSON loader and Embree's ray queries.
 #include <gtest/gtest.h>
+#include <cmath>
 #include <photon/errors.h>
 #include "scene/scene.h"
 #include "scene_loader_fixture.h"
@@ -70,12 +71,21 @@ TEST(TextureChannels, EncodingLinearSkipsTheSrgbCurve) {
     EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}, {"encoding", "linear"}}).x, 0.2f, 1e-6f);
     EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}, {"encoding", "srgb"}}).x, 0.0331f, 1e-4f);
     EXPECT_NEAR(albedoAt({{"texture", "rgb.png"}}).x, 0.0331f, 1e-4f);
-    try {
-        albedoAt({{"texture", "rgb.png"}, {"encoding", "gamma"}});
-        ADD_FAILURE() << "loaded";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.path(), "materials.m.albedo.encoding");
-    }
+    // "gamma": 0.2^2.2 = 0.02902, 0.4^2.2, 0.6^2.2.
+    const Color gamma = albedoAt({{"texture", "rgb.png"}, {"encoding", "gamma"}, {"gamma", 2.2}});
+    EXPECT_NEAR(gamma.x, std::pow(0.2f, 2.2f), 1e-5f);
+    EXPECT_NEAR(gamma.z, std::pow(0.6f, 2.2f), 1e-5f);
+    auto errorPath = [&](const Json& texture) {
+        try {
+            albedoAt(texture);
+        } catch (const SceneError& e) {
+            return e.path();
+        }
+        return std::string("loaded");
+    };
+    EXPECT_EQ(errorPath({{"texture", "rgb.png"}, {"encoding", "gamma"}}), "materials.m.albedo.gamma");
+    EXPECT_EQ(errorPath({{"texture", "rgb.png"}, {"encoding", "log"}}), "materials.m.albedo.encoding");
+    EXPECT_EQ(errorPath({{"texture", "rgb.png"}, {"gamma", 2.2}}), "materials.m.albedo.gamma");
 }
 
 // "uv_rotation" turns the lookup counter-clockwise (v up) after the scale: at 90 degrees

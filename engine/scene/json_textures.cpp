@@ -37,13 +37,20 @@ ImageChannels readChannels(JsonObject& obj, const ParamKind& kind) {
 
 // {"texture": file} or {"type": "image", "file": file}, with a uv mapping and a channel.
 // "encoding": "linear" reads an integer image's colour as stored instead of through the
-// sRGB curve (pbrt-v4's imagemap "encoding"; a single channel is read as stored anyway).
+// sRGB curve, "gamma" with "gamma": g as stored to the power g (pbrt-v4's imagemap
+// "encoding"; a single channel is read as stored anyway, a float image is linear).
 std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, LoadContext& ctx, const ParamKind& kind) {
     ImageChannels channels = readChannels(obj, kind);
-    if (auto encoding = obj.optional("encoding"))
-        if (encoding->choice({"srgb", "linear"}, "encoding") == 1 && channels == ImageChannels::Color)
-            channels = ImageChannels::Data;
-    auto image = loadImage(obj.required(fileKey), channels, ctx);
+    float gamma = 0;
+    enum Encoding { Srgb, Linear, Gamma };
+    const Encoding encoding = Encoding(obj.choice("encoding", Srgb, {"srgb", "linear", "gamma"}, "encoding"));
+    if (encoding == Gamma)
+        gamma = obj.required("gamma").number(Range::open(0, 10));
+    else if (auto g = obj.optional("gamma"))
+        g->fail("needs \"encoding\": \"gamma\"");
+    if (channels == ImageChannels::Color && encoding == Linear) channels = ImageChannels::Data;
+    if (channels != ImageChannels::Color) gamma = 0;
+    auto image = loadImage(obj.required(fileKey), channels, ctx, gamma);
     return makeUvMappedTexture(image, readUvMapping(obj));
 }
 
@@ -89,13 +96,14 @@ ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& 
 
 }  // namespace
 
-std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx) {
+std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx,
+                                              float gamma) {
     std::filesystem::path file = resolveFile(value, ctx);
-    auto key = std::make_pair(file, int(channels));
+    auto key = std::make_tuple(file, int(channels), gamma);
     auto cached = ctx.textures.find(key);
     if (cached != ctx.textures.end()) return cached->second;
     try {
-        return ctx.textures[key] = ImageTexture::load(file, channels, ctx.importedFile(value.string()));
+        return ctx.textures[key] = ImageTexture::load(file, channels, ctx.importedFile(value.string()), gamma);
     } catch (const std::exception& e) {
         failWithLibraryError(value, e, ctx);
     }

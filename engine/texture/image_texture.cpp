@@ -119,7 +119,7 @@ std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file)
 }
 
 std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& file, ImageChannels which,
-                                                       const std::string* bytes) {
+                                                       const std::string* bytes, float gamma) {
     std::optional<std::string> damage;
     if (bytes) {
         std::istringstream in(*bytes);
@@ -163,6 +163,10 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
         // Vectors, not colours: integer formats arrive normalised to [0, 1], undecoded.
         texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
                           [](float v) { return std::isfinite(v) ? v : 0.0f; });
+    } else if (gamma > 0 && !spec.format.is_floating_point()) {
+        // A power-law encoding (integer formats arrive normalised to [0, 1]).
+        texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
+                          [gamma](float v) { return std::pow(std::clamp(v, 0.0f, 1.0f), gamma); });
     } else if (spec.format == OIIO::TypeDesc::UINT8) {
         const auto& table = srgb8Table();
         texels = toColors(readPixels<uint8_t>(*in, first, channels, OIIO::TypeDesc::UINT8), channels,

@@ -34,12 +34,13 @@ class ImageTexture final : public Texture {
 public:
     // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
     // sRGB-encoded and linearised (alpha is linear in every format); float images (EXR,
-    // HDR) as linear. With `bytes`, the file's contents are those bytes, held in memory
-    // (`file` then only names it, its extension the format). Throws std::runtime_error with
-    // the reason on failure.
+    // HDR) as linear. With `gamma` > 0 an integer image's colour is decoded as v^gamma
+    // instead (pbrt-v4's "gamma" encodings; ImageChannels::Color only). With `bytes`, the
+    // file's contents are those bytes, held in memory (`file` then only names it, its
+    // extension the format). Throws std::runtime_error with the reason on failure.
     static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& file,
                                                     ImageChannels channels = ImageChannels::Color,
-                                                    const std::string* bytes = nullptr);
+                                                    const std::string* bytes = nullptr, float gamma = 0);
     ImageTexture(int width, int height, std::vector<Color> texels);
 
     // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).

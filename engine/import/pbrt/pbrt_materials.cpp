@@ -5,6 +5,7 @@
 // sqrt(alpha), while its conductor takes pbrt's values and remap flag as they are.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "scene/scene_paths.h"
@@ -342,12 +343,18 @@ void SceneBuilder::texture(const Directive& d) {
         if (auto why = checkRelativePath(file)) fail(d.where, "Texture \"" + name + "\": \"" + file + "\": " + *why);
         t = {{"type", "image"}, {"file", file}};
         mapping(t);
+        // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g".
         const std::string encoding = p.string("encoding", "sRGB");
-        if (encoding == "linear")
+        double gamma = 0;
+        if (encoding == "linear") {
             t["encoding"] = "linear";
-        else if (encoding != "sRGB")
-            warn(d.where, "Texture \"" + name + "\": encoding \"" + encoding +
-                              "\" not honoured (read as sRGB; float images are linear either way)");
+        } else if (std::sscanf(encoding.c_str(), "gamma %lf", &gamma) == 1 && gamma > 0 && gamma < 10) {
+            t["encoding"] = "gamma";
+            t["gamma"] = gamma;
+        } else if (encoding != "sRGB") {
+            unsupported(d, "Texture \"" + name + "\": encoding \"" + encoding + "\" is not sRGB, linear or \"gamma g\" (0 < g < 10)",
+                        "read as sRGB");
+        }
         if (p.boolean("invert", false)) unsupported(d, "Texture \"" + name + "\": \"invert\" is not supported", "not inverted");
         const std::string wrap = p.string("wrap", "repeat");
         if (wrap != "repeat") warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
