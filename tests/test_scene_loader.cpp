@@ -363,7 +363,7 @@ TEST(ExampleScenes, AllLoad) {
     for (const char* name :
          {"cornell-box.json", "cornell-glass.json", "rough-glass.json", "envmap.json", "point-light-plane.json",
           "textured-mesh.json", "textures.json", "cutouts.json", "coated.json", "translucent-sheet.json",
-          "instances.json"}) {
+          "instances.json", "hair.json"}) {
         SCOPED_TRACE(name);
         SceneDescription s = photon::loadSceneFile(photon::test::sourcePath(std::string("scenes/") + name));
         EXPECT_EQ(s.camera.width, 512);
