@@ -97,6 +97,37 @@ Shape "cylinder"
         EXPECT_NEAR(hemisphere.positions[v].z, 2 * std::sin(hemisphere.uvs[v].y * pi / 2), 1e-5) << v;
 }
 
+// bilinearmesh: a flat patch is its two triangles over its own four vertices; a saddle
+// (corners (0,0,0), (1,0,0), (0,1,0), (1,1,1): the surface z = x y) becomes an 8 x 8 grid on
+// the surface, its uvs bilinear in the corners', whose area is within 0.2% of the saddle's,
+// the integral of sqrt(1 + x^2 + y^2) over the unit square, 1.280789 (two triangles: 1.414).
+TEST(PbrtImport, BilinearPatchesFlatAndCurved) {
+    const ImportedScene s = import(R"(
+Shape "bilinearmesh" "point3 P" [0 0 0  1 0 0  0 1 0  1 1 0] "integer indices" [0 1 2 3]
+Shape "bilinearmesh" "point3 P" [0 0 0  1 0 0  0 1 0  1 1 1] "integer indices" [0 1 2 3]
+    "point2 uv" [0 0  1 0  0 1  1 1]
+)");
+    const Json& shapes = s.document["shapes"];
+    const TriangleMesh flat = s.meshes.at(shapes[2]["file"].get<std::string>());
+    EXPECT_EQ(flat.triangleCount(), 2u);
+    EXPECT_EQ(flat.positions.size(), 4u);
+    EXPECT_GT(flat.faceNormal(0).z, 0.99f);
+    const TriangleMesh saddle = s.meshes.at(shapes[3]["file"].get<std::string>());
+    EXPECT_EQ(saddle.triangleCount(), 128u);
+    double area = 0;
+    for (size_t t = 0; t < saddle.triangleCount(); ++t) {
+        area += saddle.area(t);
+        ASSERT_GT(saddle.faceNormal(t).z, 0.0f) << t;  // cross(dp/du, dp/dv) faces +z
+    }
+    EXPECT_NEAR(area, 1.280789, 2e-3 * 1.280789);
+    for (size_t v = 4; v < saddle.positions.size(); ++v) {
+        const Vec3 p = saddle.positions[v];
+        ASSERT_NEAR(p.z, p.x * p.y, 1e-6f) << v;
+        ASSERT_NEAR(saddle.uvs[v].x, p.x, 1e-6f) << v;
+        ASSERT_NEAR(saddle.uvs[v].y, p.y, 1e-6f) << v;
+    }
+}
+
 // Attribute: parameters for the directives of its kind that do not give their own, for the
 // rest of the attribute block (pbrt-v4's GraphicsState attributes); unused ones are silent.
 TEST(PbrtImport, AttributesGiveDefaultParameters) {

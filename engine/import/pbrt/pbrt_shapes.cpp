@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 #include "description/shape_transform.h"
+#include "import/pbrt/bilinear_patches.h"
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/loop_subdivision.h"
 #include "import/pbrt/pbrt_quadrics.h"
@@ -186,11 +187,11 @@ void SceneBuilder::shape(const Directive& d) {
         const size_t perFace = type == "bilinearmesh" ? 4 : 3;
         std::vector<uint32_t> indices = meshIndices(p, d, mesh.positions.size(), perFace);
         if (perFace == 4) {
-            // pbrt-v4's bilinear patch (p00, p10, p01, p11) as two triangles; a patch that is
-            // not planar loses its curvature.
-            for (size_t i = 0; i < indices.size(); i += 4)
-                mesh.indices.insert(mesh.indices.end(), {indices[i], indices[i + 1], indices[i + 3], indices[i],
-                                                         indices[i + 3], indices[i + 2]});
+            try {
+                mesh = bilinearPatches(std::move(mesh), indices, size_t(kMaxSubdividedTriangles));
+            } catch (const std::length_error& e) {
+                fail(d.where, "bilinearmesh: " + std::string(e.what()));
+            }
         } else {
             mesh.indices = std::move(indices);
         }
