@@ -189,6 +189,11 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         }
         if (!s) break;
         beta *= s->weight;
+        // Russian roulette past the third vertex, as the path tracer, where the path has lost
+        // light: a path through dark hair (Material::alignsToTangent) loses most of it at each
+        // fibre and would otherwise go on to render.max_depth. A path that keeps all of it
+        // (through clear glass) draws no number, so its samples stay as they were.
+        if (depth >= 3 && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D())) break;
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
         medium = scene.mediumToward(hit, ray.d, medium);
