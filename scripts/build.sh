@@ -15,6 +15,10 @@ export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file
 # Unity builds: the libraries' sources compiled eight to a unit, so the headers they share
 # (nlohmann/json, Embree, oneTBB, cpp-httplib) are parsed once for eight; a cold build of
 # engine/, server/ and api/ took about a third of the time.
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 \
+# Ninja (install-deps.sh): a build tree configured before with Makefiles starts afresh.
+if [ -f "$build/CMakeCache.txt" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$build/CMakeCache.txt"; then
+    rm -rf "$build/CMakeCache.txt" "$build/CMakeFiles"
+fi
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 \
     "${launcher[@]}" "$@"
 cmake --build "$build" -j2
