@@ -267,7 +267,10 @@ TEST(MediaScene, Errors) {
         "shapes[3].medium.colour", "unknown field");
     expectError([&](Json& doc) { doc["media"] = {{"wine", {{"absorption", {1, -2, 3}}}}}; }, "media.wine.absorption[1]",
                 "must be >= 0");
-    expectError([&](Json& doc) { doc["media"] = {{"wine", Json::object()}}; }, "media.wine.absorption", "missing required field");
+    expectError([&](Json& doc) { doc["media"] = {{"wine", Json::object()}}; }, "media.wine",
+                "a medium needs \"absorption\", \"scattering\" or both");
+    expectError([&](Json& doc) { doc["media"] = {{"fog", {{"scattering", {1, 1, 1}}, {"g", 1}}}}; }, "media.fog.g",
+                "must be in (-1, 1)");
     expectError(
         [&](Json& doc) {
             withMedia(doc);

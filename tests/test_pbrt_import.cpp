@@ -282,11 +282,13 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
     EXPECT_STREQ(importError(head + "Material \"measured\"\n").what(),
                  "bad.pbrt:3: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
                  "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface)");
-    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n").what(),
-                 "bad.pbrt:3: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb Le\" [1 1 1]\n").what(),
+                 "bad.pbrt:3: medium \"fog\" emits light (Le): photon's media do not emit");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [1]\n").what(),
+                 "bad.pbrt:3: medium \"fog\": \"g\" must lie in (-1, 1)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\"\n").what(),
                  "bad.pbrt:3: medium \"smoke\": a \"nanovdb\" medium is not supported (photon renders homogeneous "
-                 "media that absorb)");
+                 "media)");
     EXPECT_STREQ(importError(head + "MediumInterface \"tea\" \"\"\n").what(),
                  "bad.pbrt:3: MediumInterface: no medium named \"tea\"");
     EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(), "bad.pbrt:3: NamedMaterial \"nope\" was not defined");
@@ -311,7 +313,7 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
 // same features refuse the strict import (ErrorsNameFileAndLine).
 TEST(PbrtImport, LenientImportLeavesOutWhatPhotonCannotRender) {
     const std::string body = R"(
-MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1]
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1] "rgb Le" [1 1 1]
 MediumInterface "" "fog"
 Attribute "shape" "float radius" [2]
 Texture "noise" "spectrum" "fbm" "integer octaves" [4]
@@ -324,8 +326,8 @@ LightSource "goniometric" "string filename" "profile.exr"
 )";
     const ImportedScene s = importPbrt(writeScene("scene.pbrt", kHeader + body), true);
     const std::vector<std::string> expected = {
-        "scene.pbrt:13: medium \"fog\" scatters light (sigma_s): photon renders media that absorb only; its absorption "
-        "kept, its scattering left out (lenient import)",
+        "scene.pbrt:13: medium \"fog\" emits light (Le): photon's media do not emit; its emission left out (lenient "
+        "import)",
         "scene.pbrt:16: Texture \"noise\": class \"fbm\" is not supported (photon imports imagemap, checkerboard, scale, "
         "mix, constant); the constant 0.5 used (lenient import)",
         "scene.pbrt:17: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
@@ -344,7 +346,7 @@ LightSource "goniometric" "string filename" "profile.exr"
     EXPECT_EQ(s.document["shapes"][2]["type"], "mesh");
     EXPECT_EQ(s.document["shapes"][2]["material"], "fur");
     EXPECT_EQ(s.document["shapes"][2]["medium"], Json::parse(R"({"outside": "fog"})"));
-    EXPECT_EQ(s.document["media"], Json::parse(R"({"fog": {"absorption": [1, 1, 1]}})"));
+    EXPECT_EQ(s.document["media"], Json::parse(R"({"fog": {"absorption": [1, 1, 1], "scattering": [1, 1, 1]}})"));
     EXPECT_FALSE(s.document.contains("lights"));
     loadImportedScene(s, scratch());  // what the lenient import wrote loads
     // Strict, the first of them is refused.

@@ -58,6 +58,28 @@ Shape "sphere" "float radius" [5]
     EXPECT_EQ(d.media.size(), 1u);
 }
 
+// A medium that scatters: sigma_a and sigma_s times scale (each 1 where not given, as
+// pbrt-v4's HomogeneousMedium), and the phase function's g.
+TEST(PbrtImport, ScatteringMedia) {
+    const ImportedScene s = import(R"(
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_s" [0.5 1 2] "float scale" [0.5] "float g" [0.3]
+MakeNamedMedium "haze" "string type" "homogeneous" "rgb sigma_a" [0 0 0]
+MakeNamedMaterial "boundary" "string type" "interface"
+NamedMaterial "boundary"
+MediumInterface "fog" ""
+Shape "sphere" "float radius" [1]
+MediumInterface "haze" ""
+Shape "sphere" "float radius" [2]
+)");
+    const Json& media = s.document["media"];
+    EXPECT_EQ(media["fog"], Json::parse(R"({"absorption": [0.5, 0.5, 0.5], "scattering": [0.25, 0.5, 1], "g": 0.3})"));
+    EXPECT_EQ(media["haze"], Json::parse(R"({"absorption": [0, 0, 0], "scattering": [1, 1, 1]})"));
+    const SceneDescription d = loadImportedScene(s, scratch());
+    ASSERT_EQ(d.media.size(), 2u);
+    EXPECT_EQ(d.media[0].scattering, Color(0.25f, 0.5f, 1.0f));
+    EXPECT_FLOAT_EQ(d.media[0].g, 0.3f);
+}
+
 // pbrt-v4's quadrics that are not whole spheres become meshes with pbrt's parameterisation
 // and the exact normals at their vertices, facing out (or in under ReverseOrientation):
 // their areas within 0.05% of the surfaces' (256 segments a turn).

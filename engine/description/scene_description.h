@@ -77,12 +77,18 @@ inline Vec2 sphereUv(Vec3 n) {
     return {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }
 
-// A homogeneous medium that absorbs and does not scatter (coloured glass, a liquid): light
-// crossing a distance d of it keeps exp(-absorption d) per channel (Beer-Lambert).
-// Shapes bound it (ShapeDescription::insideMedium); docs/scene-format.md#media.
+// A homogeneous medium (coloured glass, a liquid, fog, smoke, skin): light crossing a
+// distance d of it unscattered keeps exp(-(absorption + scattering) d) per channel
+// (Beer-Lambert), and where it scatters it turns by the Henyey-Greenstein phase function of
+// asymmetry g. Shapes bound it (ShapeDescription::insideMedium); docs/scene-format.md#media.
 struct MediumDescription {
     std::string name;
-    Color absorption{0.0f};  // per unit of scene length, >= 0
+    Color absorption{0.0f};  // sigma_a, per unit of scene length, >= 0
+    Color scattering{0.0f};  // sigma_s, per unit of scene length, >= 0
+    float g = 0;             // the phase function's mean cosine, in (-1, 1): > 0 forward
+
+    Color extinction() const { return absorption + scattering; }
+    bool scatters() const { return !isBlack(scattering); }
 };
 
 struct ShapeDescription {

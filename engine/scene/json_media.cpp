@@ -1,4 +1,4 @@
-// "media": named homogeneous media that absorb (Beer-Lambert), and a shape's "medium": the
+// "media": named homogeneous media that absorb and scatter, and a shape's "medium": the
 // media on its two sides (docs/scene-format.md#media).
 #include "scene/json_scene_parts.h"
 
@@ -11,8 +11,16 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
         MediumDescription m;
         m.name = name;
         // Per unit of scene length; the scale lets a file keep a measured colour's ratios.
-        m.absorption = obj.required("absorption").vec3(Range::nonNegative()) *
-                       obj.number("scale", 1.0f, Range::nonNegative());
+        const float scale = obj.number("scale", 1.0f, Range::nonNegative());
+        auto coefficient = [&](std::string_view key) {
+            auto v = obj.optional(key);
+            return v ? v->vec3(Range::nonNegative()) * scale : Color(0.0f);
+        };
+        if (!obj.has("absorption") && !obj.has("scattering"))
+            medium.fail("a medium needs \"absorption\", \"scattering\" or both");
+        m.absorption = coefficient("absorption");
+        m.scattering = coefficient("scattering");
+        if (auto g = obj.optional("g")) m.g = g->number(Range::open(-1.0f, 1.0f));
         obj.finish();
         ctx.mediumIndex[name] = int32_t(scene.media.size());
         scene.media.push_back(std::move(m));

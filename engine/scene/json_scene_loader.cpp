@@ -111,6 +111,11 @@ SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
     if (media && !scene.media.empty() && scene.render.integrator != IntegratorKind::Sppm &&
         scene.render.integrator != IntegratorKind::Path)
         media->fail("media are rendered by the \"sppm\" and \"path\" integrators only");
+    // Lightweight SPPM's camera paths (sppm_lightweight_camera_pass.cpp) cross media
+    // unscattered: the light a medium scatters toward them would be missed.
+    if (media && scene.render.lightweight &&
+        std::any_of(scene.media.begin(), scene.media.end(), [](const MediumDescription& m) { return m.scatters(); }))
+        media->fail("media that scatter are not rendered with \"render.lightweight\"");
     // So are curves: a fibre's frame runs along it (Material::alignsToTangent), which the
     // photon map's and radiosity's stored points do not keep.
     if (scene.render.integrator != IntegratorKind::Sppm && scene.render.integrator != IntegratorKind::Path) {

@@ -141,6 +141,7 @@ void Scene::buildLights() {
 }
 
 void Scene::prepareHitData() {
+    for (const MediumDescription& m : description_.media) scatteringMedia_ = scatteringMedia_ || m.scatters();
     for (const ShapeDescription* shape : slots_) {
         materialOf_.push_back(shape->material);
         const std::optional<Material::SmoothSpecular> smooth = materials_[shape->material]->smoothSpecular();

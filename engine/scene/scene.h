@@ -129,13 +129,18 @@ public:
     // Absorbing media (MediumDescription, docs/scene-format.md#media). A path carries the
     // medium it is in (-1: none), changed where it crosses a shape that bounds one.
     bool hasMedia() const { return !description_.media.empty(); }
-    // What light keeps over `distance` in the medium (Beer-Lambert); an infinite distance in
-    // a medium that absorbs a channel keeps none of it.
+    bool hasScatteringMedia() const { return scatteringMedia_; }
+    const MediumDescription& medium(int32_t index) const { return description_.media[size_t(index)]; }
+    // True if paths in `medium` (-1: none) may scatter in it (medium_scattering.h).
+    bool scatters(int32_t medium) const { return medium >= 0 && scatteringMedia_ && this->medium(medium).scatters(); }
+    // What light keeps unscattered over `distance` in the medium (Beer-Lambert on its
+    // extinction); an infinite distance in a medium that absorbs or scatters a channel keeps
+    // none of it.
     Color transmittance(int32_t medium, float distance) const {
         if (medium < 0) return Color(1.0f);
-        const Color& a = description_.media[size_t(medium)].absorption;
+        const Color sigmaT = this->medium(medium).extinction();
         Color t;
-        for (int c = 0; c < 3; ++c) t[c] = a[c] > 0 ? std::exp(-a[c] * distance) : 1.0f;
+        for (int c = 0; c < 3; ++c) t[c] = sigmaT[c] > 0 ? std::exp(-sigmaT[c] * distance) : 1.0f;
         return t;
     }
     // The medium a path is in after leaving the hit along w: the shape's outside where w
@@ -285,6 +290,7 @@ private:
     std::vector<uint32_t> materialOf_;            // by shape: its material, one load away
     std::vector<int32_t> lightOfShape_;           // by shape: its area light's index in lightSampler_, or -1
     std::vector<uint8_t> passThrough_;            // by shape: see passesThrough()
+    bool scatteringMedia_ = false;                // any medium scatters
     std::vector<int32_t> lightMedium_;            // by light, in lightSampler_'s order
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).

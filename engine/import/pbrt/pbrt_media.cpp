@@ -1,7 +1,7 @@
-// MakeNamedMedium and MediumInterface. photon renders homogeneous media that absorb
-// (docs/scene-format.md#media), which is what coloured glass and liquids in pbrt files are:
-// pbrt-v4's "homogeneous" medium with sigma_s 0. A medium that scatters, emits or varies in
-// space is refused, or under a lenient import keeps only what photon can render.
+// MakeNamedMedium and MediumInterface. photon renders homogeneous media that absorb and
+// scatter (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its
+// Henyey-Greenstein phase function. A medium that emits or varies in space is refused, or
+// under a lenient import keeps only what photon can render.
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 
@@ -14,7 +14,7 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     const std::string what = "medium \"" + name + "\"";
     if (type != "homogeneous") {
         media_[name] = false;
-        return unsupported(d, what + ": a \"" + type + "\" medium is not supported (photon renders homogeneous media that absorb)");
+        return unsupported(d, what + ": a \"" + type + "\" medium is not supported (photon renders homogeneous media)");
     }
     // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale".
     auto coefficient = [&](std::string_view key) {
@@ -27,15 +27,15 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     }
     const Color absorption = coefficient("sigma_a"), scattering = coefficient("sigma_s");
     const Param* emission = p.find("Le");
-    const bool emits = emission && !isBlack(spectrumColor(*emission, SpectrumKind::Illuminant, baseDir_)) && p.number("Lescale", 1) != 0;
-    if (!isBlack(scattering) || emits) {
-        unsupported(d, what + (emits ? " emits light (Le)" : " scatters light (sigma_s)") +
-                           ": photon renders media that absorb only",
-                    "its absorption kept, its " + std::string(emits ? "emission and " : "") + "scattering left out");
-    }
-    p.find("g");  // the phase function's asymmetry: nothing without scattering
+    if (emission && !isBlack(spectrumColor(*emission, SpectrumKind::Illuminant, baseDir_)) && p.number("Lescale", 1) != 0)
+        unsupported(d, what + " emits light (Le): photon's media do not emit", "its emission left out");
+    const double g = p.number("g", 0);
+    if (!(g > -1 && g < 1)) fail(d.where, what + ": \"g\" must lie in (-1, 1)");
     media_[name] = true;
-    mediaJson_[name] = {{"absorption", rgb(absorption)}};
+    Json m = {{"absorption", rgb(absorption)}};
+    if (!isBlack(scattering)) m["scattering"] = rgb(scattering);
+    if (g != 0 && !isBlack(scattering)) m["g"] = g;
+    mediaJson_[name] = std::move(m);
     p.warnUnused(out_.warnings);
 }
 

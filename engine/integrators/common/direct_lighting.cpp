@@ -41,4 +41,22 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
     return f * ls->weight * transmittance * (std::abs(wiLocal.z) / pickProbability);
 }
 
+Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler) {
+    const float uLight = sampler.get1D();
+    const Vec3 n = sampler.get1D() < 0.5f ? wo : -wo;
+    const Vec2 u = sampler.get2D();
+    LightSampler::Pick pick = scene.directLights().pick(uLight, p, n);
+    if (!pick.light) return Color(0.0f);
+    std::optional<LightSample> ls = pick.light->sampleIncident(p, n, u);
+    if (!ls || !(dot(ls->wi, n) > 0)) return Color(0.0f);
+    const float phase = henyeyGreenstein(dot(wo, ls->wi), scene.medium(medium).g);
+    const Ray shadow = std::isinf(ls->distance) ? Ray{p, ls->wi} : Ray{p, ls->wi, ls->distance * (1.0f - 1e-4f)};
+    const Color transmittance = scene.shadowTransmittance(shadow, medium);
+    if (isBlack(transmittance)) return Color(0.0f);
+    const float pickProbability = 0.5f * pick.probability;
+    // The phase-function sample draws wi with density `phase` (scatterInMedium).
+    const float w = ls->pdf > 0 ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
+    return ls->weight * transmittance * (phase * w / pickProbability);
+}
+
 }  // namespace photon

@@ -24,6 +24,14 @@ struct BsdfContinuation {
 // the absorption of each medium it crosses (Scene::shadowTransmittance).
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler,
                         unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1);
+// In-scattered radiance toward wo at a point p where a path scatters in `medium`, from one
+// light picked by Scene::directLights, through the medium's phase function, weighted
+// against the phase-function sample the path goes on with (scatterInMedium, shading.h).
+// Lights sample directions above a normal, and a point in a medium has none: the sample is
+// taken for the half of the sphere on wo's side or the other, each with probability 1/2
+// (unbiased, as for a surface that transmits). Its draws: the light (1D), the side (1D),
+// the point on the light (2D).
+Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler);
 // The same with every number from `rng`.
 inline Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng,
                                unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1) {

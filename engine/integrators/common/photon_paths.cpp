@@ -5,6 +5,8 @@
 #include "materials/fresnel.h"
 #include "math/sampling.h"
 #include "integrators/common/photon_roulette.h"
+#include "media/free_flight.h"
+#include "media/henyey_greenstein.h"
 
 namespace photon {
 
@@ -35,7 +37,11 @@ struct PhotonLanes {
     alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
     alignas(32) uint32_t cell[kWalkLanes];         // EmittedPhoton::cell
-    alignas(32) int32_t medium[kWalkLanes];        // the absorbing medium it is in (-1: none)
+    alignas(32) int32_t medium[kWalkLanes];        // the medium it is in (-1: none)
+    // Its flights in media that scatter (ChromaticFlight, free_flight.h): the hero channel,
+    // and each channel's density over the hero's.
+    alignas(32) int32_t hero[kWalkLanes];
+    alignas(32) float ratioR[kWalkLanes], ratioG[kWalkLanes], ratioB[kWalkLanes];
     // A hit waiting for its bounce in lanes, off a Lambertian or a smooth specular surface:
     // which kind, where, the normals (turned toward the photon on two-sided surfaces), the
     // surface colour, and a specular surface's index (0: a mirror).
@@ -262,6 +268,8 @@ private:
                 L.onlySpecular[i] = -1;
                 L.cell[i] = emitted_.cell[k];
                 L.medium[i] = scene_.hasMedia() ? scene_.lightMedium(size_t(emitted_.light[k])) : -1;
+                L.hero[i] = -1;
+                L.ratioR[i] = L.ratioG[i] = L.ratioB[i] = 1.0f;
                 L.alive[i] = -1;
             }
         }
@@ -289,12 +297,17 @@ private:
         SurfaceHit hit;
         ++counters_.rays;
         L.alive[i] = 0;
-        if (!scene_.hitOf(L.packet, i, hit)) {
+        const bool found = scene_.hitOf(L.packet, i, hit);
+        if (scene_.scatters(L.medium[i])) {
+            if (scattersOnTheWay(i, found ? hit.t : std::numeric_limits<float>::infinity())) return 0;
+        } else if (found && L.medium[i] >= 0) {
+            L.setBeta(i, L.beta(i) * scene_.transmittance(L.medium[i], hit.t));
+        }
+        if (!found) {
             counters_.missedAtEmission += L.depth[i] == 0;
             return 0;
         }
         ++counters_.segments;
-        if (L.medium[i] >= 0) L.setBeta(i, L.beta(i) * scene_.transmittance(L.medium[i], hit.t));
         const Vec3 wi = -L.direction(i);
         const int depth = L.depth[i];
         const bool last = depth + 1 == settings_.maxDepth;
@@ -337,6 +350,41 @@ private:
         }
         if (!last) bounce(i, hit, shape, sp, wi);
         return 0;
+    }
+
+    // Lane i's photon in a medium that scatters, over its ray's segment of length `segment`:
+    // true if it scatters before the end (sampleFreeFlight), where it then goes on toward a
+    // direction drawn from the phase function (weight 1) unless its path ends there; false
+    // if it reaches the end, its flux weighted by the flight's odds. No arrival is made in
+    // a medium: photons are gathered on surfaces only, and the camera paths take light
+    // samples where they scatter.
+    bool scattersOnTheWay(int i, float segment) {
+        PhotonLanes& L = lanes_;
+        Rng rng = Rng::resume(L.state[i], L.increment[i]);
+        const MediumDescription& m = scene_.medium(L.medium[i]);
+        Color weight(1.0f);
+        ChromaticFlight flight{L.hero[i], {L.ratioR[i], L.ratioG[i], L.ratioB[i]}};
+        const float t = sampleFreeFlight(m, segment, rng.uniform(), weight, flight);
+        L.hero[i] = flight.hero;
+        L.ratioR[i] = flight.ratios.x, L.ratioG[i] = flight.ratios.y, L.ratioB[i] = flight.ratios.z;
+        L.state[i] = rng.state();
+        if (!(t < segment)) {
+            L.setBeta(i, L.beta(i) * weight);
+            return false;
+        }
+        ++counters_.segments;
+        if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;
+        std::optional<Color> next = photonAfterRoulette(L.beta(i), weight, rng);
+        if (!next) return true;
+        const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
+        const PhaseSample s = sampleHenyeyGreenstein(-d, m.g, {rng.uniform(), rng.uniform()});
+        L.setBeta(i, *next);
+        L.setRay(i, Ray{o + d * t, s.wi});
+        L.state[i] = rng.state();
+        L.onlySpecular[i] = 0;
+        ++L.depth[i];
+        L.alive[i] = -1;
+        return true;
     }
 
     // A hit that waits for its bounce in lanes.

@@ -2,7 +2,10 @@
 #pragma once
 #include <limits>
 #include "math/frame.h"
+#include "math/path_sampler.h"
 #include "math/sampling.h"
+#include "media/free_flight.h"
+#include "media/henyey_greenstein.h"
 #include "scene/scene.h"
 
 namespace photon {
@@ -49,29 +52,54 @@ inline void absorbAlong(const Scene& scene, int32_t medium, float distance, Colo
     if (medium >= 0) beta *= scene.transmittance(medium, distance);
 }
 
+// Where a camera path's ray ended: it left the scene, met a surface, or scattered in a
+// medium on the way.
+enum class RayEnd { Left, Surface, Scattered };
+
+// What a camera path needs to scatter in media: the numbers for its flights (one a segment
+// in a medium that scatters), and what its flights so far weigh by colour (free_flight.h).
+struct PathInMedia {
+    PathSampler& sampler;
+    ChromaticFlight flight;
+};
+
 // Casts the ray from inside `medium` to the first surface that is more than a boundary
 // between media (Scene::passesThrough), straight through those, as pbrt-v4's integrators
 // skip its "interface" surfaces: no path vertex there. beta takes on each medium's
-// absorption on the way (to infinity if the ray leaves the scene: returns false), `medium`
-// follows the crossings, and hit.t is the whole distance along the ray.
-inline bool castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t& medium, SurfaceHit& hit) {
+// absorption on the way (to infinity if the ray leaves the scene), `medium` follows the
+// crossings, and hit.t is the whole distance along the ray. With `media`, a ray in a medium
+// that scatters may scatter first (sampleFreeFlight): hit then holds only the point (p) and
+// the distance (t). Without, the ray
+// keeps only what crosses every medium unscattered (the light it finds is the unscattered
+// part, the expected value of what a sampled flight would bring).
+inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t& medium, SurfaceHit& hit,
+                                 PathInMedia* media = nullptr) {
     // A ray caught between more boundaries than this stops at the last as at a surface (a
     // dielectric of index 1, which sends it on unbent).
     constexpr int kMaxCrossings = 64;
     float travelled = 0;
     for (int crossing = 0;; ++crossing) {
-        if (!scene.intersect(ray, hit)) {
-            absorbAlong(scene, medium, std::numeric_limits<float>::infinity(), beta);
-            return false;
+        const bool found = scene.intersect(ray, hit);
+        const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
+        if (media && scene.scatters(medium)) {
+            const float t = sampleFreeFlight(scene.medium(medium), segment, media->sampler.get1D(), beta, media->flight);
+            if (t < segment) {
+                hit = SurfaceHit{};
+                hit.p = ray.o + ray.d * t;
+                hit.t = travelled + t;
+                return RayEnd::Scattered;
+            }
+        } else {
+            absorbAlong(scene, medium, segment, beta);
         }
-        absorbAlong(scene, medium, hit.t, beta);
+        if (!found) return RayEnd::Left;
         travelled += hit.t;
         if (!scene.passesThrough(hit) || crossing == kMaxCrossings) break;
         medium = scene.mediumToward(hit, ray.d, medium);
         ray = spawnRay(hit.p, hit.ng, ray.d);
     }
     hit.t = travelled;
-    return true;
+    return RayEnd::Surface;
 }
 
 // Casts a camera path's ray from inside `medium` (castPastBoundaries); returns whether it
@@ -82,7 +110,7 @@ inline bool castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t
 // below.
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium, bool countEmitted,
                            SurfaceHit& hit, Color& L) {
-    if (!castPastBoundaries(scene, ray, beta, medium, hit)) {
+    if (castPastBoundaries(scene, ray, beta, medium, hit) == RayEnd::Left) {
         if (countEmitted) L += beta * scene.environment(ray);
         return false;
     }
@@ -157,20 +185,37 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
 // where it lands, the environment where it leaves) counts in full after delta bounces and
 // otherwise weighted against the light sample that could have found it too, so that a
 // small bright light in a sharp highlight comes from BSDF samples and a large dim one from
-// light samples (Veach 1997, ch. 9).
+// light samples (Veach 1997, ch. 9). With `media` the ray may scatter in a medium on the
+// way (castPastBoundaries), where it finds no light.
+inline RayEnd traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium,
+                             const BounceSampling& bounce, SurfaceHit& hit, Color& L, PathInMedia* media) {
+    const RayEnd end = castPastBoundaries(scene, ray, beta, medium, hit, media);
+    if (end == RayEnd::Left) {
+        L += beta * environmentAfterBounce(scene, bounce, ray);
+    } else if (end == RayEnd::Surface && bounce.delta) {
+        L += beta * scene.emitted(hit, -ray.d);
+    } else if (end == RayEnd::Surface) {
+        if (Scene::Emitter e = scene.emitterAt(hit); e.light) {
+            const Color Le = scene.emitted(hit, -ray.d);
+            if (!isBlack(Le)) L += beta * Le * areaLightBounceWeight(scene, bounce, e, hit, ray.d);
+        }
+    }
+    return end;
+}
+// The same for a ray that crosses media unscattered; true if it met a surface.
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium,
                            const BounceSampling& bounce, SurfaceHit& hit, Color& L) {
-    if (!castPastBoundaries(scene, ray, beta, medium, hit)) {
-        L += beta * environmentAfterBounce(scene, bounce, ray);
-        return false;
-    }
-    if (bounce.delta) {
-        L += beta * scene.emitted(hit, -ray.d);
-    } else if (Scene::Emitter e = scene.emitterAt(hit); e.light) {
-        const Color Le = scene.emitted(hit, -ray.d);
-        if (!isBlack(Le)) L += beta * Le * areaLightBounceWeight(scene, bounce, e, hit, ray.d);
-    }
-    return true;
+    return traceCameraRay(scene, ray, beta, medium, bounce, hit, L, nullptr) == RayEnd::Surface;
+}
+
+// How a camera path that scattered at p in a medium goes on: toward a direction drawn from
+// the medium's phase function (weight 1: it is drawn exactly), weighted against the light
+// sample taken there (sampleDirectLightInMedium, whose side of wo the BounceSampling
+// records, as a transmitting surface's).
+inline Ray scatterInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, Vec2 u, BounceSampling& bounce) {
+    const PhaseSample s = sampleHenyeyGreenstein(wo, scene.medium(medium).g, u);
+    bounce = BounceSampling{false, s.pdf, p, wo, 0.5f};
+    return Ray{p, s.wi};
 }
 
 }  // namespace photon

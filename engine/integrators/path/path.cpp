@@ -27,14 +27,26 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
     int32_t medium = scene.description().camera.medium;
+    // Paths scatter in media that scatter (one number a segment in them); elsewhere they
+    // draw what they always did.
+    PathInMedia inMedia{sampler, {}};
+    PathInMedia* media = scene.hasScatteringMedia() ? &inMedia : nullptr;
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
-        if (!traceCameraRay(scene, ray, beta, medium, bounce, hit, L)) break;
+        const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, L, media);
+        if (end == RayEnd::Left) break;
         // The ray after the last vertex is traced only for the light its BSDF sample shares
         // with that vertex's light sample (as pbrt-v4's PathIntegrator does): without it a
         // glossy surface at the last vertex loses most of its highlight.
         if (depth == maxDepth) break;
         Vec3 wo = -ray.d;
+        if (end == RayEnd::Scattered) {
+            // A vertex in the medium: its light sample, then the phase function's direction.
+            L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler);
+            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
+            if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;
+            continue;
+        }
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         if (!sp.material->isDeltaOnly()) L += beta * sampleDirectLight(scene, sp, wo, sampler, kAllLobes, next, medium);
         const float uLobe = sampler.get1D();

@@ -107,12 +107,30 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     int32_t medium = scene.description().camera.medium;
+    // Paths scatter in media that scatter (one number a segment in them); elsewhere they
+    // draw what they always did.
+    PathInMedia inMedia{sampler, {}};
+    PathInMedia* media = scene.hasScatteringMedia() ? &inMedia : nullptr;
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
-        if (!traceCameraRay(scene, ray, beta, medium, bounce, hit, direct)) break;
+        const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, direct, media);
+        if (end == RayEnd::Left) break;
         pathLength += hit.t;
         Vec3 wo = -ray.d;
+        if (end == RayEnd::Scattered) {
+            // A vertex in the medium: no visible point (photons land on surfaces only), its
+            // light sample, and the phase function's direction, whose ray at the last vertex
+            // is traced only for the light it shares with the light sample.
+            direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
+            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
+            if (depth == settings_.maxDepth - 1) {
+                traceCameraRay(scene, ray, beta, medium, bounce, hit, direct), ++rays;
+                break;
+            }
+            if (depth >= 3 && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D())) break;
+            continue;
+        }
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
         const Material& m = *sp.material;
         // The visible point goes on the first surface with a diffuse lobe (or any non-delta

@@ -1,0 +1,58 @@
+// Where a path's ray first scatters in a homogeneous medium, if before the end of its
+// segment. A medium's extinction may differ by colour channel; one channel per path, its
+// hero, draws every distance of that path, and the path carries each channel's density over
+// the hero's, by which its throughput is weighted: one-sample multiple importance sampling
+// over the channels for the whole path (the balance heuristic; pbrt-v4's VolPathIntegrator
+// and its r_u, after Miller, Georgiev & Jarosz 2019). Weighting each flight on its own by
+// the mean of the channels' densities is unbiased too, but its weights multiply along a
+// path: in a white furnace of fog with extinction (1, 2, 4) the blue channel's mean over
+// 64 x 64 paths was 0.94 (1024 x 64: 0.976) where it must be 1.
+#pragma once
+#include <cmath>
+#include <limits>
+#include "description/scene_description.h"
+
+namespace photon {
+
+// What a path carries through media: its hero channel (-1 until its first flight in a
+// medium that scatters) and each channel's path density over the hero's, scaled to mean 1.
+struct ChromaticFlight {
+    int hero = -1;
+    Color ratios{1.0f};
+};
+
+// Samples the free flight of a ray over a segment of `length` (infinite if the ray leaves
+// the scene) in medium m with the number u in [0, 1) (the path's first flight also picks
+// its hero with it). Returns the distance at which the ray scatters, below `length`, or
+// `length`; beta is then weighted so that its expected value, over the flight and the
+// hero, is sigma_s T(t) at a scattering point's density and T(length) at the end.
+inline float sampleFreeFlight(const MediumDescription& m, float length, float u, Color& beta, ChromaticFlight& path) {
+    if (path.hero < 0) {
+        path.hero = std::min(static_cast<int>(u * 3), 2);
+        u = u * 3 - static_cast<float>(path.hero);
+    }
+    u = std::min(u, 0x1.fffffep-1f);
+    const Color sigmaT = m.extinction();
+    const int h = path.hero;
+    const float t = sigmaT[h] > 0 ? -std::log1p(-u) / sigmaT[h] : std::numeric_limits<float>::infinity();
+    const bool scatters = t < length;
+    const float d = scatters ? t : length;
+    Color tr;
+    for (int c = 0; c < 3; ++c) tr[c] = sigmaT[c] > 0 ? std::exp(-sigmaT[c] * d) : 1.0f;
+    // Each channel's density of this flight over the hero's, and the contribution's.
+    const float hero = scatters ? sigmaT[h] * tr[h] : tr[h];
+    const Color density = (scatters ? sigmaT * tr : tr) / hero;
+    const Color weight = (scatters ? m.scattering * tr : tr) / hero;
+    const Color ratios = path.ratios * density;
+    const float mean = (ratios.x + ratios.y + ratios.z) / 3;
+    if (!(mean > 0)) {
+        beta = Color(0.0f);
+        return d;
+    }
+    // beta = f / mean(r) over the path: the old mean was 1.
+    beta = beta * weight / mean;
+    path.ratios = ratios / mean;
+    return d;
+}
+
+}  // namespace photon
