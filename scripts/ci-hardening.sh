@@ -259,18 +259,26 @@ step "asan+ubsan: tests" san_tests
 #  - JobsTest.EachMethodReportsItsOwnFigures: each method through the server (44 s here,
 #    radiosity's solve most of it); a job's progress and figures cross the same threads for
 #    every method, and the other JobsTest cases follow them while a job runs.
+#  - the API tests whose subject is what one request gets back (errors, imports, origins,
+#    assets, listings, ranges, framing, the fuzzers' regressions, the OpenAPI document):
+#    their requests cross the same HTTP threads, queue and event hub as the tests that run
+#    here, which follow jobs while they render (220 s of the lanes' time under TSan). They
+#    run under ASan above and in the test command.
 tsan="$root/build-tsan"
 tsan_engine_tests=(test_renderer test_checkpoint)
+tsan_server_tests=(test_image_cache test_server_jobs test_server_restart test_server_idempotency test_server_limits
+                   test_server_faults test_server_images test_server_workers test_server_connections
+                   test_server_image_options test_farm test_farm_server)
 tsan_build() {
     configure "$tsan" -DPHOTON_TSAN=ON
     nice cmake --build "$tsan" -j2 --target photon-server photon-render photon-worker "${tsan_engine_tests[@]}" "${unit_tests[@]}" \
-        "${server_tests[@]}"
+        "${tsan_server_tests[@]}"
 }
 tsan_tests() {
     local launcher=(taskset -c LANE)
     TSAN_OPTIONS="ignore_noninstrumented_modules=1:log_path=$tsan/sanitizer-logs/tsan:second_deadlock_stack=1" \
         GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:Renderer.CancelInsideAPassKeepsTheLastCompleteImage:JobsTest.EachMethodReportsItsOwnFigures' \
-        run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
+        run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${tsan_server_tests[@]}"
 }
 step "tsan: build" tsan_build
 step "tsan: tests" tsan_tests

@@ -81,7 +81,7 @@ TEST(AlphaCutout, ConstantAlphaTransmitsTheRest) {
 TEST(AlphaCutout, SceneJsonReadsTheAlphaChannel) {
     using namespace test;
     const fs::path dir = fixture().scene / "textures";
-    writeImage<uint8_t>(dir / "leaf.png", 2, 1, 4, OIIO::TypeDesc::UINT8, {0, 255, 0, 0, 0, 255, 0, 255});
+    writeImage<uint8_t>(dir / "leaf.png", 2, 1, 4, {0, 255, 0, 0, 0, 255, 0, 255});
     Json doc = fullScene();
     doc["shapes"][0]["alpha"] = Json::parse(R"({"texture": "textures/leaf.png"})");
     doc["shapes"][1]["alpha"] = 0.25;

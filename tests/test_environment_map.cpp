@@ -474,8 +474,8 @@ TEST(EnvironmentMapScene, FieldsAndErrors) {
     namespace fs = std::filesystem;
     const fs::path dir = fs::temp_directory_path() / ("photon-envmap-" + std::to_string(::getpid()));
     std::vector<float> pixels(8 * 4 * 3, 1.0f);
-    test::writeImage(dir / "sky.exr", 8, 4, 3, OIIO::TypeDesc::FLOAT, pixels);
-    test::writeImage(dir / "square.exr", 4, 4, 3, OIIO::TypeDesc::FLOAT, std::vector<float>(4 * 4 * 3, 1.0f));
+    test::writeImage(dir / "sky.exr", 8, 4, 3, pixels);
+    test::writeImage(dir / "square.exr", 4, 4, 3, std::vector<float>(4 * 4 * 3, 1.0f));
     auto sceneWith = [](const std::string& light) {
         return R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "fov": 30},
                    "materials": {"m": {"type": "diffuse"}},

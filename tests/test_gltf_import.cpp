@@ -164,7 +164,7 @@ std::string errorOf(const std::function<void()>& f) {
 // A 1 x 2 PNG: top texel red, bottom green (8-bit sRGB, so 255 and 0 are exact).
 std::string redOverGreenPng() {
     const fs::path p = folder() / "red-over-green.png";
-    test::writeImage<uint8_t>(p, 1, 2, 3, OIIO::TypeDesc::UINT8, {255, 0, 0, 0, 255, 0});
+    test::writeImage<uint8_t>(p, 1, 2, 3, {255, 0, 0, 0, 255, 0});
     return readBytes(p);
 }
 

@@ -78,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(Integrators, NormalMapRender, testing::Values(Integrato
 TEST(NormalMap, SceneJsonReadsTheMapAsStored) {
     using namespace test;
     const fs::path dir = fixture().scene / "textures";
-    writeImage<uint8_t>(dir / "bumps.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 255});
+    writeImage<uint8_t>(dir / "bumps.png", 1, 1, 3, {128, 128, 255});
     Json doc = fullScene();
     doc["materials"]["white"]["normal_map"] = "textures/bumps.png";
     SceneDescription s = load(doc);
@@ -114,7 +114,7 @@ TEST(BumpMap, SlopeOfTheHeightFieldTiltsTheNormal) {
 
 TEST(BumpMap, SceneJson) {
     using namespace test;
-    writeImage<uint8_t>(fixture().scene / "textures/bumps.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {128, 128, 255});
+    writeImage<uint8_t>(fixture().scene / "textures/bumps.png", 1, 1, 3, {128, 128, 255});
     Json doc = fullScene();
     doc["materials"]["white"]["bump"] = Json::parse(R"({"type": "checkerboard", "even": 0, "odd": 0.01})");
     SceneDescription s = load(doc);

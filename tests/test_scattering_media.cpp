@@ -194,5 +194,18 @@ TEST(ScatteringMedium, SppmAgreesWithThePathTracerUnderALayerOfFog) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(sppm[c], path[c], 0.02f * path[c]) << "channel " << c;
 }
 
+// The same seed gives the same image on one thread and on two through chromatic fog: each
+// camera path's and photon's flights draw from their own streams.
+TEST(ScatteringMedium, FogImageIsTheSameOnOneAndTwoThreads) {
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        SceneDescription d = fogSlab(kind, 8);
+        d.render.passes = 4;
+        d.shapes.push_back(test::quad({-2, -2, -1}, {4, 0, 0}, {0, 4, 0}, 1));
+        d.materials.push_back(makeDiffuse(Color(0.5f)));
+        d.materialNames.push_back("floor");
+        EXPECT_TRUE(test::renderWithThreads(d, 1).rgb == test::renderWithThreads(d, 2).rgb) << "integrator " << int(kind);
+    }
+}
+
 }  // namespace
 }  // namespace photon

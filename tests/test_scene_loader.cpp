@@ -423,22 +423,22 @@ TEST(Texture, BilinearLookupWithWrapAndBottomRowAtVZero) {
 
 TEST(Texture, SrgbGreyAlphaAndFloat) {
     const fs::path dir = fixture().scene / "textures";
-    writeImage<uint8_t>(dir / "grey.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {128, 10});
+    writeImage<uint8_t>(dir / "grey.png", 2, 1, 1, {128, 10});
     auto grey = photon::ImageTexture::load(dir / "grey.png");
     // The exact sRGB curve: 128/255 -> 0.2158605, and the linear toe 10/255/12.92.
     EXPECT_VEC3_NEAR(grey->lookup({0.25f, 0.5f}), Color(0.2158605f), 1e-6);
     EXPECT_VEC3_NEAR(grey->lookup({0.75f, 0.5f}), Color(10 / 255.0f / 12.92f), 1e-7);
 
     // Alpha is ignored, and colour is not premultiplied by it.
-    writeImage<uint8_t>(dir / "alpha.png", 1, 1, 4, OIIO::TypeDesc::UINT8, {255, 128, 0, 0});
+    writeImage<uint8_t>(dir / "alpha.png", 1, 1, 4, {255, 128, 0, 0});
     EXPECT_VEC3_NEAR(photon::ImageTexture::load(dir / "alpha.png")->average(), Vec3(1, 0.2158605f, 0), 1e-6);
 
-    writeImage<uint16_t>(dir / "deep.png", 1, 1, 3, OIIO::TypeDesc::UINT16, {65535, 32768, 0});
+    writeImage<uint16_t>(dir / "deep.png", 1, 1, 3, {65535, 32768, 0});
     const float half16 = float(std::pow((32768 / 65535.0 + 0.055) / 1.055, 2.4));  // 0.21404
     EXPECT_VEC3_NEAR(photon::ImageTexture::load(dir / "deep.png")->average(), Vec3(1, half16, 0), 1e-6);
 
     // Float images are linear; negative and NaN texels become 0.
-    writeImage<float>(dir / "linear.exr", 2, 1, 3, OIIO::TypeDesc::FLOAT, {2.5f, 0.5f, -1, std::nanf(""), 1, 0});
+    writeImage<float>(dir / "linear.exr", 2, 1, 3, {2.5f, 0.5f, -1, std::nanf(""), 1, 0});
     auto lin = photon::ImageTexture::load(dir / "linear.exr");
     EXPECT_VEC3_NEAR(lin->lookup({0.25f, 0.5f}), Vec3(2.5f, 0.5f, 0), 1e-6);
     EXPECT_VEC3_NEAR(lin->lookup({0.75f, 0.5f}), Vec3(0, 1, 0), 1e-6);
@@ -446,7 +446,7 @@ TEST(Texture, SrgbGreyAlphaAndFloat) {
 
 TEST(Texture, TooLargeIsRefused) {
     const fs::path file = fixture().scene / "textures/wide.png";
-    writeImage<uint8_t>(file, 16385, 1, 1, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(16385, 0));
+    writeImage<uint8_t>(file, 16385, 1, 1, std::vector<uint8_t>(16385, 0));
     try {
         photon::ImageTexture::load(file);
         FAIL() << "loaded a texture over the limit";
@@ -459,7 +459,7 @@ TEST(Texture, TooLargeIsRefused) {
 
 TEST(Texture, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
     const fs::path file = fixture().scene / "textures/cut.png";
-    writeImage<uint8_t>(file, 2, 2, 3, OIIO::TypeDesc::UINT8, std::vector<uint8_t>(12, 200));
+    writeImage<uint8_t>(file, 2, 2, 3, std::vector<uint8_t>(12, 200));
     ASSERT_EQ(photon::ImageTexture::load(file)->width(), 2);
     std::string bytes;
     {

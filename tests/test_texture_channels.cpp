@@ -16,12 +16,12 @@ struct Folder {
     test::fs::path dir = test::fs::temp_directory_path() / ("photon-channels-" + std::to_string(::getpid()));
     Folder() {
         // One RGBA texel (51, 102, 153, 204): 0.2, 0.4, 0.6, 0.8 as stored.
-        test::writeImage<uint8_t>(dir / "packed.png", 1, 1, 4, OIIO::TypeDesc::UINT8, {51, 102, 153, 204});
-        test::writeImage<uint8_t>(dir / "rgb.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {51, 102, 153});
+        test::writeImage<uint8_t>(dir / "packed.png", 1, 1, 4, {51, 102, 153, 204});
+        test::writeImage<uint8_t>(dir / "rgb.png", 1, 1, 3, {51, 102, 153});
         // Red on the left half (u < 0.5), blue on the right.
-        test::writeImage<uint8_t>(dir / "halves.png", 2, 1, 3, OIIO::TypeDesc::UINT8, {255, 0, 0, 0, 0, 255});
+        test::writeImage<uint8_t>(dir / "halves.png", 2, 1, 3, {255, 0, 0, 0, 0, 255});
         // Alpha rising along u, texel centres 0.3 and 0.7 symmetric about 0.5 (77 + 178 = 255).
-        test::writeImage<uint8_t>(dir / "ramp.png", 4, 1, 4, OIIO::TypeDesc::UINT8,
+        test::writeImage<uint8_t>(dir / "ramp.png", 4, 1, 4,
                                   {9, 9, 9, 26, 9, 9, 9, 77, 9, 9, 9, 178, 9, 9, 9, 229});
     }
     ~Folder() {

@@ -70,13 +70,13 @@ TEST(Textures, ProductAndMix) {
 
 TEST(Textures, AlphaChannelReadLinearly) {
     const fs::path dir = fixture().scene / "textures";
-    writeImage<uint8_t>(dir / "cutout.png", 2, 1, 4, OIIO::TypeDesc::UINT8, {255, 0, 0, 0, 0, 255, 0, 128});
+    writeImage<uint8_t>(dir / "cutout.png", 2, 1, 4, {255, 0, 0, 0, 0, 255, 0, 128});
     auto alpha = ImageTexture::load(dir / "cutout.png", ImageChannels::Alpha);
     EXPECT_VEC3_NEAR(alpha->lookup({0.25f, 0.5f}), Color(0.0f), 0);
     EXPECT_VEC3_NEAR(alpha->lookup({0.75f, 0.5f}), Color(128 / 255.0f), 1e-6);  // linear, not sRGB
     EXPECT_VEC3_NEAR(ImageTexture::load(dir / "cutout.png")->lookup({0.75f, 0.5f}), Color(0, 1, 0), 0);
     // Without an alpha channel, an alpha parameter reads the grey level.
-    writeImage<uint8_t>(dir / "mask.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {255, 255, 0});
+    writeImage<uint8_t>(dir / "mask.png", 1, 1, 3, {255, 255, 0});
     EXPECT_NEAR(ImageTexture::load(dir / "mask.png", ImageChannels::Alpha)->average().x, 2.0f / 3.0f, 1e-6);
 }
 
