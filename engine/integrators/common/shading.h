@@ -69,9 +69,9 @@ struct PathInMedia {
 // absorption on the way (to infinity if the ray leaves the scene), `medium` follows the
 // crossings, and hit.t is the whole distance along the ray. With `media`, a ray in a medium
 // that scatters may scatter first (sampleFreeFlight): hit then holds only the point (p) and
-// the distance (t). Without, the ray
-// keeps only what crosses every medium unscattered (the light it finds is the unscattered
-// part, the expected value of what a sampled flight would bring).
+// the distance (t). Without, the ray keeps only what crosses every medium unscattered (the
+// light it finds is the unscattered part, the expected value of what a sampled flight
+// would bring).
 inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t& medium, SurfaceHit& hit,
                                  PathInMedia* media = nullptr) {
     // A ray caught between more boundaries than this stops at the last as at a surface (a
