@@ -18,15 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The six faces of the box [lo, hi], each facing out.
-std::vector<ShapeDescription> boxFaces(Vec3 lo, Vec3 hi, uint32_t material) {
-    const Vec3 e = hi - lo;
-    const Vec3 x{e.x, 0, 0}, y{0, e.y, 0}, z{0, 0, e.z};
-    return {test::quad(lo, z, y, material), test::quad(lo + x, y, z, material),  // -x, +x
-            test::quad(lo, x, z, material), test::quad(lo + y, z, x, material),  // -y, +y
-            test::quad(lo, y, x, material), test::quad(lo + z, x, y, material)}; // -z, +z
-}
-
 const Color kAbsorption(0.5f, 1.0f, 2.0f);
 
 // The camera looks down -z through a slab 1 thick (z in [-0.5, 0.5]) at a white emitter of
@@ -41,7 +32,7 @@ SceneDescription slabBeforeAnEmitter(IntegratorKind kind, bool inside) {
     d.materialNames = {"black", "boundary"};
     d.media = {{"absorbs", kAbsorption}};
     d.shapes = {test::quad({-5, -5, -2}, {10, 0, 0}, {0, 10, 0}, 0, Color(1.0f))};
-    for (ShapeDescription& face : boxFaces({-2, -2, -0.5f}, {2, 2, 0.5f}, 1)) {
+    for (ShapeDescription& face : test::boxFaces({-2, -2, -0.5f}, {2, 2, 0.5f}, 1)) {
         // The medium inside the box, or the same faces turned inside out with the medium
         // outside them: the same image.
         if (inside) {
@@ -151,7 +142,7 @@ SceneDescription planeUnderAPointLightAndABox(IntegratorKind kind, float lo, flo
     d.materialNames = {"grey", "boundary"};
     d.media = {{"absorbs", kAbsorption}};
     d.shapes = {test::quad({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, 0)};
-    for (ShapeDescription& face : boxFaces({-5, lo, -5}, {5, hi, 5}, 1)) {
+    for (ShapeDescription& face : test::boxFaces({-5, lo, -5}, {5, hi, 5}, 1)) {
         face.insideMedium = 0;
         d.shapes.push_back(face);
     }
@@ -192,6 +183,37 @@ TEST(AbsorbingMedium, ShadowRaysCameraAndLightsInMedia) {
                     << c.what << ", integrator " << int(kind) << ", channel " << ch;
             }
         }
+}
+
+// A wall under a ceiling light, seen at the height where its shadow rays climb at about 20
+// degrees, and a box of nearly clear medium (absorption 1e-4) whose top face is 1 cm under
+// the light. A shadow ray crosses the box's faces toward the point it was cast to and stops
+// short of the light: the wall's direct light is the same with the box and without it.
+// Before, a ray that crossed the top face went on by its old length from the offset origin,
+// reached the light, and was blocked: the wall got 58% of its light (the Cornell box with
+// fog, docs/sppm.md).
+TEST(AbsorbingMedium, ShadowRaysThroughABoundaryUnderALightReachIt) {
+    auto wall = [](bool box) {
+        SceneDescription d;
+        d.camera = test::camera({1.5f, 1.6f, 0}, {-1, 1.6f, 0}, {0, 1, 0}, 10, 8, 8);
+        d.materials = {makeDiffuse(Color(0.5f)), makeDielectric(1.0f)};
+        d.materialNames = {"grey", "boundary"};
+        d.media = {{"clear", Color(1e-4f)}};
+        d.shapes = {test::quad({-1, -1, 3}, {0, 0, -6}, {0, 4, 0}, 0),
+                    test::quad({-0.25f, 2, -0.25f}, {0.5f, 0, 0}, {0, 0, 0.5f}, 0, Color(10.0f))};
+        if (box)
+            for (ShapeDescription& face : test::boxFaces({-0.99f, -1, -2}, {2, 1.99f, 2}, 1)) {
+                face.insideMedium = 0;
+                d.shapes.push_back(face);
+            }
+        d.render.integrator = IntegratorKind::Path;
+        d.render.maxDepth = 1;
+        d.render.passes = 16;
+        return test::meanOver(test::renderImage(std::move(d)), 0, 0, 8, 8);
+    };
+    const Color without = wall(false), with = wall(true);
+    EXPECT_GT(without.x, 0.01f);
+    EXPECT_NEAR(with.x, without.x, 0.005f * without.x);
 }
 
 // pbrt-v4's camera and lights take MediumInterface's outside medium where they are declared.

@@ -8,6 +8,11 @@ namespace photon::test {
 ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emission = Color(0.0f));
 ShapeDescription sphere(Vec3 center, float radius, uint32_t material, Color emission = Color(0.0f),
                         bool flipNormals = false);
+// The six faces of the box [lo, hi], each facing out, in the order -x, +x, -y, +y, -z, +z,
+// bounding the medium `insideMedium` (-1: none).
+std::vector<ShapeDescription> boxFaces(Vec3 lo, Vec3 hi, uint32_t material, int32_t insideMedium = -1);
+// A point light of intensity I at p, in `medium` (-1: none).
+LightDescription pointLight(Vec3 p, Color intensity, int32_t medium = -1);
 CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int width, int height);
 // An orthographic camera (up +y) whose image is viewHeight scene units high.
 CameraDescription orthographicCamera(Vec3 position, Vec3 lookAt, float viewHeight, int width, int height);

@@ -34,6 +34,25 @@ ShapeDescription quad(Vec3 origin, Vec3 u, Vec3 v, uint32_t material, Color emis
     return s;
 }
 
+std::vector<ShapeDescription> boxFaces(Vec3 lo, Vec3 hi, uint32_t material, int32_t insideMedium) {
+    const Vec3 e = hi - lo;
+    const Vec3 x{e.x, 0, 0}, y{0, e.y, 0}, z{0, 0, e.z};
+    std::vector<ShapeDescription> faces{quad(lo, z, y, material), quad(lo + x, y, z, material),  // -x, +x
+                                        quad(lo, x, z, material), quad(lo + y, z, x, material),  // -y, +y
+                                        quad(lo, y, x, material), quad(lo + z, x, y, material)}; // -z, +z
+    for (ShapeDescription& face : faces) face.insideMedium = insideMedium;
+    return faces;
+}
+
+LightDescription pointLight(Vec3 p, Color intensity, int32_t medium) {
+    LightDescription light;
+    light.kind = LightDescription::Kind::Point;
+    light.position = p;
+    light.intensity = intensity;
+    light.medium = medium;
+    return light;
+}
+
 SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind) {
     SceneDescription d;
     d.camera = camera({0, 3, 3}, {0, 0, 0}, {0, 1, 0}, 40, 8, 8);
