@@ -104,6 +104,10 @@ TEST(SceneLoaderErrors, RangeChecks) {
     expectError([](Json& d) { d["render"]["bands"] = 2.5; }, "render.bands",
                 "must be \"auto\" or an integer in [1, 65536]");
     expectError([](Json& d) { d["render"]["bands"] = 0; }, "render.bands", "must be an integer in [1, 65536]");
+    expectError([](Json& d) { d["render"]["volume_photons"] = "yes"; }, "render.volume_photons",
+                "must be \"auto\", true or false");
+    expectError([](Json& d) { d["render"]["volume_photons"] = 1; }, "render.volume_photons",
+                "must be \"auto\", true or false");
     expectError([](Json& d) { d["render"]["initial_radius"] = "big"; }, "render.initial_radius",
                 "must be \"auto\" or a number > 0");
     expectError([](Json& d) { d["render"]["initial_radius"] = 0; }, "render.initial_radius", "must be > 0");

@@ -185,6 +185,11 @@ RenderSettings readRender(const JsonValue& value) {
     r.lobeChoice = LobeChoice(obj.choice("lobe_choice", 0, {"learned", "material"}));
     r.adaptiveCameraPaths = obj.boolean("adaptive_camera_paths", r.adaptiveCameraPaths);
     r.sampler = SamplerKind(obj.choice("sampler", 0, {"sobol", "independent"}));
+    if (auto volume = obj.optional("volume_photons")) {
+        if (volume->json().is_string() && volume->string() == "auto") r.volumePhotons = VolumePhotons::Auto;
+        else if (volume->json().is_boolean()) r.volumePhotons = volume->boolean() ? VolumePhotons::Always : VolumePhotons::Never;
+        else volume->fail("must be \"auto\", true or false");
+    }
     if (auto adaptive = obj.optional("adaptive_photons")) {
         r.adaptivePhotons = adaptive->boolean();
         // The global schedule's passes are rendered apart (on a farm's workers too), each

@@ -41,6 +41,12 @@ enum class LobeChoice { Learned, Material };
 // numbers.
 enum class SamplerKind { Sobol, Independent };
 
+// SPPM in media that scatter (RenderSettings::volumePhotons): whether photons are also
+// gathered where they scatter in a medium. Auto: where the scene has a surface with a delta
+// lobe (a mirror, smooth glass) to send light into the medium along paths no light sample
+// finds, a volumetric caustic.
+enum class VolumePhotons { Auto, Always, Never };
+
 // Finite-element radiosity (docs/radiosity.md): how surfaces are cut into patches and how
 // the form factors and the linear system are computed.
 struct RadiositySettings {
@@ -120,6 +126,11 @@ struct RenderSettings {
     // camera-side variance and the pass's costs make worth it, the first storing the visible
     // point (docs/sppm.md, "Camera paths per pass").
     bool adaptiveCameraPaths = true;
+    // SPPM in media that scatter: a camera path's visible point goes where it first scatters
+    // in a medium, and photons are gathered there in a ball (a volumetric photon map's
+    // estimate) as well as on surfaces (docs/sppm.md, "Volume photons"). Never: visible
+    // points on surfaces only, the path going on through the medium.
+    VolumePhotons volumePhotons = VolumePhotons::Auto;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -165,6 +176,8 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Likewise: a checkpoint written before the Sobol sampler existed goes on with it (both
     // samplers' passes are unbiased, and its odd and even passes stay independent).
     if (s.sampler != SamplerKind::Sobol) visit(s.sampler);
+    // Likewise: a checkpoint written before volume photons existed goes on with "auto".
+    if (s.volumePhotons != VolumePhotons::Auto) visit(s.volumePhotons);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):

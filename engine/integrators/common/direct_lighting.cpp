@@ -41,7 +41,8 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
     return f * ls->weight * transmittance * (std::abs(wiLocal.z) / pickProbability);
 }
 
-Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler) {
+Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler,
+                                bool continues) {
     const float uLight = sampler.get1D();
     const Vec3 n = sampler.get1D() < 0.5f ? wo : -wo;
     const Vec2 u = sampler.get2D();
@@ -55,7 +56,7 @@ Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t med
     if (isBlack(transmittance)) return Color(0.0f);
     const float pickProbability = 0.5f * pick.probability;
     // The phase-function sample draws wi with density `phase` (scatterInMedium).
-    const float w = ls->pdf > 0 ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
+    const float w = ls->pdf > 0 && continues ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
     return ls->weight * transmittance * (phase * w / pickProbability);
 }
 

@@ -30,8 +30,10 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
 // Lights sample directions above a normal, and a point in a medium has none: the sample is
 // taken for the half of the sphere on wo's side or the other, each with probability 1/2
 // (unbiased, as for a surface that transmits). Its draws: the light (1D), the side (1D),
-// the point on the light (2D).
-Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler);
+// the point on the light (2D). `continues` false: the path ends here (an SPPM visible point
+// in the medium), and the light sample counts in full.
+Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler,
+                                bool continues = true);
 // The same with every number from `rng`.
 inline Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng,
                                unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1) {

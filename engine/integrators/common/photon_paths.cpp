@@ -355,9 +355,8 @@ private:
     // Lane i's photon in a medium that scatters, over its ray's segment of length `segment`:
     // true if it scatters before the end (sampleFreeFlight), where it then goes on toward a
     // direction drawn from the phase function (weight 1) unless its path ends there; false
-    // if it reaches the end, its flux weighted by the flight's odds. No arrival is made in
-    // a medium: photons are gathered on surfaces only, and the camera paths take light
-    // samples where they scatter.
+    // if it reaches the end, its flux weighted by the flight's odds. Where it scatters it
+    // arrives there too, with PhotonPathSettings::arrivesInMedia.
     bool scattersOnTheWay(int i, float segment) {
         PhotonLanes& L = lanes_;
         Rng rng = Rng::resume(L.state[i], L.increment[i]);
@@ -373,10 +372,12 @@ private:
             return false;
         }
         ++counters_.segments;
+        const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
+        if (settings_.arrivesInMedia && L.depth[i] >= settings_.firstArrivalDepth)
+            sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i], true});
         if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;
         std::optional<Color> next = photonAfterRoulette(L.beta(i), weight, rng);
         if (!next) return true;
-        const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
         const PhaseSample s = sampleHenyeyGreenstein(-d, m.g, {rng.uniform(), rng.uniform()});
         L.setBeta(i, *next);
         L.setRay(i, Ray{o + d * t, s.wi});

@@ -12,15 +12,19 @@
 
 namespace photon {
 
-// A photon arriving at a surface that is not purely specular.
+// A photon arriving at a surface that is not purely specular, or where it scatters in a
+// medium (PhotonPathSettings::arrivesInMedia).
 struct PhotonArrival {
     Vec3 p;             // where it landed
-    Vec3 ns;            // the shading normal there, turned toward wi on two-sided materials
+    Vec3 ns;            // the shading normal there, turned toward wi on two-sided materials (0 in a medium)
     Vec3 wi;            // toward where the photon came from
     Color flux;         // in the emitter's units (photons average 1 without projection maps)
     int depth;          // 0: straight from the light
     bool onlySpecular;  // every bounce before this one was off a delta lobe
     uint32_t cell;      // the emission guide's cell the photon left from (EmittedPhoton::cell)
+    // Where it scatters in a medium: its flux is then weighted by the flight's odds, so that
+    // the flux arriving per unit volume and solid angle has mean sigma_s L (free_flight.h).
+    bool inMedium = false;
 };
 
 // What the integrator does with arriving photons (splat them, store them).
@@ -41,6 +45,9 @@ struct PhotonPathSettings {
     // Arrivals at smaller depths are not handed to the sink (1: no photons straight from
     // the lights, where direct light is found another way).
     int firstArrivalDepth = 0;
+    // Arrivals also where photons scatter in media (a volumetric photon map's photons); else
+    // only on surfaces.
+    bool arrivesInMedia = false;
 };
 
 struct PhotonPathCounters {

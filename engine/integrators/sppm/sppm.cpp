@@ -27,7 +27,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)),
-      adaptsCameraPaths_(adaptsCameraPaths(settings_)) {
+      adaptsCameraPaths_(adaptsCameraPaths(settings_)), gathersInMedia_(gathersInMedia(*scene_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     if (adaptsCameraPaths_) cameraPaths_ = AdaptiveCameraPaths(width_, height_);
     size_t n = static_cast<size_t>(width_) * height_;
@@ -47,6 +47,19 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
         for (const MaterialPtr& m : scene_->description().materials) tracesPhotons_ |= (m->lobes() & kDeltaLobe) != 0;
     }
     if (settings_.photonGuiding && tracesPhotons_ && scene_->lights().size() > 0) guide_.emplace(scene_->lights());
+}
+
+bool SppmIntegrator::gathersInMedia(const Scene& scene) {
+    const VolumePhotons setting = scene.settings().volumePhotons;
+    if (!scene.hasScatteringMedia() || setting == VolumePhotons::Never) return false;
+    if (setting == VolumePhotons::Always) return true;
+    // Auto: only a surface with a delta lobe sends light into a medium along paths that no
+    // light sample finds (a point light's through glass, a mirror's). Elsewhere the camera
+    // path's light samples at each of its scattering points find all of the light, with no
+    // ball cut by the medium's boundary (docs/sppm.md, "Volume photons").
+    for (uint32_t i = 0; i < scene.shapeCount(); ++i)
+        if (!scene.passesThrough(i) && (scene.materialAt(scene.shape(i).material).lobes() & kDeltaLobe)) return true;
+    return false;
 }
 
 int SppmIntegrator::rowsPerBand() const {

@@ -68,6 +68,10 @@ private:
     using GatherDisc = HashGrid::Sphere;
     // Everything a photon needs once it is inside the disc, and what it adds to, in one
     // cache line: one memory access per accepted photon.
+    // A point in a medium (inMedium, render.volume_photons) keeps wo (world space) in n,
+    // the medium's index in material, and in beta the camera path's throughput over sigma_s
+    // times 3 / (4 r): its photons, gathered in a ball, are then counted in the units of a
+    // disc's (storeVolumePoint).
     struct alignas(64) VisiblePoint {
         OctahedralVector n;        // shading normal
         OctahedralVector woLocal;  // outgoing direction in the frame of n
@@ -75,10 +79,11 @@ private:
         // its f = tint / pi, which then needs no eval() per photon.
         Color beta;
         Vec2 uv;                   // where on the surface, for the material's textures
-        uint32_t material : 24 = 0;
+        uint32_t material : 23 = 0;
         uint32_t lobes : 6 = kAllLobes;  // the material's lobes photons are gathered through
         uint32_t lambertian : 1 = 0;
         uint32_t transmits : 1 = 0;  // photons arriving on the far side count too
+        uint32_t inMedium : 1 = 0;   // a point in a medium (below)
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
         // With photon guiding: what a photon reaching this point is worth to the guide
         // (guideWeight(); in what was padding before the flux).
@@ -165,6 +170,17 @@ private:
     int tracePixelLightweight(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
+    // A visible point where the first camera path scatters in `medium` at p, beta its
+    // throughput with the flight's weight (render.volume_photons).
+    void storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength);
+    // The pixel's squared gather radius for this pass, from its statistics or (first pass,
+    // guide training, global schedule) its footprint at `pathLength`; a ball's in a medium
+    // of mean `extinction` > 0.
+    float passRadiusSquared(size_t index, float pathLength, float extinction = 0) const;
+    // Whether photons are gathered where they scatter in media, at the camera paths' first
+    // scattering there (render.volume_photons, in a scene with media that scatter).
+    bool gathersInMedia() const { return gathersInMedia_; }
+    static bool gathersInMedia(const Scene& scene);
     static float smoothDielectricReflectance(const Material& m, Vec3 woLocal);
     // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
     // weighted against that vertex's light sample; `at` is its hit as cast, `medium` the
@@ -194,7 +210,9 @@ private:
     };
     // A photon's arrival on a non-delta surface, waiting to be added to visible points.
     struct PhotonHit {
-        Vec3 p, n, wi;  // position, shading normal, direction back toward the photon's origin
+        // Position, shading normal (0 where the photon scattered in a medium), direction back
+        // toward the photon's origin.
+        Vec3 p, n, wi;
         Color flux;
         uint32_t cell;  // the emission guide's cell the photon left from
     };
@@ -229,6 +247,7 @@ private:
     bool adaptivePhotons_;
     float globalShrink_ = 1;    // the global schedule's r_i^2 / r_1^2 for that pass
     bool tracesPhotons_ = true; // false: passes are camera passes alone (sppm.cpp)
+    bool gathersInMedia_;
     PassStats stats_;
     bool photonsTraced_ = false;  // the pass traced photons for at least one band
 

@@ -119,9 +119,17 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         pathLength += hit.t;
         Vec3 wo = -ray.d;
         if (end == RayEnd::Scattered) {
-            // A vertex in the medium: no visible point (photons land on surfaces only), its
-            // light sample, and the phase function's direction, whose ray at the last vertex
-            // is traced only for the light it shares with the light sample.
+            // A vertex in the medium. With volume photons the path ends at its first one:
+            // its light sample brings single scattering (unless photons bring direct light),
+            // the photons gathered around it the rest.
+            if (gathersInMedia()) {
+                if (directBySampling)
+                    direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, false), ++rays;
+                if (first) storeVolumePoint(index, hit.p, wo, beta, medium, pathLength);
+                break;
+            }
+            // Else its light sample, and the phase function's direction, whose ray at the
+            // last vertex is traced only for the light it shares with the light sample.
             direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
             ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
             if (depth == settings_.maxDepth - 1) {
@@ -238,18 +246,55 @@ void SppmIntegrator::lookUpLight(const Scene& scene, const SurfaceHit& at, const
     traceCameraRay(scene, ray, beta, next, bounceFrom(sp, *s), hit, direct);
 }
 
-void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
-                                       float pathLength) {
-    OctahedralVector n(sp.hit.ns);
-    Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
+float SppmIntegrator::passRadiusSquared(size_t index, float pathLength, float extinction) const {
     // Only the render thread writes pixels_ (in updateStatistics), so reading here is safe.
     // The guide's training passes start from the first pass's radii, whatever pass follows.
     float r2 = global() || guidePass_ >= 0 ? 0.0f : pixels_[index].r2;
     if (r2 == 0) {
         float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
+        // In a medium photons scatter about once in a mean free path 1 / sigma_t of the way
+        // they travel, so where a disc of radius r_s would hold k photons on a surface the
+        // same flux puts about sigma_t k (4/3 pi r^3) / (pi r_s^2) in a ball: r^3 = 3 r_s^2 /
+        // (4 sigma_t) keeps k. In a white furnace of fog (extinction 1, 2 and 4) after 256
+        // passes of 1,000 photons the auto radius of a disc (0.054) left the ball's estimate
+        // 8-16% low, most balls gathering no photon; this one (0.10) within 1%.
+        if (extinction > 0 && settings_.initialRadius <= 0) r = std::cbrt(0.75f * r * r / extinction);
         r2 = r * r;
         if (global()) r2 *= globalShrink_;
     }
+    return r2;
+}
+
+void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength) {
+    const Color sigmaT = scene_->medium(medium).extinction();
+    const float r2 = passRadiusSquared(index, pathLength, (sigmaT.x + sigmaT.y + sigmaT.z) / 3);
+    const size_t local = index - bandOffset_;
+    discs_[local] = GatherDisc{p, r2};
+    // Photons arrive where they scatter with flux whose density per unit volume and solid
+    // angle is sigma_s L_i (free_flight.h), so sum(p Phi) / (4/3 pi r^3) estimates sigma_s
+    // times the in-scattered radiance, and the path's throughput is divided by sigma_s. The
+    // factor 3 / (4 r) turns the ball's volume into the disc's area, pi r^2, by which the
+    // statistics divide every pass's flux; the radius then shrinks by the disc's rule, still
+    // consistent in a volume for alpha > 1/3 (Knaus & Zwicker 2011, sec. 4.3: a pass's
+    // variance grows as r^-3, and r^2 falls as i^(alpha - 1)).
+    const Color sigmaS = scene_->medium(medium).scattering;
+    Color weight;
+    for (int c = 0; c < 3; ++c) weight[c] = sigmaS[c] > 0 ? beta[c] / sigmaS[c] : 0.0f;
+    weight *= 0.75f / std::sqrt(r2);
+    VisiblePoint& vp = visible_[local];
+    vp = VisiblePoint{};
+    vp.n = OctahedralVector(wo);
+    vp.beta = weight;
+    vp.material = static_cast<uint32_t>(medium);
+    vp.inMedium = 1;
+    if (guidePass_ >= 0) vp.guideWeight = guideWeight(index);
+}
+
+void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
+                                       float pathLength) {
+    OctahedralVector n(sp.hit.ns);
+    Frame frame = Frame::fromNormal(n.decode());  // the frame photons will see
+    const float r2 = passRadiusSquared(index, pathLength);
     const size_t local = index - bandOffset_;
     discs_[local] = GatherDisc{sp.hit.p, r2};
     Vec3 woLocal = frame.toLocal(wo);

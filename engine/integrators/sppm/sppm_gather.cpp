@@ -1,6 +1,7 @@
 // The gather's steps (sppm_gather_pipeline.h) and what one accepted photon adds.
 #include <atomic>
 #include "integrators/common/photon_kernel.h"
+#include "media/henyey_greenstein.h"
 #include "integrators/sppm/sppm_gather_pipeline.h"
 
 namespace photon {
@@ -101,27 +102,38 @@ void SppmIntegrator::GatherPipeline::addInside(Batch& b) {
 
 void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters) {
     VisiblePoint& vp = visible_[point];
-    Vec3 vn = vp.n.decode();
-    // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
-    // do not belong to this point's disc; but the far side of a sheet that transmits is
-    // the same surface, its normal turned toward the photon.
-    float facing = dot(vn, hit.n);
-    if (vp.transmits) facing = std::abs(facing);
-    if (facing < 0.5f) return;
     Color c;
-    if (vp.lambertian) {  // f = tint / pi above the surface, already in beta
-        if (!(dot(vn, hit.wi) > 0)) return;
-        c = vp.beta;
+    float kernel;
+    if (vp.inMedium) [[unlikely]] {
+        // Photons that scattered in a medium (no normal) go to the points in it; the facing
+        // test below turns them away from surfaces.
+        if (hit.n != Vec3{}) return;
+        c = vp.beta * henyeyGreenstein(dot(vp.n.decode(), hit.wi), scene_->medium(vp.material).g);
+        kernel = kernelWeight(settings_.kernel, d2OverR2, KernelDomain::Ball);
     } else {
-        Frame frame = Frame::fromNormal(vn);
-        const Material& m = scene_->materialAt(vp.material);
-        Color f = m.eval(vp.woLocal.decode(), frame.toLocal(hit.wi), m.inputsAt(vp.uv), TransportMode::Radiance, vp.lobes);
-        if (isBlack(f)) return;
-        c = vp.beta * f;
+        Vec3 vn = vp.n.decode();
+        // Photons on surfaces facing elsewhere (across a corner, the back of a thin wall)
+        // do not belong to this point's disc; but the far side of a sheet that transmits is
+        // the same surface, its normal turned toward the photon.
+        float facing = dot(vn, hit.n);
+        if (vp.transmits) facing = std::abs(facing);
+        if (facing < 0.5f) return;
+        if (vp.lambertian) {  // f = tint / pi above the surface, already in beta
+            if (!(dot(vn, hit.wi) > 0)) return;
+            c = vp.beta;
+        } else {
+            Frame frame = Frame::fromNormal(vn);
+            const Material& m = scene_->materialAt(vp.material);
+            Color f =
+                m.eval(vp.woLocal.decode(), frame.toLocal(hit.wi), m.inputsAt(vp.uv), TransportMode::Radiance, vp.lobes);
+            if (isBlack(f)) return;
+            c = vp.beta * f;
+        }
+        kernel = kernelWeight(settings_.kernel, d2OverR2);
     }
     ++counters.accepted;
     if (counters.guideWorth) counters.guideWorth[hit.cell] += vp.guideWeight;
-    c *= hit.flux * kernelWeight(settings_.kernel, d2OverR2);
+    c *= hit.flux * kernel;
     for (int k = 0; k < 3; ++k) {
         // Scaling by a power of two is exact in float as in double, and the units fit a
         // signed 64-bit integer: one conversion instruction, not the unsigned one's branches.

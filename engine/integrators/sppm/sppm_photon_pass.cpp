@@ -20,7 +20,7 @@ class SppmIntegrator::GatheringSink final : public PhotonArrivalSink {
 public:
     GatheringSink(SppmIntegrator& sppm, PhotonCounters& counters) : pipeline_(sppm, counters) {}
     void flush() { pipeline_.flush(); }
-    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux, a.cell}); }
+    void arrive(const PhotonArrival& a) override { pipeline_.push({a.p, a.ns, a.wi, a.flux, a.cell}); }  // ns is 0 in a medium
 
 private:
     GatherPipeline pipeline_;
@@ -39,6 +39,7 @@ void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
             // Lightweight photon mapping's photons carry caustics only: they arrive after
             // one or more delta bounces and end at their first non-delta surface.
             if (settings_.lightweight) paths.specularOnly = true, paths.firstArrivalDepth = 1;
+            paths.arrivesInMedia = gathersInMedia();
             PhotonPathCounters pathCounters;
             if (teaching) {
                 std::vector<uint64_t>& worth = guideWorth_.local();
