@@ -18,7 +18,7 @@ using namespace test::pbrt_import;
 TEST(PbrtImport, LightsMapOntoPhotons) {
     const Json doc = import(R"(
 LightSource "point" "point3 from" [1 2 3] "rgb I" [2 2 2] "float scale" [3]
-LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "float coneangle" [40] "float conedelta" [10] "blackbody I" [6500]
+LightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "float coneangle" [40] "float conedeltaangle" [10] "blackbody I" [6500]
 AttributeBegin
   Translate 0 0 1
   LightSource "distant" "point3 from" [0 1 0] "point3 to" [0 0 0] "rgb L" [5 5 5]

@@ -58,7 +58,7 @@ void SceneBuilder::lightSource(const Directive& d) {
             light["intensity"] = rgb(spectrum("I") * float(*power / (4 * kPi * luminance(spectrum("I")))));
     } else if (type == "spot") {
         const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0})), to = state_.ctm.point(p.vec3("to", {0, 0, 1}));
-        const double cone = p.number("coneangle", 30), delta = p.number("conedelta", 5);
+        const double cone = p.number("coneangle", 30), delta = p.number("conedeltaangle", 5);
         if (!(length(to - from) > 0)) fail(d.where, "spot: \"from\" and \"to\" are the same point");
         light = {{"type", "spot"},
                  {"position", vec(from)},
