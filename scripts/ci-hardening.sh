@@ -76,7 +76,7 @@ engine_tests=(test_checkpoint test_denoise test_hash_grid test_image_io test_lig
               test_instancing test_pbrt_import test_pbrt_parser test_pbrt_import_shapes test_loop_subdivision
               test_curves test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
               test_texture_channels test_gltf_import test_independent_passes test_error_estimate test_lightweight
-              test_obj_mesh test_photon_guiding test_adaptive_photons test_sppm_bands)
+              test_obj_mesh test_photon_guiding test_adaptive_photons test_sppm_bands test_scattering_media)
 unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head test_progress_history)
 server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
               test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
