@@ -234,6 +234,21 @@ TEST(CurvesJson, ReadsStrandsFromFileOrInlineAndNamesWhatIsWrong) {
               "shapes[1]: curves are rendered by the \"sppm\" and \"path\" integrators only");
 }
 
+// pbrt-v4's hair reads its reflectance as "reflectance", or as "color", its older name.
+TEST(PbrtCurves, HairTakesItsColourByEitherName) {
+    for (const char* name : {"reflectance", "color"}) {
+        const ImportedScene s = import(std::string("Material \"hair\" \"rgb ") + name + R"(" [0.3 0.2 0.1]
+Shape "curve" "point3 P" [0 0 0  1 1 0  2 1 0  3 0 0] "float width" [0.02] "string type" "cylinder"
+)");
+        const Json& curves = s.document["shapes"][2];
+        const Json& material = s.document["materials"][curves["material"].get<std::string>()];
+        ASSERT_TRUE(material.contains("color")) << name;
+        EXPECT_NEAR(material["color"][0].get<double>(), 0.3, 1e-6) << name;
+        EXPECT_NEAR(material["color"][2].get<double>(), 0.1, 1e-6) << name;
+        EXPECT_TRUE(s.warnings.empty()) << name;
+    }
+}
+
 // Three pbrt curves: a cubic Bezier, a cubic B-spline of 5 points (2 segments) and a
 // quadratic Bezier, all of the same material and type: one "curves" shape whose HAIR file
 // holds three Bezier strands that trace the same curves, widths running from width0 to

@@ -80,6 +80,12 @@ Shape "sphere")")).document["render"];
     EXPECT_EQ(renderOf("zsobol", R"(Sampler "zsobol")")["sampler"], "sobol");
     EXPECT_EQ(renderOf("halton", R"(Sampler "halton")")["sampler"], "sobol");
     EXPECT_EQ(renderOf("pmj02bn", R"(Sampler "pmj02bn")")["sampler"], "sobol");
+    // pbrt-v4's sample counts where none is given, and the stratified sampler's x times y.
+    EXPECT_EQ(renderOf("independent-default", R"(Sampler "independent")")["passes"], 4);
+    EXPECT_EQ(renderOf("zsobol-default", R"(Sampler "zsobol")")["passes"], 16);
+    EXPECT_EQ(renderOf("stratified", R"(Sampler "stratified" "integer xsamples" [2] "integer ysamples" [8] "bool jitter" false)")["passes"], 16);
+    EXPECT_EQ(renderOf("stratified-default", R"(Sampler "stratified")")["passes"], 16);
+    EXPECT_EQ(renderOf("stratified-x", R"(Sampler "stratified" "integer xsamples" [3])")["passes"], 12);
     // None: pbrt-v4's default, zsobol, and photon's own default alike.
     EXPECT_FALSE(renderOf("none", "").contains("sampler"));
 }
@@ -207,17 +213,24 @@ MakeNamedMaterial "varnish" "string type" "coateddiffuse" "texture roughness" "b
 }
 
 // An imagemap's "encoding" is kept: "linear" (the image read without the sRGB curve) and
-// "gamma g" (read as stored to the power g).
+// "gamma g" (read as stored to the power g). Where it is not given, pbrt-v4 reads a PNG as
+// sRGB and any other file as linear (a JPEG too).
 TEST(PbrtImport, ImagemapEncoding) {
     const ImportedScene s = import(R"(
 Texture "plain" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "linear"
 Texture "curved" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "gamma 2.2"
+Texture "photo" "spectrum" "imagemap" "string filename" "b.JPG"
+Texture "png" "spectrum" "imagemap" "string filename" "c.png"
 MakeNamedMaterial "m" "string type" "diffuse" "texture reflectance" "plain"
 MakeNamedMaterial "n" "string type" "diffuse" "texture reflectance" "curved"
+MakeNamedMaterial "o" "string type" "diffuse" "texture reflectance" "photo"
+MakeNamedMaterial "p" "string type" "diffuse" "texture reflectance" "png"
 )");
     EXPECT_EQ(s.document["materials"]["m"]["albedo"], Json::parse(R"({"type": "image", "file": "a.png", "encoding": "linear"})"));
     EXPECT_EQ(s.document["materials"]["n"]["albedo"],
               Json::parse(R"({"type": "image", "file": "a.png", "encoding": "gamma", "gamma": 2.2})"));
+    EXPECT_EQ(s.document["materials"]["o"]["albedo"], Json::parse(R"({"type": "image", "file": "b.JPG", "encoding": "linear"})"));
+    EXPECT_EQ(s.document["materials"]["p"]["albedo"], Json::parse(R"({"type": "image", "file": "c.png"})"));
     EXPECT_TRUE(s.warnings.empty());
     EXPECT_STREQ(importError(kHeader + "Texture \"odd\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\" "
                                        "\"string encoding\" \"log\"\n").what(),

@@ -98,11 +98,20 @@ void SceneBuilder::film(const Directive& d) {
 
 void SceneBuilder::sampler(const Directive& d) {
     Params p(d);
-    render_["passes"] = static_cast<int64_t>(p.number("pixelsamples", 16));
+    const std::string& type = d.strings.at(0);
+    // pbrt-v4's samples a pixel: xsamples x ysamples for "stratified" (4 x 4 by default; its
+    // "jitter" is photon's always), pixelsamples for the others (4 by default for
+    // "independent", 16 for the rest).
+    if (type == "stratified") {
+        p.find("jitter");
+        render_["passes"] = static_cast<int64_t>(p.number("xsamples", 4) * p.number("ysamples", 4));
+    } else {
+        render_["passes"] = static_cast<int64_t>(p.number("pixelsamples", type == "independent" ? 4 : 16));
+    }
     // pbrt-v4's "independent" draws independent numbers, as photon's does; its other samplers
     // (zsobol, the default, sobol, paddedsobol, halton, pmj02bn, stratified) stratify each
     // pixel's samples, as photon's Owen-scrambled Sobol passes do.
-    render_["sampler"] = d.strings.at(0) == "independent" ? "independent" : "sobol";
+    render_["sampler"] = type == "independent" ? "independent" : "sobol";
 }
 
 void SceneBuilder::integrator(const Directive& d) {

@@ -103,12 +103,13 @@ void SceneBuilder::lightSource(const Directive& d) {
             light = {{"type", "environment"}, {"radiance", rgb(spectrum("L") * float(e > 0 ? scale * e / kPi : scale))}};
         }
         // The light comes in only through the portal (pbrt-v4's PortalImageInfiniteLight),
-        // its corners in the light's space.
+        // its corners in world space whatever the light's transform (pbrt-v4's Light::Create
+        // takes them through the camera's transform alone).
         if (p.has("portal")) {
             const std::vector<double> v = p.numbers("portal", {"point3"});
             if (v.size() != 12) fail(d.where, "infinite: \"portal\" must be 4 points, not " + std::to_string(v.size()) + " numbers");
             std::array<Vec3, 4> q;
-            for (size_t i = 0; i < 4; ++i) q[i] = state_.ctm.point(Vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2])));
+            for (size_t i = 0; i < 4; ++i) q[i] = Vec3(float(v[3 * i]), float(v[3 * i + 1]), float(v[3 * i + 2]));
             if (auto problem = portalProblem(q)) fail(d.where, "infinite: \"portal\" " + *problem);
             for (const Vec3& c : q) light["portal"].push_back(vec(c));
         }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "scene/scene_paths.h"
@@ -132,7 +133,7 @@ double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, 
 
 }  // namespace
 
-// pbrt-v4's HairMaterial: sigma_a, else reflectance, else eumelanin and pheomelanin (1.3 and
+// pbrt-v4's HairMaterial: sigma_a, else reflectance (or color), else eumelanin and pheomelanin (1.3 and
 // 0 when none is given); the model's eta, beta_m, beta_n and alpha. Its parameters may be
 // textures in pbrt; photon's hair takes constants.
 Json SceneBuilder::hairJson(const Params& p) {
@@ -145,9 +146,11 @@ Json SceneBuilder::hairJson(const Params& p) {
         }
         return v;
     };
+    // "color" is the reflectance's name in pbrt-v4 before it was renamed, which it still reads.
+    const char* reflectanceName = p.has("reflectance") || !p.has("color") ? "reflectance" : "color";
     if (auto sigma = constant("sigma_a", colorValue(p, "sigma_a", int(SpectrumKind::Index)))) {
         m["sigma_a"] = *sigma;
-    } else if (auto r = constant("reflectance", colorValue(p, "reflectance", int(SpectrumKind::Reflectance)))) {
+    } else if (auto r = constant(reflectanceName, colorValue(p, reflectanceName, int(SpectrumKind::Reflectance)))) {
         Json c = reflectance(*r, where, out_.warnings);
         for (Json& x : c) x = std::clamp(x.get<double>(), 1e-4, 1.0);  // photon's "color" is in (0, 1]
         m["color"] = c;
@@ -343,8 +346,12 @@ void SceneBuilder::texture(const Directive& d) {
         if (auto why = checkRelativePath(file)) fail(d.where, "Texture \"" + name + "\": \"" + file + "\": " + *why);
         t = {{"type", "image"}, {"file", file}};
         mapping(t);
-        // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g".
-        const std::string encoding = p.string("encoding", "sRGB");
+        // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g"; where not given, sRGB for
+        // a PNG file and linear for any other (pbrt-v4's ImageTexture Create functions: an
+        // 8-bit JPEG or TGA is read as linear unless the file says otherwise).
+        std::string extension = std::filesystem::path(file).extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+        const std::string encoding = p.string("encoding", extension == ".png" ? "sRGB" : "linear");
         double gamma = 0;
         if (encoding == "linear") {
             t["encoding"] = "linear";
