@@ -271,6 +271,30 @@ MakeNamedMaterial "plain" "string type" "conductor" "rgb reflectance" [0.64 0.25
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
 }
 
+// A coat thicker than photon's thin coat can stand for is warned of (pbrt-v4 attenuates light
+// crossing it by exp(-thickness / cos)).
+TEST(PbrtImport, ThickCoatsAreWarnedOf) {
+    const ImportedScene s = import(R"(
+MakeNamedMaterial "thick" "string type" "coateddiffuse" "rgb reflectance" [0.5 0.5 0.5] "float thickness" [0.5]
+)");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("coateddiffuse: \"thickness\" 0.5"), std::string::npos) << s.warnings[0];
+}
+
+// A frameaspectratio other than the film's would stretch the image: refused. The film's own
+// is accepted.
+TEST(PbrtImport, FrameAspectRatioOtherThanTheFilmsIsRefused) {
+    auto scene = [](const std::string& ratio) {
+        return "LookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\" \"float frameaspectratio\" [" + ratio +
+               "]\nFilm \"rgb\" \"integer xresolution\" [200] \"integer yresolution\" [100]\nWorldBegin\n"
+               "Shape \"sphere\"\n";
+    };
+    EXPECT_STREQ(importError(scene("1")).what(),
+                 "bad.pbrt:2: Camera: a frameaspectratio other than the film's (200 / 100) stretches the image, which is "
+                 "not supported");
+    EXPECT_NO_THROW(importPbrt(writeScene("frame-aspect.pbrt", scene("2"))));
+}
+
 // An orthographic camera: the screen [-aspect, aspect] x [-1, 1] (the shorter axis spans
 // 2) in camera space, which the camera transform scales: under Scale 0.5 (world to camera)
 // the view is 4 units high; a lens is refused.

@@ -38,6 +38,34 @@ LightSource "infinite" "rgb L" [0.1 0.2 0.3]
     EXPECT_VEC3_NEAR(vec(doc["shapes"][0]["emission"]), Vec3(4), 1e-6f);
 }
 
+// "power" P as pbrt-v4 applies it (PointLight, SpotLight and DiffuseAreaLight::Create): the
+// light times scale times P over the power it sends out at unit luminance, an "rgb"
+// spectrum's own luminance kept: 4 pi for a point light, 2 pi ((1 - cos 30) + (cos 30 -
+// cos 40) / 2) for a spot light of cone 40 and falloff from 30, and for an area light
+// photon's emission_power, which divides by Y(emission x scale) pi A sides itself.
+TEST(PbrtImport, LightPowerAsPbrtAppliesIt) {
+    const ImportedScene s = import(R"(
+LightSource "point" "rgb I" [2 1 0.5] "float scale" [3] "float power" [100]
+LightSource "spot" "point3 to" [0 -1 0] "rgb I" [1 1 1] "float coneangle" [40] "float conedeltaangle" [10] "float power" [50]
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [2 1 1] "float scale" [2] "float power" [10]
+  Shape "trianglemesh" "point3 P" [0 3 0  1 3 0  1 3 1  0 3 1] "integer indices" [0 2 1  0 3 2]
+AttributeEnd
+)");
+    const Json& l = s.document["lights"];
+    const double pi = 3.14159265358979;
+    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(2, 1, 0.5f) * float(3 * 100 / (4 * pi)), 1e-4f);
+    const double cos30 = std::cos(pi / 6), cos40 = std::cos(40 * pi / 180);
+    EXPECT_VEC3_NEAR(vec(l[1]["intensity"]), Vec3(float(50 / (2 * pi * ((1 - cos30) + (cos30 - cos40) / 2)))), 1e-3f);
+    const Json& lamp = s.document["shapes"][2];
+    EXPECT_EQ(lamp["emission_scale"], 2.0);
+    EXPECT_NEAR(lamp["emission_power"].get<double>(), 10 * 2 * luminance(Color(2, 1, 1)), 1e-4);
+    // What the loaded lamp emits: L scale P / (pi A), A = 1, as pbrt-v4's.
+    const SceneDescription d = loadImportedScene(s, scratch());
+    EXPECT_VEC3_NEAR(d.shapes[2].emission, Vec3(2, 1, 1) * float(2 * 10 / pi), 1e-3f);
+    EXPECT_TRUE(s.warnings.empty());
+}
+
 // A portal's corners are in world space, as pbrt-v4 reads them, whatever the light's
 // transform (which turns its image); in order: the light comes in from the side of
 // cross(p3 - p0, p1 - p0), pbrt-v4's convention, here a window in a ceiling at y = 2.

@@ -61,6 +61,8 @@ private:
     std::optional<Json> materialJson(const std::string& type, const Params& p);
     std::string currentMaterial();
     Json hairJson(const Params& p);
+    // Warns where a layered material's "thickness" is not pbrt-v4's default.
+    void warnOfLayerThickness(const Params& p, const std::string& type);
     // A colour or float parameter: a constant, or a named texture's photon texture object.
     std::optional<Json> colorValue(const Params& p, std::string_view name, int spectrumKind);
     std::optional<Json> floatValue(const Params& p, std::string_view name);
@@ -134,6 +136,7 @@ private:
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
         bool orthographic = false;
         std::optional<std::vector<double>> screenWindow;
+        std::optional<double> frameAspectRatio;
         // pbrt-v4's camera medium: MediumInterface's outside where the Camera is declared.
         std::string medium;
         Location where;

@@ -30,8 +30,9 @@ void SceneBuilder::camera(const Directive& d) {
         fail(d.where, "Camera \"orthographic\": a lens (lensradius) is not supported");
     camera_.focalDistance = p.number("focaldistance", 1e6);
     if (p.has("screenwindow")) camera_.screenWindow = p.numbers("screenwindow", {"float"});
-    // The frame aspect ratio only matters with a screen window, which is checked against it.
-    p.find("frameaspectratio");
+    // pbrt-v4 spans its default screen window over this aspect ratio instead of the film's
+    // (checked in writeCameraAndRender, once the film is known).
+    if (auto frame = p.number("frameaspectratio")) camera_.frameAspectRatio = *frame;
 }
 
 namespace {
@@ -143,6 +144,10 @@ void SceneBuilder::writeCameraAndRender() {
     // shorter image axis; photon's the vertical one.
     double tanHalf = camera_.orthographic ? 1.0 : std::tan(camera_.fov / 2 / kDegrees);
     if (width_ < height_) tanHalf *= double(height_) / width_;
+    if (camera_.frameAspectRatio && !camera_.screenWindow &&
+        std::abs(*camera_.frameAspectRatio / (double(width_) / height_) - 1) > 1e-3)
+        fail(camera_.where, "Camera: a frameaspectratio other than the film's (" + std::to_string(width_) + " / " +
+                                std::to_string(height_) + ") stretches the image, which is not supported");
     if (camera_.screenWindow) {
         // A symmetric window of the image's shape scales the view; anything else shifts or
         // stretches it, which photon's camera cannot.

@@ -1,6 +1,10 @@
 // LightSource and AreaLightSource. pbrt-v4 scales light spectra given other than as "rgb"
-// to unit luminance (pbrt_spectra.h); "scale" multiplies, and "power" (area lights) becomes
-// photon's emission_power, whose definition is the same (pbrt-v4 DiffuseAreaLight::Create).
+// to unit luminance (pbrt_spectra.h); "scale" multiplies, and "power" P multiplies too, by
+// P / k_e, k_e the power the light would send out at unit luminance: 4 pi for a point
+// light, 2 pi ((1 - cos a) + (cos a - cos b) / 2) for a spot light of full intensity out to
+// a and none past b, pi A sides for an area light (pbrt-v4's PointLight, SpotLight and
+// DiffuseAreaLight::Create). An "rgb" spectrum is not scaled to unit luminance there
+// (SpectrumToPhotometric reads only its illuminant), so its own luminance stays in.
 #include <cmath>
 #include "description/portal.h"
 #include "import/pbrt/pbrt_builder.h"
@@ -53,22 +57,27 @@ void SceneBuilder::lightSource(const Directive& d) {
     Json light;
     if (type == "point") {
         const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0}));
-        light = {{"type", "point"}, {"position", vec(from)}, {"intensity", rgb(spectrum("I") * float(scale))}};
-        if (auto power = p.number("power"))
-            light["intensity"] = rgb(spectrum("I") * float(*power / (4 * kPi * luminance(spectrum("I")))));
+        const double power = p.number("power", -1);
+        light = {{"type", "point"},
+                 {"position", vec(from)},
+                 {"intensity", rgb(spectrum("I") * float(scale * (power > 0 ? power / (4 * kPi) : 1.0)))}};
     } else if (type == "spot") {
         const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0})), to = state_.ctm.point(p.vec3("to", {0, 0, 1}));
         const double cone = p.number("coneangle", 30), delta = p.number("conedeltaangle", 5);
         if (!(length(to - from) > 0)) fail(d.where, "spot: \"from\" and \"to\" are the same point");
+        const double coneAngle = std::clamp(cone, 1e-3, 90.0), falloffAngle = std::clamp(cone - delta, 0.0, coneAngle);
+        double power = p.number("power", -1);
+        if (power > 0) {
+            const double cosEnd = std::cos(coneAngle * kPi / 180), cosStart = std::cos(falloffAngle * kPi / 180);
+            power /= 2 * kPi * ((1 - cosStart) + (cosStart - cosEnd) / 2);
+        }
         light = {{"type", "spot"},
                  {"position", vec(from)},
                  {"direction", vec(normalize(to - from))},
-                 {"intensity", rgb(spectrum("I") * float(scale))},
-                 {"cone_angle", std::clamp(cone, 1e-3, 90.0)},
-                 {"falloff_angle", std::clamp(cone - delta, 0.0, std::clamp(cone, 1e-3, 90.0))}};
+                 {"intensity", rgb(spectrum("I") * float(scale * (power > 0 ? power : 1.0)))},
+                 {"cone_angle", coneAngle},
+                 {"falloff_angle", falloffAngle}};
         if (cone > 90) warn(d.where, "spot: a cone wider than 90 degrees is narrowed to 90");
-        if (p.has("power")) warn(d.where, "spot: \"power\" is not supported; \"I\" and \"scale\" used");
-        p.find("power");
     } else if (type == "distant") {
         const Vec3 from = p.vec3("from", {0, 0, 0}), to = p.vec3("to", {0, 0, 1});
         if (!(length(to - from) > 0)) fail(d.where, "distant: \"from\" and \"to\" are the same point");
@@ -131,17 +140,24 @@ void SceneBuilder::areaLightSource(const Directive& d) {
                            "the shapes it lights emit nothing");
     }
     Json e = Json::object();
+    // photon's emission_power P' sets the emission to P' / (Y(mean emission) pi A sides),
+    // the scale included; pbrt-v4's to scale P / (k_e pi A sides), k_e the image's mean
+    // luminance or 1 for a spectrum: P' = P scale (times Y(L) for an "rgb" L).
+    const double scale = p.number("scale", 1);
+    double powerPerLuminance = scale;
     if (auto file = p.string("filename")) {
         if (auto why = checkRelativePath(*file)) fail(d.where, "AreaLightSource: \"" + *file + "\": " + *why);
         e["emission"] = {{"type", "image"}, {"file", *file}};
-        p.find("L");
+        if (p.has("L")) fail(d.where, "AreaLightSource: both \"L\" and \"filename\" given");
     } else {
         const Param* L = p.find("L");
-        e["emission"] = rgb(L ? spectrumColor(*L, SpectrumKind::Illuminant, baseDir_) : Color(1.0f));
+        const Color color = L ? spectrumColor(*L, SpectrumKind::Illuminant, baseDir_) : Color(1.0f);
+        e["emission"] = rgb(color);
+        powerPerLuminance *= luminance(color);
     }
-    if (const double scale = p.number("scale", 1); scale != 1) e["emission_scale"] = scale;
+    if (scale != 1) e["emission_scale"] = scale;
     if (p.boolean("twosided", false)) e["two_sided"] = true;
-    if (auto power = p.number("power")) e["emission_power"] = *power;
+    if (auto power = p.number("power"); power && *power > 0) e["emission_power"] = *power * powerPerLuminance;
     state_.areaLight = e;
 }
 

@@ -133,6 +133,17 @@ double indexOfRefraction(const Params& p, const std::filesystem::path& baseDir, 
 
 }  // namespace
 
+// pbrt-v4's layered materials attenuate light crossing the layer by exp(-thickness / |cos|)
+// even with no medium in it (LayeredBxDF's Tr); photon's coats have no thickness, which
+// matches pbrt's default of 0.01 within 2% at normal incidence (in and out). A layer that
+// takes more than 5% there (thickness above 0.025) is warned of.
+void SceneBuilder::warnOfLayerThickness(const Params& p, const std::string& type) {
+    const double thickness = p.number("thickness", 0.01);
+    if (thickness > 0.025)
+        warn(p.directive().where, type + ": \"thickness\" " + std::to_string(thickness) +
+                                      " is left out (photon's coat is thin: pbrt's light crossing it is not attenuated)");
+}
+
 // pbrt-v4's HairMaterial: sigma_a, else reflectance (or color), else eumelanin and pheomelanin (1.3 and
 // 0 when none is given); the model's eta, beta_m, beta_n and alpha. Its parameters may be
 // textures in pbrt; photon's hair takes constants.
@@ -180,9 +191,10 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         if (auto albedo = colorValue(p, "albedo", int(SpectrumKind::Reflectance));
             albedo && !(albedo->is_array() && (*albedo)[0] == 0 && (*albedo)[1] == 0 && (*albedo)[2] == 0))
             warn(where, "coateddiffuse: the medium between coat and base (albedo, g, thickness) is left out");
-        // The layer's thickness only matters with a medium; the random walk's depth and samples
-        // are pbrt's estimator, which photon's closed form replaces.
-        for (const char* name : {"thickness", "g", "maxdepth", "nsamples"}) p.find(name);
+        warnOfLayerThickness(p, "coateddiffuse");
+        // The random walk's depth and samples are pbrt's estimator, which photon's closed form
+        // replaces.
+        for (const char* name : {"g", "maxdepth", "nsamples"}) p.find(name);
     } else if (type == "dielectric" || type == "thindielectric") {
         m = {{"type", "dielectric"}, {"ior", indexOfRefraction(p, baseDir_, out_.warnings)}};
         if (type == "thindielectric") {
@@ -232,7 +244,8 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
             if (auto albedo = colorValue(p, "albedo", int(SpectrumKind::Reflectance));
                 albedo && !(albedo->is_array() && (*albedo)[0] == 0 && (*albedo)[1] == 0 && (*albedo)[2] == 0))
                 warn(where, "coatedconductor: the medium between coat and metal (albedo, g, thickness) is left out");
-            for (const char* name : {"thickness", "g", "maxdepth", "nsamples"}) p.find(name);
+            warnOfLayerThickness(p, "coatedconductor");
+            for (const char* name : {"g", "maxdepth", "nsamples"}) p.find(name);
         }
     } else if (type == "diffusetransmission") {
         const double scale = p.number("scale", 1);
