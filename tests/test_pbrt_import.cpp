@@ -271,6 +271,25 @@ MakeNamedMaterial "plain" "string type" "conductor" "rgb reflectance" [0.64 0.25
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
 }
 
+// pbrt-v4's "scale" texture takes a float texture (or number) as its scale for either kind:
+// a spectrum texture's becomes the grey of it.
+TEST(PbrtImport, ScaleTexturesTakeAFloatScale) {
+    const ImportedScene s = import(R"(
+Texture "c" "spectrum" "checkerboard" "rgb tex1" [1 0 0] "rgb tex2" [0 0 1]
+Texture "m" "float" "checkerboard" "float tex1" 0.2 "float tex2" 0.8
+Texture "byNumber" "spectrum" "scale" "texture tex" "c" "float scale" 0.5
+Texture "byTexture" "spectrum" "scale" "texture tex" "c" "texture scale" "m"
+MakeNamedMaterial "n" "string type" "diffuse" "texture reflectance" "byNumber"
+MakeNamedMaterial "t" "string type" "diffuse" "texture reflectance" "byTexture"
+)");
+    const Json checker = Json::parse(R"({"type": "checkerboard", "even": [1, 0, 0], "odd": [0, 0, 1]})");
+    EXPECT_EQ(s.document["materials"]["n"]["albedo"], (Json{{"type", "product"}, {"a", checker}, {"b", {0.5, 0.5, 0.5}}}));
+    EXPECT_EQ(s.document["materials"]["t"]["albedo"],
+              (Json{{"type", "product"},
+                    {"a", checker},
+                    {"b", Json::parse(R"({"type": "checkerboard", "even": [0.2, 0.2, 0.2], "odd": [0.8, 0.8, 0.8]})")}}));
+}
+
 // A coat thicker than photon's thin coat can stand for is warned of (pbrt-v4 attenuates light
 // crossing it by exp(-thickness / cos)).
 TEST(PbrtImport, ThickCoatsAreWarnedOf) {

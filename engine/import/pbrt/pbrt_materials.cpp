@@ -59,6 +59,16 @@ std::optional<Json> SceneBuilder::floatValue(const Params& p, std::string_view n
 
 namespace {
 
+// A float texture's JSON where a colour is read: numbers become greys (an image is read in
+// colour, which for a grey image is the same), a mix's amount stays a float.
+Json floatTextureAsColor(Json t) {
+    if (t.is_number()) return Json::array({t, t, t});
+    if (!t.is_object()) return t;
+    for (const char* key : {"even", "odd", "a", "b"})
+        if (t.contains(key)) t[key] = floatTextureAsColor(t[key]);
+    return t;
+}
+
 // A constant colour clamped to [0, 1] (pbrt allows reflectances above 1; photon's loader
 // does not), with a warning; textures are left as they are.
 Json reflectance(Json value, const Location& where, std::vector<std::string>& warnings) {
@@ -387,7 +397,9 @@ void SceneBuilder::texture(const Directive& d) {
         t = {{"type", "checkerboard"}, {"even", value("tex1", 1)}, {"odd", value("tex2", 0)}};
         mapping(t);
     } else if (cls == "scale") {
-        t = {{"type", "product"}, {"a", value("tex", 1)}, {"b", value("scale", 1)}};
+        // pbrt-v4's scale is a float texture for either kind (SpectrumScaledTexture::Create).
+        const Json scale = floatValue(p, "scale").value_or(Json(1.0));
+        t = {{"type", "product"}, {"a", value("tex", 1)}, {"b", color ? floatTextureAsColor(scale) : scale}};
     } else if (cls == "mix") {
         const std::optional<Json> amount = floatValue(p, "amount");
         t = {{"type", "mix"}, {"a", value("tex1", 0)}, {"b", value("tex2", 1)}, {"amount", amount.value_or(Json(0.5))}};
