@@ -86,8 +86,12 @@ Shape "sphere")")).document["render"];
     EXPECT_EQ(renderOf("stratified", R"(Sampler "stratified" "integer xsamples" [2] "integer ysamples" [8] "bool jitter" false)")["passes"], 16);
     EXPECT_EQ(renderOf("stratified-default", R"(Sampler "stratified")")["passes"], 16);
     EXPECT_EQ(renderOf("stratified-x", R"(Sampler "stratified" "integer xsamples" [3])")["passes"], 12);
-    // None: pbrt-v4's default, zsobol, and photon's own default alike.
-    EXPECT_FALSE(renderOf("none", "").contains("sampler"));
+    // None: pbrt-v4's default, zsobol, and photon's own default alike; pbrt-v4's 16 samples
+    // a pixel, and its volpath's maxdepth of 5 where there is no Integrator either.
+    const Json none = renderOf("none", "");
+    EXPECT_FALSE(none.contains("sampler"));
+    EXPECT_EQ(none["passes"], 16);
+    EXPECT_EQ(none["max_depth"], 5);
 }
 
 // PixelFilter onto camera.filter, with pbrt-v4's defaults (a Gaussian when there is none).

@@ -164,6 +164,10 @@ void SceneBuilder::finish() {
     if (!mediaJson_.empty()) doc["media"] = mediaJson_;
     doc["shapes"] = shapes_;
     if (!lights_.empty()) doc["lights"] = lights_;
+    // pbrt-v4's defaults where the file has no Sampler (zsobol, 16 samples a pixel) or no
+    // Integrator (volpath, maxdepth 5), as when it names them without those parameters.
+    if (!render_.contains("passes")) render_["passes"] = 16;
+    if (!render_.contains("max_depth")) render_["max_depth"] = 5;
     doc["render"] = render_;
     if (shapes_.empty()) throw SceneError("", "the pbrt scene has no shapes that photon can render");
 }
