@@ -374,7 +374,7 @@ private:
         ++counters_.segments;
         const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
         if (settings_.arrivesInMedia && L.depth[i] >= settings_.firstArrivalDepth)
-            sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i], true});
+            sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i]});
         if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;
         std::optional<Color> next = photonAfterRoulette(L.beta(i), weight, rng);
         if (!next) return true;

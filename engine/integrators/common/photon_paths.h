@@ -13,7 +13,9 @@
 namespace photon {
 
 // A photon arriving at a surface that is not purely specular, or where it scatters in a
-// medium (PhotonPathSettings::arrivesInMedia).
+// medium (PhotonPathSettings::arrivesInMedia: no normal, and its flux weighted by the
+// flight's odds, so that the flux arriving per unit volume and solid angle has mean
+// sigma_s L, free_flight.h).
 struct PhotonArrival {
     Vec3 p;             // where it landed
     Vec3 ns;            // the shading normal there, turned toward wi on two-sided materials (0 in a medium)
@@ -22,9 +24,6 @@ struct PhotonArrival {
     int depth;          // 0: straight from the light
     bool onlySpecular;  // every bounce before this one was off a delta lobe
     uint32_t cell;      // the emission guide's cell the photon left from (EmittedPhoton::cell)
-    // Where it scatters in a medium: its flux is then weighted by the flight's odds, so that
-    // the flux arriving per unit volume and solid angle has mean sigma_s L (free_flight.h).
-    bool inMedium = false;
 };
 
 // What the integrator does with arriving photons (splat them, store them).

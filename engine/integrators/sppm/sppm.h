@@ -83,7 +83,7 @@ private:
         uint32_t lobes : 6 = kAllLobes;  // the material's lobes photons are gathered through
         uint32_t lambertian : 1 = 0;
         uint32_t transmits : 1 = 0;  // photons arriving on the far side count too
-        uint32_t inMedium : 1 = 0;   // a point in a medium (below)
+        uint32_t inMedium : 1 = 0;   // a point in a medium (above)
         uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
         // With photon guiding: what a photon reaching this point is worth to the guide
         // (guideWeight(); in what was padding before the flux).
