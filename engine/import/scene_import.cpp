@@ -1,23 +1,13 @@
 #include "import/scene_import.h"
-#include <algorithm>
 #include <photon/errors.h>
 #include "import/gltf/gltf_import.h"
 #include "import/pbrt/pbrt_import.h"
+#include "scene/scene_paths.h"
 
 namespace photon {
 
-namespace {
-
-std::string lowerExtension(const std::filesystem::path& file) {
-    std::string e = file.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return e;
-}
-
-}  // namespace
-
 SceneFormat sceneFormatOf(const std::filesystem::path& file) {
-    const std::string e = lowerExtension(file);
+    const std::string e = lowerCaseExtension(file);
     if (e == ".pbrt") return SceneFormat::Pbrt;
     if (e == ".gltf" || e == ".glb") return SceneFormat::Gltf;
     return SceneFormat::Json;

@@ -73,13 +73,6 @@ void sanitize(TriangleMesh& mesh) {
         if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {};
 }
 
-std::string lowerCaseExtension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
-}
-
 // PLY and OBJ are read by the engine's own streaming readers (ply_mesh.h, obj_mesh.h): the
 // PLY reader checks every count in the file against its size, the OBJ reader holds little
 // more than the mesh. Neither opens another file (an OBJ's `mtllib` is not read: the scene

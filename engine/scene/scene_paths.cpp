@@ -1,4 +1,6 @@
 #include "scene/scene_paths.h"
+#include <algorithm>
+#include <cctype>
 #include <system_error>
 
 namespace photon {
@@ -24,6 +26,13 @@ bool isInsideFolder(const fs::path& file, const fs::path& folder) {
     if (ec) return false;
     fs::path rel = f.lexically_relative(root);
     return !rel.empty() && *rel.begin() != "..";
+}
+
+std::string lowerCaseExtension(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
 }
 
 }  // namespace photon

@@ -14,4 +14,7 @@ std::optional<std::string> checkRelativePath(const std::string& relative);
 // True if `file`, with symlinks resolved as far as it exists, lies inside `folder`.
 bool isInsideFolder(const std::filesystem::path& file, const std::filesystem::path& folder);
 
+// The file name's extension in lower case, with its dot (".png"), by which file kinds are told.
+std::string lowerCaseExtension(const std::filesystem::path& file);
+
 }  // namespace photon

@@ -61,7 +61,7 @@ private:
     std::optional<Json> materialJson(const std::string& type, const Params& p);
     std::string currentMaterial();
     Json hairJson(const Params& p);
-    // Warns where a layered material's "thickness" is not pbrt-v4's default.
+    // Warns where a layered material's "thickness" darkens it in pbrt-v4 by more than 5%.
     void warnOfLayerThickness(const Params& p, const std::string& type);
     // A colour or float parameter: a constant, or a named texture's photon texture object.
     std::optional<Json> colorValue(const Params& p, std::string_view name, int spectrumKind);

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "scene/scene_paths.h"
@@ -372,9 +371,7 @@ void SceneBuilder::texture(const Directive& d) {
         // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g"; where not given, sRGB for
         // a PNG file and linear for any other (pbrt-v4's ImageTexture Create functions: an
         // 8-bit JPEG or TGA is read as linear unless the file says otherwise).
-        std::string extension = std::filesystem::path(file).extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-        const std::string encoding = p.string("encoding", extension == ".png" ? "sRGB" : "linear");
+        const std::string encoding = p.string("encoding", lowerCaseExtension(file) == ".png" ? "sRGB" : "linear");
         double gamma = 0;
         if (encoding == "linear") {
             t["encoding"] = "linear";
