@@ -26,7 +26,7 @@ struct LoadContext {
     std::filesystem::path baseDir;  // files resolve against it; empty: the working directory
     // Images by resolved path and the channels read, so parameters sharing an image share
     // one copy (the scene's texture cache).
-    std::map<std::tuple<std::filesystem::path, int, float>, std::shared_ptr<const ImageTexture>> textures;
+    std::map<std::tuple<std::filesystem::path, ImageChannels, ImageEncoding>, std::shared_ptr<const ImageTexture>> textures;
     // Material name -> index, for shapes that refer to materials by name.
     std::unordered_map<std::string, uint32_t> materialIndex;
     // Roughness ladders by material family and index, shared by textured roughnesses.
@@ -49,9 +49,9 @@ struct LoadContext {
 // (symlinks resolved) and existing. Errors are SceneErrors at value's path.
 std::filesystem::path resolveFile(const JsonValue& value, const LoadContext& ctx);
 // The image file named by the string `value` (through resolveFile), its `channels` read once
-// per scene however often it is named (json_textures.cpp); `gamma` as ImageTexture::load.
+// per scene however often it is named (json_textures.cpp), decoded by `encoding`.
 std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx,
-                                              float gamma = 0);
+                                              ImageEncoding encoding = {});
 // Rethrows a library failure (Assimp, OpenImageIO) as a SceneError at value's path, with
 // the scene folder removed from the message so only the scene's own names show.
 [[noreturn]] void failWithLibraryError(const JsonValue& value, const std::exception& e, const LoadContext& ctx);

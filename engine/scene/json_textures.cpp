@@ -38,19 +38,23 @@ ImageChannels readChannels(JsonObject& obj, const ParamKind& kind) {
 // {"texture": file} or {"type": "image", "file": file}, with a uv mapping and a channel.
 // "encoding": "linear" reads an integer image's colour as stored instead of through the
 // sRGB curve, "gamma" with "gamma": g as stored to the power g (pbrt-v4's imagemap
-// "encoding"; a single channel is read as stored anyway, a float image is linear).
+// "encoding"); a single channel is read as stored unless "srgb" or "gamma" is given for it.
+// A float image is linear.
 std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, LoadContext& ctx, const ParamKind& kind) {
     ImageChannels channels = readChannels(obj, kind);
-    float gamma = 0;
-    enum Encoding { Srgb, Linear, Gamma };
-    const Encoding encoding = Encoding(obj.choice("encoding", Srgb, {"srgb", "linear", "gamma"}, "encoding"));
-    if (encoding == Gamma)
-        gamma = obj.required("gamma").number(Range::open(0, 10));
-    else if (auto g = obj.optional("gamma"))
-        g->fail("needs \"encoding\": \"gamma\"");
-    if (channels == ImageChannels::Color && encoding == Linear) channels = ImageChannels::Data;
-    if (channels != ImageChannels::Color) gamma = 0;
-    auto image = loadImage(obj.required(fileKey), channels, ctx, gamma);
+    ImageEncoding encoding;
+    enum Given { Srgb, Linear, Gamma, None };
+    switch (Given(obj.choice("encoding", None, {"srgb", "linear", "gamma"}, "encoding"))) {
+        case Srgb: encoding.kind = ImageEncoding::Srgb; break;
+        case Linear:
+            if (channels == ImageChannels::Color) channels = ImageChannels::Data;
+            break;
+        case Gamma: encoding = {ImageEncoding::Gamma, obj.required("gamma").number(Range::open(0, 10))}; break;
+        case None: break;
+    }
+    if (encoding.kind != ImageEncoding::Gamma)
+        if (auto g = obj.optional("gamma")) g->fail("needs \"encoding\": \"gamma\"");
+    auto image = loadImage(obj.required(fileKey), channels, ctx, encoding);
     return makeUvMappedTexture(image, readUvMapping(obj));
 }
 
@@ -97,13 +101,13 @@ ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& 
 }  // namespace
 
 std::shared_ptr<const ImageTexture> loadImage(const JsonValue& value, ImageChannels channels, LoadContext& ctx,
-                                              float gamma) {
+                                              ImageEncoding encoding) {
     std::filesystem::path file = resolveFile(value, ctx);
-    auto key = std::make_tuple(file, int(channels), gamma);
+    auto key = std::make_tuple(file, channels, encoding);
     auto cached = ctx.textures.find(key);
     if (cached != ctx.textures.end()) return cached->second;
     try {
-        return ctx.textures[key] = ImageTexture::load(file, channels, ctx.importedFile(value.string()), gamma);
+        return ctx.textures[key] = ImageTexture::load(file, channels, ctx.importedFile(value.string()), encoding);
     } catch (const std::exception& e) {
         failWithLibraryError(value, e, ctx);
     }

@@ -119,7 +119,7 @@ std::optional<std::string> findPngChunkDamage(const std::filesystem::path& file)
 }
 
 std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::path& file, ImageChannels which,
-                                                       const std::string* bytes, float gamma) {
+                                                       const std::string* bytes, ImageEncoding encoding) {
     std::optional<std::string> damage;
     if (bytes) {
         std::istringstream in(*bytes);
@@ -151,10 +151,19 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
     const int channels = alpha ? 1 : (spec.nchannels >= 3 ? 3 : 1);
 
     std::vector<Color> texels;
+    const bool decodes = !spec.format.is_floating_point() && encoding.kind != ImageEncoding::Default;
     if (auto channel = selectedChannel(which, spec)) {
+        // A single channel is data, as stored, unless an encoding is given for it (pbrt-v4
+        // reads a float imagemap's first channel through the texture's encoding).
+        const bool decodesChannel = decodes && which != ImageChannels::A;
         texels = *channel < 0 ? std::vector<Color>(size_t(spec.width) * spec.height, Color(1.0f))
-                              : toColors(readPixels<float>(*in, *channel, 1, OIIO::TypeDesc::FLOAT), 1,
-                                         [](float v) { return std::isfinite(v) && v > 0 ? v : 0.0f; });
+                              : toColors(readPixels<float>(*in, *channel, 1, OIIO::TypeDesc::FLOAT), 1, [&](float v) {
+                                    if (!(std::isfinite(v) && v > 0)) return 0.0f;
+                                    if (!decodesChannel) return v;
+                                    v = std::min(v, 1.0f);
+                                    return encoding.kind == ImageEncoding::Gamma ? std::pow(v, encoding.gamma)
+                                                                                 : srgbToLinear(v);
+                                });
     } else if (alpha) {
         // Coverage is stored linearly in every format.
         texels = toColors(readPixels<float>(*in, first, 1, OIIO::TypeDesc::FLOAT), 1,
@@ -163,10 +172,10 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const std::filesystem::pa
         // Vectors, not colours: integer formats arrive normalised to [0, 1], undecoded.
         texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
                           [](float v) { return std::isfinite(v) ? v : 0.0f; });
-    } else if (gamma > 0 && !spec.format.is_floating_point()) {
+    } else if (decodes && encoding.kind == ImageEncoding::Gamma) {
         // A power-law encoding (integer formats arrive normalised to [0, 1]).
         texels = toColors(readPixels<float>(*in, first, channels, OIIO::TypeDesc::FLOAT), channels,
-                          [gamma](float v) { return std::pow(std::clamp(v, 0.0f, 1.0f), gamma); });
+                          [&](float v) { return std::pow(std::clamp(v, 0.0f, 1.0f), encoding.gamma); });
     } else if (spec.format == OIIO::TypeDesc::UINT8) {
         const auto& table = srgb8Table();
         texels = toColors(readPixels<uint8_t>(*in, first, channels, OIIO::TypeDesc::UINT8), channels,

@@ -1,5 +1,7 @@
 // An RGB (or single-channel) image texture held in memory, read through OpenImageIO.
 #pragma once
+#include <compare>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -30,17 +32,30 @@ enum class ImageChannels {
     A,
 };
 
+// How an integer image's values become linear (pbrt-v4's imagemap "encoding"). Float images
+// (EXR, HDR, PFM) are linear whatever it says, and alpha is always read as stored.
+struct ImageEncoding {
+    enum Kind : uint8_t {
+        Default,  // colour through the sRGB curve; a single channel as stored (glTF's data)
+        Srgb,     // through the sRGB curve, a single channel too (pbrt-v4's float imagemap)
+        Gamma,    // as stored to the power `gamma`
+    };
+    Kind kind = Default;
+    float gamma = 0;
+    auto operator<=>(const ImageEncoding&) const = default;
+};
+
 class ImageTexture final : public Texture {
 public:
     // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
     // sRGB-encoded and linearised (alpha is linear in every format); float images (EXR,
-    // HDR) as linear. With `gamma` > 0 an integer image's colour is decoded as v^gamma
-    // instead (pbrt-v4's "gamma" encodings; ImageChannels::Color only). With `bytes`, the
+    // HDR) as linear; `encoding` says otherwise for integer images. With `bytes`, the
     // file's contents are those bytes, held in memory (`file` then only names it, its
     // extension the format). Throws std::runtime_error with the reason on failure.
     static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& file,
                                                     ImageChannels channels = ImageChannels::Color,
-                                                    const std::string* bytes = nullptr, float gamma = 0);
+                                                    const std::string* bytes = nullptr,
+                                                    ImageEncoding encoding = {});
     ImageTexture(int width, int height, std::vector<Color> texels);
 
     // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).

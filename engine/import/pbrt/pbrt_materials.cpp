@@ -367,13 +367,18 @@ void SceneBuilder::texture(const Directive& d) {
         if (file.empty()) fail(d.where, "Texture \"" + name + "\": imagemap needs a \"filename\"");
         if (auto why = checkRelativePath(file)) fail(d.where, "Texture \"" + name + "\": \"" + file + "\": " + *why);
         t = {{"type", "image"}, {"file", file}};
+        // A float texture is the image's first channel (pbrt-v4's MIPMap reads channel 0 of
+        // an RGB(A) image for a Float texel), through the texture's encoding as a colour's.
+        if (!color) t["channel"] = "r";
         mapping(t);
         // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g"; where not given, sRGB for
         // a PNG file and linear for any other (pbrt-v4's ImageTexture Create functions: an
         // 8-bit JPEG or TGA is read as linear unless the file says otherwise).
         const std::string encoding = p.string("encoding", lowerCaseExtension(file) == ".png" ? "sRGB" : "linear");
         double gamma = 0;
-        if (encoding == "linear") {
+        if (encoding == "sRGB" && !color) {
+            t["encoding"] = "srgb";  // a single channel is otherwise read as stored
+        } else if (encoding == "linear") {
             t["encoding"] = "linear";
         } else if (std::sscanf(encoding.c_str(), "gamma %lf", &gamma) == 1 && gamma > 0 && gamma < 10) {
             t["encoding"] = "gamma";

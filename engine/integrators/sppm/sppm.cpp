@@ -25,9 +25,9 @@ int64_t fixedLuminance(const int64_t* rgb) {
 SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
-      adaptivePhotons_(adaptsPhotonsPerPass(settings_)),
+      adaptivePhotons_(adaptsPhotonsPerPass(settings_)), gathersInMedia_(gathersInMedia(*scene_)),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)),
-      adaptsCameraPaths_(adaptsCameraPaths(settings_)), gathersInMedia_(gathersInMedia(*scene_)) {
+      adaptsCameraPaths_(adaptsCameraPaths(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     if (adaptsCameraPaths_) cameraPaths_ = AdaptiveCameraPaths(width_, height_);
     size_t n = static_cast<size_t>(width_) * height_;
