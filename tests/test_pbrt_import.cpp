@@ -218,23 +218,30 @@ MakeNamedMaterial "varnish" "string type" "coateddiffuse" "texture roughness" "b
 
 // An imagemap's "encoding" is kept: "linear" (the image read without the sRGB curve) and
 // "gamma g" (read as stored to the power g). Where it is not given, pbrt-v4 reads a PNG as
-// sRGB and any other file as linear (a JPEG too).
+// sRGB and any other file as linear (a JPEG too); a TGA stays sRGB, as pbrt-v3 read it and
+// as scenes pbrt-v4's --upgrade carried over from it (without an encoding) were made.
 TEST(PbrtImport, ImagemapEncoding) {
     const ImportedScene s = import(R"(
 Texture "plain" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "linear"
 Texture "curved" "spectrum" "imagemap" "string filename" "a.png" "string encoding" "gamma 2.2"
 Texture "photo" "spectrum" "imagemap" "string filename" "b.JPG"
 Texture "png" "spectrum" "imagemap" "string filename" "c.png"
+Texture "tga" "spectrum" "imagemap" "string filename" "d.TGA"
+Texture "tgalinear" "spectrum" "imagemap" "string filename" "d.tga" "string encoding" "linear"
 MakeNamedMaterial "m" "string type" "diffuse" "texture reflectance" "plain"
 MakeNamedMaterial "n" "string type" "diffuse" "texture reflectance" "curved"
 MakeNamedMaterial "o" "string type" "diffuse" "texture reflectance" "photo"
 MakeNamedMaterial "p" "string type" "diffuse" "texture reflectance" "png"
+MakeNamedMaterial "q" "string type" "diffuse" "texture reflectance" "tga"
+MakeNamedMaterial "r" "string type" "diffuse" "texture reflectance" "tgalinear"
 )");
     EXPECT_EQ(s.document["materials"]["m"]["albedo"], Json::parse(R"({"type": "image", "file": "a.png", "encoding": "linear"})"));
     EXPECT_EQ(s.document["materials"]["n"]["albedo"],
               Json::parse(R"({"type": "image", "file": "a.png", "encoding": "gamma", "gamma": 2.2})"));
     EXPECT_EQ(s.document["materials"]["o"]["albedo"], Json::parse(R"({"type": "image", "file": "b.JPG", "encoding": "linear"})"));
     EXPECT_EQ(s.document["materials"]["p"]["albedo"], Json::parse(R"({"type": "image", "file": "c.png"})"));
+    EXPECT_EQ(s.document["materials"]["q"]["albedo"], Json::parse(R"({"type": "image", "file": "d.TGA"})"));
+    EXPECT_EQ(s.document["materials"]["r"]["albedo"], Json::parse(R"({"type": "image", "file": "d.tga", "encoding": "linear"})"));
     EXPECT_TRUE(s.warnings.empty());
     EXPECT_STREQ(importError(kHeader + "Texture \"odd\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\" "
                                        "\"string encoding\" \"log\"\n").what(),

@@ -21,6 +21,7 @@ struct Folder {
         test::writeImage<uint8_t>(dir / "packed.png", 1, 1, 4, {51, 102, 153, 204});
         test::writeImage<uint8_t>(dir / "rgb.png", 1, 1, 3, {51, 102, 153});
         test::writeImage<uint8_t>(dir / "packed.tga", 1, 1, 4, {51, 102, 153, 204});
+        test::writeImage<uint8_t>(dir / "packed.tif", 1, 1, 4, {51, 102, 153, 204});
         // Red on the left half (u < 0.5), blue on the right.
         test::writeImage<uint8_t>(dir / "halves.png", 2, 1, 3, {255, 0, 0, 0, 0, 255});
         // Alpha rising along u, texel centres 0.3 and 0.7 symmetric about 0.5 (77 + 178 = 255).
@@ -162,8 +163,9 @@ TEST(AlphaCutoff, MaskIsOpaqueExactlyWhereAlphaReachesTheCutoff) {
 }
 
 // pbrt-v4's float imagemap is its image's first channel (MIPMap's Float texel reads channel
-// 0, never alpha), decoded by the texture's encoding: sRGB where not given for a PNG, linear
-// for any other file. Here as a shape's alpha, imported and loaded: R stored as 0.2.
+// 0, never alpha), decoded by the texture's encoding: sRGB where not given for a PNG (and a
+// TGA, docs/import.md), linear for any other file. Here as a shape's alpha, imported and
+// loaded: R stored as 0.2.
 TEST(TextureChannels, PbrtFloatImagemapReadsItsFirstChannelThroughItsEncoding) {
     const std::string scene = R"(
 LookAt 0 0 3  0 0 0  0 1 0
@@ -172,20 +174,23 @@ WorldBegin
 LightSource "point" "rgb I" [1 1 1]
 Texture "png" "float" "imagemap" "string filename" "packed.png"
 Texture "tga" "float" "imagemap" "string filename" "packed.tga"
+Texture "tif" "float" "imagemap" "string filename" "packed.tif"
 Texture "lin" "float" "imagemap" "string filename" "packed.png" "string encoding" "linear"
 Texture "pow" "float" "imagemap" "string filename" "packed.png" "string encoding" "gamma 2.2"
 Shape "sphere" "texture alpha" "png"
 Shape "sphere" "texture alpha" "tga"
+Shape "sphere" "texture alpha" "tif"
 Shape "sphere" "texture alpha" "lin"
 Shape "sphere" "texture alpha" "pow"
 )";
     test::writeText(folder().dir / "float.pbrt", scene);
     const SceneDescription d = loadImportedScene(importPbrt(folder().dir / "float.pbrt"), folder().dir);
-    ASSERT_EQ(d.shapes.size(), 4u);
+    ASSERT_EQ(d.shapes.size(), 5u);
     EXPECT_NEAR(d.shapes[0].alpha.eval({0.5f, 0.5f}), 0.0331048f, 1e-5f);  // sRGB curve at 0.2
-    EXPECT_NEAR(d.shapes[1].alpha.eval({0.5f, 0.5f}), 0.2f, 1e-6f);
+    EXPECT_NEAR(d.shapes[1].alpha.eval({0.5f, 0.5f}), 0.0331048f, 1e-5f);
     EXPECT_NEAR(d.shapes[2].alpha.eval({0.5f, 0.5f}), 0.2f, 1e-6f);
-    EXPECT_NEAR(d.shapes[3].alpha.eval({0.5f, 0.5f}), std::pow(0.2f, 2.2f), 1e-5f);
+    EXPECT_NEAR(d.shapes[3].alpha.eval({0.5f, 0.5f}), 0.2f, 1e-6f);
+    EXPECT_NEAR(d.shapes[4].alpha.eval({0.5f, 0.5f}), std::pow(0.2f, 2.2f), 1e-5f);
 }
 
 // In photon's own scenes a channel is data, read as stored, unless an encoding is given.

@@ -373,8 +373,13 @@ void SceneBuilder::texture(const Directive& d) {
         mapping(t);
         // pbrt-v4's ColorEncoding: "sRGB", "linear" or "gamma g"; where not given, sRGB for
         // a PNG file and linear for any other (pbrt-v4's ImageTexture Create functions: an
-        // 8-bit JPEG or TGA is read as linear unless the file says otherwise).
-        const std::string encoding = p.string("encoding", lowerCaseExtension(file) == ".png" ? "sRGB" : "linear");
+        // 8-bit JPEG is read as linear unless the file says otherwise) but a TGA. pbrt-v3 read
+        // TGA and PNG through the sRGB curve unless "bool gamma" said otherwise, and pbrt-v4's
+        // --upgrade writes an encoding only where the v3 file gave "gamma", so an upgraded
+        // scene's TGAs (every textured one of Bitterli's) would lose the curve their author
+        // and their reference renders gave them.
+        const std::string extension = lowerCaseExtension(file);
+        const std::string encoding = p.string("encoding", extension == ".png" || extension == ".tga" ? "sRGB" : "linear");
         double gamma = 0;
         if (encoding == "sRGB" && !color) {
             t["encoding"] = "srgb";  // a single channel is otherwise read as stored
