@@ -40,7 +40,7 @@ TEST(OrthographicCamera, SeesTheSameSquareAtAnyDistance) {
 // radius sized from the pixel's side, 1/16, not from an angle).
 TEST(OrthographicCamera, SppmOnAPlaneUnderAPointLight) {
     SceneDescription d = test::pointLightPlane(0.5f, 1.0f, 1.0f, 16, 2.0f);
-    d.camera.orthographic = true;
+    d.camera.projection = CameraProjection::Orthographic;
     d.camera.viewHeight = 1;
     d.render.integrator = IntegratorKind::Sppm;
     d.render.passes = 64;
@@ -58,7 +58,7 @@ TEST(OrthographicCameraScene, FieldsAndErrors) {
     Json doc = test::fullScene();
     doc["camera"] = {{"type", "orthographic"}, {"position", {0, 1, 5}}, {"look_at", {0, 1, 0}}, {"view_height", 3}};
     const SceneDescription d = load(doc);
-    EXPECT_TRUE(d.camera.orthographic);
+    EXPECT_EQ(d.camera.projection, CameraProjection::Orthographic);
     EXPECT_EQ(d.camera.viewHeight, 3.0f);
     auto ortho = [](Json& doc) {
         doc["camera"] = {{"type", "orthographic"}, {"position", {0, 1, 5}}, {"look_at", {0, 1, 0}}, {"view_height", 3}};

@@ -1,5 +1,6 @@
 #include "camera/camera.h"
 #include "description/scene_description.h"
+#include "math/equal_area.h"
 
 namespace photon {
 
@@ -14,16 +15,52 @@ Camera::Camera(const CameraDescription& d)
     tanHalfFov_ = std::tan(d.fovDegrees * kPi / 360.0f);
     aspect_ = static_cast<float>(width_) / static_cast<float>(height_);
     pixelAngle_ = 2.0f * tanHalfFov_ / static_cast<float>(height_);
-    orthographic_ = d.orthographic;
+    projection_ = d.projection;
+    mapping_ = d.mapping;
     halfHeight_ = 0.5f * d.viewHeight;
     pixelSize_ = d.viewHeight / static_cast<float>(height_);
+    // A spherical pixel's angular side: 4 pi / pixels steradians each on the equal-area
+    // square, pi / height radians of latitude on the equirectangular map.
+    if (projection_ == Projection::Spherical)
+        pixelAngle_ = mapping_ == SphericalMapping::EqualArea
+                          ? std::sqrt(4.0f * kPi / (static_cast<float>(width_) * static_cast<float>(height_)))
+                          : kPi / static_cast<float>(height_);
+}
+
+// The direction through film position (x, y) of a spherical camera, (u, v) = (x / width,
+// y / height). The layouts are pbrt-v4's (SphericalCamera::GenerateRay), whose image is
+// centred on its camera space's -x: a pbrt camera comes in with forward its -x and right
+// its -z (import/pbrt/pbrt_camera.cpp).
+// - Equirectangular: latitude theta = pi v from up, longitude phi = 2 pi (u - 1/2) from
+//   forward toward right: the image's centre looks forward, its top row up.
+// - Equal-area: Clarberg's square (math/equal_area.h) with its centre up, its corners down,
+//   the middles of its left, right, top and bottom edges forward, back, right and left.
+Vec3 Camera::sphericalDirection(float x, float y) const {
+    const float u = x / static_cast<float>(width_), v = y / static_cast<float>(height_);
+    if (mapping_ == SphericalMapping::Equirectangular) {
+        const float theta = kPi * v, phi = 2.0f * kPi * (u - 0.5f);
+        const float sinTheta = std::sin(theta);
+        return up_ * std::cos(theta) + (forward_ * std::cos(phi) + right_ * std::sin(phi)) * sinTheta;
+    }
+    // pbrt: d on the sphere with the square's centre at +z, then y and z swapped (up = +z
+    // of d); its +x is the camera's -forward and its +y the camera's -right.
+    // A filter's sample past an edge folds back across it, as the square folds onto the
+    // sphere (pbrt-v4's WrapEqualAreaSquare).
+    Vec2 p{u, v};
+    if (p.x < 0) p = {-p.x, 1 - p.y};
+    else if (p.x > 1) p = {2 - p.x, 1 - p.y};
+    if (p.y < 0) p = {1 - p.x, -p.y};
+    else if (p.y > 1) p = {1 - p.x, 2 - p.y};
+    const Vec3 d = equalAreaSquareToSphere({std::clamp(p.x, 0.0f, 1.0f), std::clamp(p.y, 0.0f, 1.0f)});
+    return normalize(up_ * d.z - forward_ * d.x - right_ * d.y);
 }
 
 Ray Camera::generateRay(float x, float y, Vec2 uLens) const {
     // Film point on the plane at distance 1: [-aspect, aspect] x [-1, 1] scaled by tan(fov/2).
     const float nx = 2.0f * x / static_cast<float>(width_) - 1.0f, ny = 1.0f - 2.0f * y / static_cast<float>(height_);
+    if (projection_ == Projection::Spherical) return {position_, sphericalDirection(x, y)};
     // Orthographic: every ray along the view, from the film point on the camera's plane.
-    if (orthographic_) return {position_ + right_ * (nx * halfHeight_ * aspect_) + up_ * (ny * halfHeight_), forward_};
+    if (projection_ == Projection::Orthographic) return {position_ + right_ * (nx * halfHeight_ * aspect_) + up_ * (ny * halfHeight_), forward_};
     float sx = nx * tanHalfFov_ * aspect_;
     float sy = ny * tanHalfFov_;
     Vec3 dir = forward_ + right_ * sx + up_ * sy;

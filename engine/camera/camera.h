@@ -1,9 +1,11 @@
-// Perspective camera with an optional thin lens, or an orthographic one.
+// Perspective camera with an optional thin lens, an orthographic one, or a spherical one
+// that sees every direction (an equal-area square or an equirectangular panorama).
 #pragma once
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "math/ray.h"
 #include "camera/pixel_filter.h"
+#include "description/camera_projection.h"
 
 namespace photon {
 
@@ -42,13 +44,21 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     // Side of one pixel where a camera ray has travelled `distance` (along the view axis, and
-    // past mirrors): grows with it through a perspective camera, not through an orthographic one.
-    float pixelFootprint(float distance) const { return orthographic_ ? pixelSize_ : distance * pixelAngle_; }
+    // past mirrors): grows with it through a perspective or spherical camera, not through an
+    // orthographic one.
+    float pixelFootprint(float distance) const {
+        return projection_ == Projection::Orthographic ? pixelSize_ : distance * pixelAngle_;
+    }
 
 private:
+    using Projection = CameraProjection;
+    using SphericalMapping = CameraSphericalMapping;
+    Vec3 sphericalDirection(float x, float y) const;
+
     Vec3 position_, right_, up_, forward_;
     float tanHalfFov_ = 1, aspect_ = 1, pixelAngle_ = 0, apertureRadius_ = 0, focusDistance_ = 1;
-    bool orthographic_ = false;
+    Projection projection_ = Projection::Perspective;
+    SphericalMapping mapping_ = SphericalMapping::EqualArea;
     float halfHeight_ = 1, pixelSize_ = 0;  // orthographic: half the view's height, one pixel's side
     int width_ = 1, height_ = 1;
     PixelFilter filter_;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include <memory>
+#include "description/camera_projection.h"
 #include "description/curve_set.h"
 #include "description/pixel_filter_description.h"
 #include "materials/material.h"
@@ -23,9 +24,10 @@ namespace photon {
 struct CameraDescription {
     Vec3 position{0, 1, 6.8f}, lookAt{0, 1, 0}, up{0, 1, 0};
     float fovDegrees = 19.5f;  // vertical field of view
-    // An orthographic camera: parallel rays along the view, the image viewHeight scene
-    // units high (fovDegrees unused).
-    bool orthographic = false;
+    // Orthographic: the image viewHeight scene units high (fovDegrees unused); spherical:
+    // every direction around the position, laid out by `mapping` (fovDegrees unused).
+    CameraProjection projection = CameraProjection::Perspective;
+    CameraSphericalMapping mapping = CameraSphericalMapping::EqualArea;
     float viewHeight = 2;
     int width = 512, height = 512;
     float apertureRadius = 0;  // 0: pinhole

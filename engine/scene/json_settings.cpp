@@ -61,16 +61,22 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
 CameraDescription readCamera(const JsonValue& value, const LoadContext& ctx) {
     JsonObject obj = value.object();
     CameraDescription c;
-    c.orthographic = obj.choice("type", 0, {"perspective", "orthographic"}, "type") == 1;
+    c.projection = CameraProjection(obj.choice("type", 0, {"perspective", "orthographic", "spherical"}, "type"));
     c.position = obj.required("position").vec3();
     c.lookAt = obj.required("look_at").vec3();
     if (auto up = obj.optional("up")) c.up = up->direction();
     checkOrientation(obj, c);
-    if (c.orthographic) {
+    if (c.projection == CameraProjection::Orthographic) {
         c.viewHeight = obj.required("view_height").number(Range::positive());
         if (auto fov = obj.optional("fov")) fov->fail("is not used by an orthographic camera (its view is \"view_height\" high)");
         if (auto lens = obj.optional("aperture_radius"); lens && lens->number() != 0)
             lens->fail("must be 0 for an orthographic camera (it has no lens)");
+    } else if (c.projection == CameraProjection::Spherical) {
+        c.mapping = CameraSphericalMapping(obj.choice("mapping", 0, {"equal_area", "equirectangular"}, "mapping"));
+        if (auto fov = obj.optional("fov")) fov->fail("is not used by a spherical camera (it sees every direction)");
+        if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");
+        if (auto lens = obj.optional("aperture_radius"); lens && lens->number() != 0)
+            lens->fail("must be 0 for a spherical camera (it has no lens)");
     } else {
         c.fovDegrees = obj.required("fov").number(Range::open(0, 180));
         if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");

@@ -145,7 +145,7 @@ CameraDescription camera(Vec3 position, Vec3 lookAt, Vec3 up, float fov, int wid
 
 CameraDescription orthographicCamera(Vec3 position, Vec3 lookAt, float viewHeight, int width, int height) {
     CameraDescription c = camera(position, lookAt, {0, 1, 0}, 40, width, height);
-    c.orthographic = true;
+    c.projection = CameraProjection::Orthographic;
     c.viewHeight = viewHeight;
     return c;
 }

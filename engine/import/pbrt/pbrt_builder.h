@@ -52,6 +52,7 @@ private:
     void sampler(const Directive& d);
     void integrator(const Directive& d);
     void writeCameraAndRender();
+    void writeViewOfLens(Json& cam) const;
     // pbrt_materials.cpp
     void makeNamedMaterial(const Directive& d);
     void material(const Directive& d);
@@ -135,6 +136,7 @@ private:
         Transform cameraToWorld;
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
         bool orthographic = false;
+        std::optional<std::string> sphericalMapping;  // a spherical camera's "equal_area" or "equirectangular"
         std::optional<std::vector<double>> screenWindow;
         std::optional<double> frameAspectRatio;
         // pbrt-v4's camera medium: MediumInterface's outside where the Camera is declared.

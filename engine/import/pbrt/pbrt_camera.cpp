@@ -11,9 +11,10 @@ constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 
 void SceneBuilder::camera(const Directive& d) {
     Params p(d);
-    if (d.strings.at(0) != "perspective" && d.strings.at(0) != "orthographic")
-        fail(d.where, "Camera \"" + d.strings[0] + "\" is not supported (photon has perspective and orthographic cameras)");
-    camera_.orthographic = d.strings[0] == "orthographic";
+    const std::string& type = d.strings.at(0);
+    if (type != "perspective" && type != "orthographic" && type != "spherical")
+        fail(d.where, "Camera \"" + type + "\" is not supported (photon has perspective, orthographic and spherical cameras)");
+    camera_.orthographic = type == "orthographic";
     if (std::abs(state_.ctm.determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
     camera_.seen = true;
     camera_.where = d.where;
@@ -21,6 +22,14 @@ void SceneBuilder::camera(const Directive& d) {
     camera_.cameraToWorld = state_.ctm.inverse();
     camera_.medium = state_.outsideMedium;
     coordinateSystems_["camera"] = camera_.cameraToWorld;
+    if (type == "spherical") {
+        const std::string mapping = p.string("mapping", "equalarea");
+        if (mapping != "equalarea" && mapping != "equirectangular")
+            fail(d.where, "Camera \"spherical\": mapping must be \"equalarea\" or \"equirectangular\", not \"" + mapping + "\"");
+        camera_.sphericalMapping = mapping == "equalarea" ? "equal_area" : "equirectangular";
+        for (const char* unused : {"lensradius", "focaldistance", "screenwindow", "frameaspectratio", "fov"}) p.find(unused);
+        return;
+    }
     if (!camera_.orthographic) {
         camera_.fov = p.number("fov", 90);
         if (!(camera_.fov > 0 && camera_.fov < 180)) fail(d.where, "Camera: fov must be in (0, 180)");
@@ -140,6 +149,37 @@ void SceneBuilder::writeCameraAndRender() {
     const Vec3 position = c.point({0, 0, 0});
     const Vec3 forward = normalize(c.vector({0, 0, 1})), up = normalize(c.vector({0, 1, 0}));
     const Vec3 right = c.vector({1, 0, 0});
+    // The way the image's centre looks and its right: pbrt-v4's spherical images are centred
+    // on camera space's -x, with -z to their right (camera/camera.cpp).
+    const bool spherical = camera_.sphericalMapping.has_value();
+    const Vec3 viewForward = spherical ? -normalize(right) : forward, viewRight = spherical ? -forward : right;
+    Json cam = {{"type", spherical ? "spherical" : camera_.orthographic ? "orthographic" : "perspective"},
+                {"position", {position.x, position.y, position.z}},
+                {"look_at", {position.x + viewForward.x, position.y + viewForward.y, position.z + viewForward.z}},
+                {"up", {up.x, up.y, up.z}}};
+    if (spherical) {
+        cam["mapping"] = *camera_.sphericalMapping;
+        if (*camera_.sphericalMapping == "equal_area" && width_ != height_)
+            warn(camera_.where, "Camera \"spherical\": an equal-area image that is not square is stretched");
+    } else {
+        writeViewOfLens(cam);
+    }
+    cam["resolution"] = {width_, height_};
+    cam["filter"] = camera_.filter.is_null() ? defaultFilter() : camera_.filter;
+    // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
+    if (dot(viewRight, cross(viewForward, up)) < 0) cam["handedness"] = "left";
+    if (camera_.lensRadius > 0 && !spherical) {
+        cam["aperture_radius"] = camera_.lensRadius;
+        cam["focus_distance"] = camera_.focalDistance;
+    }
+    if (const std::string medium = renderedMedium(camera_.medium); !medium.empty()) cam["medium"] = medium;
+    out_.document["camera"] = cam;
+}
+
+// A perspective camera's fov or an orthographic one's view_height, from pbrt's fov,
+// screen window and frame aspect ratio.
+void SceneBuilder::writeViewOfLens(Json& cam) const {
+    const Transform& c = camera_.cameraToWorld;
     // pbrt's fov (or an orthographic camera's screen, [-1, 1] on that axis) spans the
     // shorter image axis; photon's the vertical one.
     double tanHalf = camera_.orthographic ? 1.0 : std::tan(camera_.fov / 2 / kDegrees);
@@ -160,26 +200,12 @@ void SceneBuilder::writeCameraAndRender() {
             fail(camera_.where, "Camera: a screenwindow that is not centred or not of the image's shape is not supported");
         tanHalf *= w[3] / defaultHalfHeight;
     }
-    Json cam = {{"type", camera_.orthographic ? "orthographic" : "perspective"},
-                {"position", {position.x, position.y, position.z}},
-                {"look_at", {position.x + forward.x, position.y + forward.y, position.z + forward.z}},
-                {"up", {up.x, up.y, up.z}}};
     if (camera_.orthographic) {
         // The screen is in camera space, which the camera's transform scales into the world.
         cam["view_height"] = 2 * tanHalf * double(length(c.vector({0, 1, 0})));
     } else {
         cam["fov"] = 2 * std::atan(tanHalf) * kDegrees;
     }
-    cam["resolution"] = {width_, height_};
-    cam["filter"] = camera_.filter.is_null() ? defaultFilter() : camera_.filter;
-    // pbrt's image x axis is up x forward in a left-handed world; photon's is forward x up.
-    if (dot(right, cross(forward, up)) < 0) cam["handedness"] = "left";
-    if (camera_.lensRadius > 0) {
-        cam["aperture_radius"] = camera_.lensRadius;
-        cam["focus_distance"] = camera_.focalDistance;
-    }
-    if (const std::string medium = renderedMedium(camera_.medium); !medium.empty()) cam["medium"] = medium;
-    out_.document["camera"] = cam;
 }
 
 }  // namespace photon::pbrt
