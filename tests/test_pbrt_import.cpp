@@ -61,6 +61,32 @@ Shape "sphere")")).document["render"];
     EXPECT_EQ(lightSampler("uniform"), "spatial");
 }
 
+// pbrt-v4's SPPM integrator: its photons per iteration (one a pixel of the film where the
+// file gives none or -1, as pbrt-v4's SPPMIntegrator takes them), its initial radius, seed
+// and depth.
+TEST(PbrtImport, SppmIntegratorKeepsItsParameters) {
+    auto renderOf = [](const std::string& integrator) {
+        return importPbrt(writeScene("sppm.pbrt", R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30]
+)" + integrator + R"(
+Film "rgb" "integer xresolution" [40] "integer yresolution" [30]
+WorldBegin
+LightSource "point" "rgb I" [1 1 1]
+Shape "sphere")")).document["render"];
+    };
+    const Json given = renderOf(R"(Integrator "sppm" "integer photonsperiteration" [5000] "float radius" [0.25]
+    "integer seed" [7] "integer maxdepth" [9])");
+    EXPECT_EQ(given["integrator"], "sppm");
+    EXPECT_EQ(given["photons_per_pass"], 5000);
+    EXPECT_EQ(given["initial_radius"], 0.25);
+    EXPECT_EQ(given["seed"], 7);
+    EXPECT_EQ(given["max_depth"], 9);
+    EXPECT_EQ(renderOf(R"(Integrator "sppm")")["photons_per_pass"], 40 * 30);
+    EXPECT_EQ(renderOf(R"(Integrator "sppm" "integer photonsperiteration" [-1])")["photons_per_pass"], 40 * 30);
+    EXPECT_FALSE(renderOf(R"(Integrator "path")").contains("photons_per_pass"));
+}
+
 // pbrt-v4's samplers: "independent" stays independent; the stratifying ones (zsobol, its
 // default, sobol, halton, pmj02bn, stratified...) become photon's Sobol passes; the
 // sample count becomes the passes.

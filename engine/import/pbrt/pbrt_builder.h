@@ -109,6 +109,7 @@ private:
     bool lenient_ = false;
     Json materials_ = Json::object(), shapes_ = Json::array(), objects_ = Json::object(), lights_ = Json::array();
     Json render_ = Json::object();
+    bool photonsPerPixel_ = false;  // Integrator "sppm" without photonsperiteration: one a pixel
 
     GraphicsState state_;
     std::vector<GraphicsState> stack_;          // AttributeBegin/End

@@ -133,8 +133,12 @@ void SceneBuilder::integrator(const Directive& d) {
     // photon's spatial sampler does; "uniform" has no counterpart and becomes the default.
     if (auto sampler = p.string("lightsampler")) render_["light_sampler"] = *sampler == "power" ? "power" : "spatial";
     if (type == "sppm") {
+        // pbrt-v4 traces one photon a pixel where the file gives no positive count (its
+        // SPPMIntegrator, from the film's pixel bounds); the film may come later.
         if (auto photons = p.number("photonsperiteration"); photons && *photons > 0)
             render_["photons_per_pass"] = static_cast<int64_t>(*photons);
+        else
+            photonsPerPixel_ = true;
         if (auto radius = p.number("radius")) render_["initial_radius"] = *radius;
         if (auto seed = p.number("seed")) render_["seed"] = static_cast<int64_t>(*seed);
         if (auto iterations = p.number("iterations")) render_["passes"] = static_cast<int64_t>(*iterations);

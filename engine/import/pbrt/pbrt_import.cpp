@@ -168,6 +168,7 @@ void SceneBuilder::finish() {
     // Integrator (volpath, maxdepth 5), as when it names them without those parameters.
     if (!render_.contains("passes")) render_["passes"] = 16;
     if (!render_.contains("max_depth")) render_["max_depth"] = 5;
+    if (photonsPerPixel_) render_["photons_per_pass"] = std::clamp<int64_t>(int64_t(width_) * height_, 1, 100'000'000);
     doc["render"] = render_;
     if (shapes_.empty()) throw SceneError("", "the pbrt scene has no shapes that photon can render");
 }
