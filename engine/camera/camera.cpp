@@ -43,24 +43,19 @@ Vec3 Camera::sphericalDirection(float x, float y) const {
         return up_ * std::cos(theta) + (forward_ * std::cos(phi) + right_ * std::sin(phi)) * sinTheta;
     }
     // pbrt: d on the sphere with the square's centre at +z, then y and z swapped (up = +z
-    // of d); its +x is the camera's -forward and its +y the camera's -right.
-    // A filter's sample past an edge folds back across it, as the square folds onto the
-    // sphere (pbrt-v4's WrapEqualAreaSquare).
-    Vec2 p{u, v};
-    if (p.x < 0) p = {-p.x, 1 - p.y};
-    else if (p.x > 1) p = {2 - p.x, 1 - p.y};
-    if (p.y < 0) p = {1 - p.x, -p.y};
-    else if (p.y > 1) p = {1 - p.x, 2 - p.y};
-    const Vec3 d = equalAreaSquareToSphere({std::clamp(p.x, 0.0f, 1.0f), std::clamp(p.y, 0.0f, 1.0f)});
+    // of d); its +x is the camera's -forward and its +y the camera's -right. A filter's
+    // sample past an edge folds back across it, as the square folds onto the sphere.
+    const Vec3 d = equalAreaSquareToSphere(wrapEqualAreaSquare({u, v}));
     return normalize(up_ * d.z - forward_ * d.x - right_ * d.y);
 }
 
 Ray Camera::generateRay(float x, float y, Vec2 uLens) const {
+    if (projection_ == Projection::Spherical) return {position_, sphericalDirection(x, y)};
     // Film point on the plane at distance 1: [-aspect, aspect] x [-1, 1] scaled by tan(fov/2).
     const float nx = 2.0f * x / static_cast<float>(width_) - 1.0f, ny = 1.0f - 2.0f * y / static_cast<float>(height_);
-    if (projection_ == Projection::Spherical) return {position_, sphericalDirection(x, y)};
     // Orthographic: every ray along the view, from the film point on the camera's plane.
-    if (projection_ == Projection::Orthographic) return {position_ + right_ * (nx * halfHeight_ * aspect_) + up_ * (ny * halfHeight_), forward_};
+    if (projection_ == Projection::Orthographic)
+        return {position_ + right_ * (nx * halfHeight_ * aspect_) + up_ * (ny * halfHeight_), forward_};
     float sx = nx * tanHalfFov_ * aspect_;
     float sy = ny * tanHalfFov_;
     Vec3 dir = forward_ + right_ * sx + up_ * sy;

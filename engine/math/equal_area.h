@@ -72,4 +72,14 @@ inline TexelIndex wrapEqualAreaTexel(TexelIndex t, int width, int height) {
     return {std::clamp(t.x, 0, width - 1), std::clamp(t.y, 0, height - 1)};
 }
 
+// The same folds for a point of the square a little outside [0,1]^2 (pbrt-v4's
+// WrapEqualAreaSquare): the point across the edge it crossed, inside [0,1]^2.
+inline Vec2 wrapEqualAreaSquare(Vec2 p) {
+    if (p.x < 0) p = {-p.x, 1 - p.y};
+    else if (p.x > 1) p = {2 - p.x, 1 - p.y};
+    if (p.y < 0) p = {1 - p.x, -p.y};
+    else if (p.y > 1) p = {1 - p.x, 2 - p.y};
+    return {std::clamp(p.x, 0.0f, 1.0f), std::clamp(p.y, 0.0f, 1.0f)};
+}
+
 }  // namespace photon
