@@ -8,6 +8,7 @@
 
 #include "import/pbrt/pbrt_parser.h"
 #include "pbrt_bitterli_scenes.h"
+#include "test_support.h"
 
 namespace photon::pbrt {
 namespace {
@@ -342,6 +343,45 @@ TEST(PbrtParser, MissingOrOversizedSceneFiles) {
     } catch (const ParseError& e) {
         EXPECT_STREQ(e.what(), "text.pbrt:0: the scene file exceeds 8 bytes");
     }
+}
+
+// pbrt-v4 scenes ship their large geometry files gzipped ("geometry/hair.pbrt.gz").
+TEST(PbrtParser, GzippedFilesAreReadAsTheTextTheyHold) {
+    IncludeFolder folder;
+    const fs::path& scene = folder.scene;
+    IncludeFolder::write(scene / "zipped.pbrt", "WorldBegin\nInclude \"geometry/walls.pbrt.gz\"\nShape \"disk\"\n");
+    IncludeFolder::write(scene / "geometry/walls.pbrt.gz",
+                         test::gzipped("# walls\nShape \"sphere\"\n") + test::gzipped("Shape \"cylinder\"\n"));
+    std::vector<std::string> seen;
+    parseFile(scene / "zipped.pbrt", scene, [&](Directive&& d) {
+        seen.push_back(d.name + (d.strings.empty() ? "" : " " + d.strings[0]) + " @" + d.where.str());
+    });
+    // Two gzip members one after the other are one text (as `cat a.gz b.gz`), lines counted on.
+    EXPECT_EQ(seen, (std::vector<std::string>{"WorldBegin @zipped.pbrt:1", "Shape sphere @geometry/walls.pbrt.gz:2",
+                                              "Shape cylinder @geometry/walls.pbrt.gz:3", "Shape disk @zipped.pbrt:3"}));
+    // The main file may be gzipped too.
+    IncludeFolder::write(scene / "main.pbrt.gz", test::gzipped("WorldBegin\nShape \"sphere\" \"float radius\" \"big\"\n"));
+    EXPECT_EQ(folder.errorOf("main.pbrt.gz"),
+              "main.pbrt.gz:2: parameter \"float radius\" expects numbers, found string \"big\"");
+
+    // Cut short, damaged, or inflating past the scene's byte limit: refused, naming the file.
+    const std::string whole = test::gzipped(std::string(4000, ' ') + "WorldBegin\n");
+    IncludeFolder::write(scene / "cut.pbrt.gz", whole.substr(0, whole.size() / 2));
+    IncludeFolder::write(scene / "cut.pbrt", "\nInclude \"cut.pbrt.gz\"\n");
+    EXPECT_EQ(folder.errorOf("cut.pbrt"), "cut.pbrt:2: Include cut.pbrt.gz: the gzip file is cut short");
+    std::string damaged = whole;
+    damaged[damaged.size() - 3] ^= 0x55;  // in the trailer's length: the CRC check catches it
+    IncludeFolder::write(scene / "damaged.pbrt.gz", damaged);
+    IncludeFolder::write(scene / "damaged.pbrt", "Include \"damaged.pbrt.gz\"\n");
+    EXPECT_EQ(folder.errorOf("damaged.pbrt"),
+              "damaged.pbrt:1: Include damaged.pbrt.gz: damaged gzip data (incorrect length check)");
+    IncludeFolder::write(scene / "bomb.pbrt.gz", test::gzipped(std::string(1 << 20, '#')));
+    IncludeFolder::write(scene / "bomb.pbrt", "Include \"bomb.pbrt.gz\"\n");
+    ParseLimits small;
+    small.maxTotalBytes = 100000;  // the compressed file is about a kilobyte
+    EXPECT_EQ(folder.errorOf("bomb.pbrt", small),
+              "bomb.pbrt:1: Include \"bomb.pbrt.gz\": the scene's files exceed 100000 bytes");
+    EXPECT_EQ(folder.errorOf("bomb.pbrt"), "");
 }
 
 TEST(PbrtParser, TextInMemoryIncludesAgainstTheRoot) {

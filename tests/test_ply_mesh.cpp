@@ -8,10 +8,12 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <unistd.h>
 #include "scene/mesh_loader.h"
 #include "scene/ply_mesh.h"
+#include "test_support.h"
 
 namespace photon {
 namespace {
@@ -230,6 +232,32 @@ TEST(PlyMesh, WriteThenReadIsBitExact) {
 }
 
 // ---- loadMeshFile ----
+
+// pbrt-v4 scenes ship meshes as "geometry/ganesha.ply.gz".
+TEST(PlyMesh, LoadMeshFileReadsGzippedPly) {
+    const fs::path folder = tempFolder();
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.uvs = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    mesh.indices = {0, 1, 2, 2, 1, 3};
+    writePlyMesh(mesh, folder / "plain.ply");
+    std::ifstream in(folder / "plain.ply", std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::ofstream(folder / "zipped.ply.gz", std::ios::binary) << test::gzipped(bytes);
+    expectSameBits(loadMeshFile(folder / "zipped.ply.gz", folder), mesh);
+    // Not gzip inside, or cut short: the reason, with the file.
+    std::ofstream(folder / "plain.ply.gz", std::ios::binary) << bytes;
+    const std::string gz = test::gzipped(bytes);
+    std::ofstream(folder / "cut.ply.gz", std::ios::binary) << gz.substr(0, gz.size() - 9);
+    for (const auto& [file, why] : {std::pair{"plain.ply.gz", "not a gzip file"}, {"cut.ply.gz", "the gzip file is cut short"}}) {
+        try {
+            loadMeshFile(folder / file, folder);
+            ADD_FAILURE() << file << " was read";
+        } catch (const std::runtime_error& e) {
+            EXPECT_EQ(std::string(e.what()), "PLY: " + (folder / file).string() + ": " + why);
+        }
+    }
+}
 
 TEST(PlyMesh, LoadMeshFileReadsPlyWhateverTheExtensionsCase) {
     const fs::path folder = tempFolder();

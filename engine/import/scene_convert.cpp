@@ -61,8 +61,11 @@ ConversionReport convertScene(const fs::path& input, const fs::path& output, con
     ConversionReport report;
     report.warnings = imported.warnings;
     for (const auto& [name, mesh] : imported.meshes) {
-        if (sameFolder && imported.meshesOnDisk.count(name)) continue;  // the file itself
-        writeFile(outDir / name, plyBytes(mesh), overwrite);
+        // A mesh that is a file as it stands is that file (copied, gzipped or not), not the
+        // mesh written again.
+        const bool onDisk = imported.meshesOnDisk.count(name) > 0;
+        if (sameFolder && onDisk) continue;
+        writeFile(outDir / name, onDisk ? readAll(inDir / name) : plyBytes(mesh), overwrite);
         report.written.push_back(name);
     }
     for (const auto& [name, bytes] : imported.files) {

@@ -3,11 +3,14 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include "scene/gzip_file.h"
 #include "scene/obj_mesh.h"
 #include "scene/ply_mesh.h"
 #include "scene/scene_paths.h"
@@ -87,11 +90,26 @@ TriangleMesh loadOwnFormat(const std::filesystem::path& file, const std::filesys
     return mesh;
 }
 
+// pbrt-v4's "mesh.ply.gz": read whole, inflated in memory (at most kMaxGzippedPlyBytes), then
+// read as PLY.
+TriangleMesh loadGzippedPly(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
+    if (!confineTo.empty() && !isInsideFolder(file, confineTo))
+        throw std::runtime_error("PLY: " + file.string() + ": the file is outside the folder it must be in");
+    std::ifstream in(file, std::ios::binary);
+    const std::string compressed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in.eof() && in.fail()) throw std::runtime_error("PLY: " + file.string() + ": cannot read the file");
+    TriangleMesh mesh = readPlyMesh(gunzip(compressed, kMaxGzippedPlyBytes, "PLY: " + file.string()), file.string());
+    if (mesh.indices.empty()) throw std::runtime_error("the file contains no triangles");
+    sanitize(mesh);
+    return mesh;
+}
+
 }  // namespace
 
 TriangleMesh loadMeshFile(const std::filesystem::path& file, const std::filesystem::path& confineTo) {
     const std::string extension = lowerCaseExtension(file);
     if (extension == ".ply" || extension == ".obj") return loadOwnFormat(file, confineTo, extension == ".ply");
+    if (extension == ".gz" && lowerCaseExtension(file.stem()) == ".ply") return loadGzippedPly(file, confineTo);
     Assimp::Importer importer;
     if (!confineTo.empty()) importer.SetIOHandler(new ConfinedIOSystem(confineTo));  // importer owns it
     // Drop points and lines at SortByPType: the renderer only intersects triangles.

@@ -1,4 +1,4 @@
-// Reads triangle meshes from files: PLY and OBJ with the engine's own streaming readers
+// Reads triangle meshes from files: PLY (also gzipped, .ply.gz) and OBJ with the engine's own streaming readers
 // (ply_mesh.h, obj_mesh.h), glTF 2.0 and whatever else Assimp knows with Assimp.
 #pragma once
 #include <cstddef>
@@ -9,6 +9,10 @@ namespace photon {
 
 // Larger meshes are refused: they would not fit the memory budget of a render job.
 constexpr size_t kMaxMeshTriangles = 10'000'000;
+// A gzipped PLY ("mesh.ply.gz", as pbrt-v4 scenes ship them) is inflated in memory to at most
+// this: a binary PLY of the largest mesh allowed (5M vertices with normals and uvs, 32 bytes
+// each, and 10M faces of 13 bytes) is 290 MB.
+constexpr size_t kMaxGzippedPlyBytes = size_t(1) << 30;
 
 // Loads every triangle in `file`, with the file's node transforms baked in; points and
 // lines are dropped. Normals are kept only if every part of the file has them (otherwise

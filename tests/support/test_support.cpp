@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
+#include <zlib.h>
 #include "scene_builders.h"
 #include <tbb/task_arena.h>
 #include <photon/render.h>
@@ -291,6 +293,22 @@ SceneDescription furnace(float rho, float emission, int resolution) {
     d.materialNames = {"wall"};
     d.shapes = {sphere({0, 0, 0}, 1, 0, Color(emission), true)};
     return d;
+}
+
+std::string gzipped(std::string_view bytes) {
+    z_stream zs{};
+    if (deflateInit2(&zs, Z_BEST_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+        throw std::runtime_error("deflateInit2 failed");
+    std::string out(deflateBound(&zs, uLong(bytes.size())), '\0');
+    zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+    zs.avail_in = uInt(bytes.size());
+    zs.next_out = reinterpret_cast<Bytef*>(out.data());
+    zs.avail_out = uInt(out.size());
+    const int status = deflate(&zs, Z_FINISH);
+    out.resize(zs.total_out);
+    deflateEnd(&zs);
+    if (status != Z_STREAM_END) throw std::runtime_error("deflate failed");
+    return out;
 }
 
 }  // namespace photon::test

@@ -2,8 +2,12 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace photon::test {
+
+// `bytes` compressed as one gzip member (zlib's deflate), as `gzip` writes a file.
+std::string gzipped(std::string_view bytes);
 
 // Absolute path of a file in the source tree, e.g. sourcePath("scenes/cornell-box.json").
 inline std::filesystem::path sourcePath(const std::string& relative) {

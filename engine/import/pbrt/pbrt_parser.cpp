@@ -1,6 +1,9 @@
 #include "import/pbrt/pbrt_parser.h"
+#include "scene/gzip_file.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <system_error>
 
@@ -143,6 +146,12 @@ bool readWhole(const fs::path& file, std::uintmax_t size, std::string& text) {
     text.assign(size, '\0');
     std::ifstream in(file, std::ios::binary);
     return bool(in.read(text.data(), std::streamsize(size)));
+}
+
+// A gzip-compressed file's text (pbrt-v4 reads "geometry.pbrt.gz" as the text it holds), at
+// most `budget` bytes of it; other text as it is. Throws std::runtime_error (gzip_file.h).
+void decompressIfGzip(std::string& text, std::uintmax_t budget, const std::string& name) {
+    if (isGzip(text)) text = gunzip(text, size_t(std::min<std::uintmax_t>(budget, SIZE_MAX)), name);
 }
 
 // What every file of one parse shares: where the scene lives, what it may still read, and
@@ -366,7 +375,14 @@ private:
             fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
         std::string text;
         if (!readWhole(target, size, text)) fail(d.where.line, quoted + ": cannot be read");
-        s.bytes += size;
+        try {
+            decompressIfGzip(text, s.limits.maxTotalBytes - s.bytes, written);
+        } catch (const GunzipLimitExceeded&) {
+            fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
+        } catch (const std::runtime_error& e) {
+            fail(d.where.line, d.name + " " + e.what());
+        }
+        s.bytes += text.size();
         s.chain.push_back(target);
         parseInto(s, text, target.lexically_relative(s.root).generic_string());
         s.chain.pop_back();
@@ -422,7 +438,14 @@ void parseFile(const fs::path& file, const fs::path& root, const std::function<v
         throw ParseError({name, 0}, "the scene file exceeds " + std::to_string(limits.maxTotalBytes) + " bytes");
     std::string text;
     if (!readWhole(target, size, text)) throw ParseError({name, 0}, "the scene file cannot be read");
-    Session session{canonicalRootPath, sink, limits, {target}, 1, size};
+    try {
+        decompressIfGzip(text, limits.maxTotalBytes, name);
+    } catch (const GunzipLimitExceeded&) {
+        throw ParseError({name, 0}, "the scene file exceeds " + std::to_string(limits.maxTotalBytes) + " bytes");
+    } catch (const std::runtime_error& e) {
+        throw ParseError({name, 0}, e.what());
+    }
+    Session session{canonicalRootPath, sink, limits, {target}, 1, text.size()};
     parseInto(session, text, name);
 }
 
