@@ -370,6 +370,47 @@ Shape "sphere"
                  "bad.pbrt:1: Camera \"orthographic\": a lens (lensradius) is not supported");
 }
 
+// pbrt-v4 finds named materials once the whole file is read: scenes name one before the
+// Include that makes it (pbrt-v4-scenes' contemporary-bathroom, its lights before
+// materials.pbrt).
+TEST(PbrtImport, AMaterialMayBeNamedBeforeItIsMade) {
+    const ImportedScene s = import(R"(
+AttributeBegin
+  NamedMaterial "glass"
+  Shape "sphere" "float radius" [0.3]
+AttributeEnd
+MakeNamedMaterial "both" "string type" "mix" "string materials" ["red" "later"] "float amount" 0.25
+NamedMaterial "both"
+Shape "sphere" "float radius" [0.2]
+MakeNamedMaterial "glass" "string type" "dielectric" "float eta" 1.33
+MakeNamedMaterial "red" "string type" "diffuse" "rgb reflectance" [0.8 0 0]
+MakeNamedMaterial "later" "string type" "diffuse" "rgb reflectance" [0 0 0.8]
+)");
+    const Json& doc = s.document;
+    const Json& shapes = doc["shapes"];
+    ASSERT_EQ(shapes.size(), 4u);  // the light, the floor, the two spheres
+    EXPECT_EQ(shapes[2]["material"], "glass");
+    EXPECT_EQ(shapes[3]["material"], "both");
+    EXPECT_EQ(doc["materials"]["glass"]["type"], "dielectric");
+    EXPECT_FLOAT_EQ(doc["materials"]["glass"]["ior"].get<float>(), 1.33f);
+    EXPECT_EQ(doc["materials"]["both"]["materials"], Json({"red", "later"}));
+    EXPECT_FLOAT_EQ(doc["materials"]["later"]["albedo"][2].get<float>(), 0.8f);
+
+    // Never made: refused where it was first named; lenient, pbrt-v4's default material.
+    const std::string never = kHeader + "NamedMaterial \"nope\"\nShape \"sphere\"\nNamedMaterial \"nope\"\n";
+    EXPECT_STREQ(importError(never).what(), "bad.pbrt:12: material \"nope\" is named here but never made (MakeNamedMaterial)");
+    const ImportedScene lenient = importPbrt(writeScene("lenient.pbrt", never), true);
+    EXPECT_EQ(lenient.document["materials"]["nope"], Json({{"type", "diffuse"}, {"albedo", {0.5, 0.5, 0.5}}}));
+    ASSERT_EQ(lenient.warnings.size(), 1u);
+    EXPECT_EQ(lenient.warnings[0], "lenient.pbrt:12: material \"nope\" is named here but never made (MakeNamedMaterial); "
+                                   "rendered as pbrt-v4's default material, diffuse of reflectance 0.5 (lenient import)");
+    // An interface made after shapes took it for a surface cannot be undone: refused.
+    EXPECT_STREQ(importError(kHeader + "NamedMaterial \"gap\"\nShape \"sphere\"\n"
+                                       "MakeNamedMaterial \"gap\" \"string type\" \"interface\"\n").what(),
+                 "bad.pbrt:14: MakeNamedMaterial \"gap\": an interface (no surface), named at bad.pbrt:12 before it "
+                 "is made here; make it before the shapes that use it");
+}
+
 TEST(PbrtImport, ErrorsNameFileAndLine) {
     const std::string head = "Camera \"perspective\"\nWorldBegin\n";
     EXPECT_STREQ(importError(head + "Material \"measured\"\n").what(),
@@ -384,7 +425,8 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
                  "media)");
     EXPECT_STREQ(importError(head + "MediumInterface \"tea\" \"\"\n").what(),
                  "bad.pbrt:3: MediumInterface: no medium named \"tea\"");
-    EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(), "bad.pbrt:3: NamedMaterial \"nope\" was not defined");
+    EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(),
+                 "bad.pbrt:3: material \"nope\" is named here but never made (MakeNamedMaterial)");
     EXPECT_STREQ(importError(head + "Shape \"sphere\" \"float zmin\" [2]\n").what(),
                  "bad.pbrt:3: sphere: zmin, zmax and phimax leave nothing of it");
     EXPECT_STREQ(importError(head + "Shape \"cylinder\" \"float zmin\" [1]\n").what(),

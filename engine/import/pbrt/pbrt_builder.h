@@ -117,6 +117,16 @@ private:
     std::map<std::string, Transform> coordinateSystems_;
     std::map<std::string, Json> floatTextures_, spectrumTextures_;
     std::map<std::string, std::string> namedMaterials_;  // pbrt name -> photon name
+    // Named materials used (NamedMaterial, a mix's "materials") before MakeNamedMaterial made
+    // them, and where first: pbrt-v4 looks names up once the whole file is read, so scenes
+    // name a material before the Include that makes it (pbrt-v4's contemporary-bathroom).
+    // They keep their pbrt name, which MakeNamedMaterial then gives the material.
+    std::map<std::string, Location> materialsNamedAhead_;
+    // The name for a named material: its photon name, or the name itself, remembered as
+    // named ahead of its MakeNamedMaterial.
+    std::string namedMaterial(const std::string& name, const Location& where);
+    // Checks, at the end, that every material named ahead was made.
+    void checkMaterialsNamedAhead();
     // pbrt medium name -> whether photon renders it (an absorbing medium under "media"), or
     // false for one left out (lenient import).
     std::map<std::string, bool> media_;

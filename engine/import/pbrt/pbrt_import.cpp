@@ -74,10 +74,7 @@ void SceneBuilder::handle(Directive&& d) {
     } else if (n == "Material") {
         material(d);
     } else if (n == "NamedMaterial") {
-        const std::string& name = d.strings.at(0);
-        auto it = namedMaterials_.find(name);
-        if (it == namedMaterials_.end()) fail(d.where, "NamedMaterial \"" + name + "\" was not defined");
-        state_.material = it->second;
+        state_.material = namedMaterial(d.strings.at(0), d.where);
     } else if (n == "Texture") {
         texture(d);
     } else if (n == "Shape") {
@@ -155,6 +152,7 @@ void SceneBuilder::finish() {
     if (!stack_.empty()) warn(Location{}, "the file ends inside an AttributeBegin block");
     writeCameraAndRender();
     flushCurves(std::nullopt);
+    checkMaterialsNamedAhead();
     Json& doc = out_.document;
     // An object with nothing photon renders (only interfaces) is never instanced.
     for (auto it = objects_.begin(); it != objects_.end();)

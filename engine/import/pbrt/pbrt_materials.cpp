@@ -278,10 +278,9 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         if (names.size() != 2) fail(where, "mix: \"materials\" must name two materials");
         Json parts = Json::array();
         for (const std::string& n : names) {
-            auto it = namedMaterials_.find(n);
-            if (it == namedMaterials_.end()) fail(where, "mix: material \"" + n + "\" was not defined before");
-            if (it->second == kInterface) fail(where, "mix: material \"" + n + "\" is an interface (no surface)");
-            parts.push_back(it->second);
+            const std::string part = namedMaterial(n, where);
+            if (part == kInterface) fail(where, "mix: material \"" + n + "\" is an interface (no surface)");
+            parts.push_back(part);
         }
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
     } else {
@@ -304,8 +303,28 @@ void SceneBuilder::makeNamedMaterial(const Directive& d) {
     const std::string type = p.string("type", "");
     if (!p.has("type")) fail(d.where, "MakeNamedMaterial \"" + name + "\" has no \"string type\"");
     std::optional<Json> m = materialJson(type, p);
+    if (!m)
+        if (auto ahead = materialsNamedAhead_.find(name); ahead != materialsNamedAhead_.end())
+            fail(d.where, "MakeNamedMaterial \"" + name + "\": an interface (no surface), named at " + ahead->second.str() +
+                              " before it is made here; make it before the shapes that use it");
     namedMaterials_[name] = m ? name : kInterface;
     if (m) materials_[name] = *m;
+}
+
+std::string SceneBuilder::namedMaterial(const std::string& name, const Location& where) {
+    if (auto it = namedMaterials_.find(name); it != namedMaterials_.end()) return it->second;
+    materialsNamedAhead_.try_emplace(name, where);
+    return name;
+}
+
+void SceneBuilder::checkMaterialsNamedAhead() {
+    for (const auto& [name, where] : materialsNamedAhead_) {
+        if (namedMaterials_.contains(name)) continue;
+        const std::string message = "material \"" + name + "\" is named here but never made (MakeNamedMaterial)";
+        if (!lenient_) fail(where, message);
+        warn(where, message + "; rendered as pbrt-v4's default material, diffuse of reflectance 0.5 (lenient import)");
+        materials_[name] = {{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
+    }
 }
 
 void SceneBuilder::material(const Directive& d) {

@@ -96,7 +96,8 @@ std::vector<uint32_t> meshIndices(const Params& p, const Directive& d, size_t ve
 
 Json SceneBuilder::commonShapeFields(const Params& p) {
     Json s = Json::object();
-    if (auto alpha = floatValue(p, "alpha")) {
+    // An area light's alpha is refused or left out in shape().
+    if (auto alpha = floatValue(p, "alpha"); alpha && !state_.areaLight) {
         if (!(alpha->is_number() && alpha->get<double>() >= 1)) s["alpha"] = *alpha;
     }
     if (!isIdentity(state_.ctm)) s["transform"] = matrixJson(state_.ctm);
@@ -182,6 +183,20 @@ void SceneBuilder::shape(const Directive& d) {
         warn(d.where, describe(d) + " has the interface material (no surface) and is left out");
         return;
     }
+    if (state_.areaLight)
+        if (std::optional<Json> alpha = floatValue(p, "alpha")) {
+            // pbrt-v4's DiffuseAreaLight emits nothing where its shape's alpha masks it out,
+            // and rays pass the shape there: at alpha 0, nowhere to see and no light.
+            if (alpha->is_number() && alpha->get<double>() <= 0) {
+                for (const Param& param : d.params) param.used = true;
+                warn(d.where, describe(d) + " is an area light of alpha 0, which pbrt-v4 neither shows nor lights "
+                                            "with; left out");
+                return;
+            }
+            if (!(alpha->is_number() && alpha->get<double>() >= 1))
+                unsupported(d, describe(d) + ": an area light cut away in part (alpha below 1) is not supported",
+                            "rendered whole, without its alpha");
+        }
     if (type == "trianglemesh" || type == "bilinearmesh" || type == "loopsubdiv") {
         TriangleMesh mesh = meshVertices(p, d);
         const size_t perFace = type == "bilinearmesh" ? 4 : 3;
