@@ -156,5 +156,26 @@ TEST(PbrtImport, AnAreaLightOfAlphaZeroIsLeftOut) {
     EXPECT_EQ(sphere["emission"], Json({9, 9, 9}));
 }
 
+
+// pbrt-v4 keeps any 4x4 matrix and turns directions by its upper 3x3: pbrt-v4-scenes'
+// sssdragon orients its sky by a ConcatTransform whose last row is 0 0 8.87 1.
+TEST(PbrtImport, AProjectiveTransformTurnsDirectionsButRefusesPoints) {
+    const std::string projective = "ConcatTransform [0 0 1 0  0 1 0 0  -1 0 0 8.87  0 0 0 1]\n";
+    const ImportedScene s = import("AttributeBegin\n" + projective + "Rotate 90 0 1 0\n" +
+                                   "LightSource \"distant\" \"point3 from\" [0 0 0] \"point3 to\" [0 0 1]\nAttributeEnd\n");
+    // The rotation turns +z to +x, then the matrix's 3x3 +x to +z.
+    const Vec3 direction = vec(s.document["lights"].back()["direction"]);
+    EXPECT_NEAR(direction.x, 0, 1e-6);
+    EXPECT_NEAR(direction.y, 0, 1e-6);
+    EXPECT_NEAR(direction.z, 1, 1e-6);
+    EXPECT_STREQ(importError(kHeader + projective + "Shape \"sphere\"\n").what(),
+                 "bad.pbrt:13: Shape \"sphere\": the transform is projective (its last row is 0 0 8.87 1), which "
+                 "photon applies to directions only (infinite and distant lights)");
+    // Transform replaces it with an affine matrix again.
+    EXPECT_EQ(import(projective + "Transform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 2 1]\nShape \"sphere\"\n")
+                  .document["shapes"][2]["transform"],
+              Json({{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 2, 0, 0, 0, 1}}}));
+}
+
 }  // namespace
 }  // namespace photon

@@ -2,6 +2,7 @@
 // state (transform, material, area light, orientation, attribute stack), its named things
 // (materials, textures, coordinate systems, objects), and the photon JSON scene it writes.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -22,9 +23,21 @@ using Json = nlohmann::ordered_json;
 inline Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
 inline Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 
-// pbrt's CTM with its projective part checked away: pbrt matrices are 4x4, photon's affine.
+// pbrt's CTM is a 4x4 matrix, photon's transforms affine: the CTM's first three rows, and
+// its last, (0 0 0 1) unless a Transform or ConcatTransform gave it another. pbrt-v4 turns
+// directions by the upper 3x3 alone, so a projective CTM still orients infinite and distant
+// lights (pbrt-v4-scenes' sssdragon turns its sky by one); points under it are refused
+// (SceneBuilder::pointCtm).
+using CtmLastRow = std::array<float, 4>;
+constexpr CtmLastRow kAffineLastRow{0, 0, 0, 1};
+struct Ctm {
+    Transform affine;
+    CtmLastRow lastRow = kAffineLastRow;
+};
+
 struct GraphicsState {
     Transform ctm;  // object (or camera) to world, as pbrt's current transformation matrix
+    CtmLastRow ctmLastRow = kAffineLastRow;  // its last row
     bool reverseOrientation = false;
     std::string material;            // the photon material's name; empty: pbrt's default
     std::optional<Json> areaLight;   // emission fields for the shapes that follow
@@ -113,8 +126,13 @@ private:
 
     GraphicsState state_;
     std::vector<GraphicsState> stack_;          // AttributeBegin/End
-    std::vector<Transform> transformStack_;     // TransformBegin/End
-    std::map<std::string, Transform> coordinateSystems_;
+    std::vector<Ctm> transformStack_;     // TransformBegin/End
+    std::map<std::string, Ctm> coordinateSystems_;
+    Ctm ctm() const { return {state_.ctm, state_.ctmLastRow}; }
+    void setCtm(const Ctm& c) { state_.ctm = c.affine, state_.ctmLastRow = c.lastRow; }
+    // The CTM for points (shapes, cameras, point and spot lights): refused where it is
+    // projective.
+    const Transform& pointCtm(const Directive& d) const;
     std::map<std::string, Json> floatTextures_, spectrumTextures_;
     std::map<std::string, std::string> namedMaterials_;  // pbrt name -> photon name
     // Named materials used (NamedMaterial, a mix's "materials") before MakeNamedMaterial made

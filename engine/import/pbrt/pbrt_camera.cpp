@@ -15,13 +15,13 @@ void SceneBuilder::camera(const Directive& d) {
     if (type != "perspective" && type != "orthographic" && type != "spherical")
         fail(d.where, "Camera \"" + type + "\" is not supported (photon has perspective, orthographic and spherical cameras)");
     camera_.orthographic = type == "orthographic";
-    if (std::abs(state_.ctm.determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
+    if (std::abs(pointCtm(d).determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
     camera_.seen = true;
     camera_.where = d.where;
     // The CTM is camera-from-world here; pbrt names its inverse "camera".
     camera_.cameraToWorld = state_.ctm.inverse();
     camera_.medium = state_.outsideMedium;
-    coordinateSystems_["camera"] = camera_.cameraToWorld;
+    coordinateSystems_["camera"] = {camera_.cameraToWorld};
     if (type == "spherical") {
         const std::string mapping = p.string("mapping", "equalarea");
         if (mapping != "equalarea" && mapping != "equirectangular")

@@ -28,10 +28,10 @@ void SceneBuilder::handle(Directive&& d) {
         state_ = stack_.back();
         stack_.pop_back();
     } else if (n == "TransformBegin") {
-        transformStack_.push_back(state_.ctm);
+        transformStack_.push_back(ctm());
     } else if (n == "TransformEnd") {
         if (transformStack_.empty()) fail(d.where, "TransformEnd without a matching TransformBegin");
-        state_.ctm = transformStack_.back();
+        setCtm(transformStack_.back());
         transformStack_.pop_back();
     } else if (n == "Identity" || n == "Translate" || n == "Scale" || n == "Rotate" || n == "LookAt" ||
                n == "Transform" || n == "ConcatTransform" || n == "CoordinateSystem" || n == "CoordSysTransform") {
@@ -44,8 +44,8 @@ void SceneBuilder::handle(Directive&& d) {
         state_.reverseOrientation = !state_.reverseOrientation;
     } else if (n == "WorldBegin") {
         worldBegun_ = true;
-        state_.ctm = Transform();
-        coordinateSystems_["world"] = Transform();
+        setCtm({});
+        coordinateSystems_["world"] = {};
     } else if (n == "WorldEnd") {
         // pbrt-v3's end of file.
     } else if (n == "Camera") {

@@ -56,13 +56,13 @@ void SceneBuilder::lightSource(const Directive& d) {
     if (currentObject_) fail(d.where, "LightSource inside ObjectBegin is not supported");
     Json light;
     if (type == "point") {
-        const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0}));
+        const Vec3 from = pointCtm(d).point(p.vec3("from", {0, 0, 0}));
         const double power = p.number("power", -1);
         light = {{"type", "point"},
                  {"position", vec(from)},
                  {"intensity", rgb(spectrum("I") * float(scale * (power > 0 ? power / (4 * kPi) : 1.0)))}};
     } else if (type == "spot") {
-        const Vec3 from = state_.ctm.point(p.vec3("from", {0, 0, 0})), to = state_.ctm.point(p.vec3("to", {0, 0, 1}));
+        const Vec3 from = pointCtm(d).point(p.vec3("from", {0, 0, 0})), to = state_.ctm.point(p.vec3("to", {0, 0, 1}));
         const double cone = p.number("coneangle", 30), delta = p.number("conedeltaangle", 5);
         if (!(length(to - from) > 0)) fail(d.where, "spot: \"from\" and \"to\" are the same point");
         const double coneAngle = std::clamp(cone, 1e-3, 90.0), falloffAngle = std::clamp(cone - delta, 0.0, coneAngle);

@@ -176,6 +176,7 @@ void SceneBuilder::addSphere(const Params& p, const Directive& d) {
 void SceneBuilder::shape(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
+    pointCtm(d);
     if (currentMaterial().empty() && !shapeMedium()) {
         // pbrt's "interface" material: a boundary between media, not a surface; with no
         // medium photon renders on either side, nothing.
@@ -269,7 +270,7 @@ void SceneBuilder::objectInstance(const Directive& d) {
     if (!objects_.contains(name)) fail(d.where, "ObjectInstance: no object named \"" + name + "\"");
     if (objects_[name]["shapes"].empty()) return;  // nothing photon renders in it
     Json instance = {{"type", "instance"}, {"object", name}};
-    if (!isIdentity(state_.ctm)) instance["transform"] = matrixJson(state_.ctm);
+    if (!isIdentity(pointCtm(d))) instance["transform"] = matrixJson(state_.ctm);
     shapes_.push_back(std::move(instance));
 }
 

@@ -1,6 +1,7 @@
 // pbrt's transformation directives on the current transformation matrix (CTM). Each one
 // post-multiplies, as in pbrt-v4 (BasicSceneBuilder): `Translate` then `Scale` scales first.
 #include <cmath>
+#include <sstream>
 #include "import/pbrt/pbrt_builder.h"
 
 namespace photon::pbrt {
@@ -8,15 +9,32 @@ namespace photon::pbrt {
 namespace {
 
 // pbrt's 16 numbers are the matrix's columns one after another (pbrt-v4 transposes what it
-// reads): the last four are the translation and the homogeneous 1.
-Transform fromColumns(const Directive& d) {
+// reads): the last four are the translation and the homogeneous 1 of an affine matrix.
+Ctm fromColumns(const Directive& d) {
     const std::vector<double>& v = d.numbers;
-    if (std::abs(v[3]) > 1e-6 || std::abs(v[7]) > 1e-6 || std::abs(v[11]) > 1e-6 || std::abs(v[15] - 1) > 1e-6)
-        fail(d.where, d.name + ": a projective matrix (its last row is not 0 0 0 1) is not supported");
-    Transform t;
+    Ctm c;
     for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 4; ++col) t.m[row * 4 + col] = float(v[col * 4 + row]);
-    return t;
+        for (int col = 0; col < 4; ++col) c.affine.m[row * 4 + col] = float(v[col * 4 + row]);
+    for (int col = 0; col < 4; ++col) c.lastRow[col] = float(v[col * 4 + 3]);
+    return c;
+}
+
+// a * b as 4x4 matrices (b applied first).
+Ctm product(const Ctm& a, const Ctm& b) {
+    auto at = [](const Ctm& c, int row, int col) { return row < 3 ? c.affine.m[row * 4 + col] : c.lastRow[col]; };
+    Ctm r;
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) {
+            double sum = 0;
+            for (int k = 0; k < 4; ++k) sum += double(at(a, row, k)) * at(b, k, col);
+            (row < 3 ? r.affine.m[row * 4 + col] : r.lastRow[col]) = float(sum);
+        }
+    return r;
+}
+
+bool projective(const CtmLastRow& row) {
+    return std::abs(row[0]) > 1e-6f || std::abs(row[1]) > 1e-6f || std::abs(row[2]) > 1e-6f ||
+           std::abs(row[3] - 1) > 1e-6f;
 }
 
 // pbrt-v4's LookAt: the camera-from-world transform of a camera at `pos` looking at `look`,
@@ -41,10 +59,7 @@ void SceneBuilder::transformDirective(const Directive& d) {
     const std::string& n = d.name;
     const std::vector<double>& v = d.numbers;
     Transform t;
-    if (n == "Identity") {
-        state_.ctm = Transform();
-        return;
-    }
+    if (n == "Identity") return setCtm({});
     if (n == "Translate") t = Transform::translate({float(v[0]), float(v[1]), float(v[2])});
     if (n == "Scale") t = Transform::scale({float(v[0]), float(v[1]), float(v[2])});
     if (n == "Rotate") {
@@ -53,13 +68,10 @@ void SceneBuilder::transformDirective(const Directive& d) {
         t = Transform::rotate(axis, float(v[0]));
     }
     if (n == "LookAt") t = lookAt(d);
-    if (n == "Transform") {
-        state_.ctm = fromColumns(d);
-        return;
-    }
-    if (n == "ConcatTransform") t = fromColumns(d);
+    if (n == "Transform") return setCtm(fromColumns(d));
+    if (n == "ConcatTransform") return setCtm(product(ctm(), fromColumns(d)));
     if (n == "CoordinateSystem") {
-        coordinateSystems_[d.strings.at(0)] = state_.ctm;
+        coordinateSystems_[d.strings.at(0)] = ctm();
         return;
     }
     if (n == "CoordSysTransform") {
@@ -68,10 +80,23 @@ void SceneBuilder::transformDirective(const Directive& d) {
             warn(d.where, "CoordSysTransform \"" + d.strings.at(0) + "\": no such coordinate system; ignored");
             return;
         }
-        state_.ctm = it->second;
-        return;
+        return setCtm(it->second);
     }
-    state_.ctm = state_.ctm * t;
+    if (projective(state_.ctmLastRow))
+        setCtm(product(ctm(), {t, kAffineLastRow}));
+    else
+        state_.ctm = state_.ctm * t;
+}
+
+const Transform& SceneBuilder::pointCtm(const Directive& d) const {
+    const CtmLastRow& r = state_.ctmLastRow;
+    if (projective(r)) {
+        std::ostringstream row;
+        row << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3];
+        fail(d.where, describe(d) + ": the transform is projective (its last row is " + row.str() +
+                          "), which photon applies to directions only (infinite and distant lights)");
+    }
+    return state_.ctm;
 }
 
 }  // namespace photon::pbrt
