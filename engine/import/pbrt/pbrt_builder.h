@@ -75,6 +75,10 @@ private:
     std::optional<Json> materialJson(const std::string& type, const Params& p);
     std::string currentMaterial();
     Json hairJson(const Params& p);
+    // pbrt_subsurface.cpp: a dielectric boundary whose shapes hold a scattering medium
+    // (the material's kSubsurfaceMedium member names it until finish() moves it onto them).
+    Json subsurfaceJson(const Params& p);
+    void placeSubsurfaceMedia();
     // Warns where a layered material's "thickness" darkens it in pbrt-v4 by more than 5%.
     void warnOfLayerThickness(const Params& p, const std::string& type);
     // A colour or float parameter: a constant, or a named texture's photon texture object.
@@ -151,7 +155,7 @@ private:
     Json mediaJson_ = Json::object();
     std::optional<std::string> currentObject_;  // inside ObjectBegin
     std::map<std::string, std::string> plyMeshes_;  // (file, reversed) key -> mesh name
-    int meshCount_ = 0, materialCount_ = 0, curveCount_ = 0;
+    int meshCount_ = 0, materialCount_ = 0, curveCount_ = 0, subsurfaceCount_ = 0;
     struct PendingCurves {
         CurveSet curves;
         Json shape;

@@ -153,6 +153,7 @@ void SceneBuilder::finish() {
     writeCameraAndRender();
     flushCurves(std::nullopt);
     checkMaterialsNamedAhead();
+    placeSubsurfaceMedia();
     Json& doc = out_.document;
     // An object with nothing photon renders (only interfaces) is never instanced.
     for (auto it = objects_.begin(); it != objects_.end();)

@@ -273,6 +273,8 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
               reflectance(scaled(colorValue(p, "transmittance", int(SpectrumKind::Reflectance))), where, out_.warnings)}};
     } else if (type == "hair") {
         m = hairJson(p);
+    } else if (type == "subsurface") {
+        m = subsurfaceJson(p);
     } else if (type == "mix") {
         const std::vector<std::string> names = p.strings("materials");
         if (names.size() != 2) fail(where, "mix: \"materials\" must name two materials");
@@ -285,7 +287,8 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
     } else {
         unsupported(p.directive(), "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                                   "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface)",
+                                   "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, "
+                                   "subsurface)",
                     "rendered as a grey diffuse material");
         return Json{{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
     }

@@ -1,9 +1,10 @@
 // MakeNamedMedium and MediumInterface. photon renders homogeneous media that absorb and
 // scatter (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its
-// Henyey-Greenstein phase function. A medium that emits or varies in space is refused, or
+// Henyey-Greenstein phase function, its coefficients given or a measured "preset". A medium that emits or varies in space is refused, or
 // under a lenient import keeps only what photon can render.
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
+#include "import/pbrt/scattering_presets.h"
 
 namespace photon::pbrt {
 
@@ -21,11 +22,17 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
         const Param* param = p.find(key);
         return (param ? spectrumColor(*param, SpectrumKind::Reflectance, baseDir_) : Color(1.0f)) * float(p.number("scale", 1));
     };
-    if (p.has("preset")) {
-        media_[name] = false;
-        return unsupported(d, what + ": measured scattering presets (\"preset\") are not supported");
+    Color absorption, scattering;
+    if (auto preset = p.string("preset")) {
+        // A measured material (scattering_presets.h), in mm^-1, times "scale", as pbrt-v4's.
+        const auto measured = scatteringPreset(*preset);
+        if (!measured)
+            fail(d.where, what + ": no measured preset named \"" + *preset + "\" (photon has " + scatteringPresetNames() + ")");
+        absorption = measured->absorption * float(p.number("scale", 1));
+        scattering = measured->scattering * float(p.number("scale", 1));
+    } else {
+        absorption = coefficient("sigma_a"), scattering = coefficient("sigma_s");
     }
-    const Color absorption = coefficient("sigma_a"), scattering = coefficient("sigma_s");
     const Param* emission = p.find("Le");
     if (emission && !isBlack(spectrumColor(*emission, SpectrumKind::Illuminant, baseDir_)) && p.number("Lescale", 1) != 0)
         unsupported(d, what + " emits light (Le): photon's media do not emit", "its emission left out");
