@@ -165,9 +165,10 @@ TEST(ScatteringMedium, AWhiteFurnaceOfFogStaysWhite) {
 // a scattering medium): a ball of Spectralon (Jensen et al.'s measurement, which absorbs
 // nothing) behind glass of index 1.5, in a white sky of radiance 1, seen from outside. Light
 // is neither lost nor made, through refraction, total internal reflection and tens of
-// scatterings, so the ball is as white as the sky: for the path tracer and for SPPM's camera
-// paths, which go through the medium as the path tracer's do. (SPPM gathering photons in
-// the medium, render.volume_photons, sees it 3-6% dark here: docs/sppm.md, "Known limits".)
+// scatterings, so the ball is as white as the sky: for the path tracer, for SPPM's camera
+// paths through the medium, and for SPPM gathering photons where they scatter in it
+// (volume photons, which "auto" chooses here), whose balls reach past the glass near it
+// (storeVolumePoint counts only their part inside; without that, 3-6% dark).
 TEST(ScatteringMedium, AnImportedSubsurfaceBallOfSpectralonInAWhiteSkyIsWhite) {
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / ("photon-subsurface-" + std::to_string(::getpid()));
@@ -183,17 +184,26 @@ Shape "sphere" "float radius" 1
 )";
     const ImportedScene imported = importPbrt(folder / "ball.pbrt");
     std::filesystem::remove_all(folder);
-    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+    struct Variant {
+        const char* name;
+        IntegratorKind integrator;
+        VolumePhotons volume;
+        int passes;
+        float tolerance;
+    };
+    for (const Variant& v : {Variant{"path", IntegratorKind::Path, VolumePhotons::Auto, 1024, 0.01f},
+                             Variant{"sppm, camera paths", IntegratorKind::Sppm, VolumePhotons::Never, 512, 0.01f},
+                             Variant{"sppm, volume photons", IntegratorKind::Sppm, VolumePhotons::Auto, 2048, 0.02f}}) {
         SceneDescription d = loadImportedScene(imported, folder);
-        d.render.integrator = kind;
+        d.render.integrator = v.integrator;
         d.render.maxDepth = 400;
-        d.render.passes = 512;
+        d.render.passes = v.passes;
         d.render.photonsPerPass = 2000;
-        d.render.volumePhotons = VolumePhotons::Never;
+        d.render.volumePhotons = v.volume;
         // The ball fills the middle 8 x 8 pixels (radius 1 at distance 4 in a 20 degree view).
         const Color seen = test::meanOver(test::renderImage(std::move(d)), 4, 4, 12, 12);
-        std::printf("  %s: %.4f %.4f %.4f\n", kind == IntegratorKind::Path ? "path" : "sppm", seen.x, seen.y, seen.z);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, 0.01f) << "integrator " << int(kind) << ", channel " << c;
+        std::printf("  %s: %.4f %.4f %.4f\n", v.name, seen.x, seen.y, seen.z);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, v.tolerance) << v.name << ", channel " << c;
     }
 }
 

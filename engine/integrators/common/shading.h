@@ -61,6 +61,13 @@ enum class RayEnd { Left, Surface, Scattered };
 struct PathInMedia {
     PathSampler& sampler;
     ChromaticFlight flight;
+    // The normal of the medium's boundary the ray's segment starts on (zero: none, e.g. the
+    // camera or a scattering point), which the caller sets; castPastBoundaries sets it where
+    // the ray crosses into another medium, and where the ray scatters gives the distance from
+    // there to that boundary's plane (infinity with none): SPPM's volume points count the
+    // part of their ball that lies in the medium (storeVolumePoint).
+    Vec3 boundaryNormal{0.0f};
+    float boundaryDistance = std::numeric_limits<float>::infinity();
 };
 
 // Casts the ray from inside `medium` to the first surface that is more than a boundary
@@ -87,6 +94,9 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;
                 hit.t = travelled + t;
+                const Vec3 n = media->boundaryNormal;
+                media->boundaryDistance = n.x != 0 || n.y != 0 || n.z != 0 ? t * std::abs(dot(ray.d, n))
+                                                                          : std::numeric_limits<float>::infinity();
                 return RayEnd::Scattered;
             }
         } else {
@@ -95,7 +105,9 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         if (!found) return RayEnd::Left;
         travelled += hit.t;
         if (!scene.passesThrough(hit) || crossing == kMaxCrossings) break;
+        const int32_t before = medium;
         medium = scene.mediumToward(hit, ray.d, medium);
+        if (media) media->boundaryNormal = medium != before && !scene.scatters(before) ? hit.ng : Vec3(0.0f);
         ray = spawnRay(hit.p, hit.ng, ray.d);
     }
     hit.t = travelled;

@@ -172,7 +172,12 @@ private:
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     // A visible point where the first camera path scatters in `medium` at p, beta its
     // throughput with the flight's weight (render.volume_photons).
-    void storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength);
+    // `boundaryDistance`: to the plane of the medium's boundary the path crossed last
+    // (PathInMedia), infinity with none.
+    void storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength,
+                          float boundaryDistance);
+    // The medium a camera path goes on in from `hit` toward d, and the boundary it starts on.
+    static void leaveSurface(const Scene& scene, const SurfaceHit& hit, Vec3 d, int32_t& medium, PathInMedia& inMedia);
     // The pixel's squared gather radius for this pass, from its statistics or (first pass,
     // guide training, global schedule) its footprint at `pathLength`; a ball's in a medium
     // of mean `extinction` > 0.

@@ -125,13 +125,14 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             if (gathersInMedia()) {
                 if (directBySampling)
                     direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, false), ++rays;
-                if (first) storeVolumePoint(index, hit.p, wo, beta, medium, pathLength);
+                if (first) storeVolumePoint(index, hit.p, wo, beta, medium, pathLength, inMedia.boundaryDistance);
                 break;
             }
             // Else its light sample, and the phase function's direction, whose ray at the
             // last vertex is traced only for the light it shares with the light sample.
             direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
             ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
+            inMedia.boundaryNormal = Vec3(0.0f);
             if (depth == settings_.maxDepth - 1) {
                 traceCameraRay(scene, ray, beta, medium, bounce, hit, direct), ++rays;
                 break;
@@ -188,7 +189,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
                 beta *= s->weight / (1.0f - pd);
                 bounce = bounceFrom(sp, *s, 1.0f - pd);
                 ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
-                medium = scene.mediumToward(hit, ray.d, medium);
+                leaveSurface(scene, hit, ray.d, medium, inMedia);
                 continue;
             }
             // A fibre's scattering needs its tangent, which a visible point does not keep: a
@@ -222,9 +223,19 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         if (depth >= 3 && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D())) break;
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
-        medium = scene.mediumToward(hit, ray.d, medium);
+        leaveSurface(scene, hit, ray.d, medium, inMedia);
     }
     return rays;
+}
+
+void SppmIntegrator::leaveSurface(const Scene& scene, const SurfaceHit& hit, Vec3 d, int32_t& medium, PathInMedia& inMedia) {
+    medium = scene.mediumToward(hit, d, medium);
+    if (!scene.hasScatteringMedia()) return;
+    // The surface bounds the medium the path goes on in where the other side holds none
+    // that scatters (a refracting ball's glass, seen from in or out); a surface inside the
+    // medium (a mirror in fog) has it on both sides, and its photons too.
+    const int32_t otherSide = scene.mediumToward(hit, -d, medium);
+    inMedia.boundaryNormal = otherSide != medium && !scene.scatters(otherSide) ? hit.ng : Vec3(0.0f);
 }
 
 // F at a smooth dielectric boundary seen along woLocal; 0 for any other material.
@@ -265,7 +276,8 @@ float SppmIntegrator::passRadiusSquared(size_t index, float pathLength, float ex
     return r2;
 }
 
-void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength) {
+void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength,
+                                      float boundaryDistance) {
     const Color sigmaT = scene_->medium(medium).extinction();
     const float r2 = passRadiusSquared(index, pathLength, (sigmaT.x + sigmaT.y + sigmaT.z) / 3);
     const size_t local = index - bandOffset_;
@@ -281,6 +293,17 @@ void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta,
     Color weight;
     for (int c = 0; c < 3; ++c) weight[c] = sigmaS[c] > 0 ? beta[c] / sigmaS[c] : 0.0f;
     weight *= 0.75f / std::sqrt(r2);
+    // Photons scatter only inside the medium: a ball that reaches past its boundary holds
+    // them over the part inside, which is what the estimate divides by. The boundary is
+    // taken as the plane of the surface the path entered by (or last turned at, inside):
+    // beyond it a cap of height a = r - h of the ball's volume pi a^2 (3r - a) / 3 is
+    // missing, h the point's distance to the plane. Without it a ball of fog behind glass
+    // in a white sky came out 3-6% dark at 1,024 passes (docs/sppm.md, "Volume photons").
+    const float r = std::sqrt(r2);
+    if (boundaryDistance < r) {
+        const float a = r - boundaryDistance;
+        weight /= 1.0f - a * a * (3.0f * r - a) / (4.0f * r * r * r);
+    }
     VisiblePoint& vp = visible_[local];
     vp = VisiblePoint{};
     vp.n = OctahedralVector(wo);
