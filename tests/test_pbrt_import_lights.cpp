@@ -177,5 +177,37 @@ TEST(PbrtImport, AProjectiveTransformTurnsDirectionsButRefusesPoints) {
               Json({{"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 2, 0, 0, 0, 1}}}));
 }
 
+
+// pbrt-v4's film sensor multiplies the image by exposure time x ISO / 100 (PixelSensor's
+// imaging ratio; the exposure time is the camera's shutterclose - shutteropen): the import
+// scales every light by it, which scales the image the same.
+TEST(PbrtImport, TheFilmsIsoAndTheShutterScaleTheImageThroughTheLights) {
+    const std::string scene = R"(
+LookAt 0 1 5  0 1 0  0 1 0
+Camera "perspective" "float fov" [30] "float shutteropen" 0.25 "float shutterclose" 0.75
+Film "rgb" "integer xresolution" [64] "integer yresolution" [32] "float iso" 400
+WorldBegin
+LightSource "point" "rgb I" [1 2 3] "float scale" 3
+LightSource "infinite" "rgb L" [0.5 0.5 0.5]
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [4 4 4] "float power" 10
+  Shape "sphere" "float radius" 0.1
+AttributeEnd
+Shape "trianglemesh" "point3 P" [-5 0 -5  5 0 -5  5 0 5  -5 0 5] "integer indices" [0 2 1 0 3 2]
+)";
+    const ImportedScene s = importPbrt(writeScene("iso.pbrt", scene));
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();  // iso and the shutter are read
+    const Json& lights = s.document["lights"];
+    // Ratio 0.5 x 400 / 100 = 2.
+    EXPECT_EQ(lights[0]["intensity"], Json({6, 12, 18}));
+    EXPECT_EQ(lights[1]["radiance"], Json({1, 1, 1}));
+    const Json& lamp = s.document["shapes"][0];
+    EXPECT_EQ(lamp["emission_scale"], 2);
+    EXPECT_NEAR(lamp["emission_power"].get<double>(), 20 * 4, 1e-4);  // P x scale x Y(L)
+    std::string closedFirst = scene;
+    closedFirst.replace(closedFirst.find("0.25"), 4, "0.85");
+    EXPECT_STREQ(importError(closedFirst).what(), "bad.pbrt:3: Camera: \"shutterclose\" must come after \"shutteropen\"");
+}
+
 }  // namespace
 }  // namespace photon

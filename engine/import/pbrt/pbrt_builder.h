@@ -180,6 +180,12 @@ private:
         Json filter;
     } camera_;
     int width_ = 1280, height_ = 720;
+    // pbrt-v4's film sensor scales the image by its imaging ratio, exposure time x ISO / 100
+    // (PixelSensor; the exposure time is the camera's shutterclose - shutteropen): ISO 400
+    // makes the image four times as bright. The image being linear in the lights, photon
+    // scales every light by it instead (1 with pbrt-v4's defaults, ISO 100 and a shutter of 1).
+    double iso_ = 100, exposureTime_ = 1;
+    double imagingRatio() const { return exposureTime_ * iso_ / 100; }
     bool worldBegun_ = false;
 };
 

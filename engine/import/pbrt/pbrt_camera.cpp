@@ -18,6 +18,9 @@ void SceneBuilder::camera(const Directive& d) {
     if (std::abs(pointCtm(d).determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
     camera_.seen = true;
     camera_.where = d.where;
+    // pbrt-v4's exposure time, which its film's sensor multiplies the image by.
+    exposureTime_ = p.number("shutterclose", 1) - p.number("shutteropen", 0);
+    if (!(exposureTime_ > 0)) fail(d.where, "Camera: \"shutterclose\" must come after \"shutteropen\"");
     // The CTM is camera-from-world here; pbrt names its inverse "camera".
     camera_.cameraToWorld = state_.ctm.inverse();
     camera_.medium = state_.outsideMedium;
@@ -103,6 +106,8 @@ void SceneBuilder::film(const Directive& d) {
     Params p(d);
     width_ = static_cast<int>(p.number("xresolution", 1280));
     height_ = static_cast<int>(p.number("yresolution", 720));
+    iso_ = p.number("iso", 100);
+    if (!(iso_ > 0)) fail(d.where, "Film: \"iso\" must be > 0");
     p.find("filename");  // photon's outputs are named by its caller
 }
 

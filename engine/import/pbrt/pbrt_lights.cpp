@@ -48,7 +48,7 @@ Json orientationMatrix(const Transform& t) {
 void SceneBuilder::lightSource(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
-    const double scale = p.number("scale", 1);
+    const double scale = p.number("scale", 1) * imagingRatio();
     auto spectrum = [&](std::string_view name) {
         const Param* param = p.find(name);
         return param ? spectrumColor(*param, SpectrumKind::Illuminant, baseDir_) : Color(1.0f);
@@ -143,7 +143,7 @@ void SceneBuilder::areaLightSource(const Directive& d) {
     // photon's emission_power P' sets the emission to P' / (Y(mean emission) pi A sides),
     // the scale included; pbrt-v4's to scale P / (k_e pi A sides), k_e the image's mean
     // luminance or 1 for a spectrum: P' = P scale (times Y(L) for an "rgb" L).
-    const double scale = p.number("scale", 1);
+    const double scale = p.number("scale", 1) * imagingRatio();
     double powerPerLuminance = scale;
     if (auto file = p.string("filename")) {
         if (auto why = checkRelativePath(*file)) fail(d.where, "AreaLightSource: \"" + *file + "\": " + *why);
