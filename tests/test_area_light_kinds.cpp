@@ -173,6 +173,46 @@ TEST(AreaLightKinds, SppmAgreesWithThePathTracer) {
     std::printf("  path %.5f %.5f %.5f  sppm %.5f %.5f %.5f\n", m.path.x, m.path.y, m.path.z, m.sppm.x, m.sppm.y, m.sppm.z);
 }
 
+// An invisible emitter (pbrt-v4's area light of alpha 0) lights as the visible one does, by
+// light samples alone, and no ray meets it: over a floor, seen from above through the light,
+// the floor around it is as bright as under the visible light (the path tracer and SPPM),
+// and the floor under it shows where the visible light hides it.
+TEST(AreaLightKinds, AnInvisibleEmitterLightsAsTheVisibleOneAndIsNotSeen) {
+    auto render = [](bool invisible, IntegratorKind integrator) {
+        SceneDescription d;
+        d.camera = test::camera({0, 3, 0}, {0, 0, 0}, {0, 0, -1}, 60, 16, 16);
+        // The light black, as an invisible one is: the visible one's reflection of the floor
+        // would add 2% to it.
+        d.materials = {makeDiffuse(Color(0.5f)), makeDiffuse(Color(0.0f))};
+        d.shapes.push_back(test::quad({-2, 0, -2}, {0, 0, 4}, {4, 0, 0}, 0));  // the floor, facing up
+        ShapeDescription light = panel(Color(4.0f));
+        light.material = 1;
+        light.invisible = invisible;
+        d.shapes.push_back(light);
+        d.render.integrator = integrator;
+        d.render.passes = integrator == IntegratorKind::Path ? 256 : 64;
+        d.render.photonsPerPass = 20000;
+        return test::renderImage(std::move(d));
+    };
+    const Image visible = render(false, IntegratorKind::Path);
+    // The ring of pixels around the light's square (the centre 8 x 8) sees the floor alone.
+    auto ring = [](const Image& image) {
+        return (test::meanOver(image, 0, 0, 16, 4) + test::meanOver(image, 0, 12, 16, 16) +
+                test::meanOver(image, 0, 4, 4, 12) + test::meanOver(image, 12, 4, 16, 12)) * 0.25f;
+    };
+    const Color around = ring(visible);
+    for (IntegratorKind integrator : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        const Image invisible = render(true, integrator);
+        const Color aroundInvisible = ring(invisible);
+        std::printf("  floor around the light: visible %.4f, invisible (%s) %.4f\n", around.x,
+                    integrator == IntegratorKind::Path ? "path" : "sppm", aroundInvisible.x);
+        EXPECT_NEAR(aroundInvisible.x, around.x, 0.02f * around.x);
+        // Under the light: its unlit back where it is seen, the floor it lights where it is not.
+        EXPECT_LT(test::meanOver(visible, 6, 6, 10, 10).x, 0.01f * around.x);
+        EXPECT_GT(test::meanOver(invisible, 6, 6, 10, 10).x, 2.0f * around.x);
+    }
+}
+
 TEST(AreaLightKinds, SceneJsonEmissionFields) {
     using namespace test;
     Json doc = fullScene();
@@ -194,6 +234,16 @@ TEST(AreaLightKinds, SceneJsonEmissionFields) {
                 "needs an emission that is not black on a shape with area");
     expectError([](Json& d) { d["shapes"][5]["emission"] = Json::parse("[-1, 0, 0]"); }, "shapes[5].emission[0]",
                 "must be >= 0");
+    doc["shapes"][5]["invisible"] = true;
+    EXPECT_TRUE(load(doc).shapes[5].invisible);
+    expectError([](Json& d) { d["shapes"][0]["invisible"] = true; }, "shapes[0].invisible",
+                "only a shape that emits can be invisible");
+    expectError(
+        [](Json& d) {
+            d["shapes"][5]["invisible"] = true;
+            d["shapes"][5]["alpha"] = 0.5;
+        },
+        "shapes[5].alpha", "an emissive shape cannot have an alpha below 1");
 }
 
 }  // namespace

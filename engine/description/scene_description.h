@@ -103,6 +103,9 @@ struct ShapeDescription {
     Color emission{0.0f};     // W/(m^2 sr), emitted on the side the normal faces (times the texture)
     std::shared_ptr<const Texture> emissionTexture;  // if set, multiplies emission at the point's uv
     bool twoSidedEmission = false;  // emit on both sides alike
+    // An emitter no ray meets (pbrt-v4's area light of alpha 0): it lights the scene through
+    // light samples and its photons, and neither shows nor casts a shadow.
+    bool invisible = false;
     bool flipNormals = false; // turn the surface inside out (e.g. a sphere lit from inside)
     // Coverage: where it is below 1 the surface lets that share of every ray through
     // (leaves, fences); 1 everywhere is an ordinary surface.

@@ -20,5 +20,8 @@ std::unique_ptr<Light> makePortalEnvironmentLight(const LightDescription& d, Sce
 // light. `kind`: how a mesh's light samples pick among its triangles (render.light_sampler).
 std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape, LightSamplerKind kind);
 std::unique_ptr<Light> makeSphereAreaLight(const ShapeDescription& shape);
+// The area light of an emitter no ray meets (ShapeDescription::invisible): `light` with its
+// samples weighted in full (invisible_area_light.cpp).
+std::unique_ptr<Light> makeInvisibleAreaLight(std::unique_ptr<Light> light);
 
 }  // namespace photon

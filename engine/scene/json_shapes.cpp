@@ -107,6 +107,10 @@ void readEmission(JsonObject& obj, LoadContext& ctx, ShapeDescription& shape) {
     }
     shape.emission *= obj.number("emission_scale", 1.0f, Range::nonNegative());
     shape.twoSidedEmission = obj.boolean("two_sided", false);
+    if (auto invisible = obj.optional("invisible")) {
+        shape.invisible = invisible->boolean();
+        if (shape.invisible && isBlack(shape.emission)) invisible->fail("only a shape that emits can be invisible");
+    }
 }
 
 // "emission_power": P scales the emission so the light sends out P watts of luminance,
@@ -136,13 +140,16 @@ ShapeDescription readShape(const JsonValue& value, LoadContext& ctx) {
                                   : ShapeDescription::Kind::Mesh;
     // A fibre has no surface to emit from, cut out or close a medium with.
     if (type == Curves)
-        for (const char* field : {"emission", "emission_power", "alpha", "medium", "flip_normals"})
+        for (const char* field : {"emission", "emission_power", "invisible", "alpha", "medium", "flip_normals"})
             if (auto v = obj.optional(field)) v->fail("curves cannot have \"" + std::string(field) + "\"");
     // The cheap fields first: a misspelt name should not wait for a mesh file to load.
     shape.material = readMaterialRef(obj.required("material"), ctx);
     readEmission(obj, ctx, shape);
     shape.flipNormals = obj.boolean("flip_normals", false);
-    if (auto medium = obj.optional("medium")) readShapeMedia(*medium, ctx, shape);
+    if (auto medium = obj.optional("medium")) {
+        readShapeMedia(*medium, ctx, shape);
+        if (shape.invisible && shape.boundsMedium()) medium->fail("an invisible emitter cannot bound a medium (no ray crosses it)");
+    }
     if (auto alpha = obj.optional("alpha")) {
         shape.alpha = readFloatParam(*alpha, ctx, Range::closed(0, 1), ImageChannels::Alpha);
         // A light's power and its samples assume all of its surface emits.

@@ -98,6 +98,8 @@ void Scene::addShape(const ShapeDescription& s, RTCScene target, uint32_t id) {
     }
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(target, g, id);
+    // Kept in the scene under its id, so that every other shape's stays; no ray meets it.
+    if (s.invisible) rtcDisableGeometry(g);
     rtcReleaseGeometry(g);
 }
 
@@ -115,8 +117,10 @@ void Scene::buildLights() {
         // An emitter that bounds a medium sends its photons into its outside medium (the
         // side its normal faces); one that bounds none, into the medium of no shape.
         lightMedium_.push_back(s.outsideMedium);
-        ownedLights_.push_back(s.kind == ShapeDescription::Kind::Sphere ? makeSphereAreaLight(s)
-                                                                        : makeMeshAreaLight(s, description_.render.lightSampler));
+        std::unique_ptr<Light> light = s.kind == ShapeDescription::Kind::Sphere
+                                           ? makeSphereAreaLight(s)
+                                           : makeMeshAreaLight(s, description_.render.lightSampler);
+        ownedLights_.push_back(s.invisible ? makeInvisibleAreaLight(std::move(light)) : std::move(light));
     }
     for (const LightDescription& d : description_.lights) {
         lightMedium_.push_back(d.medium);

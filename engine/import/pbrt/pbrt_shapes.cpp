@@ -96,9 +96,12 @@ std::vector<uint32_t> meshIndices(const Params& p, const Directive& d, size_t ve
 
 Json SceneBuilder::commonShapeFields(const Params& p) {
     Json s = Json::object();
-    // An area light's alpha is refused or left out in shape().
+    // An area light's alpha makes it invisible at 0 and is refused (lenient: left out)
+    // elsewhere below 1 (shape()).
     if (auto alpha = floatValue(p, "alpha"); alpha && !state_.areaLight) {
         if (!(alpha->is_number() && alpha->get<double>() >= 1)) s["alpha"] = *alpha;
+    } else if (alpha && alpha->is_number() && alpha->get<double>() <= 0) {
+        s["invisible"] = true;
     }
     if (!isIdentity(state_.ctm)) s["transform"] = matrixJson(state_.ctm);
     if (state_.areaLight) s.update(*state_.areaLight);
@@ -186,15 +189,11 @@ void SceneBuilder::shape(const Directive& d) {
     }
     if (state_.areaLight)
         if (std::optional<Json> alpha = floatValue(p, "alpha")) {
-            // pbrt-v4's DiffuseAreaLight emits nothing where its shape's alpha masks it out,
-            // and rays pass the shape there: at alpha 0, nowhere to see and no light.
-            if (alpha->is_number() && alpha->get<double>() <= 0) {
-                for (const Param& param : d.params) param.used = true;
-                warn(d.where, describe(d) + " is an area light of alpha 0, which pbrt-v4 neither shows nor lights "
-                                            "with; left out");
-                return;
-            }
-            if (!(alpha->is_number() && alpha->get<double>() >= 1))
+            // pbrt-v4 makes an area light of constant alpha 0 an invisible one (its scene.cpp
+            // and DiffuseAreaLight): no ray meets it, and it lights in full through light
+            // samples (commonShapeFields). Elsewhere it emits only where alpha lets it.
+            const bool invisible = alpha->is_number() && alpha->get<double>() <= 0;
+            if (!invisible && !(alpha->is_number() && alpha->get<double>() >= 1))
                 unsupported(d, describe(d) + ": an area light cut away in part (alpha below 1) is not supported",
                             "rendered whole, without its alpha");
         }

@@ -295,10 +295,14 @@ PatchMesh::PatchMesh(const Scene& scene, const RadiositySettings& settings) {
                                      "\" has a texture on a parameter other than its colour; render it with sppm or path");
         diffuseFactors_.push_back(diffuseFactor(m));
     }
-    // Patches cover whole surfaces: a cut-away part would still reflect light.
-    for (const ShapeDescription& shape : d.shapes)
+    // Patches cover whole surfaces: a cut-away part would still reflect light, an invisible
+    // emitter would be seen.
+    for (const ShapeDescription& shape : d.shapes) {
         if (hasCutout(shape))
             throw std::runtime_error("radiosity: " + shape.name + " has an alpha cutout; render it with sppm or path");
+        if (shape.invisible)
+            throw std::runtime_error("radiosity: " + shape.name + " is an invisible emitter; render it with sppm or path");
+    }
     // Patches are cut from the world's own meshes; an instanced object's would be repeated
     // per instance, which is what instancing is there to avoid.
     if (!d.instances.empty())
