@@ -142,8 +142,12 @@ TEST(ErrorEstimate, TheRenderStopsAtTheTargetError) {
         EXPECT_LT(std::abs(std::log(predicted / stopped)), std::abs(std::log(model / stopped))) << p.pass;
         if (fraction >= 0.5) EXPECT_NEAR(std::log(predicted / stopped), 0.0, std::log(1.3)) << predicted << " vs " << stopped;
     }
+    // The ETA in seconds: the passes to go (1.4 times those done, above) at the recent
+    // passes' time, which under a sanitizer with another test in the other lane ran 1.8
+    // times the mean (2.58 s against 1.24 elapsed): a bound, not a timing.
     const RenderProgress& half = seen[seen.size() / 2];
-    EXPECT_LE(half.etaSeconds, half.elapsedSeconds * 2);
+    EXPECT_GT(half.etaSeconds, 0.0);
+    EXPECT_LE(half.etaSeconds, half.elapsedSeconds * 4);
 }
 
 // The rate is the slope of log(error) on log(passes) over the latest half of the passes.
