@@ -61,37 +61,29 @@ step() {  # step NAME COMMAND...: runs the command and records its wall time
     timings+=("$(printf '%-34s %5d s' "$name" $((SECONDS - start)))")
 }
 
-# The engine's tests that handle buffers of a size read or computed at run time (parsers,
-# loaders, images and textures, grids, photon maps, checkpoints, meshes and curves, the
-# integrators' per-pixel and per-pass state). Left out, as they run in the test command:
-# those of BSDFs, lights, cameras and sampling alone, scalar arithmetic on fixed-size values
-# (test_bsdf, test_furnace, test_sampling, test_octahedral, test_conductor,
-# test_rough_dielectric, test_coated_diffuse, test_diffuse_transmission, test_mix_material,
-# test_spot_light_profile, test_thin_lens, test_area_light_emission, test_area_light_kinds,
-# test_point_light_plane, test_sppm_radius): under ASan they took 270 s of the lanes' time
-# and 300 CPU-seconds of the tree's build, for code the programs below also run.
-engine_tests=(test_checkpoint test_denoise test_hash_grid test_image_io test_lights test_photon_walk test_photonmap
-              test_projection_map test_radiosity test_radix_sort test_renderer test_scene_hits test_scene_loader
-              test_scene_loader_errors test_sppm_determinism test_textured_albedo test_textures test_alpha_cutout
-              test_instancing test_pbrt_import test_pbrt_parser test_pbrt_import_shapes test_loop_subdivision
-              test_curves test_ply_mesh test_normal_map test_piecewise_constant test_environment_map
-              test_texture_channels test_gltf_import test_independent_passes test_error_estimate test_lightweight
-              test_obj_mesh test_photon_guiding test_adaptive_photons test_sppm_bands test_scattering_media)
-unit_tests=(test_event_hub test_idempotency test_job_queue test_job_store test_job_table test_request_head test_progress_history)
-server_tests=(test_image_cache test_server_jobs test_server_errors test_server_restart test_server_openapi
-              test_fuzz_regressions test_server_idempotency test_server_limits test_server_assets
-              test_server_faults test_server_images test_server_workers test_server_origin test_server_ranges
-              test_server_framing test_server_connections test_server_listing
-              test_server_image_options test_server_imports test_farm test_farm_server)
+# The test programs each tree builds, and whose sources it runs (tests/CMakeLists.txt says
+# which sources each program holds and why): under ASan and UBSan the engine's tests that
+# handle buffers of a size read or computed at run time and those of its own threads, the
+# service's units, the API and farm tests; under TSan those with threads of their own.
+san_programs=(photon_engine_tests photon_engine_tests_threads photon_service_unit_tests photon_api_tests
+              photon_api_tests_requests photon_farm_tests)
+tsan_programs=(photon_engine_tests_threads photon_service_unit_tests photon_api_tests photon_farm_tests)
+# sources_of BUILD PROGRAM...: the test sources (ctest's test names) those programs hold, from
+# the list the build writes (<build>/test-programs.txt: "SOURCE PROGRAM PATH").
+sources_of() {
+    local build="$1"
+    shift
+    awk -v programs=" $* " 'index(programs, " " $2 " ") { print $1 }' "$build/test-programs.txt"
+}
 
-# Under the sanitizers the slowest programs (cold CI, in seconds: ASan farm_server 58,
+# Under the sanitizers the slowest test sources (cold CI, in seconds: ASan farm_server 58,
 # server_restart 56, photon_guiding 47, server_jobs 41; TSan server_jobs 73, farm_server 87,
 # server_image_options 55, server_errors 49, server_limits 45) start first, so that neither
 # lane is left with one of them at the end.
 slowest_first=(test_farm_server test_server_jobs test_server_restart test_server_image_options test_photon_guiding
                test_server_errors test_server_limits test_sppm_bands test_checkpoint test_server_connections
                test_lights)
-# in_slowest_first_order PROGRAM...: the programs, those of slowest_first first.
+# in_slowest_first_order SOURCE...: the sources, those of slowest_first first.
 in_slowest_first_order() {
     local t s
     for s in "${slowest_first[@]}"; do
@@ -102,13 +94,13 @@ in_slowest_first_order() {
     done
 }
 
-# run_tests BUILD PROGRAM...: runs each test program (engine tests from tests/, the service's
-# from tests/server and tests/server/unit) under the caller's `launcher`, with the sanitizer
-# options the caller set. Fails on a failing test or on any sanitizer report. The programs
-# run in two lanes at once, each lane taking the next program from a queue (slowest first)
+# run_tests BUILD SOURCE...: runs each test source's cases (its program with --photon_source)
+# under the caller's `launcher`, with the sanitizer options the caller set. Fails on a
+# failing test or on any sanitizer report. The sources run in two lanes at once, each lane
+# taking the next from a queue (slowest first)
 # when it is done with one (on 2 cores the sanitized programs wait on I/O and on their
 # servers much of the time, and the stage took over 15 minutes one after another; every
-# other program in each lane left one lane 100 s behind the other); a launcher word LANE
+# other source in each lane left one lane 100 s behind the other); a launcher word LANE
 # becomes the lane's number (taskset -c LANE pins each lane to a CPU of its own).
 run_tests() {
     local build="$1" status=0 t
@@ -139,24 +131,21 @@ run_tests() {
     fi
     return $status
 }
-# next_program BUILD: the queue's next program not yet taken by a lane (nothing at its end).
-next_program() {
+# next_source BUILD: the queue's next source not yet taken by a lane (nothing at its end).
+next_source() {
     flock "$1/test-queue.taken" bash -c 'n=$(cat "$1"); echo $((n + 1)) > "$1"; sed -n "$((n + 1))p" "$2"' \
         _ "$1/test-queue.taken" "$1/test-queue"
 }
-# run_lane LANE BUILD: one lane of run_tests, taking programs from the queue until it is empty.
+# run_lane LANE BUILD: one lane of run_tests, taking sources from the queue until it is empty.
 run_lane() {
     local lane="$1" build="$2" status=0 t path log start
     local command=("${launcher[@]/#LANE/$lane}")
-    while t=$(next_program "$build") && [ -n "$t" ]; do
-        path="$build/tests/$t"
-        [ -x "$path" ] || path="$build/tests/server/$t"
-        [ -x "$path" ] || path="$build/tests/server/unit/$t"
-        [ -x "$path" ] || path="$build/tests/server/farm/$t"
+    while t=$(next_source "$build") && [ -n "$t" ]; do
+        path=$(awk -v source="$t" '$1 == source { print $3 }' "$build/test-programs.txt")
         log="$build/$t.log"
         echo "-- $t (lane $lane)"
         start=$SECONDS
-        "${command[@]}" "$path" > "$log" 2>&1 || { cat "$log"; status=1; }
+        "${command[@]}" "$path" "--photon_source=$t.cpp" > "$log" 2>&1 || { cat "$log"; status=1; }
         tail -n 3 "$log"
         echo "   $t: $((SECONDS - start)) s"
     done
@@ -169,7 +158,7 @@ san="$root/build-sanitize"
 san_build() {
     CC=clang-14 CXX=clang++-14 configure "$san" -DPHOTON_FUZZ=ON
     nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt photon-server photon-render photon-worker \
-        "${engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
+        "${san_programs[@]}"
 }
 # fuzz_run TARGET CORPUS: new inputs go to build-sanitize/corpus (the seeds stay as they are).
 fuzz_run() {
@@ -224,7 +213,7 @@ san_tests() {
     ASAN_OPTIONS="detect_leaks=1:log_path=$san/sanitizer-logs/asan" \
         LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
         UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$san/sanitizer-logs/ubsan" \
-        run_tests "$san" "${engine_tests[@]}" "${unit_tests[@]}" "${server_tests[@]}"
+        run_tests "$san" $(sources_of "$san" "${san_programs[@]}")
 }
 step "asan+ubsan: build" san_build
 step "fuzz: fuzz_scene ${fuzz_seconds}s" fuzz_run fuzz_scene scene
@@ -262,26 +251,20 @@ step "asan+ubsan: tests" san_tests
 #  - JobsTest.EachMethodReportsItsOwnFigures: each method through the server (44 s here,
 #    radiosity's solve most of it); a job's progress and figures cross the same threads for
 #    every method, and the other JobsTest cases follow them while a job runs.
-#  - the API tests whose subject is what one request gets back (errors, imports, origins,
-#    assets, listings, ranges, framing, the fuzzers' regressions, the OpenAPI document):
-#    their requests cross the same HTTP threads, queue and event hub as the tests that run
-#    here, which follow jobs while they render (220 s of the lanes' time under TSan). They
-#    run under ASan above and in the test command.
+#  - photon_api_tests_requests, the API tests whose subject is what one request gets back
+#    (tests/server/CMakeLists.txt): their requests cross the same HTTP threads, queue and
+#    event hub as the tests that run here, which follow jobs while they render (220 s of the
+#    lanes' time under TSan). They run under ASan above and in the test command.
 tsan="$root/build-tsan"
-tsan_engine_tests=(test_renderer test_checkpoint)
-tsan_server_tests=(test_image_cache test_server_jobs test_server_restart test_server_idempotency test_server_limits
-                   test_server_faults test_server_images test_server_workers test_server_connections
-                   test_server_image_options test_farm test_farm_server)
 tsan_build() {
     configure "$tsan" -DPHOTON_TSAN=ON
-    nice cmake --build "$tsan" -j2 --target photon-server photon-render photon-worker "${tsan_engine_tests[@]}" "${unit_tests[@]}" \
-        "${tsan_server_tests[@]}"
+    nice cmake --build "$tsan" -j2 --target photon-server photon-render photon-worker "${tsan_programs[@]}"
 }
 tsan_tests() {
     local launcher=(taskset -c LANE)
     TSAN_OPTIONS="ignore_noninstrumented_modules=1:log_path=$tsan/sanitizer-logs/tsan:second_deadlock_stack=1" \
         GTEST_FILTER='-CrashTest.*:ConnectionsTest.ASlowloris*:FarmServerTest.ARestartedServer*:FarmServerTest.AWholeJob*:FarmRedisRestartTest.*:Renderer.CancelInsideAPassKeepsTheLastCompleteImage:JobsTest.EachMethodReportsItsOwnFigures' \
-        run_tests "$tsan" "${tsan_engine_tests[@]}" "${unit_tests[@]}" "${tsan_server_tests[@]}"
+        run_tests "$tsan" $(sources_of "$tsan" "${tsan_programs[@]}")
 }
 step "tsan: build" tsan_build
 step "tsan: tests" tsan_tests

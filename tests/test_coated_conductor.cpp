@@ -16,7 +16,7 @@
 #include "scene_loader_fixture.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::coated_conductor_tests {
 namespace {
 
 using namespace bsdf_checks;
@@ -262,4 +262,4 @@ TEST(CoatedConductorScene, Errors) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::coated_conductor_tests

@@ -23,7 +23,7 @@
 #include "scene_loader_fixture.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::conductor_tests {
 namespace {
 
 using namespace bsdf_checks;
@@ -475,4 +475,4 @@ TEST(ConductorSppmVsPath, RoughGoldBlocksAgreeInMean) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::conductor_tests

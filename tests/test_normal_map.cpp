@@ -10,7 +10,7 @@
 #include "test_support.h"
 #include "texture/image_texture.h"
 
-namespace photon {
+namespace photon::normal_map_tests {
 namespace {
 
 constexpr float kRho = 0.5f, kIrradiance = 2.0f, kTilt = 30.0f * kPi / 180.0f;
@@ -91,9 +91,9 @@ TEST(NormalMap, SceneJsonReadsTheMapAsStored) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::normal_map_tests
 
-namespace photon {
+namespace photon::normal_map_tests {
 namespace {
 
 // A height field rising by s per unit of u on a plane whose u runs along +x at 2 scene
@@ -126,4 +126,4 @@ TEST(BumpMap, SceneJson) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::normal_map_tests

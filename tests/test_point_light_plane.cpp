@@ -8,7 +8,7 @@
 #include "scene_builders.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::point_light_plane_tests {
 namespace {
 
 constexpr float kRho = 0.5f, kIntensity = 10.0f, kHeight = 1.0f;
@@ -119,4 +119,4 @@ TEST(PointLightPlane, ShadowRaysMatchAnalyticRadiance) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::point_light_plane_tests

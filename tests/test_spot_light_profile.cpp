@@ -10,7 +10,7 @@
 #include "scene_builders.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::spot_light_profile_tests {
 namespace {
 
 constexpr float kRho = 0.5f, kIntensity = 10.0f, kHeight = 1.0f;
@@ -105,4 +105,4 @@ TEST(SpotLightProfile, PhotonsDrawTheSmoothstepFalloff) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::spot_light_profile_tests

@@ -10,7 +10,7 @@
 #include "scene_loader_fixture.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::sppm_bands_tests {
 namespace {
 
 // The glass-sphere Cornell box at 24 x 33: 33 rows, so that bands do not divide them evenly.
@@ -119,4 +119,4 @@ TEST(SppmBands, ACheckpointResumesInOtherBands) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::sppm_bands_tests

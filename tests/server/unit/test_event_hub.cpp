@@ -8,6 +8,8 @@
 using namespace photon::server;
 using namespace std::chrono_literals;
 
+namespace event_hub_tests {
+
 namespace {
 
 // Only a guard against a hang: every wait that uses it is expected to end at once.
@@ -331,3 +333,5 @@ TEST(EventHub, AClientTooFarBehindOnTheStreamOfAllJobsIsToldItMissedChanges) {
     EXPECT_FALSE(caughtUp.missed);
     EXPECT_EQ(caughtUp.events.size(), EventHub::kServiceLogLength);
 }
+
+}  // namespace event_hub_tests

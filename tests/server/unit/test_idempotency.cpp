@@ -15,6 +15,8 @@ using namespace photon::server;
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
 
+namespace idempotency_tests {
+
 namespace {
 
 // Only a guard against a hang: every wait that uses it is expected to end at once.
@@ -303,3 +305,5 @@ TEST_F(IdempotencyStoreTest, KeyIsNotStoredWhenItsJobCannotBe) {
     EXPECT_FALSE(store_->findKey("key-2", kT0).has_value());
     EXPECT_EQ(store_->findKey("key-1", kT0)->jobId, "job1");
 }
+
+}  // namespace idempotency_tests

@@ -13,6 +13,8 @@
 using namespace photon::server;
 using namespace std::chrono_literals;
 
+namespace job_queue_tests {
+
 namespace {
 
 // Only a guard against a hang: every wait that uses it is expected to end at once.
@@ -170,3 +172,5 @@ TEST(JobQueue, ConcurrentWorkersTakeEachJobExactlyOnce) {
     for (int i = 0; i < kJobs; ++i) EXPECT_EQ(taken.count("job" + std::to_string(i)), 1u) << i;
     EXPECT_EQ(queue.size(), 0u);
 }
+
+}  // namespace job_queue_tests
