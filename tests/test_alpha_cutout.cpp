@@ -60,6 +60,26 @@ INSTANTIATE_TEST_SUITE_P(Integrators, CutoutVsGeometry, testing::Values(Integrat
                              return info.param == IntegratorKind::Path ? std::string("Path") : std::string("Sppm");
                          });
 
+// A solid texture is read at the point the ray meets (Embree's filter computes it from the
+// ray): a solid checkerboard whose cells split the quad at x = 0 cuts its left half away as
+// the uv checkerboard above does, for camera, shadow and photon rays alike.
+TEST(AlphaCutout, ASolidTextureCutsWhereTheRayMeetsTheSurface) {
+    // Texture space: x as it is; y and z squashed into the cell [0, 1) over the quad.
+    Transform textureFromWorld;
+    textureFromWorld.m = {1, 0, 0, 0, 0, 0, 0, 0.5f, 0, 0, 0.01f, 0.5f};
+    ShapeDescription cut = test::quad({-0.5f, 0.5f, 0.5f}, {1, 0, 0}, {0, 0, -1}, 0);
+    cut.alpha = FloatParam(makeSolidCheckerboardTexture(Color(1.0f), Color(0.0f), textureFromWorld));
+    ShapeDescription half = test::quad({0, 0.5f, 0.5f}, {0.5f, 0, 0}, {0, 0, -1}, 0);
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        Image withCut = test::renderImage(occludedFloor(cut, kind));
+        Image withHalf = test::renderImage(occludedFloor(half, kind));
+        const double cutVsHalf = relativeDifference(withCut, withHalf);
+        std::printf("  mean |solid cut - half| %.5f of the mean\n", cutVsHalf);
+        EXPECT_LT(cutVsHalf, 0.01);
+        EXPECT_NEAR(meanLuminance(withCut), meanLuminance(withHalf), 0.003 * meanLuminance(withHalf));
+    }
+}
+
 // A black occluder of constant alpha 0.3 over the floor's centre: the floor under it gets
 // 0.7 of the light it gets without the occluder (the occluder reflects nothing).
 TEST(AlphaCutout, ConstantAlphaTransmitsTheRest) {

@@ -20,7 +20,7 @@ using namespace bsdf_checks;
 constexpr float kIor = 1.5f;
 const Color kWhite(1.0f);
 // Inputs with the given tint at an arbitrary uv (these materials read no texture).
-MaterialInputs tinted(Color tint) { return {Vec2{}, tint}; }
+MaterialInputs tinted(Color tint) { return {{}, tint}; }
 
 // A material under test: `width` is the GGX alpha the quadrature resolves (1 if broad);
 // `deltaAlbedo` the known reflectance of its delta lobe at a given cos(theta_o), if any;

@@ -21,7 +21,7 @@ namespace {
 
 using namespace bsdf_checks;
 constexpr float kIor = 1.5f;
-const MaterialInputs kInputs{Vec2{}, Color(1.0f)};
+const MaterialInputs kInputs{{}, Color(1.0f)};
 
 // Gold as it is inside a coat of index 1.5: its index relative to the coat's.
 ComplexIor goldInCoat() {
@@ -97,7 +97,7 @@ TEST_P(CoatedConductorChecks, SamplingMatchesQuadratureAndTheMirrors) {
             float coatE = E;
             if (l.coatRoughness > 0) {
                 Channels q = integrateHemisphere(wo, roughnessToAlpha(l.coatRoughness), [&](Vec3 wi) {
-                    return coatOnly->eval(wo, wi, coatOnly->inputsAt(Vec2{}), TransportMode::Radiance) * wi.z;
+                    return coatOnly->eval(wo, wi, coatOnly->inputsAt({}), TransportMode::Radiance) * wi.z;
                 });
                 coatE = float(q[0]);
             }

@@ -19,7 +19,7 @@ namespace {
 using namespace bsdf_checks;
 constexpr float kIor = 1.5f;
 const Color kWhite(1.0f), kColour(0.8f, 0.3f, 0.05f);
-MaterialInputs tinted(Color tint) { return {Vec2{}, tint}; }
+MaterialInputs tinted(Color tint) { return {{}, tint}; }
 
 struct Coat {
     float roughness;

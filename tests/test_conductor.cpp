@@ -30,7 +30,7 @@ using namespace bsdf_checks;
 constexpr float kAzimuths[] = {0.3f, 1.9f};  // anisotropic lobes differ with phi
 const Color kWhite(1.0f);
 // Inputs with the given tint at an arbitrary uv (conductors read no texture but the tint).
-MaterialInputs tinted(Color tint) { return {Vec2{}, tint}; }
+MaterialInputs tinted(Color tint) { return {{}, tint}; }
 
 ComplexIor metal(std::string_view symbol) {
     auto ior = findMetal(symbol);
@@ -380,9 +380,9 @@ TEST(ConductorScene, TexturedIndex) {
     EXPECT_TRUE(m.textured());
     auto wood = ImageTexture::load(test::fixture().scene / "textures/wood.png");
     for (Vec2 uv : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.4f, 0.9f}}) {
-        auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(uv), TransportMode::Radiance);
+        auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt({uv}), TransportMode::Radiance);
         ASSERT_TRUE(s && s->delta);
-        Color eta = vmax(wood->lookup(uv), Color(1e-3f));
+        Color eta = vmax(wood->lookup({uv}), Color(1e-3f));
         EXPECT_EQ(s->weight, fresnelConductor(1.0f, eta, Color(3.0f, 2.5f, 2.0f))) << uv.x << " " << uv.y;
     }
     EXPECT_FALSE(test::loadedMaterial({{"type", "conductor"}, {"metal", "Au"}}).textured());
@@ -401,11 +401,11 @@ TEST(ConductorScene, TexturedRoughness) {
     auto wood = ImageTexture::load(test::fixture().scene / "textures/wood.png");
     Vec3 wo = direction(0.6f, 0.4f), wi = direction(0.7f, 3.0f);
     for (Vec2 uv : {Vec2{0.25f, 0.25f}, Vec2{0.75f, 0.25f}, Vec2{0.4f, 0.9f}}) {
-        Color texel = wood->lookup(uv);
+        Color texel = wood->lookup({uv});
         float u = (texel.x + texel.y + texel.z) / 3.0f;
         ComplexIor gold = metal("Au");
         auto constant = makeConductor(ComplexIorParam{gold.eta, gold.k}, MicrofacetRoughness{u, 0.3f, RoughnessToAlpha::SquareRoot});
-        MaterialInputs at{uv, kWhite};
+        MaterialInputs at{{uv}, kWhite};
         EXPECT_EQ(m.eval(wo, wi, at, TransportMode::Radiance), constant->eval(wo, wi, at, TransportMode::Radiance));
         EXPECT_EQ(m.pdf(wo, wi, at), constant->pdf(wo, wi, at));
     }

@@ -21,7 +21,7 @@ const Color kR(0.3f, 0.1f, 0.5f), kT(0.6f, 0.2f, 0.45f);
 
 struct Sheet {
     MaterialPtr material = makeDiffuseTransmission(kR, kT);
-    MaterialInputs in{Vec2{}, kR};
+    MaterialInputs in{{}, kR};
 };
 
 // The hemisphere on wo's side integrates eval |cos| to R, the other to T, to quadrature
@@ -74,7 +74,7 @@ TEST(DiffuseTransmission, ReflectsRAndTransmitsTFromBothSides) {
 TEST(DiffuseTransmission, LosslessSheetKeepsAllLight) {
     MaterialPtr m = makeDiffuseTransmission(Color(0.35f), Color(0.65f));
     for (float cosO : kCosines) {
-        auto mc = estimateBySampling(*m, direction(cosO), {Vec2{}, Color(0.35f)}, TransportMode::Importance, 5);
+        auto mc = estimateBySampling(*m, direction(cosO), {{}, Color(0.35f)}, TransportMode::Importance, 5);
         EXPECT_NEAR(mc.mean[0], 1.0, tolerance(1.0));
     }
 }
@@ -125,7 +125,7 @@ TEST(DiffuseTransmission, FiniteForAllInputs) {
             float cosO = i % 7 == 0 ? 1e-4f * (rng.uniform() - 0.5f) : 2 * rng.uniform() - 1;
             Vec3 wo = i % 11 == 0 ? Vec3(0, 0, i % 2 ? 1.0f : -1.0f) : direction(cosO, 2 * kPi * rng.uniform());
             Vec3 wi = sampleUniformSphere({rng.uniform(), rng.uniform()});
-            MaterialInputs in{Vec2{}, mat->tint().value};
+            MaterialInputs in{{}, mat->tint().value};
             Color f = mat->eval(wo, wi, in, TransportMode::Radiance);
             float p = mat->pdf(wo, wi, in);
             ASSERT_TRUE(isFinite(f) && minComponent(f) >= 0 && std::isfinite(p) && p >= 0) << "wo.z " << wo.z;

@@ -350,7 +350,7 @@ Color emissionAt(const SceneDescription& d, float x, float y) {
     auto scene = Scene::build(d);
     SurfaceHit hit;
     EXPECT_TRUE(scene->intersect(Ray{{x, y, 1}, {0, 0, -1}}, hit));
-    return d.shapes[hit.shape].emissionAt(hit.uv);
+    return d.shapes[hit.shape].emissionAt({hit.uv, hit.p});
 }
 
 Gltf emissiveSquare(int texture, Gltf g) {

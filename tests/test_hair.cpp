@@ -20,7 +20,7 @@ namespace {
 using namespace bsdf_checks;
 
 // The inputs at offset h across the fibre (h = 2 uv.y - 1).
-MaterialInputs atOffset(const Material& m, double h) { return {Vec2{0.5f, float((h + 1) / 2)}, m.tint().value}; }
+MaterialInputs atOffset(const Material& m, double h) { return {{Vec2{0.5f, float((h + 1) / 2)}}, m.tint().value}; }
 
 // Direction with sin(theta) = sinTheta along the fibre (x) and azimuth phi about it
 // (phi = atan2(w.z, w.y)).

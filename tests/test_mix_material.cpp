@@ -12,7 +12,7 @@ namespace {
 
 using namespace bsdf_checks;
 
-const MaterialInputs kAnywhere{Vec2{0.3f, 0.6f}, Color(1.0f)};
+const MaterialInputs kAnywhere{{{0.3f, 0.6f}}, Color(1.0f)};
 const Color kRed(0.8f, 0.2f, 0.1f);
 
 TEST(MixMaterial, EvalAndPdfBlendTheParts) {
@@ -22,8 +22,8 @@ TEST(MixMaterial, EvalAndPdfBlendTheParts) {
     for (int i = 0; i < 1000; ++i) {
         Vec3 wo = sampleCosineHemisphere({rng.uniform(), rng.uniform()});
         Vec3 wi = sampleCosineHemisphere({rng.uniform(), rng.uniform()});
-        Color expected = a->eval(wo, wi, a->inputsAt(kAnywhere.uv), TransportMode::Radiance) * 0.7f +
-                         b->eval(wo, wi, b->inputsAt(kAnywhere.uv), TransportMode::Radiance) * 0.3f;
+        Color expected = a->eval(wo, wi, a->inputsAt(kAnywhere.at), TransportMode::Radiance) * 0.7f +
+                         b->eval(wo, wi, b->inputsAt(kAnywhere.at), TransportMode::Radiance) * 0.3f;
         EXPECT_VEC3_NEAR(mix->eval(wo, wi, kAnywhere, TransportMode::Radiance), expected, 1e-6f * maxComponent(expected));
         float p = 0.7f * a->pdf(wo, wi, kAnywhere) + 0.3f * b->pdf(wo, wi, kAnywhere);
         EXPECT_NEAR(mix->pdf(wo, wi, kAnywhere), p, 1e-6f * p);

@@ -25,7 +25,7 @@ namespace {
 
 using namespace bsdf_checks;
 const Color kWhite(1.0f);
-const MaterialInputs kInputs{Vec2{}, kWhite};  // these materials read no texture
+const MaterialInputs kInputs{{}, kWhite};  // these materials read no texture
 constexpr float kGlass = 1.5f;
 constexpr float kIceInWater = 1.31f / 1.33f;  // relative index below 1
 

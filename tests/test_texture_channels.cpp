@@ -101,7 +101,7 @@ TEST(TextureChannels, UvRotationTurnsTheLookup) {
                     {"materials", {{"m", {{"type", "diffuse"}, {"albedo", texture}}}}},
                     {"shapes", {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", "m"}}}},
                     {"lights", {{{"type", "point"}, {"position", {0, 0, 2}}, {"intensity", {1, 1, 1}}}}}};
-        return loadSceneJson(doc.dump(), folder().dir).materials[0]->tint().eval(uv);
+        return loadSceneJson(doc.dump(), folder().dir).materials[0]->tint().eval({uv});
     };
     const Json turned = {{"texture", "halves.png"}, {"uv_rotation", 90}};
     EXPECT_GT(colourAt({{"texture", "halves.png"}}, {0.25f, 0.25f}).x, 0.9f);

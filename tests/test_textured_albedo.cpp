@@ -71,7 +71,7 @@ TEST(TexturedAlbedo, RadianceFollowsTheTexture) {
                             Vec2 uv{(p.x + 1) / 2, (1 - p.z) / 2};
                             float r2 = p.x * p.x + p.z * p.z + kHeight * kHeight;
                             float cosTheta = kHeight / std::sqrt(r2);
-                            expected += texture->lookup(uv) * (kInvPi * kIntensity * cosTheta / r2);
+                            expected += texture->lookup({uv}) * (kInvPi * kIntensity * cosTheta / r2);
                         }
             expected = expected / float(16 * n * n);
             Color got = test::meanOver(image, bx, by, bx + 4, by + 4);

@@ -19,7 +19,7 @@ namespace {
 using namespace bsdf_checks;
 constexpr float kIor = 1.5f;
 const Color kWhite(1.0f), kColour(0.8f, 0.3f, 0.05f);
-MaterialInputs tinted(Color tint) { return {Vec2{0.3f, 0.6f}, tint}; }
+MaterialInputs tinted(Color tint) { return {{Vec2{0.3f, 0.6f}}, tint}; }
 
 // A roughness map that reads `r` everywhere (one texel).
 FloatParam uniformMap(float r) { return FloatParam(std::make_shared<ImageTexture>(1, 1, std::vector<Color>{Color(r)})); }

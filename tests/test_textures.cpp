@@ -16,13 +16,13 @@ std::shared_ptr<const ImageTexture> quadrants() {
 TEST(Textures, UvMappingScalesAndShiftsTheLookup) {
     auto image = quadrants();
     UvMapping tiled{{2, 2}, {0, 0}};
-    auto t = makeUvMappedTexture(image, tiled);
+    auto t = makeMappedTexture(image, tiled);
     for (Vec2 uv : {Vec2{0.1f, 0.1f}, Vec2{0.3f, 0.8f}, Vec2{0.77f, 0.42f}})
-        EXPECT_VEC3_NEAR(t->lookup(uv), image->lookup({2 * uv.x, 2 * uv.y}), 1e-6);
+        EXPECT_VEC3_NEAR(t->lookup({uv}), image->lookup({2 * uv.x, 2 * uv.y}), 1e-6);
     // Two whole repeats keep the mean; the identity is the image itself, not a wrapper.
     EXPECT_VEC3_NEAR(t->average(), image->average(), 1e-4);
-    EXPECT_EQ(makeUvMappedTexture(image, UvMapping{}), image);
-    auto shifted = makeUvMappedTexture(image, UvMapping{{1, 1}, {0.5f, 0}});
+    EXPECT_EQ(makeMappedTexture(image, UvMapping{}), image);
+    auto shifted = makeMappedTexture(image, UvMapping{{1, 1}, {0.5f, 0}});
     EXPECT_VEC3_NEAR(shifted->lookup({0.25f, 0.75f}), Color(0, 1, 0), 1e-6);  // top right texel's centre
 }
 
@@ -102,7 +102,8 @@ TEST(Textures, SceneJsonNestsTextures) {
 
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "noise"})"); },
                 "materials.white.albedo.type",
-                "unknown texture type \"noise\" (expected one of image, checkerboard, product, mix)");
+                "unknown texture type \"noise\" (expected one of image, checkerboard, bilerp, dots, fbm, wrinkled, windy, product, "
+                "mix)");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "checkerboard", "even": [2, 0, 0], "odd": [0, 0, 0]})"); },
                 "materials.white.albedo.even[0]", "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "mix", "a": [0, 0, 0], "b": [1, 1, 1], "amount": [1, 1, 1]})"); },

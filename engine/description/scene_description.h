@@ -128,8 +128,10 @@ struct ShapeDescription {
         for (size_t t = 0; t < mesh.triangleCount(); ++t) sum += mesh.area(t);
         return static_cast<float>(sum);
     }
-    // Radiance leaving a point with texture coordinates uv, on an emitting side.
-    Color emissionAt(Vec2 uv) const { return emissionTexture ? emission * emissionTexture->lookup(uv) : emission; }
+    // Radiance leaving a point (its texture coordinates and position), on an emitting side.
+    Color emissionAt(const TexturePoint& at) const {
+        return emissionTexture ? emission * emissionTexture->lookup(at) : emission;
+    }
     // The mean emitted radiance over the texture's unit square (its surface mean when the
     // uvs cover the surface evenly): what the light's power and its choice use.
     Color meanEmission() const { return emissionTexture ? emission * emissionTexture->average() : emission; }

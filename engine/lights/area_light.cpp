@@ -49,7 +49,7 @@ public:
         }
         // A photon leaving p cosine-distributed about frame.n carries Le pi A sides: the
         // light's whole power where the emission is uniform.
-        Color flux = shape_.emissionTexture ? shape_.emissionAt(s.uv) * (kPi * area_ * sides_) : power_;
+        Color flux = shape_.emissionTexture ? shape_.emissionAt({s.uv, s.p}) * (kPi * area_ * sides_) : power_;
         return PhotonEmission{s.p, frame.toWorld(sampleCosineHemisphere(uDirection)), flux, frame.n};
     }
 
@@ -69,7 +69,7 @@ protected:
         float cosLight = -dot(s.n, wi);
         if (sides_ > 1) cosLight = std::abs(cosLight);
         if (cosLight <= 0) return std::nullopt;
-        return LightSample{wi, dist, shape_.emissionAt(s.uv) * (cosLight * area / dist2) / pick,
+        return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p}) * (cosLight * area / dist2) / pick,
                            dist2 / (cosLight * area) * pick};
     }
     // The same density for the point a ray from p along wi met.
@@ -145,9 +145,10 @@ public:
         const float facing = dot(*wi, tri.frame.n);
         const float dist = facing != 0 ? dot(tri.p0 - p, tri.frame.n) / facing : 0.0f;
         if (!(dist > 0) || !std::isfinite(dist)) return std::nullopt;
+        const Vec3 onLight = p + *wi * dist;
         Vec2 uv;
-        if (shape_.emissionTexture) uv = uvOn(i, p + *wi * dist);
-        return LightSample{*wi, dist, shape_.emissionAt(uv) * angles->total, 1.0f / angles->total};
+        if (shape_.emissionTexture) uv = uvOn(i, onLight);
+        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight}) * angles->total, 1.0f / angles->total};
     }
 
     float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
@@ -355,8 +356,9 @@ public:
         const float r = shape_.radius;
         const float dist = std::max(0.0f, cone->distance * cosTheta -
                                               std::sqrt(std::max(0.0f, r * r - cone->distance * cone->distance * sin2Theta)));
-        const Vec3 normal = normalize(p + wi * dist - shape_.center);
-        const Color Le = shape_.emissionAt(shape_.emissionTexture ? sphereUv(normal) : Vec2{});
+        const Vec3 onLight = p + wi * dist;
+        const Vec3 normal = normalize(onLight - shape_.center);
+        const Color Le = shape_.emissionAt({shape_.emissionTexture ? sphereUv(normal) : Vec2{}, onLight});
         return LightSample{wi, dist, Le / cone->pdf, cone->pdf};
     }
 

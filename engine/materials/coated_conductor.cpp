@@ -180,7 +180,7 @@ private:
         constexpr int kGrid = 16, kMaxBounces = 64;
         // A textured colour at its mean, so that a dark texel at the middle does not stand
         // for the whole texture.
-        const MaterialInputs in{{0.5f, 0.5f}, metal_->tint().average()};
+        const MaterialInputs in{{{0.5f, 0.5f}, Vec3(0.0f)}, metal_->tint().average()};
         referenceReflectance_ = metal_->normalReflectance(in);
         // Each node from its own random stream, so the table is the same on any thread count.
         tbb::parallel_for(0, kTable, [&](int k) {

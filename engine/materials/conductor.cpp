@@ -55,7 +55,7 @@ public:
         if (smooth() || !(lobes & kGlossyLobe)) return Color(0.0f);
         auto h = reflectionHalfVector(wo, wi);
         if (!h) return Color(0.0f);
-        return fresnel(dot(wo, *h), in) * lobeAt(in.uv).reflectionNoFresnel(wo, wi, *h);
+        return fresnel(dot(wo, *h), in) * lobeAt(in.at).reflectionNoFresnel(wo, wi, *h);
     }
 
     Color normalReflectance(const MaterialInputs& in) const override { return fresnel(1.0f, in); }
@@ -63,7 +63,7 @@ public:
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
         if (smooth() || !(lobes & kGlossyLobe)) return 0;
         auto h = reflectionHalfVector(wo, wi);
-        return h ? lobeAt(in.uv).reflectionPdf(wo, *h) : 0.0f;
+        return h ? lobeAt(in.at).reflectionPdf(wo, *h) : 0.0f;
     }
 
     std::optional<BSDFSample> sample(Vec3 wo, float, Vec2 u, const MaterialInputs& in, TransportMode mode,
@@ -73,7 +73,7 @@ public:
         // GGX samples visible normals, which never face away from wo, so only the reflected
         // wi that ends up below the horizon is lost (that energy is what single scattering
         // misses); Beckmann's normals can face away, and those draws are lost too.
-        Vec3 h = lobeAt(in.uv).sampleHalfVector(wo, u);
+        Vec3 h = lobeAt(in.at).sampleHalfVector(wo, u);
         if (dot(wo, h) <= 0) return std::nullopt;
         // Weighted through eval()/pdf(); for GGX the weight reduces analytically to
         // F G2 / G1(wo) (Heitz 2018).
@@ -84,10 +84,10 @@ private:
     bool smooth() const { return !texturedRoughness_ && lobe_.smooth(); }
 
     // The distribution at a hit: the constant one, or the textured roughness looked up there.
-    Distribution lobeAt(Vec2 uv) const {
+    Distribution lobeAt(const TexturePoint& at) const {
         if (!texturedRoughness_) return lobe_;
-        float ax = alphaOf(roughness_.u.eval(uv), roughness_.toAlpha);
-        float ay = alphaOf(roughness_.v.eval(uv), roughness_.toAlpha);
+        float ax = alphaOf(roughness_.u.eval(at), roughness_.toAlpha);
+        float ay = alphaOf(roughness_.v.eval(at), roughness_.toAlpha);
         return Distribution(std::max(ax, kSmoothAlpha), std::max(ay, kSmoothAlpha));
     }
 
@@ -95,7 +95,7 @@ private:
     // kept physical texel by texel: eta > 0 (at least kMinEta), k >= 0.
     Color fresnel(float cosTheta, const MaterialInputs& in) const {
         if (!ior_) return fresnelSchlick(in.tint, cosTheta);
-        Color eta = vmax(ior_->eta.eval(in.uv), Color(kMinEta)), k = vmax(ior_->k.eval(in.uv), Color(0.0f));
+        Color eta = vmax(ior_->eta.eval(in.at), Color(kMinEta)), k = vmax(ior_->k.eval(in.at), Color(0.0f));
         return fresnelConductor(cosTheta, eta, k);
     }
 

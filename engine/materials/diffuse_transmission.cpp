@@ -51,7 +51,7 @@ public:
 
 private:
     static bool sameSide(Vec3 wo, Vec3 wi) { return (wo.z > 0) == (wi.z > 0); }
-    Color transmittance(const MaterialInputs& in) const { return transmittance_.eval(in.uv); }
+    Color transmittance(const MaterialInputs& in) const { return transmittance_.eval(in.at); }
 
     // Each lobe in proportion to its largest channel (the weights are then at most one
     // over the sum, so the photon walk's roulette sees no spikes); an all-black sheet

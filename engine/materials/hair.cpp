@@ -190,7 +190,7 @@ private:
     // eta' that makes that 2D refraction exact (Bravais).
     HairLobes lobesAt(Vec3 wo, const MaterialInputs& in) const {
         HairLobes l;
-        float h = std::clamp(2 * in.uv.y - 1, -1.0f, 1.0f);
+        float h = std::clamp(2 * in.at.uv.y - 1, -1.0f, 1.0f);
         float sinO = std::clamp(wo.x, -1.0f, 1.0f), cosO = std::sqrt(std::max(0.0f, 1 - squareOf(sinO)));
         l.phiO = std::atan2(wo.z, wo.y);
         l.gammaO = clampedAsin(h);

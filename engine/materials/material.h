@@ -20,12 +20,15 @@ enum class TransportMode { Radiance, Importance };
 // Lobes a material has; integrators decide from these where a camera path stops.
 enum LobeFlags : unsigned { kDiffuseLobe = 1u, kGlossyLobe = 2u, kDeltaLobe = 4u, kAllLobes = 7u };
 
-// What a material reads at a surface point: its texture coordinates, and its tint (the
-// colour parameter, see Material::tint) looked up there once, since nearly every call
-// needs it. Materials with other textured parameters look them up at uv.
+// What a material reads at a surface point: where its textures are read (uv and point),
+// and its tint (the colour parameter, see Material::tint) looked up there once, since
+// nearly every call needs it. Materials with other textured parameters look them up at `at`.
 struct MaterialInputs {
-    Vec2 uv;
+    TexturePoint at;
     Color tint;
+    MaterialInputs() = default;
+    // A constructor, not an aggregate: {uv, tint} would otherwise fill `at` with uv and tint.
+    MaterialInputs(const TexturePoint& at_, Color tint_) : at(at_), tint(tint_) {}
 };
 
 struct BSDFSample {
@@ -59,7 +62,7 @@ public:
     // The material's colour parameter (albedo or reflectance), constant or textured.
     // Evaluated once per hit and passed back in MaterialInputs::tint.
     const ColorParam& tint() const { return tint_; }
-    MaterialInputs inputsAt(Vec2 uv) const { return {uv, tint_.eval(uv)}; }
+    MaterialInputs inputsAt(const TexturePoint& at) const { return {at, tint_.eval(at)}; }
     // True if any parameter is a texture: hits on the material then need uv.
     virtual bool textured() const { return tint_.textured(); }
     // Opaque materials shade both sides alike (the normal is turned toward the viewer);
@@ -79,14 +82,16 @@ public:
     // (diffuse transmission): light arriving from behind then counts where it is gathered.
     virtual bool transmits() const { return false; }
     // True if the material bends its shading normal by a normal or bump map
-    // (materials/normal_map.h); bentNormal then gives it at uv for the unbent n.
+    // (materials/normal_map.h); bentNormal then gives it at `at` for the unbent n.
     // True if the local frame's x axis must be the surface's dp/du: a fibre's scattering
     // (hair) depends on where the fibre points, not only on its normal. The integrators
     // then build the frame from the normal and dp/du (Scene::tangentsAt) instead of the
     // normal alone, and store no visible point on it (a visible point keeps only a normal).
     virtual bool alignsToTangent() const { return false; }
     virtual bool bendsNormal() const { return false; }
-    virtual Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const { return n; }
+    virtual Vec3 bentNormal(const TexturePoint& at, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const {
+        return n;
+    }
     // A reflector's reflectance at normal incidence (its Fresnel term there), for a coat
     // laid over it (coated_conductor.cpp); black for materials that are not reflectors.
     virtual Color normalReflectance(const MaterialInputs& in) const { return Color(0.0f); }

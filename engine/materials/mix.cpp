@@ -19,19 +19,21 @@ public:
     bool transmits() const override { return a_->transmits() || b_->transmits(); }
 
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes) const override {
-        return at(in.uv).eval(wo, wi, mode, lobes);
+        return mixtureAt(in.at).eval(wo, wi, mode, lobes);
     }
     float pdf(Vec3 wo, Vec3 wi, const MaterialInputs& in, unsigned lobes) const override {
-        return at(in.uv).pdf(wo, wi, lobes);
+        return mixtureAt(in.at).pdf(wo, wi, lobes);
     }
     std::optional<BSDFSample> sample(Vec3 wo, float uLobe, Vec2 u, const MaterialInputs& in, TransportMode mode,
                                      unsigned lobes) const override {
-        return at(in.uv).sample(wo, uLobe, u, mode, lobes);
+        return mixtureAt(in.at).sample(wo, uLobe, u, mode, lobes);
     }
-    float diffuseShare(Vec3 wo, const MaterialInputs& in) const override { return at(in.uv).diffuseShare(wo); }
+    float diffuseShare(Vec3 wo, const MaterialInputs& in) const override { return mixtureAt(in.at).diffuseShare(wo); }
 
 private:
-    MaterialMixture at(Vec2 uv) const { return {*a_, a_->inputsAt(uv), *b_, b_->inputsAt(uv), amount_.eval(uv)}; }
+    MaterialMixture mixtureAt(const TexturePoint& at) const {
+        return {*a_, a_->inputsAt(at), *b_, b_->inputsAt(at), amount_.eval(at)};
+    }
 
     MaterialPtr a_, b_;
     FloatParam amount_;

@@ -29,8 +29,8 @@ public:
     bool twoSided() const override { return base_->twoSided(); }
     bool transmits() const override { return base_->transmits(); }
     bool bendsNormal() const override { return true; }
-    Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
-        return map_ ? mappedNormal(*map_, uv, n, ng, t.dpdu) : bumpedNormal(height_, uv, n, ng, t);
+    Vec3 bentNormal(const TexturePoint& at, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
+        return map_ ? mappedNormal(*map_, at, n, ng, t.dpdu) : bumpedNormal(height_, at, n, ng, t);
     }
 
 private:

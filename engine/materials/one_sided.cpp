@@ -30,8 +30,8 @@ public:
     bool textured() const override { return base_->textured(); }
     bool twoSided() const override { return false; }
     bool bendsNormal() const override { return base_->bendsNormal(); }
-    Vec3 bentNormal(Vec2 uv, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
-        return base_->bentNormal(uv, n, ng, t);
+    Vec3 bentNormal(const TexturePoint& at, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
+        return base_->bentNormal(at, n, ng, t);
     }
 
 private:

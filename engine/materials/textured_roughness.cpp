@@ -54,7 +54,7 @@ private:
     // The levels are made with any colour: this material's, read at the point (in), is what
     // each of them is given.
     MaterialMixture at(const MaterialInputs& in) const {
-        float r = std::clamp(roughness_.eval(in.uv), 0.0f, 1.0f);
+        float r = std::clamp(roughness_.eval(in.at), 0.0f, 1.0f);
         if (exponent_ != 1) r = std::pow(r, exponent_);
         int k = 0;
         float t = r / kFirstRough;

@@ -20,6 +20,7 @@ struct Transform {
                  t * a.x * a.y + s * a.z, t * a.y * a.y + c, t * a.y * a.z - s * a.x, 0,
                  t * a.x * a.z - s * a.y, t * a.y * a.z + s * a.x, t * a.z * a.z + c, 0}};
     }
+    bool identity() const { return m == Transform().m; }
     // this * other: apply `other` first.
     Transform operator*(const Transform& o) const {
         Transform r;

@@ -31,7 +31,12 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
         } else {
             uv = shape.mesh.uvAt(primitive, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
         }
-        const float a = shape.alpha.eval(uv);
+        // Embree has set the ray's tfar to the candidate hit's distance.
+        const float t = RTCRayN_tfar(args->ray, n, i);
+        const Vec3 p{RTCRayN_org_x(args->ray, n, i) + t * RTCRayN_dir_x(args->ray, n, i),
+                     RTCRayN_org_y(args->ray, n, i) + t * RTCRayN_dir_y(args->ray, n, i),
+                     RTCRayN_org_z(args->ray, n, i) + t * RTCRayN_dir_z(args->ray, n, i)};
+        const float a = shape.alpha.eval({uv, p});
         if (shape.alphaCutoff > 0) {  // a mask: no randomness
             if (a < shape.alphaCutoff) args->valid[i] = 0;
             continue;

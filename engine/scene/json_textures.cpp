@@ -1,5 +1,6 @@
 // Colour and float parameters that take a constant or a texture: images (with a uv
-// scale and offset), checkerboards, products and mixes, nested as deep as a scene likes.
+// scale and offset, or mapped from the point), checkerboards (2D or solid), bilinear
+// blends, products and mixes, nested as deep as a scene likes.
 // The grammar is in docs/scene-format.md ("Textures").
 #include "scene/json_scene_parts.h"
 #include "texture/image_texture.h"
@@ -22,6 +23,56 @@ UvMapping readUvMapping(JsonObject& obj) {
     if (auto o = obj.optional("uv_offset")) m.offset = o->vec2(Range::any());
     if (auto r = obj.optional("uv_rotation")) m.rotation = r->number(Range::closed(-360, 360)) * kPi / 180.0f;
     return m;
+}
+
+// "mapping": {"type": "spherical" | "cylindrical" | "planar" | "uv", "transform": T,
+// planar's "s" and "t" axes}: where the texture's (s, t) come from, T placing the
+// texture's space in the world (its inverse takes hit points there); then the uv_* fields.
+TextureMapping readMapping(JsonObject& obj) {
+    TextureMapping m(readUvMapping(obj));
+    auto value = obj.optional("mapping");
+    if (!value) return m;
+    JsonObject mapping = value->object();
+    constexpr TextureMapping::Kind kKinds[] = {TextureMapping::Kind::Uv, TextureMapping::Kind::Spherical,
+                                               TextureMapping::Kind::Cylindrical, TextureMapping::Kind::Planar};
+    m.kind = kKinds[mapping.required("type").choice({"uv", "spherical", "cylindrical", "planar"}, "mapping type")];
+    if (m.kind != TextureMapping::Kind::Uv)
+        if (auto t = mapping.optional("transform")) m.textureFromWorld = readTransform(*t).inverse();
+    if (m.kind == TextureMapping::Kind::Planar) {
+        if (auto s = mapping.optional("s")) m.planarS = s->vec3();
+        if (auto t = mapping.optional("t")) m.planarT = t->vec3();
+    }
+    mapping.finish();
+    return m;
+}
+
+// A solid texture's "mapping": {"type": "solid", "transform": T}: the texture's space
+// placed in the world by T (the identity without it); returns T's inverse.
+Transform readSolidMapping(JsonObject& obj) {
+    for (const char* key : {"uv_scale", "uv_offset", "uv_rotation"})
+        if (auto given = obj.optional(key)) given->fail("a solid texture is read at the point, not at uv");
+    JsonObject mapping = obj.required("mapping").object();
+    mapping.required("type").choice({"solid"}, "mapping type");
+    Transform textureFromWorld;
+    if (auto t = mapping.optional("transform")) textureFromWorld = readTransform(*t).inverse();
+    mapping.finish();
+    return textureFromWorld;
+}
+
+// A solid texture's optional "mapping" ({"type": "solid", "transform": T}); the identity
+// without one.
+Transform readOptionalSolidMapping(JsonObject& obj) {
+    return obj.has("mapping") || obj.has("uv_scale") || obj.has("uv_offset") || obj.has("uv_rotation")
+               ? readSolidMapping(obj)
+               : Transform();
+}
+
+// Whether the texture's "mapping" is {"type": "solid", ...}.
+bool solidMapping(JsonObject& obj) {
+    auto mapping = obj.optional("mapping");
+    if (!mapping) return false;
+    const auto& m = mapping->json();
+    return m.is_object() && m.contains("type") && m.at("type") == "solid";
 }
 
 ColorParam readParam(const JsonValue& value, LoadContext& ctx, const ParamKind& kind);
@@ -55,19 +106,43 @@ std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, L
     if (encoding.kind != ImageEncoding::Gamma)
         if (auto g = obj.optional("gamma")) g->fail("needs \"encoding\": \"gamma\"");
     auto image = loadImage(obj.required(fileKey), channels, ctx, encoding);
-    return makeUvMappedTexture(image, readUvMapping(obj));
+    return makeMappedTexture(image, readMapping(obj));
 }
 
 std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, const ParamKind& kind) {
     if (!obj.has("type")) return readImage(obj, "texture", ctx, kind);  // {"texture": "file.png"}
-    enum Type { Image, Checkerboard, Product, Mix };
-    switch (Type(obj.required("type").choice({"image", "checkerboard", "product", "mix"}, "texture type"))) {
+    enum Type { Image, Checkerboard, Bilerp, Dots, Fbm, Wrinkled, Windy, Product, Mix };
+    const Type type = Type(obj.required("type").choice(
+        {"image", "checkerboard", "bilerp", "dots", "fbm", "wrinkled", "windy", "product", "mix"}, "texture type"));
+    switch (type) {
         case Image: return readImage(obj, "file", ctx, kind);
         case Checkerboard: {
             ColorParam even = readParam(obj.required("even"), ctx, kind);
             ColorParam odd = readParam(obj.required("odd"), ctx, kind);
-            return makeCheckerboardTexture(std::move(even), std::move(odd), readUvMapping(obj));
+            if (solidMapping(obj)) return makeSolidCheckerboardTexture(std::move(even), std::move(odd), readSolidMapping(obj));
+            return makeCheckerboardTexture(std::move(even), std::move(odd), readMapping(obj));
         }
+        case Bilerp: {
+            ColorParam v00 = readParam(obj.required("v00"), ctx, kind);
+            ColorParam v01 = readParam(obj.required("v01"), ctx, kind);
+            ColorParam v10 = readParam(obj.required("v10"), ctx, kind);
+            ColorParam v11 = readParam(obj.required("v11"), ctx, kind);
+            return makeBilerpTexture(std::move(v00), std::move(v01), std::move(v10), std::move(v11), readMapping(obj));
+        }
+        case Dots: {
+            ColorParam inside = readParam(obj.required("inside"), ctx, kind);
+            ColorParam outside = readParam(obj.required("outside"), ctx, kind);
+            return makeDotsTexture(std::move(inside), std::move(outside), readMapping(obj));
+        }
+        case Fbm:
+        case Wrinkled: {
+            const int octaves = int(obj.integer("octaves", 8, 1, 30));
+            const float roughness = obj.number("roughness", 0.5f, Range::closed(0, 1));
+            const Transform textureFromWorld = readOptionalSolidMapping(obj);
+            return type == Fbm ? makeFbmTexture(textureFromWorld, octaves, roughness)
+                               : makeWrinkledTexture(textureFromWorld, octaves, roughness);
+        }
+        case Windy: return makeWindyTexture(readOptionalSolidMapping(obj));
         case Product: {
             ColorParam a = readParam(obj.required("a"), ctx, kind);
             ColorParam b = readParam(obj.required("b"), ctx, kind);

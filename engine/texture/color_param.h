@@ -1,4 +1,4 @@
-// A colour that is either constant or looked up in a texture at the hit's uv.
+// A colour that is either constant or looked up in a texture where the surface is hit.
 #pragma once
 #include <memory>
 #include "texture/texture.h"
@@ -14,7 +14,7 @@ struct ColorParam {
     explicit ColorParam(std::shared_ptr<const Texture> t) : texture(std::move(t)) {}
 
     bool textured() const { return texture != nullptr; }
-    Color eval(Vec2 uv) const { return texture ? texture->lookup(uv) : value; }
+    Color eval(const TexturePoint& at) const { return texture ? texture->lookup(at) : value; }
     // Mean over the surface: what light power and lobe choices use.
     Color average() const { return texture ? texture->average() : value; }
 };

@@ -16,7 +16,7 @@ struct FloatParam {
     explicit FloatParam(std::shared_ptr<const Texture> t) : texture(std::move(t)) {}
 
     bool textured() const { return texture != nullptr; }
-    float eval(Vec2 uv) const { return texture ? channelMean(texture->lookup(uv)) : value; }
+    float eval(const TexturePoint& at) const { return texture ? channelMean(texture->lookup(at)) : value; }
     float average() const { return texture ? channelMean(texture->average()) : value; }
 
 private:

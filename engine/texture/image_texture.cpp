@@ -209,7 +209,8 @@ ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels)
     average_ = Color(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
 }
 
-Color ImageTexture::lookup(Vec2 uv) const {
+Color ImageTexture::lookup(const TexturePoint& at) const {
+    const Vec2 uv = at.uv;
     // Reduce to [0, 1) first: this is the wrap, and it keeps the float→int casts below
     // defined for any uv. Non-finite uvs read as 0.
     auto wrap01 = [](float t) {

@@ -59,7 +59,7 @@ public:
     ImageTexture(int width, int height, std::vector<Color> texels);
 
     // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
-    Color lookup(Vec2 uv) const override;
+    Color lookup(const TexturePoint& at) const override;
     Color average() const override { return average_; }
     int width() const { return width_; }
     int height() const { return height_; }

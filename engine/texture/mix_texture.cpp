@@ -8,7 +8,7 @@ public:
     MixTexture(ColorParam a, ColorParam b, FloatParam amount)
         : a_(std::move(a)), b_(std::move(b)), amount_(std::move(amount)),
           average_(amount_.textured() ? meanOverUnitSquare(*this) : mix(a_.average(), b_.average(), amount_.value)) {}
-    Color lookup(Vec2 uv) const override { return mix(a_.eval(uv), b_.eval(uv), amount_.eval(uv)); }
+    Color lookup(const TexturePoint& at) const override { return mix(a_.eval(at), b_.eval(at), amount_.eval(at)); }
     Color average() const override { return average_; }
 
 private:

@@ -9,7 +9,7 @@ public:
         : a_(std::move(a)), b_(std::move(b)),
           // The mean of a product is the product of means only if one factor is constant.
           average_(a_.textured() && b_.textured() ? meanOverUnitSquare(*this) : a_.average() * b_.average()) {}
-    Color lookup(Vec2 uv) const override { return a_.eval(uv) * b_.eval(uv); }
+    Color lookup(const TexturePoint& at) const override { return a_.eval(at) * b_.eval(at); }
     Color average() const override { return average_; }
 
 private:

@@ -1,17 +1,25 @@
-// A colour that varies over a surface with its texture coordinates: an image, a pattern,
-// or an expression of other textures. Float parameters read a texture's channel mean
-// (see float_param.h).
+// A colour that varies over a surface: an image or pattern read at the surface's texture
+// coordinates or at its point in space, or an expression of other textures. Float
+// parameters read a texture's channel mean (see float_param.h).
 #pragma once
 #include <photon/vec.h>
 
 namespace photon {
 
+// Where a texture is read: the surface's texture coordinates and its point in world space
+// (solid textures and the spherical, cylindrical and planar mappings read the point).
+struct TexturePoint {
+    Vec2 uv;
+    Vec3 p{0.0f};
+};
+
 class Texture {
 public:
     virtual ~Texture() = default;
-    // The colour at texture coordinates uv (any finite or non-finite value; images wrap).
-    virtual Color lookup(Vec2 uv) const = 0;
-    // The mean of lookup() over the unit square: what light power and lobe choices use.
+    // The colour at `at` (any finite or non-finite value; images wrap).
+    virtual Color lookup(const TexturePoint& at) const = 0;
+    // What light power and lobe choices use for the mean over a surface: the mean of
+    // lookup() over the unit square of uv (a solid texture's over a cube of its space).
     virtual Color average() const = 0;
 };
 

@@ -1,33 +1,39 @@
-// The texture kinds besides images (image_texture.h), one file each: a uv mapping over
-// another texture, a checkerboard, a product and a mix. Each takes constants or textures
+// The texture kinds besides images (image_texture.h), one file each: a mapping over
+// another texture, checkerboards, a bilinear blend, noise patterns, a product and a mix. Each takes constants or textures
 // as its inputs (ColorParam, FloatParam), so they nest.
 #pragma once
 #include <cmath>
 #include <memory>
 #include "texture/color_param.h"
 #include "texture/float_param.h"
+#include "texture/texture_mapping.h"
 
 namespace photon {
 
-// uv -> uv * scale, turned counter-clockwise by `rotation` (radians; v up), + offset, then
-// the texture (pbrt-v4's UVMapping: su, sv, du, dv; glTF's KHR_texture_transform: T R S).
-struct UvMapping {
-    Vec2 scale{1, 1}, offset{0, 0};
-    float rotation = 0;
-    Vec2 apply(Vec2 uv) const {
-        const Vec2 s{uv.x * scale.x, uv.y * scale.y};
-        if (rotation == 0) return {s.x + offset.x, s.y + offset.y};
-        const float c = std::cos(rotation), n = std::sin(rotation);
-        return {c * s.x - n * s.y + offset.x, n * s.x + c * s.y + offset.y};
-    }
-    bool identity() const { return scale.x == 1 && scale.y == 1 && offset.x == 0 && offset.y == 0 && rotation == 0; }
-};
-
-// `texture` looked up at mapping.apply(uv): an image tiled or shifted without a copy of it.
-std::shared_ptr<const Texture> makeUvMappedTexture(std::shared_ptr<const Texture> texture, UvMapping mapping);
-// `even` where floor(u') + floor(v') is even, `odd` elsewhere, for (u', v') = mapping(uv);
-// the two inputs are read at the surface's own uv.
-std::shared_ptr<const Texture> makeCheckerboardTexture(ColorParam even, ColorParam odd, UvMapping mapping);
+// `texture` looked up at mapping.apply(at): an image tiled, shifted or wrapped around a
+// sphere without a copy of it. Its average is the texture's own where the mapping is not
+// uv (the mean over the unit square of (s, t), not weighted by the surface's area).
+std::shared_ptr<const Texture> makeMappedTexture(std::shared_ptr<const Texture> texture, TextureMapping mapping);
+// `even` where floor(s) + floor(t) is even, `odd` elsewhere, for (s, t) = mapping(at);
+// the two inputs are read where the surface is.
+std::shared_ptr<const Texture> makeCheckerboardTexture(ColorParam even, ColorParam odd, TextureMapping mapping);
+// A solid checkerboard (pbrt-v4's 3D checkerboard): `even` where floor(x) + floor(y) +
+// floor(z) is even for (x, y, z) = textureFromWorld(p), `odd` elsewhere.
+std::shared_ptr<const Texture> makeSolidCheckerboardTexture(ColorParam even, ColorParam odd,
+                                                            const Transform& textureFromWorld);
+// (1 - s)(1 - t) v00 + (1 - s) t v01 + s (1 - t) v10 + s t v11 for (s, t) = mapping(at)
+// (pbrt-v4's bilerp; not clamped to the unit square, as there).
+std::shared_ptr<const Texture> makeBilerpTexture(ColorParam v00, ColorParam v01, ColorParam v10, ColorParam v11,
+                                                 TextureMapping mapping);
+// pbrt-v4's noise textures (noise_textures.cpp, perlin_noise.h), grey: fbm, the fractal sum
+// of `octaves` octaves of noise at q = textureFromWorld(p), each `roughness` times the one
+// before; wrinkled, the same of |noise|; windy, waves under a slow wind.
+std::shared_ptr<const Texture> makeFbmTexture(const Transform& textureFromWorld, int octaves, float roughness);
+std::shared_ptr<const Texture> makeWrinkledTexture(const Transform& textureFromWorld, int octaves, float roughness);
+std::shared_ptr<const Texture> makeWindyTexture(const Transform& textureFromWorld);
+// `inside` within polka dots on the (s, t) plane of the mapping (pbrt-v4's dots), `outside`
+// elsewhere.
+std::shared_ptr<const Texture> makeDotsTexture(ColorParam inside, ColorParam outside, TextureMapping mapping);
 // a * b, channel by channel (pbrt-v4's "scale" texture).
 std::shared_ptr<const Texture> makeProductTexture(ColorParam a, ColorParam b);
 // (1 - amount) a + amount b.

@@ -180,7 +180,7 @@ inline const Material& loadedMaterial(const Json& fields) {
 // The reflectance at normal incidence of a material whose reflection there is a mirror (with
 // the material's own inputs, as integrators pass them).
 inline Color mirrorReflectance(const Material& m) {
-    auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt(Vec2{}), TransportMode::Radiance);
+    auto s = m.sample(Vec3(0, 0, 1), 0.5f, {0.5f, 0.5f}, m.inputsAt({}), TransportMode::Radiance);
     EXPECT_TRUE(s && s->delta);
     return s ? s->weight : Color(0.0f);
 }

@@ -374,14 +374,40 @@ void SceneBuilder::texture(const Directive& d) {
         std::optional<Json> v = color ? colorValue(p, param, int(SpectrumKind::Reflectance)) : floatValue(p, param);
         return v.value_or(color ? rgb(Color(float(fallback))) : Json(fallback));
     };
+    // The texture's space is where the CTM places it (pbrt-v4's renderFromTexture): the
+    // mappings that read the point, and solid textures, read it there.
+    auto placement = [&](Json& mapping) {
+        if (!pointCtm(d).identity()) mapping["transform"] = matrixJson(state_.ctm);
+    };
+    // pbrt-v4's TextureMapping2D: "uv" (uscale, vscale, udelta, vdelta), "spherical",
+    // "cylindrical", "planar" (v1, v2, udelta, vdelta).
     auto mapping = [&](Json& t) {
         const std::string map = p.string("mapping", "uv");
-        if (map != "uv")
-            unsupported(d, "Texture \"" + name + "\": mapping \"" + map + "\" is not supported (uv only)", "uv used");
-        const double su = p.number("uscale", 1), sv = p.number("vscale", 1), du = p.number("udelta", 0),
-                     dv = p.number("vdelta", 0);
-        if (su != 1 || sv != 1) t["uv_scale"] = {su, sv};
+        const double du = p.number("udelta", 0), dv = p.number("vdelta", 0);
         if (du != 0 || dv != 0) t["uv_offset"] = {du, dv};
+        if (map == "uv") {
+            const double su = p.number("uscale", 1), sv = p.number("vscale", 1);
+            if (su != 1 || sv != 1) t["uv_scale"] = {su, sv};
+            return;
+        }
+        if (map != "spherical" && map != "cylindrical" && map != "planar") {
+            unsupported(d, "Texture \"" + name + "\": mapping \"" + map +
+                               "\" is not supported (uv, spherical, cylindrical, planar)", "uv used");
+            return;
+        }
+        Json m = {{"type", map}};
+        placement(m);
+        if (map == "planar") {
+            const Vec3 s = p.vec3("v1", {1, 0, 0}), t2 = p.vec3("v2", {0, 1, 0});
+            m["s"] = {s.x, s.y, s.z};
+            m["t"] = {t2.x, t2.y, t2.z};
+        }
+        t["mapping"] = m;
+    };
+    auto solid = [&](Json& t) {
+        Json m = {{"type", "solid"}};
+        placement(m);
+        t["mapping"] = m;
     };
     Json t;
     if (cls == "imagemap") {
@@ -421,9 +447,32 @@ void SceneBuilder::texture(const Directive& d) {
         const double scale = p.number("scale", 1);
         if (scale != 1) t = {{"type", "product"}, {"a", t}, {"b", color ? rgb(Color(float(scale))) : Json(scale)}};
     } else if (cls == "checkerboard") {
-        if (p.number("dimension", 2) != 2)
-            unsupported(d, "Texture \"" + name + "\": only 2D checkerboards are supported", "its 2D checkerboard in uv used");
+        const double dimension = p.number("dimension", 2);
+        if (dimension != 2 && dimension != 3)
+            fail(d.where, "Texture \"" + name + "\": a checkerboard's \"dimension\" is 2 or 3");
         t = {{"type", "checkerboard"}, {"even", value("tex1", 1)}, {"odd", value("tex2", 0)}};
+        if (dimension == 3) {
+            solid(t);
+        } else {
+            mapping(t);
+        }
+    } else if (cls == "bilerp") {
+        t = {{"type", "bilerp"}, {"v00", value("v00", 0)}, {"v01", value("v01", 1)}, {"v10", value("v10", 0)},
+             {"v11", value("v11", 1)}};
+        mapping(t);
+    } else if (cls == "fbm" || cls == "wrinkled") {
+        const double octaves = p.number("octaves", 8), roughness = p.number("roughness", 0.5);
+        if (!(octaves >= 1 && octaves <= 30 && octaves == std::floor(octaves)))
+            fail(d.where, "Texture \"" + name + "\": \"octaves\" must be a whole number from 1 to 30");
+        if (!(roughness >= 0 && roughness <= 1))
+            fail(d.where, "Texture \"" + name + "\": \"roughness\" must be in [0, 1]");
+        t = {{"type", cls}, {"octaves", int(octaves)}, {"roughness", roughness}};
+        solid(t);
+    } else if (cls == "windy") {
+        t = {{"type", "windy"}};
+        solid(t);
+    } else if (cls == "dots") {
+        t = {{"type", "dots"}, {"inside", value("inside", 1)}, {"outside", value("outside", 0)}};
         mapping(t);
     } else if (cls == "scale") {
         // pbrt-v4's scale is a float texture for either kind (SpectrumScaledTexture::Create).
@@ -436,7 +485,7 @@ void SceneBuilder::texture(const Directive& d) {
         t = value("value", 1);
     } else {
         unsupported(d, "Texture \"" + name + "\": class \"" + cls +
-                           "\" is not supported (photon imports imagemap, checkerboard, scale, mix, constant)",
+                           "\" is not supported (photon imports imagemap, checkerboard, bilerp, dots, fbm, wrinkled, windy, scale, mix, constant)",
                     "the constant 0.5 used");
         t = color ? rgb(Color(0.5f)) : Json(0.5);
     }

@@ -21,8 +21,6 @@ namespace {
 // A bound on what a loopsubdiv may grow to: 16M triangles, ~1.3 GB as a mesh.
 constexpr int64_t kMaxSubdividedTriangles = int64_t(1) << 24;
 
-bool isIdentity(const Transform& t) { return t.m == Transform().m; }
-
 // Returns how many triangles were turned over.
 size_t orient(TriangleMesh& mesh, bool reverse) {
     size_t turned = 0;
@@ -103,7 +101,7 @@ Json SceneBuilder::commonShapeFields(const Params& p) {
     } else if (alpha && alpha->is_number() && alpha->get<double>() <= 0) {
         s["invisible"] = true;
     }
-    if (!isIdentity(state_.ctm)) s["transform"] = matrixJson(state_.ctm);
+    if (!state_.ctm.identity()) s["transform"] = matrixJson(state_.ctm);
     if (state_.areaLight) s.update(*state_.areaLight);
     if (auto medium = shapeMedium()) s["medium"] = *medium;
     return s;
@@ -165,7 +163,7 @@ void SceneBuilder::addSphere(const Params& p, const Directive& d) {
     Json s = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", r}, {"material", currentMaterial()}};
     if (state_.reverseOrientation) s["flip_normals"] = true;
     s.update(commonShapeFields(p));
-    if (isIdentity(state_.ctm) || uniformScale(state_.ctm)) return addShapeJson(std::move(s));
+    if (state_.ctm.identity() || uniformScale(state_.ctm)) return addShapeJson(std::move(s));
     // A sphere under a non-uniform scale is an ellipsoid: an instance of an object holding it.
     if (state_.areaLight) fail(d.where, "sphere: an emissive sphere can only be scaled uniformly");
     if (currentObject_) fail(d.where, "sphere: a sphere scaled unevenly inside ObjectBegin is not supported");
@@ -269,7 +267,7 @@ void SceneBuilder::objectInstance(const Directive& d) {
     if (!objects_.contains(name)) fail(d.where, "ObjectInstance: no object named \"" + name + "\"");
     if (objects_[name]["shapes"].empty()) return;  // nothing photon renders in it
     Json instance = {{"type", "instance"}, {"object", name}};
-    if (!isIdentity(pointCtm(d))) instance["transform"] = matrixJson(state_.ctm);
+    if (!pointCtm(d).identity()) instance["transform"] = matrixJson(state_.ctm);
     shapes_.push_back(std::move(instance));
 }
 

@@ -30,9 +30,10 @@ inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
 }
 inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);
-    ShadingPoint sp{hit, &m, {}, m.inputsAt(hit.uv)};
+    const TexturePoint at{hit.uv, hit.p};
+    ShadingPoint sp{hit, &m, {}, m.inputsAt(at)};
     turnTowardViewer(m, sp.hit, wo);
-    if (m.bendsNormal()) sp.hit.ns = m.bentNormal(hit.uv, sp.hit.ns, sp.hit.ng, scene.tangentsAt(hit));
+    if (m.bendsNormal()) sp.hit.ns = m.bentNormal(at, sp.hit.ns, sp.hit.ng, scene.tangentsAt(hit));
     // A fibre's frame runs along it (Material::alignsToTangent).
     sp.frame = m.alignsToTangent() ? Frame::fromNormalAndTangent(sp.hit.ns, scene.tangentsAt(hit).dpdu)
                                    : Frame::fromNormal(sp.hit.ns);

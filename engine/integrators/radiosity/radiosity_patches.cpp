@@ -81,7 +81,7 @@ Color diffuseFactor(const Material& m) {
         Vec3 wo = sampleCosineHemisphere({(i % n + 0.5f) / n, (i / n + 0.5f) / n});
         for (int j = 0; j < n * n; ++j) {
             Vec3 wi = sampleCosineHemisphere({(j % n + 0.37f) / n, (j / n + 0.61f) / n});
-            sum += m.eval(wo, wi, MaterialInputs{Vec2{}, Color(1.0f)}, TransportMode::Radiance, kDiffuseLobe) * kPi;
+            sum += m.eval(wo, wi, MaterialInputs{{}, Color(1.0f)}, TransportMode::Radiance, kDiffuseLobe) * kPi;
         }
     }
     return sum / float(n * n * n * n);
@@ -241,7 +241,7 @@ private:
         uint32_t cellIndex = static_cast<uint32_t>(mesh_.cells_.size());
         mesh_.cells_.push_back(c);
         const Material& m = scene_.materialAt(s.material);
-        Color albedo = mesh_.diffuseReflectance(s.material, m.tint().eval(uv));
+        Color albedo = mesh_.diffuseReflectance(s.material, m.tint().eval({uv, center}));
         for (int side = 0; side < c.sides; ++side) {
             Patch p;
             p.cell = cellIndex;
@@ -250,7 +250,7 @@ private:
             p.normal = side ? -c.normal : c.normal;
             p.area = area;
             p.albedo = albedo;
-            p.exitance = side && !s.twoSidedEmission ? Color(0.0f) : s.emissionAt(uv) * kPi;
+            p.exitance = side && !s.twoSidedEmission ? Color(0.0f) : s.emissionAt({uv, center}) * kPi;
             mesh_.patches_.push_back(p);
         }
     }
