@@ -275,6 +275,24 @@ MakeNamedMaterial "r" "string type" "diffuse" "texture reflectance" "tgalinear"
                  "bad.pbrt:12: Texture \"odd\": encoding \"log\" is not sRGB, linear or \"gamma g\" (0 < g < 10)");
 }
 
+// An imagemap's "wrap" (clamp, black) and "invert" are the image texture's; invert with a
+// scale other than 1 is refused (pbrt inverts the scaled value).
+TEST(PbrtImport, ImagemapWrapAndInvert) {
+    const ImportedScene s = import(R"(
+Texture "edge" "spectrum" "imagemap" "string filename" "a.png" "string wrap" "clamp" "bool invert" true
+Texture "dark" "float" "imagemap" "string filename" "a.png" "string wrap" "black"
+MakeNamedMaterial "m" "string type" "diffuse" "texture reflectance" "edge"
+MakeNamedMaterial "n" "string type" "conductor" "texture roughness" "dark"
+)");
+    EXPECT_EQ(s.document["materials"]["m"]["albedo"],
+              Json::parse(R"({"type": "image", "file": "a.png", "wrap": "clamp", "invert": true})"));
+    EXPECT_EQ(s.document["materials"]["n"]["uroughness"],
+              Json::parse(R"({"type": "image", "file": "a.png", "channel": "r", "encoding": "srgb", "wrap": "black"})"));
+    EXPECT_STREQ(importError(kHeader + "Texture \"i\" \"spectrum\" \"imagemap\" \"string filename\" \"a.png\" "
+                                       "\"bool invert\" true \"float scale\" 2\n").what(),
+                 "bad.pbrt:12: Texture \"i\": \"invert\" with a \"scale\" other than 1 is not supported");
+}
+
 // coatedconductor becomes photon's coated_conductor: the interface's index and roughness
 // (alpha = sqrt(0.01) remapped, so photon's perceptual roughness is sqrt(0.1)), the metal's
 // index as pbrt gives it (the material divides it by the coat's) and roughness; a constant

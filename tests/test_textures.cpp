@@ -26,6 +26,34 @@ TEST(Textures, UvMappingScalesAndShiftsTheLookup) {
     EXPECT_VEC3_NEAR(shifted->lookup({0.25f, 0.75f}), Color(0, 1, 0), 1e-6);  // top right texel's centre
 }
 
+// Outside the unit square: the image's repeats, its edge texels, or black; the filter keeps
+// to the same rule at the edges. Inverted: max(0, 1 - value) (pbrt-v4's "wrap", "invert").
+TEST(Textures, WrapModesAndInversion) {
+    auto image = quadrants();
+    const Vec2 right{1.25f, 0.25f};  // a quarter past the right edge, in the bottom row
+    EXPECT_VEC3_NEAR(makeImageLookupTexture(image, ImageWrap::Repeat, false)->lookup({right}), Color(0, 0, 1), 1e-6);
+    EXPECT_VEC3_NEAR(makeImageLookupTexture(image, ImageWrap::Clamp, false)->lookup({right}), Color(1, 1, 1), 1e-6);
+    EXPECT_VEC3_NEAR(makeImageLookupTexture(image, ImageWrap::Black, false)->lookup({right}), Color(0.0f), 0);
+    // At the edge itself the repeat blends with the far side, the clamp does not.
+    EXPECT_VEC3_NEAR(image->lookup({0.0f, 0.25f}, ImageWrap::Repeat), Color(1, 1, 1) * 0.5f + Color(0, 0, 1) * 0.5f, 1e-6);
+    EXPECT_VEC3_NEAR(image->lookup({0.0f, 0.25f}, ImageWrap::Clamp), Color(0, 0, 1), 1e-6);
+    EXPECT_VEC3_NEAR(image->lookup({0.0f, 0.25f}, ImageWrap::Black), Color(0, 0, 1), 1e-6);
+    auto inverted = makeImageLookupTexture(image, ImageWrap::Repeat, true);
+    EXPECT_VEC3_NEAR(inverted->lookup({{0.25f, 0.25f}}), Color(1, 1, 0), 1e-6);   // blue
+    EXPECT_VEC3_NEAR(inverted->lookup({{0.75f, 0.25f}}), Color(0.0f), 1e-6);      // white
+    EXPECT_VEC3_NEAR(inverted->average(), Color(1.0f) - image->average(), 1e-4);
+    EXPECT_EQ(makeImageLookupTexture(image, ImageWrap::Repeat, false), image);  // no wrapper
+
+    Json doc = fullScene();
+    doc["materials"]["white"]["albedo"] =
+        Json::parse(R"({"type": "image", "file": "textures/wood.png", "wrap": "clamp", "invert": true})");
+    auto wood = ImageTexture::load(fixture().scene / "textures/wood.png");
+    const Color edge = wood->lookup({1.0f, 0.4f}, ImageWrap::Clamp);
+    EXPECT_VEC3_NEAR(load(doc).materials[0]->tint().eval({{3.0f, 0.4f}}), Color(1.0f) - edge, 1e-6);
+    expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"texture": "textures/wood.png", "wrap": "mirror"})"); },
+                "materials.white.albedo.wrap", "unknown wrap \"mirror\" (expected one of repeat, clamp, black)");
+}
+
 TEST(Textures, CheckerboardAlternatesByCellParity) {
     auto t = makeCheckerboardTexture(Color(0.8f), Color(0.1f, 0.2f, 0.3f), UvMapping{{4, 4}, {0, 0}});
     EXPECT_VEC3_NEAR(t->lookup({0.1f, 0.1f}), Color(0.8f), 0);                // cell (0, 0)

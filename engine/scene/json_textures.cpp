@@ -87,6 +87,8 @@ ImageChannels readChannels(JsonObject& obj, const ParamKind& kind) {
 }
 
 // {"texture": file} or {"type": "image", "file": file}, with a uv mapping and a channel.
+// "wrap": "repeat" (the default), "clamp" or "black" outside the unit square; "invert": true
+// reads max(0, 1 - value).
 // "encoding": "linear" reads an integer image's colour as stored instead of through the
 // sRGB curve, "gamma" with "gamma": g as stored to the power g (pbrt-v4's imagemap
 // "encoding"); a single channel is read as stored unless "srgb" or "gamma" is given for it.
@@ -106,7 +108,10 @@ std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, L
     if (encoding.kind != ImageEncoding::Gamma)
         if (auto g = obj.optional("gamma")) g->fail("needs \"encoding\": \"gamma\"");
     auto image = loadImage(obj.required(fileKey), channels, ctx, encoding);
-    return makeMappedTexture(image, readMapping(obj));
+    constexpr ImageWrap kWraps[] = {ImageWrap::Repeat, ImageWrap::Clamp, ImageWrap::Black};
+    const ImageWrap wrap = kWraps[obj.choice("wrap", 0, {"repeat", "clamp", "black"}, "wrap")];
+    const bool invert = obj.boolean("invert", false);
+    return makeMappedTexture(makeImageLookupTexture(std::move(image), wrap, invert), readMapping(obj));
 }
 
 std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, const ParamKind& kind) {

@@ -209,23 +209,29 @@ ImageTexture::ImageTexture(int width, int height, std::vector<Color> texels)
     average_ = Color(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n));
 }
 
-Color ImageTexture::lookup(const TexturePoint& at) const {
-    const Vec2 uv = at.uv;
-    // Reduce to [0, 1) first: this is the wrap, and it keeps the float→int casts below
-    // defined for any uv. Non-finite uvs read as 0.
-    auto wrap01 = [](float t) {
+Color ImageTexture::lookup(Vec2 uv, ImageWrap wrap) const {
+    if (wrap == ImageWrap::Black && !(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1)) return Color(0.0f);
+    const bool repeat = wrap == ImageWrap::Repeat;
+    // Into [0, 1) first for a repeat, [0, 1] otherwise: this is the wrap, and it keeps the
+    // float→int casts below defined for any uv. Non-finite uvs read as 0.
+    auto reduce = [repeat](float t) {
         if (!std::isfinite(t)) return 0.0f;
+        if (!repeat) return std::clamp(t, 0.0f, 1.0f);
         float f = t - std::floor(t);
         return f < 1.0f ? f : 0.0f;  // t = -1e-9 gives f = 1 after rounding
     };
     // Texel centres sit at (i + 0.5) / size. Image row 0 is the top, v = 0 the bottom.
-    float fx = wrap01(uv.x) * width_ - 0.5f;
-    float fy = (1.0f - wrap01(uv.y)) * height_ - 0.5f;
+    float fx = reduce(uv.x) * width_ - 0.5f;
+    float fy = (1.0f - reduce(uv.y)) * height_ - 0.5f;
     float x0f = std::floor(fx), y0f = std::floor(fy);
     float tx = fx - x0f, ty = fy - y0f;
-    auto wrapIndex = [](int i, int n) { return i < 0 ? i + n : (i >= n ? i - n : i); };
-    int x0 = wrapIndex(int(x0f), width_), x1 = wrapIndex(int(x0f) + 1, width_);
-    int y0 = wrapIndex(int(y0f), height_), y1 = wrapIndex(int(y0f) + 1, height_);
+    // The filter's neighbour past an edge: across it for a repeat, the edge texel otherwise.
+    auto index = [repeat](int i, int n) {
+        if (!repeat) return std::clamp(i, 0, n - 1);
+        return i < 0 ? i + n : (i >= n ? i - n : i);
+    };
+    int x0 = index(int(x0f), width_), x1 = index(int(x0f) + 1, width_);
+    int y0 = index(int(y0f), height_), y1 = index(int(y0f) + 1, height_);
     Color top = texel(x0, y0) * (1 - tx) + texel(x1, y0) * tx;
     Color bottom = texel(x0, y1) * (1 - tx) + texel(x1, y1) * tx;
     return top * (1 - ty) + bottom * ty;

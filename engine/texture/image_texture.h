@@ -45,6 +45,11 @@ struct ImageEncoding {
     auto operator<=>(const ImageEncoding&) const = default;
 };
 
+// What an image reads outside its unit square of uv (pbrt-v4's imagemap "wrap"): its
+// repeats, its edge texels stretched outward, or black. The bilinear filter follows the
+// same rule at the edges.
+enum class ImageWrap : uint8_t { Repeat, Clamp, Black };
+
 class ImageTexture final : public Texture {
 public:
     // Reads any format OpenImageIO knows. 8-bit and other integer images are taken as
@@ -59,7 +64,8 @@ public:
     ImageTexture(int width, int height, std::vector<Color> texels);
 
     // Bilinear lookup with wrap-around addressing; v = 0 is the bottom row (OBJ convention).
-    Color lookup(const TexturePoint& at) const override;
+    Color lookup(const TexturePoint& at) const override { return lookup(at.uv, ImageWrap::Repeat); }
+    Color lookup(Vec2 uv, ImageWrap wrap) const;
     Color average() const override { return average_; }
     int width() const { return width_; }
     int height() const { return height_; }

@@ -6,10 +6,15 @@
 #include <memory>
 #include "texture/color_param.h"
 #include "texture/float_param.h"
+#include "texture/image_texture.h"
 #include "texture/texture_mapping.h"
 
 namespace photon {
 
+// `image` read with `wrap` outside its unit square, and with `invert` as max(0, 1 - value)
+// (pbrt-v4's imagemap "wrap" and "invert"); the image itself for a plain repeat.
+std::shared_ptr<const Texture> makeImageLookupTexture(std::shared_ptr<const ImageTexture> image, ImageWrap wrap,
+                                                      bool invert);
 // `texture` looked up at mapping.apply(at): an image tiled, shifted or wrapped around a
 // sphere without a copy of it. Its average is the texture's own where the mapping is not
 // uv (the mean over the unit square of (s, t), not weighted by the surface's area).

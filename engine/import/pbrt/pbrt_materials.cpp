@@ -440,11 +440,23 @@ void SceneBuilder::texture(const Directive& d) {
             unsupported(d, "Texture \"" + name + "\": encoding \"" + encoding + "\" is not sRGB, linear or \"gamma g\" (0 < g < 10)",
                         "read as sRGB");
         }
-        if (p.boolean("invert", false)) unsupported(d, "Texture \"" + name + "\": \"invert\" is not supported", "not inverted");
         const std::string wrap = p.string("wrap", "repeat");
-        if (wrap != "repeat") warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
+        if (wrap == "clamp" || wrap == "black") {
+            t["wrap"] = wrap;
+        } else if (wrap != "repeat") {
+            warn(d.where, "Texture \"" + name + "\": wrap \"" + wrap + "\" read as repeat");
+        }
         for (const char* ignored : {"filter", "maxanisotropy"}) p.find(ignored);  // photon filters bilinearly
         const double scale = p.number("scale", 1);
+        if (p.boolean("invert", false)) {
+            // pbrt-v4 inverts the scaled value, max(0, 1 - scale v): photon's product comes
+            // after the image, so only a scale of 1 keeps that order.
+            if (scale != 1)
+                unsupported(d, "Texture \"" + name + "\": \"invert\" with a \"scale\" other than 1 is not supported",
+                            "not inverted");
+            else
+                t["invert"] = true;
+        }
         if (scale != 1) t = {{"type", "product"}, {"a", t}, {"b", color ? rgb(Color(float(scale))) : Json(scale)}};
     } else if (cls == "checkerboard") {
         const double dimension = p.number("dimension", 2);
