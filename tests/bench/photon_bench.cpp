@@ -49,6 +49,7 @@ struct Options {
     double referenceSeconds = 0;  // 0: 10x compareSeconds
     double compareSchedulesSeconds = 0;  // > 0: compare SPPM's radius schedules instead
     std::string compareReference;        // set: SPPM against this reference image instead
+    std::vector<std::string> scorePair;  // with compareReference: two renders to score, not render
     std::vector<double> referenceRuns{10, 30};
     std::vector<std::string> settings;  // KEY=VALUE for --compare-reference
     std::vector<std::string> variants;  // NAME:KEY=VALUE for --compare-reference
@@ -79,7 +80,7 @@ void declareOptions(CLI::App& app, Options& o) {
         ->check(CLI::PositiveNumber);
     app.add_option("--compare-schedules", o.compareSchedulesSeconds,
                    "compare SPPM's per-pixel and global radius schedules at this many seconds each instead");
-    app.add_option("--compare-reference", o.compareReference,
+    CLI::Option* reference = app.add_option("--compare-reference", o.compareReference,
                    "render the scene with SPPM for --seconds each (two seeds) and compare with this reference image "
                    "instead: relative noise, bias, RMSE")
         ->check(CLI::ExistingFile);
@@ -91,6 +92,13 @@ void declareOptions(CLI::App& app, Options& o) {
                    "path:render.integrator=path); repeat a NAME for more settings; each variant is rendered and "
                    "compared (with the -D settings too)")
         ->allow_extra_args(false);
+    app.add_option("--score-pair", o.scorePair,
+                   "--compare-reference: score these two renders (A.exr,B.exr: the same scene and time, seeds that "
+                   "differ) against the reference instead of rendering")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::ExistingFile)
+        ->needs(reference);
     app.add_flag("--markdown", o.markdown, "--compare-reference: print a Markdown table instead of JSON");
     app.add_option("--seconds", o.referenceRuns, "the render times for --compare-reference")
         ->delimiter(',')
@@ -227,6 +235,11 @@ int main(int argc, char** argv) {
         }
         if (o.meshMemoryTriangles > 0) {
             std::cout << photon::bench::meshMemory(o.meshMemoryTriangles, PHOTON_RENDER_BIN).dump(2) << std::endl;
+            return 0;
+        }
+        if (!o.compareReference.empty() && !o.scorePair.empty()) {
+            std::cout << photon::bench::scoreRenderPair(o.scorePair[0], o.scorePair[1], o.compareReference).dump(2)
+                      << std::endl;
             return 0;
         }
         if (!o.compareReference.empty()) {

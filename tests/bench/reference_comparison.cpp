@@ -49,6 +49,46 @@ std::optional<Image> boxReduced(const Image& image, int w, int h) {
     return out;
 }
 
+// The reference at w x h: itself, or box-averaged down when its size is a whole multiple;
+// nullopt when it is neither. Pixels where it is brighter than 25 times its mean are left out.
+struct ScoringReference {
+    Image image;
+    bool reduced = false;
+    std::vector<bool> keep;
+    size_t left = 0;
+};
+
+std::optional<ScoringReference> scoringReference(const Image& full, int w, int h) {
+    ScoringReference r;
+    if (full.width == w && full.height == h) {
+        r.image = full;
+    } else {
+        std::optional<Image> reduced = boxReduced(full, w, h);
+        if (!reduced) return std::nullopt;
+        r.image = std::move(*reduced), r.reduced = true;
+    }
+    const double fullMean = meanOf(r.image);
+    r.keep.assign(size_t(w) * h, true);
+    for (size_t p = 0; p < r.keep.size(); ++p) {
+        const float* c = &r.image.rgb[3 * p];
+        if ((c[0] + c[1] + c[2]) / 3 > 25 * fullMean) r.keep[p] = false, ++r.left;
+    }
+    return r;
+}
+
+// The figures of two renders that differ by their seed alone, against the reference.
+nlohmann::json scoreAgainst(const Image& a, const Image& b, const ScoringReference& reference) {
+    const Masked masked{reference.keep};
+    const double referenceMean = masked.mean(reference.image);
+    const double mean = 0.5 * (masked.mean(a) + masked.mean(b));
+    return {{"relative_noise", masked.rmse(a, b) / std::sqrt(2.0) / mean},
+            // The same figure in luminance, over the pixels the error estimate takes.
+            {"true_relative_error", relativeNoiseOfLuminance(a, b)},
+            {"bias_of_mean", mean / referenceMean - 1},
+            {"relative_rmse",
+             0.5 * (masked.rmse(a, reference.image) + masked.rmse(b, reference.image)) / referenceMean}};
+}
+
 }  // namespace
 
 nlohmann::json compareWithReference(const std::string& sceneFile, const std::string& referenceFile,
@@ -57,44 +97,47 @@ nlohmann::json compareWithReference(const std::string& sceneFile, const std::str
     // At the scene's own size when the reference reduces to it, else at the reference's.
     const Image full = readImage(referenceFile);
     const CameraDescription camera = describeScene(sceneFile, overrides).camera;
-    std::optional<Image> reduced = boxReduced(full, camera.width, camera.height);
-    const Image reference = reduced ? std::move(*reduced) : full;
-    const double fullMean = meanOf(reference);
-    std::vector<bool> keep(size_t(reference.width) * reference.height, true);
-    size_t left = 0;
-    for (size_t p = 0; p < keep.size(); ++p) {
-        const float* c = &reference.rgb[3 * p];
-        if ((c[0] + c[1] + c[2]) / 3 > 25 * fullMean) keep[p] = false, ++left;
-    }
-    const Masked masked{keep};
-    const double referenceMean = masked.mean(reference);
+    std::optional<ScoringReference> reference = scoringReference(full, camera.width, camera.height);
+    if (!reference) reference = scoringReference(full, full.width, full.height);
+    const int w = reference->image.width, h = reference->image.height;
     nlohmann::json out = {{"scene", sceneFile},
                           {"reference", referenceFile},
-                          {"resolution", {reference.width, reference.height}},
-                          {"pixels_left_out", left}};
+                          {"resolution", {w, h}},
+                          {"pixels_left_out", reference->left}};
     for (double s : seconds) {
         SceneDescription d = describeScene(sceneFile, overrides);
-        d.camera.width = reference.width, d.camera.height = reference.height;
+        d.camera.width = w, d.camera.height = h;
         // A reference reduced by box averages is a box filter of the render's pixel; the
         // scene's own filter, in the render's pixels, would blur k times wider than the
         // reference's did.
-        if (reduced && full.width != reference.width) d.camera.filter = PixelFilterDescription{};
+        if (reference->reduced) d.camera.filter = PixelFilterDescription{};
         const auto [a, b] = renderPairFor(std::move(d), s);
-        const double mean = 0.5 * (masked.mean(a.image) + masked.mean(b.image));
-        out["runs"].push_back({{"seconds", s},
-                               {"passes", a.passes},
-                               {"relative_noise", masked.rmse(a.image, b.image) / std::sqrt(2.0) / mean},
-                               // The renders' own estimate (the mean of the two) against its true
-                               // value: the same figure in luminance from the two seeds.
-                               {"estimated_relative_error",
-                                a.estimatedError && b.estimatedError
-                                    ? nlohmann::json(0.5 * (*a.estimatedError + *b.estimatedError))
-                                    : nlohmann::json()},
-                               {"true_relative_error", relativeNoiseOfLuminance(a.image, b.image)},
-                               {"bias_of_mean", mean / referenceMean - 1},
-                               {"relative_rmse", 0.5 * (masked.rmse(a.image, reference) + masked.rmse(b.image, reference)) /
-                                                     referenceMean}});
+        nlohmann::json run = {{"seconds", s},
+                              {"passes", a.passes},
+                              // The renders' own estimate (the mean of the two).
+                              {"estimated_relative_error",
+                               a.estimatedError && b.estimatedError
+                                   ? nlohmann::json(0.5 * (*a.estimatedError + *b.estimatedError))
+                                   : nlohmann::json()}};
+        run.update(scoreAgainst(a.image, b.image, *reference));
+        out["runs"].push_back(std::move(run));
     }
+    return out;
+}
+
+nlohmann::json scoreRenderPair(const std::string& firstFile, const std::string& secondFile,
+                               const std::string& referenceFile) {
+    const Image a = readImage(firstFile), b = readImage(secondFile);
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument(firstFile + " and " + secondFile + " differ in size");
+    const std::optional<ScoringReference> reference = scoringReference(readImage(referenceFile), a.width, a.height);
+    if (!reference)
+        throw std::invalid_argument(referenceFile + " is neither the renders' size nor a whole multiple of it");
+    nlohmann::json out = {{"renders", {firstFile, secondFile}},
+                          {"reference", referenceFile},
+                          {"resolution", {a.width, a.height}},
+                          {"pixels_left_out", reference->left}};
+    out.update(scoreAgainst(a, b, *reference));
     return out;
 }
 

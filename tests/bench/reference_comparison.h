@@ -19,6 +19,15 @@ nlohmann::json compareWithReference(const std::string& sceneFile, const std::str
                                     const std::vector<double>& seconds,
                                     const std::vector<SettingOverride>& overrides = {});
 
+// Two renders made elsewhere (another renderer, another build of photon) that differ by their
+// seed alone, scored as compareWithReference scores its own: the same figures by the same
+// code, so that a table can hold photon and its peers side by side (photon-bench
+// --compare-reference REF --score-pair A.exr,B.exr). The reference is box-averaged down to
+// the renders' size when it is a whole multiple of it. Throws std::invalid_argument when the
+// sizes do not fit.
+nlohmann::json scoreRenderPair(const std::string& firstFile, const std::string& secondFile,
+                               const std::string& referenceFile);
+
 // A named set of settings the scene is rendered with (photon-bench --variant NAME:KEY=VALUE).
 struct SceneVariant {
     std::string name;
