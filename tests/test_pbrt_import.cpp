@@ -531,7 +531,7 @@ TEST(PbrtImport, LenientImportLeavesOutWhatPhotonCannotRender) {
 MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1] "rgb Le" [1 1 1]
 MediumInterface "" "fog"
 Attribute "shape" "float radius" [2]
-Texture "noise" "spectrum" "marble" "integer octaves" [4]
+Texture "noise" "spectrum" "ptex" "string filename" "noise.ptx"
 MakeNamedMaterial "fur" "string type" "measured" "string filename" "fur.bsdf"
 MakeNamedMaterial "painted" "string type" "diffuse" "texture reflectance" "noise"
 NamedMaterial "fur"
@@ -543,8 +543,8 @@ LightSource "goniometric" "string filename" "profile.exr"
     const std::vector<std::string> expected = {
         "scene.pbrt:13: medium \"fog\" emits light (Le): photon's media do not emit; its emission left out (lenient "
         "import)",
-        "scene.pbrt:16: Texture \"noise\": class \"marble\" is not supported (photon imports imagemap, checkerboard, bilerp, "
-        "dots, fbm, wrinkled, windy, scale, mix, constant); the constant 0.5 used (lenient import)",
+        "scene.pbrt:16: Texture \"noise\": class \"ptex\" is not supported (photon imports imagemap, checkerboard, bilerp, "
+        "dots, fbm, wrinkled, windy, marble, scale, mix, directionmix, constant); the constant 0.5 used (lenient import)",
         "scene.pbrt:17: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
         "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, subsurface); rendered as a grey "
         "diffuse material (lenient import)",

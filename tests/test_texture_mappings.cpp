@@ -2,9 +2,13 @@
 // checkerboard and pbrt-v4's noise textures, against their definitions; the point reaching
 // them from the integrators (a cut-out and a bump), the scene JSON and the pbrt import.
 #include <cmath>
+#include <photon/render.h>
+#include "integrators/integrator.h"
 #include "materials/normal_map.h"
 #include "pbrt_import_fixture.h"
+#include "scene_builders.h"
 #include "scene_loader_fixture.h"
+#include "test_support.h"
 #include "texture/perlin_noise.h"
 #include "texture/textures.h"
 
@@ -233,6 +237,140 @@ TEST(TextureMappings, SceneJsonReadsMappingsAndSolidTextures) {
 
 // pbrt-v4's textures that read the point arrive with the CTM at their Texture directive as
 // the placement of their space.
+// pbrt-v4's marble: its colour ramp is a cubic Bezier spline over nine colours, six segments
+// of four control points; the texture reads it at 1/2 + sin(y + variation fbm) / 2 of the
+// point scaled, times 1.5.
+TEST(NoiseTextures, MarbleFollowsItsSplineOfTheVeinsBentByNoise) {
+    const Color grey(.58f, .58f, .6f);
+    EXPECT_EQ(marbleSpline(0.0f), grey);  // the first control point
+    EXPECT_NEAR(marbleSpline(1.0f).z, grey.z, 1e-6f);  // the last segment ends on the last
+    // t = 1/2 starts the fourth segment, on its first control point (0.5, 0.5, 0.5).
+    EXPECT_EQ(marbleSpline(0.5f), Color(0.5f));
+    // Half way along the fourth segment: (c3 + 3 c4 + 3 c5 + c6) / 8.
+    const Color half = marbleSpline(3.5f / 6.0f);
+    EXPECT_NEAR(half.x, (0.5f + 3 * 0.6f + 3 * 0.58f + 0.58f) / 8, 1e-6f);
+    EXPECT_NEAR(half.y, (0.5f + 3 * 0.59f + 3 * 0.58f + 0.58f) / 8, 1e-6f);
+    EXPECT_NEAR(half.z, (0.5f + 3 * 0.58f + 3 * 0.6f + 0.6f) / 8, 1e-6f);
+    // The slate blue (0.2, 0.2, 0.33) pulls the sixth segment's middle down.
+    EXPECT_LT(marbleSpline(5.5f / 6.0f).x, 0.45f);
+
+    const Transform textureFromWorld = Transform::scale(Vec3(2.0f));
+    const float scale = 3.0f, variation = 0.7f;
+    const auto marble = makeMarbleTexture(textureFromWorld, 6, 0.45f, scale, variation);
+    for (Vec3 p : {Vec3(0.31f, -0.72f, 1.05f), Vec3(-2.4f, 0.13f, 0.5f)}) {
+        const Vec3 q = p * (2.0f * scale);
+        const float t = 0.5f + 0.5f * std::sin(q.y + variation * fractalBrownianMotion(q, 0.45f, 6));
+        const Color expected = marbleSpline(t) * 1.5f;
+        const Color got = marble->lookup({{0.5f, 0.5f}, p});
+        EXPECT_NEAR(got.x, expected.x, 1e-5f);
+        EXPECT_NEAR(got.z, expected.z, 1e-5f);
+    }
+    // Over a large region the veins average to about 1.5 times the ramp's mean grey.
+    const Color mean = makeMarbleTexture(Transform(), 8, 0.5f, 1.0f, 0.2f)->average();
+    EXPECT_GT(mean.x, 1.5f * 0.45f);
+    EXPECT_LT(mean.x, 1.5f * 0.6f);
+    EXPECT_GT(mean.z, mean.x);  // bluish where the slate shows
+}
+
+TEST(NoiseTextures, MarbleInTheSceneFileAndThePbrtImport) {
+    Json doc = fullScene();
+    doc["materials"]["white"]["albedo"] =
+        Json::parse(R"({"type": "marble", "octaves": 4, "scale": 2.5, "variation": 0.3, "mapping": {"type": "solid"}})");
+    SceneDescription scene = load(doc);
+    const Vec3 p{0.2f, 0.4f, 0.6f};
+    const Vec3 q = p * 2.5f;
+    const Color expected = marbleSpline(0.5f + 0.5f * std::sin(q.y + 0.3f * fractalBrownianMotion(q, 0.5f, 4))) * 1.5f;
+    EXPECT_VEC3_NEAR(scene.materials[0]->tint().eval({{}, p}), expected, 1e-5);
+    expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "marble", "variation": -1})"); },
+                "materials.white.albedo.variation", "must be >= 0");
+    expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "marble", "scale": 0})"); },
+                "materials.white.albedo.scale", "must be > 0");
+
+    using namespace pbrt_import;
+    const ImportedScene s = import(R"(
+Scale 2 2 2
+Texture "stone" "spectrum" "marble" "integer octaves" 5 "float variation" 0.5 "float scale" 4
+MakeNamedMaterial "floor" "string type" "diffuse" "texture reflectance" "stone"
+)");
+    const Json scaled = Json::parse(R"({"matrix": [2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]})");
+    EXPECT_EQ(s.document["materials"]["floor"]["albedo"],
+              (Json{{"type", "marble"}, {"octaves", 5}, {"roughness", 0.5}, {"scale", 4.0}, {"variation", 0.5},
+                    {"mapping", {{"type", "solid"}, {"transform", scaled}}}}));
+    // pbrt-v4 has no float marble.
+    EXPECT_STREQ(importError(kHeader + "\nTexture \"m\" \"float\" \"marble\"\n").what(),
+                 "bad.pbrt:13: Texture \"m\": class \"marble\" is not supported (photon imports imagemap, checkerboard, "
+                 "bilerp, dots, fbm, wrinkled, windy, marble, scale, mix, directionmix, constant)");
+}
+
+// pbrt-v4's directionmix: `along` weighted by |n . direction| at the surface's normal n,
+// `across` by the rest, whichever way n points.
+TEST(DirectionMix, WeighsItsTwoSidesByTheNormalsCosineToTheDirection) {
+    const auto t = makeDirectionMixTexture(Color(1, 0, 0), Color(0, 0, 1), Vec3(0, 0, 2));
+    EXPECT_EQ(t->lookup({{}, Vec3(5.0f), Vec3(0, 0, -1)}), Color(1, 0, 0));
+    EXPECT_EQ(t->lookup({{}, Vec3(5.0f), Vec3(1, 0, 0)}), Color(0, 0, 1));
+    EXPECT_VEC3_NEAR(t->lookup({{}, Vec3(5.0f), Vec3(0, 0.6f, 0.8f)}), Color(0.8f, 0, 0.2f), 1e-6);
+    // Over a surface facing every way alike, |cos| averages 1/2.
+    EXPECT_VEC3_NEAR(t->average(), Color(0.5f, 0, 0.5f), 1e-6);
+}
+
+// The normal reaches the texture from each integrator: a plane (normal +y) under a point
+// light whose albedo is a direction mix at cos 0.6 renders as the plane of the mixed albedo,
+// 0.6 x 0.7 + 0.4 x 0.1 = 0.46, by the path tracer's shading points and by SPPM's photons
+// (their tint where they land) and visible points.
+TEST(DirectionMix, ThePlanesNormalReachesItFromTheIntegrators) {
+    const ColorParam mixed(makeDirectionMixTexture(Color(0.7f), Color(0.1f), Vec3(0, 0.6f, 0.8f)));
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        auto render = [&](bool textured) {
+            SceneDescription d = test::pointLightPlane(0.46f, 10.0f, 1.0f, 16, 2.0f);
+            if (textured) d.materials[0] = makeDiffuse(mixed);
+            d.render.integrator = kind;
+            d.render.direct = DirectLighting::Photons;
+            d.render.passes = 16;
+            d.render.adaptivePhotons = false;
+            d.render.photonsPerPass = 20000;
+            return test::meanOver(test::renderImage(std::move(d)), 0, 0, 16, 16);
+        };
+        const Color textured = render(true), plain = render(false);
+        EXPECT_NEAR(textured.y, plain.y, 0.01f * plain.y) << (kind == IntegratorKind::Path ? "path" : "sppm");
+    }
+    // And the scene file's form.
+    Json doc = fullScene();
+    doc["materials"]["white"]["albedo"] = Json::parse(
+        R"({"type": "direction_mix", "along": [0.7, 0.7, 0.7], "across": [0.1, 0.1, 0.1], "direction": [0, 3, 4]})");
+    SceneDescription scene = load(doc);
+    EXPECT_VEC3_NEAR(scene.materials[0]->tint().eval({{}, Vec3(0.0f), Vec3(0, 1, 0)}), Color(0.46f), 1e-6);
+    expectError(
+        [](Json& d) {
+            d["materials"]["white"]["albedo"] =
+                Json::parse(R"({"type": "direction_mix", "along": [1, 1, 1], "across": [0, 0, 0], "direction": [0, 0, 0]})");
+        },
+        "materials.white.albedo.direction", "must not be the zero vector");
+}
+
+TEST(DirectionMix, PbrtImportTurnsTheDirectionByTheCtm) {
+    using namespace pbrt_import;
+    const ImportedScene s = import(R"(
+Texture "rock" "spectrum" "imagemap" "string filename" "rock.png"
+AttributeBegin
+Rotate 90 0 0 1
+Texture "snow" "spectrum" "directionmix" "rgb tex1" [1 1 1] "texture tex2" "rock" "vector3 dir" [0 2 0]
+AttributeEnd
+Texture "f" "float" "directionmix"
+MakeNamedMaterial "ground" "string type" "diffuse" "texture reflectance" "snow"
+MakeNamedMaterial "rough" "string type" "conductor" "texture roughness" "f"
+)");
+    const Json& snow = s.document["materials"]["ground"]["albedo"];
+    EXPECT_EQ(snow["type"], "direction_mix");
+    EXPECT_EQ(snow["along"], Json::parse("[1, 1, 1]"));
+    EXPECT_EQ(snow["across"]["type"], "image");
+    // +y turned 90 degrees about z is -x.
+    EXPECT_NEAR(snow["direction"][0].get<double>(), -1.0, 1e-6);
+    EXPECT_NEAR(snow["direction"][1].get<double>(), 0.0, 1e-6);
+    // pbrt-v4's defaults: tex1 0, tex2 1, dir +y.
+    EXPECT_EQ(s.document["materials"]["rough"]["uroughness"],
+              (Json{{"type", "direction_mix"}, {"along", 0.0}, {"across", 1.0}, {"direction", {0.0, 1.0, 0.0}}}));
+}
+
 TEST(TextureMappings, PbrtImportKeepsMappingsAndTheTexturesSpace) {
     using namespace pbrt_import;
     const ImportedScene s = import(R"(

@@ -130,8 +130,8 @@ TEST(Textures, SceneJsonNestsTextures) {
 
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "noise"})"); },
                 "materials.white.albedo.type",
-                "unknown texture type \"noise\" (expected one of image, checkerboard, bilerp, dots, fbm, wrinkled, windy, product, "
-                "mix)");
+                "unknown texture type \"noise\" (expected one of image, checkerboard, bilerp, dots, fbm, wrinkled, windy, marble, "
+                "product, mix, direction_mix)");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "checkerboard", "even": [2, 0, 0], "odd": [0, 0, 0]})"); },
                 "materials.white.albedo.even[0]", "must be in [0, 1]");
     expectError([](Json& d) { d["materials"]["white"]["albedo"] = Json::parse(R"({"type": "mix", "a": [0, 0, 0], "b": [1, 1, 1], "amount": [1, 1, 1]})"); },

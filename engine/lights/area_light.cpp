@@ -49,7 +49,7 @@ public:
         }
         // A photon leaving p cosine-distributed about frame.n carries Le pi A sides: the
         // light's whole power where the emission is uniform.
-        Color flux = shape_.emissionTexture ? shape_.emissionAt({s.uv, s.p}) * (kPi * area_ * sides_) : power_;
+        Color flux = shape_.emissionTexture ? shape_.emissionAt({s.uv, s.p, s.n}) * (kPi * area_ * sides_) : power_;
         return PhotonEmission{s.p, frame.toWorld(sampleCosineHemisphere(uDirection)), flux, frame.n};
     }
 
@@ -69,7 +69,7 @@ protected:
         float cosLight = -dot(s.n, wi);
         if (sides_ > 1) cosLight = std::abs(cosLight);
         if (cosLight <= 0) return std::nullopt;
-        return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p}) * (cosLight * area / dist2) / pick,
+        return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p, s.n}) * (cosLight * area / dist2) / pick,
                            dist2 / (cosLight * area) * pick};
     }
     // The same density for the point a ray from p along wi met.
@@ -148,7 +148,7 @@ public:
         const Vec3 onLight = p + *wi * dist;
         Vec2 uv;
         if (shape_.emissionTexture) uv = uvOn(i, onLight);
-        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight}) * angles->total, 1.0f / angles->total};
+        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight, tri.frame.n}) * angles->total, 1.0f / angles->total};
     }
 
     float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
@@ -358,7 +358,7 @@ public:
                                               std::sqrt(std::max(0.0f, r * r - cone->distance * cone->distance * sin2Theta)));
         const Vec3 onLight = p + wi * dist;
         const Vec3 normal = normalize(onLight - shape_.center);
-        const Color Le = shape_.emissionAt({shape_.emissionTexture ? sphereUv(normal) : Vec2{}, onLight});
+        const Color Le = shape_.emissionAt({shape_.emissionTexture ? sphereUv(normal) : Vec2{}, onLight, normal});
         return LightSample{wi, dist, Le / cone->pdf, cone->pdf};
     }
 

@@ -35,8 +35,8 @@ inline Vec3 bumpedNormal(const FloatParam& height, const TexturePoint& at, Vec3 
     if (lengthSquared(t.dpdu) == 0 || lengthSquared(t.dpdv) == 0) return n;
     const Vec2 uv = at.uv;
     const float h = height.eval(at);
-    const float dhdu = (height.eval({{uv.x + kBumpStep, uv.y}, at.p + t.dpdu * kBumpStep}) - h) / kBumpStep;
-    const float dhdv = (height.eval({{uv.x, uv.y + kBumpStep}, at.p + t.dpdv * kBumpStep}) - h) / kBumpStep;
+    const float dhdu = (height.eval({{uv.x + kBumpStep, uv.y}, at.p + t.dpdu * kBumpStep, at.n}) - h) / kBumpStep;
+    const float dhdv = (height.eval({{uv.x, uv.y + kBumpStep}, at.p + t.dpdv * kBumpStep, at.n}) - h) / kBumpStep;
     Vec3 bent = cross(t.dpdu + n * dhdu, t.dpdv + n * dhdv);
     if (dot(bent, n) < 0) bent = -bent;
     return keptAbove(bent, n, ng);

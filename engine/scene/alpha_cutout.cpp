@@ -22,12 +22,15 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
         const unsigned primitive = RTCHitN_primID(args->hit, n, i);
+        // Embree's geometric normal, in the object's frame as the point below (not of unit
+        // length for a triangle).
+        const Vec3 ng = normalize(
+            Vec3(RTCHitN_Ng_x(args->hit, n, i), RTCHitN_Ng_y(args->hit, n, i), RTCHitN_Ng_z(args->hit, n, i)));
         Vec2 uv;
         if (shape.kind == ShapeDescription::Kind::Sphere) {
             // Embree's sphere normal points outward whatever flip_normals says: the uv the
             // scene gives the hit (Scene::fillSphereHit).
-            uv = sphereUv(normalize(Vec3(RTCHitN_Ng_x(args->hit, n, i), RTCHitN_Ng_y(args->hit, n, i),
-                                         RTCHitN_Ng_z(args->hit, n, i))));
+            uv = sphereUv(ng);
         } else {
             uv = shape.mesh.uvAt(primitive, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
         }
@@ -36,7 +39,7 @@ void cutoutFilter(const RTCFilterFunctionNArguments* args) {
         const Vec3 p{RTCRayN_org_x(args->ray, n, i) + t * RTCRayN_dir_x(args->ray, n, i),
                      RTCRayN_org_y(args->ray, n, i) + t * RTCRayN_dir_y(args->ray, n, i),
                      RTCRayN_org_z(args->ray, n, i) + t * RTCRayN_dir_z(args->ray, n, i)};
-        const float a = shape.alpha.eval({uv, p});
+        const float a = shape.alpha.eval({uv, p, ng});
         if (shape.alphaCutoff > 0) {  // a mask: no randomness
             if (a < shape.alphaCutoff) args->valid[i] = 0;
             continue;

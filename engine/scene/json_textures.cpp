@@ -116,9 +116,9 @@ std::shared_ptr<const Texture> readImage(JsonObject& obj, const char* fileKey, L
 
 std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, const ParamKind& kind) {
     if (!obj.has("type")) return readImage(obj, "texture", ctx, kind);  // {"texture": "file.png"}
-    enum Type { Image, Checkerboard, Bilerp, Dots, Fbm, Wrinkled, Windy, Product, Mix };
+    enum Type { Image, Checkerboard, Bilerp, Dots, Fbm, Wrinkled, Windy, Marble, Product, Mix, DirectionMix };
     const Type type = Type(obj.required("type").choice(
-        {"image", "checkerboard", "bilerp", "dots", "fbm", "wrinkled", "windy", "product", "mix"}, "texture type"));
+        {"image", "checkerboard", "bilerp", "dots", "fbm", "wrinkled", "windy", "marble", "product", "mix", "direction_mix"}, "texture type"));
     switch (type) {
         case Image: return readImage(obj, "file", ctx, kind);
         case Checkerboard: {
@@ -148,6 +148,13 @@ std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, co
                                : makeWrinkledTexture(textureFromWorld, octaves, roughness);
         }
         case Windy: return makeWindyTexture(readOptionalSolidMapping(obj));
+        case Marble: {
+            const int octaves = int(obj.integer("octaves", 8, 1, 30));
+            const float roughness = obj.number("roughness", 0.5f, Range::closed(0, 1));
+            const float scale = obj.number("scale", 1.0f, Range::positive());
+            const float variation = obj.number("variation", 0.2f, Range::nonNegative());
+            return makeMarbleTexture(readOptionalSolidMapping(obj), octaves, roughness, scale, variation);
+        }
         case Product: {
             ColorParam a = readParam(obj.required("a"), ctx, kind);
             ColorParam b = readParam(obj.required("b"), ctx, kind);
@@ -158,6 +165,11 @@ std::shared_ptr<const Texture> readTexture(JsonObject& obj, LoadContext& ctx, co
             ColorParam b = readParam(obj.required("b"), ctx, kind);
             FloatParam amount = readFloatParam(obj.required("amount"), ctx, Range::closed(0, 1));
             return makeMixTexture(std::move(a), std::move(b), std::move(amount));
+        }
+        case DirectionMix: {
+            ColorParam along = readParam(obj.required("along"), ctx, kind);
+            ColorParam across = readParam(obj.required("across"), ctx, kind);
+            return makeDirectionMixTexture(std::move(along), std::move(across), obj.required("direction").direction());
         }
     }
     return nullptr;  // unreachable: choice() accepts only the names above

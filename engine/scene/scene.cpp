@@ -329,7 +329,7 @@ SurfaceTangents Scene::tangentsAt(const SurfaceHit& hit) const {
 
 Color Scene::emitted(const SurfaceHit& hit, Vec3 w) const {
     const ShapeDescription& s = *slots_[hit.shape];
-    return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt({hit.uv, hit.p}) : Color(0.0f);
+    return dot(hit.ng, w) > 0 || s.twoSidedEmission ? s.emissionAt({hit.uv, hit.p, hit.ng}) : Color(0.0f);
 }
 
 Color Scene::environment(const Ray& ray) const {

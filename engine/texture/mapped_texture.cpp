@@ -11,7 +11,7 @@ public:
           // measured. Where (s, t) comes from the point, the surface decides which part of
           // the pattern is seen: the pattern's own mean stands for it.
           average_(mapping_.kind == TextureMapping::Kind::Uv ? meanOverUnitSquare(*this) : texture_->average()) {}
-    Color lookup(const TexturePoint& at) const override { return texture_->lookup({mapping_.apply(at), at.p}); }
+    Color lookup(const TexturePoint& at) const override { return texture_->lookup({mapping_.apply(at), at.p, at.n}); }
     Color average() const override { return average_; }
 
 private:

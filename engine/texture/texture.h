@@ -6,11 +6,14 @@
 
 namespace photon {
 
-// Where a texture is read: the surface's texture coordinates and its point in world space
-// (solid textures and the spherical, cylindrical and planar mappings read the point).
+// Where a texture is read: the surface's texture coordinates, its point in world space
+// (solid textures and the spherical, cylindrical and planar mappings read the point) and its
+// normal there, of either sign (directionmix reads it; zero where no surface is meant: a
+// texture's mean, a material's albedo table).
 struct TexturePoint {
     Vec2 uv;
     Vec3 p{0.0f};
+    Vec3 n{0.0f};
 };
 
 class Texture {

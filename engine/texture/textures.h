@@ -36,6 +36,11 @@ std::shared_ptr<const Texture> makeBilerpTexture(ColorParam v00, ColorParam v01,
 std::shared_ptr<const Texture> makeFbmTexture(const Transform& textureFromWorld, int octaves, float roughness);
 std::shared_ptr<const Texture> makeWrinkledTexture(const Transform& textureFromWorld, int octaves, float roughness);
 std::shared_ptr<const Texture> makeWindyTexture(const Transform& textureFromWorld);
+// pbrt-v4's marble: veins of grey and slate blue along y, bent by fbm(q) times `variation`,
+// q the point in the texture's space times `scale`; marbleSpline(t) is its colour ramp.
+std::shared_ptr<const Texture> makeMarbleTexture(const Transform& textureFromWorld, int octaves, float roughness,
+                                                 float scale, float variation);
+Color marbleSpline(float t);
 // `inside` within polka dots on the (s, t) plane of the mapping (pbrt-v4's dots), `outside`
 // elsewhere.
 std::shared_ptr<const Texture> makeDotsTexture(ColorParam inside, ColorParam outside, TextureMapping mapping);
@@ -43,6 +48,9 @@ std::shared_ptr<const Texture> makeDotsTexture(ColorParam inside, ColorParam out
 std::shared_ptr<const Texture> makeProductTexture(ColorParam a, ColorParam b);
 // (1 - amount) a + amount b.
 std::shared_ptr<const Texture> makeMixTexture(ColorParam a, ColorParam b, FloatParam amount);
+// t along + (1 - t) across, t = |n . direction| for the surface's normal n where it is read
+// (pbrt-v4's directionmix); `direction` need not be of unit length, not zero.
+std::shared_ptr<const Texture> makeDirectionMixTexture(ColorParam along, ColorParam across, Vec3 direction);
 
 // The mean of lookup() over the unit square by a fixed 256 x 256 midpoint grid: the
 // average of textures whose mean has no closed form (products and mixes of textures).

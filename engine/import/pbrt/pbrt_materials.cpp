@@ -409,6 +409,15 @@ void SceneBuilder::texture(const Directive& d) {
         placement(m);
         t["mapping"] = m;
     };
+    // fbm's, wrinkled's and marble's type, octaves and roughness, checked.
+    auto noiseOctaves = [&](const std::string& type) -> Json {
+        const double octaves = p.number("octaves", 8), roughness = p.number("roughness", 0.5);
+        if (!(octaves >= 1 && octaves <= 30 && octaves == std::floor(octaves)))
+            fail(d.where, "Texture \"" + name + "\": \"octaves\" must be a whole number from 1 to 30");
+        if (!(roughness >= 0 && roughness <= 1))
+            fail(d.where, "Texture \"" + name + "\": \"roughness\" must be in [0, 1]");
+        return {{"type", type}, {"octaves", int(octaves)}, {"roughness", roughness}};
+    };
     Json t;
     if (cls == "imagemap") {
         const std::string file = p.string("filename", "");
@@ -473,15 +482,20 @@ void SceneBuilder::texture(const Directive& d) {
              {"v11", value("v11", 1)}};
         mapping(t);
     } else if (cls == "fbm" || cls == "wrinkled") {
-        const double octaves = p.number("octaves", 8), roughness = p.number("roughness", 0.5);
-        if (!(octaves >= 1 && octaves <= 30 && octaves == std::floor(octaves)))
-            fail(d.where, "Texture \"" + name + "\": \"octaves\" must be a whole number from 1 to 30");
-        if (!(roughness >= 0 && roughness <= 1))
-            fail(d.where, "Texture \"" + name + "\": \"roughness\" must be in [0, 1]");
-        t = {{"type", cls}, {"octaves", int(octaves)}, {"roughness", roughness}};
+        t = noiseOctaves(cls);
         solid(t);
     } else if (cls == "windy") {
         t = {{"type", "windy"}};
+        solid(t);
+    } else if (cls == "marble" && color) {
+        // A spectrum texture only in pbrt-v4 (its float textures have no marble).
+        const double scale = p.number("scale", 1), variation = p.number("variation", 0.2);
+        if (!(scale > 0 && std::isfinite(scale)))
+            fail(d.where, "Texture \"" + name + "\": \"scale\" must be positive");
+        if (!(variation >= 0 && std::isfinite(variation)))
+            fail(d.where, "Texture \"" + name + "\": \"variation\" must not be negative");
+        t = noiseOctaves("marble");
+        t["scale"] = scale, t["variation"] = variation;
         solid(t);
     } else if (cls == "dots") {
         t = {{"type", "dots"}, {"inside", value("inside", 1)}, {"outside", value("outside", 0)}};
@@ -493,11 +507,20 @@ void SceneBuilder::texture(const Directive& d) {
     } else if (cls == "mix") {
         const std::optional<Json> amount = floatValue(p, "amount");
         t = {{"type", "mix"}, {"a", value("tex1", 0)}, {"b", value("tex2", 1)}, {"amount", amount.value_or(Json(0.5))}};
+    } else if (cls == "directionmix") {
+        // pbrt-v4 turns "dir" by the CTM at the Texture (renderFromTexture) and normalises it.
+        const Vec3 dir = state_.ctm.vector(p.vec3("dir", {0, 1, 0}));
+        if (!(lengthSquared(dir) > 0) || !std::isfinite(lengthSquared(dir)))
+            fail(d.where, "Texture \"" + name + "\": \"dir\" must be a direction, not zero");
+        const Vec3 unit = normalize(dir);
+        t = {{"type", "direction_mix"}, {"along", value("tex1", 0)}, {"across", value("tex2", 1)},
+             {"direction", {unit.x, unit.y, unit.z}}};
     } else if (cls == "constant") {
         t = value("value", 1);
     } else {
         unsupported(d, "Texture \"" + name + "\": class \"" + cls +
-                           "\" is not supported (photon imports imagemap, checkerboard, bilerp, dots, fbm, wrinkled, windy, scale, mix, constant)",
+                           "\" is not supported (photon imports imagemap, checkerboard, bilerp, dots, fbm, wrinkled, windy, marble, scale, mix, "
+                           "directionmix, constant)",
                     "the constant 0.5 used");
         t = color ? rgb(Color(0.5f)) : Json(0.5);
     }

@@ -391,7 +391,7 @@ private:
     // A hit that waits for its bounce in lanes.
     void keepHit(int i, const SurfaceHit& hit, const ShapeScattering& shape) {
         PhotonLanes& L = lanes_;
-        Color tint = shape.textured ? shape.material->tint().eval({hit.uv, hit.p}) : shape.tint;
+        Color tint = shape.textured ? shape.material->tint().eval({hit.uv, hit.p, hit.ng}) : shape.tint;
         L.px[i] = hit.p.x, L.py[i] = hit.p.y, L.pz[i] = hit.p.z;
         L.ngx[i] = hit.ng.x, L.ngy[i] = hit.ng.y, L.ngz[i] = hit.ng.z;
         L.nsx[i] = hit.ns.x, L.nsy[i] = hit.ns.y, L.nsz[i] = hit.ns.z;

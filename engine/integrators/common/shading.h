@@ -30,7 +30,7 @@ inline void turnTowardViewer(const Material& m, SurfaceHit& hit, Vec3 wo) {
 }
 inline ShadingPoint makeShadingPoint(const Scene& scene, const SurfaceHit& hit, Vec3 wo) {
     const Material& m = scene.material(hit);
-    const TexturePoint at{hit.uv, hit.p};
+    const TexturePoint at{hit.uv, hit.p, hit.ng};
     ShadingPoint sp{hit, &m, {}, m.inputsAt(at)};
     turnTowardViewer(m, sp.hit, wo);
     if (m.bendsNormal()) sp.hit.ns = m.bentNormal(at, sp.hit.ns, sp.hit.ng, scene.tangentsAt(hit));

@@ -241,7 +241,7 @@ private:
         uint32_t cellIndex = static_cast<uint32_t>(mesh_.cells_.size());
         mesh_.cells_.push_back(c);
         const Material& m = scene_.materialAt(s.material);
-        Color albedo = mesh_.diffuseReflectance(s.material, m.tint().eval({uv, center}));
+        Color albedo = mesh_.diffuseReflectance(s.material, m.tint().eval({uv, center, c.normal}));
         for (int side = 0; side < c.sides; ++side) {
             Patch p;
             p.cell = cellIndex;
@@ -250,7 +250,7 @@ private:
             p.normal = side ? -c.normal : c.normal;
             p.area = area;
             p.albedo = albedo;
-            p.exitance = side && !s.twoSidedEmission ? Color(0.0f) : s.emissionAt({uv, center}) * kPi;
+            p.exitance = side && !s.twoSidedEmission ? Color(0.0f) : s.emissionAt({uv, center, c.normal}) * kPi;
             mesh_.patches_.push_back(p);
         }
     }

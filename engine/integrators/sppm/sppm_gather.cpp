@@ -125,7 +125,7 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
             Frame frame = Frame::fromNormal(vn);
             const Material& m = scene_->materialAt(vp.material);
             Color f =
-                m.eval(vp.woLocal.decode(), frame.toLocal(hit.wi), m.inputsAt({vp.uv, discs_[point].center}), TransportMode::Radiance, vp.lobes);
+                m.eval(vp.woLocal.decode(), frame.toLocal(hit.wi), m.inputsAt({vp.uv, discs_[point].center, vn}), TransportMode::Radiance, vp.lobes);
             if (isBlack(f)) return;
             c = vp.beta * f;
         }
