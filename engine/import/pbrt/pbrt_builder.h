@@ -60,6 +60,7 @@ private:
     void transformDirective(const Directive& d);
     // pbrt_camera.cpp: Camera, Film, Sampler, Integrator, PixelFilter and the options.
     void camera(const Directive& d);
+    void realisticCamera(const Directive& d);
     void pixelFilter(const Directive& d);
     void film(const Directive& d);
     void sampler(const Directive& d);
@@ -168,6 +169,8 @@ private:
         bool seen = false;
         Transform cameraToWorld;
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
+        // A realistic camera's lens system, kept as its paraxial focal length (lenient import).
+        std::optional<double> lensFocalLengthMm;
         bool orthographic = false;
         std::optional<std::string> sphericalMapping;  // a spherical camera's "equal_area" or "equirectangular"
         std::optional<std::vector<double>> screenWindow;
@@ -185,6 +188,7 @@ private:
     // makes the image four times as bright. The image being linear in the lights, photon
     // scales every light by it instead (1 with pbrt-v4's defaults, ISO 100 and a shutter of 1).
     double iso_ = 100, exposureTime_ = 1;
+    double filmDiagonalMm_ = 35;  // pbrt-v4's Film "diagonal", for a realistic camera's view
     double imagingRatio() const { return exposureTime_ * iso_ / 100; }
     bool worldBegun_ = false;
 };

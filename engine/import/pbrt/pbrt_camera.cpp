@@ -1,7 +1,13 @@
 // Camera, Film, Sampler and Integrator: photon's camera and render settings.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
 #include "description/pixel_filter_description.h"
+#include "import/pbrt/lens_system.h"
 #include "import/pbrt/pbrt_builder.h"
+#include "scene/scene_paths.h"
 
 namespace photon::pbrt {
 
@@ -12,7 +18,7 @@ constexpr double kDegrees = 180.0 / 3.14159265358979323846;
 void SceneBuilder::camera(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
-    if (type != "perspective" && type != "orthographic" && type != "spherical")
+    if (type != "perspective" && type != "orthographic" && type != "spherical" && type != "realistic")
         fail(d.where, "Camera \"" + type + "\" is not supported (photon has perspective, orthographic and spherical cameras)");
     camera_.orthographic = type == "orthographic";
     if (std::abs(pointCtm(d).determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
@@ -33,6 +39,10 @@ void SceneBuilder::camera(const Directive& d) {
         for (const char* unused : {"lensradius", "focaldistance", "screenwindow", "frameaspectratio", "fov"}) p.find(unused);
         return;
     }
+    if (type == "realistic") {
+        realisticCamera(d);
+        return;
+    }
     if (!camera_.orthographic) {
         camera_.fov = p.number("fov", 90);
         if (!(camera_.fov > 0 && camera_.fov < 180)) fail(d.where, "Camera: fov must be in (0, 180)");
@@ -45,6 +55,43 @@ void SceneBuilder::camera(const Directive& d) {
     // pbrt-v4 spans its default screen window over this aspect ratio instead of the film's
     // (checked in writeCameraAndRender, once the film is known).
     if (auto frame = p.number("frameaspectratio")) camera_.frameAspectRatio = *frame;
+}
+
+// pbrt-v4's RealisticCamera traces rays through a lens system (lens_system.h), which
+// photon's camera cannot: a lenient import keeps what a thin lens can of it, the view its
+// paraxial focal length gives the film at the focus distance, its aperture and focus.
+void SceneBuilder::realisticCamera(const Directive& d) {
+    Params p(d);
+    const std::string file = p.string("lensfile", "");
+    const double aperture = p.number("aperturediameter", 1.0), focus = p.number("focusdistance", 10.0);
+    const std::string refused = "Camera \"realistic\" (a lens system) is not supported (photon has perspective, "
+                                "orthographic and spherical cameras)";
+    if (!lenient_) fail(d.where, refused);
+    if (file.empty()) fail(d.where, "Camera \"realistic\" needs a \"lensfile\"");
+    if (auto why = checkRelativePath(file)) fail(d.where, "Camera \"realistic\": \"" + file + "\": " + *why);
+    const std::filesystem::path path = baseDir_ / file;
+    std::ifstream in(path);
+    if (!in || !isInsideFolder(path, baseDir_)) fail(d.where, "Camera \"realistic\": lens file not found: " + file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const LensFile lens = parseLensFile(text.str());
+    if (!lens.error.empty()) fail(d.where, "Camera \"realistic\": " + file + ": " + lens.error);
+    const std::optional<double> focal = paraxialFocalLength(lens.interfaces);
+    if (!focal) fail(d.where, "Camera \"realistic\": " + file + ": the lens system does not focus light");
+    // Lens files are in millimetres, the scene in metres (pbrt-v4 scales the rows by 0.001).
+    if (!(focus * 1000 > *focal))
+        fail(d.where, "Camera \"realistic\": the focus distance is inside the lens's focal length");
+    // pbrt-v4 clamps the aperture to the stop's own diameter.
+    const double stop = std::min(aperture, apertureStopDiameter(lens.interfaces).value_or(aperture));
+    camera_.lensFocalLengthMm = *focal;
+    camera_.lensRadius = stop / 2 * 0.001;
+    camera_.focalDistance = focus;
+    char instead[240];
+    std::snprintf(instead, sizeof instead,
+                  "rendered as a thin lens of its paraxial focal length, %.1f mm at f/%.1f, focused at %g: its "
+                  "distortion, vignetting and aberrations left out",
+                  *focal, *focal / stop, focus);
+    unsupported(d, refused, instead);
 }
 
 namespace {
@@ -108,6 +155,9 @@ void SceneBuilder::film(const Directive& d) {
     height_ = static_cast<int>(p.number("yresolution", 720));
     iso_ = p.number("iso", 100);
     if (!(iso_ > 0)) fail(d.where, "Film: \"iso\" must be > 0");
+    // The sensor's diagonal in mm: the film a realistic camera's lens images onto.
+    filmDiagonalMm_ = p.number("diagonal", 35);
+    if (!(filmDiagonalMm_ > 0)) fail(d.where, "Film: \"diagonal\" must be > 0");
     p.find("filename");  // photon's outputs are named by its caller
 }
 
@@ -208,6 +258,15 @@ void SceneBuilder::writeViewOfLens(Json& cam) const {
         if (!symmetric)
             fail(camera_.where, "Camera: a screenwindow that is not centred or not of the image's shape is not supported");
         tanHalf *= w[3] / defaultHalfHeight;
+    }
+    if (camera_.lensFocalLengthMm) {
+        // The film (pbrt-v4's diagonal, in mm, over the image's shape) at the image distance
+        // of the focus plane behind the rear principal plane: 1/v = 1/f - 1/focus.
+        const double f = *camera_.lensFocalLengthMm;
+        const double v = 1 / (1 / f - 1 / (camera_.focalDistance * 1000));
+        const double aspect = double(height_) / width_;
+        const double filmHeight = aspect * std::sqrt(filmDiagonalMm_ * filmDiagonalMm_ / (1 + aspect * aspect));
+        tanHalf = filmHeight / 2 / v;
     }
     if (camera_.orthographic) {
         // The screen is in camera space, which the camera's transform scales into the world.
