@@ -16,30 +16,36 @@ float threshold(const RTCRayN* ray, unsigned n, unsigned i, unsigned primitive) 
     return static_cast<float>(h >> 40) * 0x1p-24f;
 }
 
+// Where candidate hit i meets the shape, for a textured alpha: uv, the point and Embree's
+// geometric normal (made unit), all in the object's frame.
+TexturePoint candidatePoint(const ShapeDescription& shape, const RTCFilterFunctionNArguments* args, unsigned i) {
+    const unsigned n = args->N;
+    const Vec3 ng = normalize(
+        Vec3(RTCHitN_Ng_x(args->hit, n, i), RTCHitN_Ng_y(args->hit, n, i), RTCHitN_Ng_z(args->hit, n, i)));
+    Vec2 uv;
+    if (shape.kind == ShapeDescription::Kind::Sphere) {
+        // Embree's sphere normal points outward whatever flip_normals says: the uv the
+        // scene gives the hit (Scene::fillSphereHit).
+        uv = sphereUv(ng);
+    } else {
+        uv = shape.mesh.uvAt(RTCHitN_primID(args->hit, n, i), RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
+    }
+    // Embree has set the ray's tfar to the candidate hit's distance.
+    const float t = RTCRayN_tfar(args->ray, n, i);
+    const Vec3 p{RTCRayN_org_x(args->ray, n, i) + t * RTCRayN_dir_x(args->ray, n, i),
+                 RTCRayN_org_y(args->ray, n, i) + t * RTCRayN_dir_y(args->ray, n, i),
+                 RTCRayN_org_z(args->ray, n, i) + t * RTCRayN_dir_z(args->ray, n, i)};
+    return {uv, p, ng};
+}
+
 void cutoutFilter(const RTCFilterFunctionNArguments* args) {
     const auto& shape = *static_cast<const ShapeDescription*>(args->geometryUserPtr);
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
         const unsigned primitive = RTCHitN_primID(args->hit, n, i);
-        // Embree's geometric normal, in the object's frame as the point below (not of unit
-        // length for a triangle).
-        const Vec3 ng = normalize(
-            Vec3(RTCHitN_Ng_x(args->hit, n, i), RTCHitN_Ng_y(args->hit, n, i), RTCHitN_Ng_z(args->hit, n, i)));
-        Vec2 uv;
-        if (shape.kind == ShapeDescription::Kind::Sphere) {
-            // Embree's sphere normal points outward whatever flip_normals says: the uv the
-            // scene gives the hit (Scene::fillSphereHit).
-            uv = sphereUv(ng);
-        } else {
-            uv = shape.mesh.uvAt(primitive, RTCHitN_u(args->hit, n, i), RTCHitN_v(args->hit, n, i));
-        }
-        // Embree has set the ray's tfar to the candidate hit's distance.
-        const float t = RTCRayN_tfar(args->ray, n, i);
-        const Vec3 p{RTCRayN_org_x(args->ray, n, i) + t * RTCRayN_dir_x(args->ray, n, i),
-                     RTCRayN_org_y(args->ray, n, i) + t * RTCRayN_dir_y(args->ray, n, i),
-                     RTCRayN_org_z(args->ray, n, i) + t * RTCRayN_dir_z(args->ray, n, i)};
-        const float a = shape.alpha.eval({uv, p, ng});
+        // A constant alpha reads nothing of the hit.
+        const float a = shape.alpha.textured() ? shape.alpha.eval(candidatePoint(shape, args, i)) : shape.alpha.value;
         if (shape.alphaCutoff > 0) {  // a mask: no randomness
             if (a < shape.alphaCutoff) args->valid[i] = 0;
             continue;
