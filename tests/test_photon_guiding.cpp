@@ -136,8 +136,11 @@ TEST(PhotonGuiding, ImageAgreesWithPlainEmission) {
         d.camera.lookAt = {-0.6f, 0.3f, -0.6f};
         d.camera.fovDegrees = 8;
         d.render.photonGuiding = guided;
-        // One camera path a pixel a pass: the photons' counts alone tell the two apart.
+        // One camera path a pixel a pass, and alpha's radii: the photons' counts alone tell
+        // the two apart (radii that follow the light shrink more where more photons make the
+        // light's curvature plain, and each photon then reaches fewer discs).
         d.render.adaptiveCameraPaths = false;
+        d.render.adaptiveRadius = false;
         Renderer r(Scene::build(std::move(d)));
         CancelToken cancel;
         int64_t hits = 0;

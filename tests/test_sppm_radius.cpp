@@ -19,7 +19,9 @@ SceneDescription smallCornell(int resolution) {
 
 TEST(SppmRadius, FollowsTheProgressiveSchedule) {
     const int res = 24;
-    auto scene = Scene::build(smallCornell(res));
+    SceneDescription d = smallCornell(res);
+    d.render.adaptiveRadius = false;  // alpha's schedule alone (test_adaptive_radius.cpp has the other)
+    auto scene = Scene::build(std::move(d));
     SppmIntegrator sppm(scene);
     CancelToken cancel;
     ASSERT_TRUE(sppm.renderPass(cancel));
@@ -58,6 +60,7 @@ TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
         SceneDescription d = smallCornell(res);
         d.render.photonsPerPass = photons;
         d.render.autoRadiusPhotons = photonsPerDisc;
+        d.render.adaptiveRadius = false;  // the first pass's shrink is then alpha's
         auto scene = Scene::build(std::move(d));
         SppmIntegrator sppm(scene);
         CancelToken cancel;

@@ -227,13 +227,15 @@ TEST_F(JobsTest, TheScenesTargetErrorEndsTheJobWhereTheEngineWould) {
         EXPECT_EQ(bad->status, 400) << query;
     }
     // Continued, it renders that many passes more: the target, reached, stops it no longer.
-    httplib::Result more = client().Post(("/api/v1/jobs/" + id + "/continue?passes=3").c_str());
+    // Eight, not fewer: on this 16 x 16 image of 2,000 photons a pass one pass's outlier can
+    // lift the estimate for a few passes (pass 7's reads 1.35 with the target met at pass 4).
+    httplib::Result more = client().Post(("/api/v1/jobs/" + id + "/continue?passes=8").c_str());
     ASSERT_TRUE(more);
     ASSERT_EQ(more->status, 200) << more->body;
     job = waitFor(id, [](const json& j) { return j["status"] == "completed" && j["pass"] > 0; }, std::chrono::seconds(60));
-    job = waitFor(id, [&](const json& j) { return j["status"] == "completed" && j["pass"] == engine.pass + 3; },
+    job = waitFor(id, [&](const json& j) { return j["status"] == "completed" && j["pass"] == engine.pass + 8; },
                   std::chrono::seconds(60));
-    EXPECT_EQ(job["settings"]["passes"], engine.pass + 3);
+    EXPECT_EQ(job["settings"]["passes"], engine.pass + 8);
     EXPECT_TRUE(job["target_error"].is_null());
     EXPECT_LT(job["relative_error"].get<double>(), *engine.relativeError);
 }

@@ -126,6 +126,10 @@ struct RenderSettings {
     // camera-side variance and the pass's costs make worth it, the first storing the visible
     // point (docs/sppm.md, "Camera paths per pass").
     bool adaptiveCameraPaths = true;
+    // SPPM with the per-pixel schedule: each pixel's radius shrinks as far as the bias its
+    // photons' spread shows asks for, not by alpha's schedule alone (docs/sppm.md, "Radii
+    // that follow the light").
+    bool adaptiveRadius = true;
     // SPPM in media that scatter: a camera path's visible point goes where it first scatters
     // in a medium, and photons are gathered there in a ball (a volumetric photon map's
     // estimate) as well as on surfaces (docs/sppm.md, "Volume photons"). Never: visible
@@ -178,6 +182,9 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     if (s.sampler != SamplerKind::Sobol) visit(s.sampler);
     // Likewise: a checkpoint written before volume photons existed goes on with "auto".
     if (s.volumePhotons != VolumePhotons::Auto) visit(s.volumePhotons);
+    // Likewise: a checkpoint written before radii followed the light goes on with them, its
+    // moments learnt anew (AdaptiveRadius::restore).
+    if (!s.adaptiveRadius) visit(s.adaptiveRadius);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):
@@ -192,6 +199,12 @@ inline bool learnsLobeChoice(const RenderSettings& s) {
 inline bool adaptsCameraPaths(const RenderSettings& s) {
     return s.adaptiveCameraPaths && s.integrator == IntegratorKind::Sppm &&
            s.radiusSchedule == RadiusSchedule::PerPixel && !s.lightweight;
+}
+
+// Whether SPPM's radii follow each pixel's photons (adaptiveRadius): with the per-pixel
+// schedule only, whose radii are per pixel.
+inline bool adaptsRadius(const RenderSettings& s) {
+    return s.adaptiveRadius && s.integrator == IntegratorKind::Sppm && s.radiusSchedule == RadiusSchedule::PerPixel;
 }
 
 }  // namespace photon

@@ -27,8 +27,9 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)), gathersInMedia_(gathersInMedia(*scene_)),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)),
-      adaptsCameraPaths_(adaptsCameraPaths(settings_)) {
+      adaptsCameraPaths_(adaptsCameraPaths(settings_)), adaptsRadius_(adaptsRadius(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
+    if (adaptsRadius_) radius_ = AdaptiveRadius(width_, height_);
     if (adaptsCameraPaths_) cameraPaths_ = AdaptiveCameraPaths(width_, height_);
     size_t n = static_cast<size_t>(width_) * height_;
     if (global()) {
@@ -90,7 +91,8 @@ size_t SppmIntegrator::bytesPerPixel() const {
     const size_t state = global() ? 4 * sizeof(int64_t)
                          : sizeof(PixelState) + 2 * sizeof(float) +
                                (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0) +
-                               (adaptsCameraPaths_ ? AdaptiveCameraPaths::kBytesPerPixel : 0);
+                               (adaptsCameraPaths_ ? AdaptiveCameraPaths::kBytesPerPixel : 0) +
+                               (adaptsRadius_ ? AdaptiveRadius::kBytesPerPixel : 0);
     const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
                         static_cast<size_t>(std::max(height_, 1));
     return state + sizeof(PassResult) + band;
@@ -244,8 +246,10 @@ void SppmIntegrator::collectBand() {
                          static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
                          static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
         r.flux = SharedExponentColor::of(flux, Rng(rounding, bandOffset_ + k).uniform());
-        r.photonCount = vp.photonCount;
+        r.photonCount = vp.photonCount();
         r.radiusSquared = discs_[k].radiusSquared;
+        // A ball's photons spread as a volume's, which the disc's rule does not read.
+        r.spread = vp.inMedium || guidePass_ >= 0 ? PhotonSpread::kUnknown : PhotonSpread::of(vp.high(), r.photonCount);
     });
 }
 
@@ -267,14 +271,24 @@ void SppmIntegrator::updateStatistics() {
                             std::max(passLuminance - r.choice.directBeforeChoice(), 0.0f));
         if (adaptsCameraPaths_) cameraPaths_.add(i, static_cast<float>(r.paths()), fromBfloat16(r.squares));
         PixelState& px = pixels_[i];
+        if (adaptsRadius_) radius_.add(i, r.photonCount, r.spread, r.radiusSquared);
         px.directSum += r.direct.color() * static_cast<float>(r.paths());  // the pass's is its paths' mean
         if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
-        uint32_t m = r.photonCount;
+    });
+    // After every pixel's moments: a pixel's radius reads its neighbours' too.
+    tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
+        PixelState& px = pixels_[i];
+        const float m = static_cast<float>(results_[i].photonCount);
         if (m == 0 || px.r2 == 0) return;
-        const Color phi = r.flux.color();
-        float nNew = px.n + settings_.alpha * static_cast<float>(m);
-        float shrink = nNew / (px.n + static_cast<float>(m));
-        px.tau = (px.tau + phi) * shrink;
+        float nNew, shrink;
+        if (adaptsRadius_) {
+            shrink = radius_.shrink(i, px.n, m, px.r2, settings_.alpha);
+            nNew = (px.n + m) * shrink;
+        } else {
+            nNew = px.n + settings_.alpha * m;
+            shrink = nNew / (px.n + m);
+        }
+        px.tau = (px.tau + results_[i].flux.color()) * shrink;
         px.r2 *= shrink;
         px.n = nNew;
     });
@@ -312,6 +326,7 @@ void SppmIntegrator::saveState(std::ostream& out) const {
         }
         if (learnsLobeChoice_) lobeChoice_.save(out);
         if (adaptsCameraPaths_) cameraPaths_.save(out);
+        if (adaptsRadius_) radius_.save(out);
         halves_.save(out);
     }
 }
@@ -373,9 +388,12 @@ void SppmIntegrator::restoreState(std::istream& in) {
     AdaptiveCameraPaths cameraPaths = cameraPaths_;
     if (adaptsCameraPaths_)
         cameraPaths.restore(in, passes, [&](size_t i) { return luminance(pixels[i].directSum); });
+    AdaptiveRadius radius = radius_;
+    if (adaptsRadius_) radius.restore(in);
     std::lock_guard<std::mutex> lock(stateMutex_);
     halves_.restore(in, passes);  // last: it checks the end, and commits only if all is well
     lobeChoice_ = std::move(lobeChoice);
+    radius_ = std::move(radius);
     cameraPaths_ = std::move(cameraPaths);
     passes_ = passes;
     pixels_ = std::move(pixels);

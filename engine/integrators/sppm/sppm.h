@@ -20,6 +20,7 @@
 #include "scene/scene.h"
 #include "integrators/common/shading.h"
 #include "integrators/integrator.h"
+#include "integrators/sppm/adaptive_radius.h"
 #include "integrators/sppm/camera_paths.h"
 #include "integrators/sppm/lobe_choice.h"
 #include "math/bfloat16.h"
@@ -84,12 +85,17 @@ private:
         uint32_t lambertian : 1 = 0;
         uint32_t transmits : 1 = 0;  // photons arriving on the far side count too
         uint32_t inMedium : 1 = 0;   // a point in a medium (above)
-        uint32_t photonCount = 0;  // M: photons gathered this pass, atomically added
-        // With photon guiding: what a photon reaching this point is worth to the guide
-        // (guideWeight(); in what was padding before the flux).
-        uint32_t guideWeight = 0;
+        // M, the photons gathered this pass, in the low 32 bits; in the high 32 bits, in the
+        // render's passes the sum of their d^2 / r^2 (PhotonSpread, render.adaptive_radius),
+        // in the photon guide's training passes what a photon reaching this point is worth to
+        // the guide (guideWeight()). One atomic add counts a photon and its spread.
+        uint64_t gathered = 0;
         uint64_t flux[3] = {0, 0, 0};  // Phi in fixed point, atomically added
+        uint32_t photonCount() const { return static_cast<uint32_t>(gathered); }
+        uint32_t high() const { return static_cast<uint32_t>(gathered >> 32); }
+        void setGuideWeight(uint32_t w) { gathered = static_cast<uint64_t>(w) << 32; }
     };
+    static_assert(sizeof(VisiblePoint) == 64);
 
     // What a pass leaves at each pixel for the statistics once all its bands are done (the
     // visible points, their discs and the grid hold one band at a time): 24 bytes a pixel,
@@ -109,6 +115,8 @@ private:
         // (bfloat16, for the variance alone), and the paths beyond the first.
         uint16_t squares = 0;
         uint8_t extraPaths = 0;
+        // render.adaptive_radius: its photons' mean d^2 / r^2 (PhotonSpread).
+        uint8_t spread = PhotonSpread::kUnknown;
         int paths() const { return extraPaths + 1; }
     };
     static_assert(sizeof(PassResult) == 24);
@@ -269,6 +277,9 @@ private:
     // render.adaptive_camera_paths (adaptsCameraPaths): the camera paths per pixel and pass.
     bool adaptsCameraPaths_;
     AdaptiveCameraPaths cameraPaths_;
+    // render.adaptive_radius (adaptsRadius): each pixel's moments of its photons' spread.
+    bool adaptsRadius_;
+    AdaptiveRadius radius_;
     // The camera paths pixel i's direct light sum was made of.
     float directPaths(size_t i) const {
         return adaptsCameraPaths_ ? cameraPaths_.pathsTraced(i) : static_cast<float>(passes_);

@@ -310,7 +310,7 @@ void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta,
     vp.beta = weight;
     vp.material = static_cast<uint32_t>(medium);
     vp.inMedium = 1;
-    if (guidePass_ >= 0) vp.guideWeight = guideWeight(index);
+    if (guidePass_ >= 0) vp.setGuideWeight(guideWeight(index));
 }
 
 void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes,
@@ -325,7 +325,7 @@ void SppmIntegrator::storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec
     const bool lambertian = sp.material->lambertian() && woLocal.z > 0;
     visible_[local] = VisiblePoint{n, OctahedralVector(woLocal), lambertian ? beta * sp.inputs.tint * kInvPi : beta,
                                    sp.hit.uv, scene_->materialIndex(sp.hit), lobes, lambertian, sp.material->transmits()};
-    if (guidePass_ >= 0) visible_[local].guideWeight = guideWeight(index);
+    if (guidePass_ >= 0) visible_[local].setGuideWeight(guideWeight(index));
 }
 
 }  // namespace photon

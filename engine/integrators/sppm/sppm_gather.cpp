@@ -117,7 +117,17 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         // the same surface, its normal turned toward the photon.
         float facing = dot(vn, hit.n);
         if (vp.transmits) facing = std::abs(facing);
-        if (facing < 0.5f) return;
+        if (facing < 0.5f) [[unlikely]] {
+            // A surface facing elsewhere inside the disc's sphere is a corner or an edge the
+            // disc reaches past, where it counts area with no photons: such a photon counts
+            // toward the spread as one at the rim, which reads as the light curving there
+            // and shrinks the radius (adaptive_radius.h). Not a photon that scattered in a
+            // medium (no normal), nor in the guide's training passes.
+            if (!counters.guideWorth && hit.n != Vec3{})
+                std::atomic_ref<uint64_t>(vp.gathered)
+                    .fetch_add(static_cast<uint64_t>(PhotonSpread::kUnitsPerPhoton) << 32, std::memory_order_relaxed);
+            return;
+        }
         if (vp.lambertian) {  // f = tint / pi above the surface, already in beta
             if (!(dot(vn, hit.wi) > 0)) return;
             c = vp.beta;
@@ -132,7 +142,11 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         kernel = kernelWeight(settings_.kernel, d2OverR2);
     }
     ++counters.accepted;
-    if (counters.guideWorth) counters.guideWorth[hit.cell] += vp.guideWeight;
+    // The photon, and its d^2 / r^2 for render.adaptive_radius (rounded to the nearest unit),
+    // but not in the guide's training passes, whose points keep their guide weight there.
+    uint64_t gathered = 1;
+    if (counters.guideWorth) counters.guideWorth[hit.cell] += vp.high();
+    else gathered |= static_cast<uint64_t>(d2OverR2 * PhotonSpread::kUnitsPerPhoton + 0.5f) << 32;
     c *= hit.flux * kernel;
     for (int k = 0; k < 3; ++k) {
         // Scaling by a power of two is exact in float as in double, and the units fit a
@@ -142,7 +156,7 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         auto units = static_cast<uint64_t>(static_cast<int64_t>(std::min(v, 0x1p62f)));
         std::atomic_ref<uint64_t>(vp.flux[k]).fetch_add(units, std::memory_order_relaxed);
     }
-    std::atomic_ref<uint32_t>(vp.photonCount).fetch_add(1, std::memory_order_relaxed);
+    std::atomic_ref<uint64_t>(vp.gathered).fetch_add(gathered, std::memory_order_relaxed);
 }
 
 }  // namespace photon
