@@ -1,6 +1,7 @@
 #include "integrators/sppm/adaptive_radius.h"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include "integrators/common/checkpoint.h"
 #include "integrators/sppm/pixel_neighbourhood.h"
 

@@ -122,8 +122,9 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
             // disc reaches past, where it counts area with no photons: such a photon counts
             // toward the spread as one at the rim, which reads as the light curving there
             // and shrinks the radius (adaptive_radius.h). Not a photon that scattered in a
-            // medium (no normal), nor in the guide's training passes.
-            if (!counters.guideWorth && hit.n != Vec3{})
+            // medium (no normal), nor in the guide's training passes, nor where radii follow
+            // alpha's schedule alone (the spread is then never read).
+            if (adaptsRadius_ && !counters.guideWorth && hit.n != Vec3{})
                 std::atomic_ref<uint64_t>(vp.gathered)
                     .fetch_add(static_cast<uint64_t>(PhotonSpread::kUnitsPerPhoton) << 32, std::memory_order_relaxed);
             return;
