@@ -73,7 +73,7 @@ void Renderer::updateErrorEstimate() {
     progress_.relativeError.reset();
     progress_.passesToTarget.reset();
     errors_.reset();
-    if (progress_.pass < 2) return;  // asked for only when there is one (8 bytes a pixel)
+    if (progress_.pass < 2) return;  // asked for only when there is one (2 bytes a pixel)
     std::optional<PixelErrors> e = integrator_->pixelErrors();
     if (!e) return;
     const double error = relativeErrorOf(*e);

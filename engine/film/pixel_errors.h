@@ -10,19 +10,31 @@
 // of freedom: noisy alone, accurate summed over an image or smoothed for the heat map.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <vector>
 #include <photon/image.h>
+#include "math/bfloat16.h"
 
 namespace photon {
 
+// Means over errorPixels of the variance estimates and of the luminance (0 with none).
+struct ErrorMoments {
+    double variance = 0, luminance = 0;
+};
+
 struct PixelErrors {
     int width = 0, height = 0;
-    std::vector<float> luminance;  // the image's, per pixel
-    std::vector<float> variance;   // the estimated variance of that luminance
+    // Each pixel's estimated variance of its luminance, in bfloat16 (0.4%; the heat map
+    // averages 25 of them, each with one degree of freedom, to about 14%): 2 bytes a pixel.
+    // A render holds them from pass to pass for its images' heat maps; the luminance and
+    // variance in floats took 8, which put a 3840 x 2160 frame's peak 2.6% over 1 GiB.
+    std::vector<uint16_t> variance;
+    ErrorMoments moments;  // over errorPixels, in full precision
     // The error falls as passes^-decay: 1/2 for independent samples of one distribution;
     // alpha / 2 for SPPM, whose passes' variance grows as their radius shrinks (Knaus &
     // Zwicker 2011, sec. 4.2: Var_i ~ i^(1 - alpha), so the mean's is ~ N^-alpha).
     double decay = 0.5;
+    float varianceAt(size_t i) const { return fromBfloat16(variance[i]); }
 };
 
 // Var F from the halves' luminance sums (see above); 0 until each half has a pass.
@@ -33,27 +45,35 @@ inline float halfSplitVariance(double oddSum, double evenSum, int64_t oddCount, 
     return float(d * d * double(oddCount) * double(evenCount) / (n * n));
 }
 
+// A pixel's figure, read where it is kept (no copy of the frame).
+using PixelFigure = std::function<float(size_t pixel)>;
+
 // The pixels the relative error is measured over: all but lights seen directly, i.e.
 // pixels brighter than 25 times the image's mean luminance (the rule the comparisons with
 // reference images follow), and their eight neighbours: the pixels a light's edge crosses,
 // which see it in some passes and not others, have little to do with light transport but
 // a variance far above any other's, and would make the estimate hinge on a few pixels.
+// Calls visit(pixel, its luminance, whether it is one of them) for every pixel in order,
+// reading each pixel's luminance twice (the mean, then three rows at a time).
+void forErrorPixels(int width, int height, const PixelFigure& luminanceAt,
+                    const std::function<void(size_t pixel, float luminance, bool kept)>& visit);
 std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, int height);
 
-// Means over errorPixels of the variance estimates and of the luminance (0 with none).
-struct ErrorMoments {
-    double variance = 0, luminance = 0;
-};
-ErrorMoments errorMoments(const PixelErrors& e);
+// The moments of a frame whose pixels' luminance and variance estimate are read in place.
+ErrorMoments errorMomentsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt);
+// The same, keeping each pixel's variance for the heat map.
+PixelErrors pixelErrorsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
+                          double decay);
 
 // The image's relative error: RMS over errorPixels of the estimated standard error, over
 // their mean luminance (the relative noise photon-bench measures from two seeds). Summed
 // in a fixed order, so the same passes give the same figure on any thread count.
 double relativeErrorOf(const PixelErrors& e);
 
-// The heat map: a layer "error" with channels sd (the standard error of luminance, in the
-// image's units), relative (sd / luminance) and luminance, each a 5 x 5 box mean of the
-// per-pixel estimates (25 degrees of freedom instead of one: about 14% precision).
-ImageLayer errorLayer(const PixelErrors& e);
+// The heat map of `image`, whose errors `e` are: a layer "error" with channels sd (the
+// standard error of luminance, in the image's units), relative (sd / luminance) and
+// luminance (the image's own), the first two from 5 x 5 box means of the per-pixel
+// estimates and luminance (25 degrees of freedom instead of one: about 14% precision).
+ImageLayer errorLayer(const PixelErrors& e, const Image& image);
 
 }  // namespace photon

@@ -1,4 +1,5 @@
 #include <photon/pending_image.h>
+#include <optional>
 #include "film/pixel_errors.h"
 #include "post/denoiser.h"
 
@@ -12,8 +13,10 @@ PendingImage::~PendingImage() = default;
 
 const LayeredImage& PendingImage::layers() const {
     std::call_once(once_, [&] {
+        std::optional<ImageLayer> error;
+        if (errors_) error = errorLayer(*errors_, raw_);
         layers_ = denoiser_ ? denoiser_->layers(std::move(raw_)) : LayeredImage{std::move(raw_), {}};
-        if (errors_) layers_.layers.push_back(errorLayer(*errors_));
+        if (error) layers_.layers.push_back(std::move(*error));
     });
     return layers_;
 }

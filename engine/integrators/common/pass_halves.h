@@ -28,16 +28,13 @@ public:
     template <class RadianceAt>
     std::optional<PixelErrors> errors(int width, int height, RadianceAt radianceAt, double decay) const {
         if (!known_) return std::nullopt;
-        PixelErrors e;
-        e.width = width, e.height = height, e.decay = decay;
-        const size_t n = size_t(width) * height;
-        e.luminance.resize(n);
-        e.variance.resize(n);
-        for (size_t i = 0; i < n; ++i) {
-            e.luminance[i] = luminance(radianceAt(i));
-            e.variance[i] = halfSplitVariance(sums_[2 * i + 1], sums_[2 * i], counts_[1], counts_[0]);
-        }
-        return e;
+        return pixelErrorsOf(width, height, [&](size_t i) { return luminance(radianceAt(i)); }, varianceAt(), decay);
+    }
+    // Their moments alone, keeping nothing of the frame's size.
+    template <class RadianceAt>
+    std::optional<ErrorMoments> moments(int width, int height, RadianceAt radianceAt) const {
+        if (!known_) return std::nullopt;
+        return errorMomentsOf(width, height, [&](size_t i) { return luminance(radianceAt(i)); }, varianceAt());
     }
 
     // Checkpoints carry the halves after the integrator's own state. A checkpoint written
@@ -49,6 +46,9 @@ public:
     void restore(std::istream& in, int64_t passes);
 
 private:
+    PixelFigure varianceAt() const {
+        return [this](size_t i) { return halfSplitVariance(sums_[2 * i + 1], sums_[2 * i], counts_[1], counts_[0]); };
+    }
     std::vector<float> sums_;  // per pixel: odd-pass sum, even-pass sum
     int64_t counts_[2] = {0, 0};
     bool known_ = true;

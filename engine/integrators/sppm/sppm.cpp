@@ -420,19 +420,16 @@ std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
     const double decay = settings_.alpha / 2;  // film/pixel_errors.h
     if (!global()) return halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, decay);
     if (!sumsHalfKnown_) return std::nullopt;
-    PixelErrors e;
-    e.width = width_, e.height = height_, e.decay = decay;
-    const size_t n = static_cast<size_t>(width_) * height_;
-    e.luminance.resize(n);
-    e.variance.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const double odd = static_cast<double>(sums_.oddLuminance[i]);
-        const double all = static_cast<double>(fixedLuminance(&sums_.values[3 * i]));
-        e.luminance[i] = static_cast<float>(all / (PassSums::kScale * static_cast<double>(std::max<int64_t>(passes_, 1))));
-        e.variance[i] = halfSplitVariance(odd / PassSums::kScale, (all - odd) / PassSums::kScale, sums_.oddCount,
-                                          sums_.count - sums_.oddCount);
-    }
-    return e;
+    const double passes = static_cast<double>(std::max<int64_t>(passes_, 1));
+    auto all = [&](size_t i) { return static_cast<double>(fixedLuminance(&sums_.values[3 * i])); };
+    return pixelErrorsOf(
+        width_, height_, [&](size_t i) { return static_cast<float>(all(i) / (PassSums::kScale * passes)); },
+        [&](size_t i) {
+            const double odd = static_cast<double>(sums_.oddLuminance[i]);
+            return halfSplitVariance(odd / PassSums::kScale, (all(i) - odd) / PassSums::kScale, sums_.oddCount,
+                                     sums_.count - sums_.oddCount);
+        },
+        decay);
 }
 
 // Knaus & Zwicker 2011: the mean of the passes' direct light (over all camera paths, where

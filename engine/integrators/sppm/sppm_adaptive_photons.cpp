@@ -40,10 +40,9 @@ void SppmIntegrator::adaptToError() {
     if (budgetsPhotons && photonsTraced_) budget_.add({photons_, photonVarianceOfPass(), cameraCost, photonCost});
     if (!PhotonBudget::decidesAfter(passes_)) return;
     // The halves' variance of the render's mean, times the passes: a pass's own variance.
-    const std::optional<PixelErrors> errors =
-        halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, 0.5);
+    const std::optional<ErrorMoments> errors = halves_.moments(width_, height_, [&](size_t i) { return radianceLocked(i); });
     if (!errors) return;  // resumed from a checkpoint without halves: the counts stay
-    const double passVariance = errorMoments(*errors).variance * static_cast<double>(passes_);
+    const double passVariance = errors->variance * static_cast<double>(passes_);
     if (budgetsPhotons) photons_ = budget_.next(photons_, passVariance);
     if (adaptsCameraPaths_ && stats_.cameraPaths > 0) {
         // In rays alone, a band's photon rays once: the counts then do not depend on
