@@ -118,7 +118,8 @@ TEST(FeatureBuffers, AMirrorShowsWhatItReflects) {
 
 // A long SPPM render of the same scene (another seed) and an early one. The reference's
 // own noise, measured against a second seed, is an RMSE of 0.003 over the pixels darker
-// than 1; the early render's error is about 0.014 there.
+// than 1; the early render's error is about 0.0105 there (0.014 when its discs started at
+// 1.5 pixels; radii that follow the light now start them at up to 2.5, SppmIntegrator::autoRadius).
 class DenoiseCornell : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
@@ -167,7 +168,9 @@ TEST_F(DenoiseCornell, IsCloserToTheReferenceThanTheRawImage) {
     const double rawAll = rmse(*raw_, *reference_), denoisedAll = rmse(*denoised_, *reference_);
     std::printf("RMSE below 1: raw %.4f denoised %.4f (%.2fx); whole image: raw %.4f denoised %.4f (%.2fx)\n", raw,
                 denoised, denoised / raw, rawAll, denoisedAll, denoisedAll / rawAll);
-    EXPECT_LT(denoised, 0.65 * raw);  // measured 0.60x
+    // Measured 0.68x (0.0072; 0.60x of 0.014 when the raw image was noisier): the less
+    // noise the raw image has, the less of its error the filter can take away.
+    EXPECT_LT(denoised, 0.75 * raw);
     // Measured 0.96x: Sobol passes (render.sampler) stratify the 4 film samples of the
     // light's edge pixels, so the raw image's error there is already 12% below what
     // independent numbers gave (0.164 against 0.187; the denoiser then took it to 0.77x).

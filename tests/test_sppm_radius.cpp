@@ -53,27 +53,28 @@ TEST(SppmRadius, FollowsTheProgressiveSchedule) {
 // photons per disc (render.auto_radius_photons), P pixels, clamped to 1.5-16 pixel
 // footprints. The camera paths do not depend on k, so a pixel's starting radius squared
 // scales with k where it is not clamped and not at all where it is.
+// The first pass's squared start radii of a 32 x 32 Cornell box (0 where a pixel saw no surface).
+std::vector<float> startingRadii2(float photonsPerDisc, int64_t photons, bool adaptiveRadius) {
+    const int res = 32;
+    SceneDescription d = smallCornell(res);
+    d.render.photonsPerPass = photons;
+    d.render.autoRadiusPhotons = photonsPerDisc;
+    d.render.adaptiveRadius = adaptiveRadius;
+    auto scene = Scene::build(std::move(d));
+    SppmIntegrator sppm(scene);
+    CancelToken cancel;
+    EXPECT_TRUE(sppm.renderPass(cancel));
+    std::vector<float> r2;
+    for (int y = 0; y < res; ++y)
+        for (int x = 0; x < res; ++x) r2.push_back(sppm.lastRadiusSquared(x, y));
+    return r2;
+}
+
 TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
     const int res = 32;
     const int64_t photons = 100;
     auto startingRadii2 = [&](float photonsPerDisc) {
-        SceneDescription d = smallCornell(res);
-        d.render.photonsPerPass = photons;
-        d.render.autoRadiusPhotons = photonsPerDisc;
-        d.render.adaptiveRadius = false;  // the first pass's shrink is then alpha's
-        auto scene = Scene::build(std::move(d));
-        SppmIntegrator sppm(scene);
-        CancelToken cancel;
-        EXPECT_TRUE(sppm.renderPass(cancel));
-        std::vector<float> r2;
-        for (int y = 0; y < res; ++y)
-            for (int x = 0; x < res; ++x) {
-                // After the first pass, R^2 = R0^2 alpha M / M (eq. 9 with N = 0) where M > 0.
-                const SppmIntegrator::PixelState& px = sppm.pixel(x, y);
-                const float m = static_cast<float>(sppm.lastPhotonCount(x, y));
-                r2.push_back(m > 0 ? px.r2 / (scene->settings().alpha * m / m) : px.r2);
-            }
-        return r2;
+        return photon::startingRadii2(photonsPerDisc, photons, false);
     };
     // 1024 pixels, 100 photons: k = 4 and 16 give 3.6 and 7.2 footprints (unclamped),
     // k = 0.05 and 0.1 give 0.40 and 0.57 (both clamped to 1.5).
@@ -88,6 +89,25 @@ TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
         EXPECT_NEAR(tiny[i] / k4[i], 1.5f * 1.5f * kPi * photons / (4 * 1024.0f), 1e-5f) << "pixel " << i;
     }
     EXPECT_GT(seen, res * res / 2);
+}
+
+// With radii that follow the light a disc starts as wide as would hold kFlatPhotons (64) a
+// pass, within [k's, 2.5 footprints]. On 1024 pixels k = 8 gives 1.5 footprints (the least)
+// for 2,000, 5,000 and 10,000 photons; 64 photons would want sqrt(64 * 1024 / (pi n)) =
+// 3.23 (so 2.5), 2.04 and 1.44 (so 1.5) footprints.
+TEST(SppmRadius, RadiiThatFollowTheLightStartWiderWherePhotonsAreFew) {
+    for (const auto& [photons, footprints] : {std::pair<int64_t, double>{2000, 2.5},
+                                               {5000, std::sqrt(64 * 1024 / (kPi * 5000))},
+                                               {10000, 1.5}}) {
+        const std::vector<float> fixed = startingRadii2(8, photons, false), adaptive = startingRadii2(8, photons, true);
+        int seen = 0;
+        for (size_t i = 0; i < fixed.size(); ++i) {
+            if (fixed[i] == 0) continue;
+            ++seen;
+            ASSERT_NEAR(adaptive[i] / fixed[i], footprints * footprints / 2.25, 1e-4) << photons << " photons, pixel " << i;
+        }
+        EXPECT_GT(seen, 512);
+    }
 }
 
 TEST(SppmRadius, ErrorFallsAsPassesGrow) {

@@ -58,6 +58,8 @@ public:
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     // Photons gathered by each pixel in the last pass (M in the paper), for tests.
     uint32_t lastPhotonCount(int x, int y) const { return results_[static_cast<size_t>(y) * width_ + x].photonCount; }
+    // The squared radius each pixel gathered in during the last pass (0: no visible point), for tests.
+    float lastRadiusSquared(int x, int y) const { return results_[static_cast<size_t>(y) * width_ + x].radiusSquared; }
     // The bands of rows a pass is rendered in (render.bands).
     int bandCount() const { return (height_ + bandRows_ - 1) / bandRows_; }
 
@@ -177,6 +179,9 @@ private:
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
     int tracePixelLightweight(size_t index, Rng& rng);
     float autoRadius(float pathLength) const;
+    // With adaptive_radius, how wide a disc may start where fewer photons would be in it
+    // (autoRadius).
+    static constexpr float kFlatDiscPixels = 2.5f, kFlatPhotons = 64;
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     // A visible point where the first camera path scatters in `medium` at p, beta its
     // throughput with the flight's weight (render.volume_photons).
