@@ -49,10 +49,6 @@ TEST(SppmRadius, FollowsTheProgressiveSchedule) {
     EXPECT_GT(checked, res * res);  // most pixels gathered photons in most passes
 }
 
-// The auto radius: r = (distance travelled) (pixel angle) sqrt(k P / (pi photons)), with k
-// photons per disc (render.auto_radius_photons), P pixels, clamped to 1.5-16 pixel
-// footprints. The camera paths do not depend on k, so a pixel's starting radius squared
-// scales with k where it is not clamped and not at all where it is.
 // The first pass's squared start radii of a 32 x 32 Cornell box (0 where a pixel saw no surface).
 std::vector<float> startingRadii2(float photonsPerDisc, int64_t photons, bool adaptiveRadius) {
     const int res = 32;
@@ -70,12 +66,15 @@ std::vector<float> startingRadii2(float photonsPerDisc, int64_t photons, bool ad
     return r2;
 }
 
+// The auto radius: r = (distance travelled) (pixel angle) sqrt(k P / (pi photons)), with k
+// photons per disc (render.auto_radius_photons), P pixels, clamped to 1.5-16 pixel
+// footprints. The camera paths do not depend on k, so a pixel's starting radius squared
+// scales with k where it is not clamped and not at all where it is.
 TEST(SppmRadius, AutoRadiusScalesWithThePhotonsAskedForPerDisc) {
     const int res = 32;
     const int64_t photons = 100;
-    auto startingRadii2 = [&](float photonsPerDisc) {
-        return photon::startingRadii2(photonsPerDisc, photons, false);
-    };
+    // With alpha's schedule: the start radius is then k's alone.
+    auto startingRadii2 = [&](float photonsPerDisc) { return photon::startingRadii2(photonsPerDisc, photons, false); };
     // 1024 pixels, 100 photons: k = 4 and 16 give 3.6 and 7.2 footprints (unclamped),
     // k = 0.05 and 0.1 give 0.40 and 0.57 (both clamped to 1.5).
     const std::vector<float> k4 = startingRadii2(4), k16 = startingRadii2(16);
