@@ -40,7 +40,7 @@ void SppmIntegrator::cameraPass(const CancelToken& cancel) {
 // 0.0066); kFlatPhotons keeps such discs where they are. Wide discs over fine geometry
 // biased coffee (k = 32: +1.7% in the mean), whose discs the cap leaves as they are (3.2
 // pixels). The glass Cornell box at 256²: 0.75 of the noise; the textured mesh at 512²
-// (1.8 pixels before): 0.94. docs/sppm.md#the-auto-radius.
+// (1.8 pixels before): 0.94. docs/sppm.md#wider-starts-where-radii-follow-the-light.
 float SppmIntegrator::autoRadius(float pathLength) const {
     const float pixels = static_cast<float>(width_) * static_cast<float>(height_);
     auto discPixels = [&](float photons) {
