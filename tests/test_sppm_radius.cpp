@@ -1,6 +1,7 @@
 // The radius schedule of Hachisuka & Jensen 2009 (eq. 7-10), pixel by pixel, and the
 // error against a converged reference falling as passes accumulate.
 #include <gtest/gtest.h>
+#include <optional>
 #include <cmath>
 #include "integrators/path/path.h"
 #include "integrators/sppm/sppm.h"
@@ -49,15 +50,16 @@ TEST(SppmRadius, FollowsTheProgressiveSchedule) {
     EXPECT_GT(checked, res * res);  // most pixels gathered photons in most passes
 }
 
-// The first pass's squared start radii of a 32 x 32 Cornell box (0 where a pixel saw no surface).
-std::vector<float> startingRadii2(float photonsPerDisc, int64_t photons, bool adaptiveRadius) {
+// The first pass's squared start radii of a 32 x 32 scene (the Cornell box unless given; 0
+// where a pixel saw no surface).
+std::vector<float> startingRadii2(float photonsPerDisc, int64_t photons, bool adaptiveRadius,
+                                  std::optional<SceneDescription> scene = std::nullopt) {
     const int res = 32;
-    SceneDescription d = smallCornell(res);
+    SceneDescription d = scene ? std::move(*scene) : smallCornell(res);
     d.render.photonsPerPass = photons;
     d.render.autoRadiusPhotons = photonsPerDisc;
     d.render.adaptiveRadius = adaptiveRadius;
-    auto scene = Scene::build(std::move(d));
-    SppmIntegrator sppm(scene);
+    SppmIntegrator sppm(Scene::build(std::move(d)));
     CancelToken cancel;
     EXPECT_TRUE(sppm.renderPass(cancel));
     std::vector<float> r2;
@@ -107,6 +109,28 @@ TEST(SppmRadius, RadiiThatFollowTheLightStartWiderWherePhotonsAreFew) {
         }
         EXPECT_GT(seen, 512);
     }
+}
+
+// A ball in a medium shrinks by alpha's schedule either way (its photons' spread is not
+// read), so it starts as it did: in the fog of cornell-fog the balls keep their radius while
+// the discs on the walls behind start 2.5 footprints wide.
+TEST(SppmRadius, BallsInAMediumStartAsAlphasScheduleHasThem) {
+    auto fog = [] {
+        SceneDescription d = test::exampleScene("cornell-fog", 32, 1, 2000, 1);
+        d.render.volumePhotons = VolumePhotons::Always;
+        return d;
+    };
+    const std::vector<float> fixed = startingRadii2(8, 2000, false, fog()), adaptive = startingRadii2(8, 2000, true, fog());
+    int balls = 0, discs = 0;
+    for (size_t i = 0; i < fixed.size(); ++i) {
+        if (fixed[i] == 0) continue;
+        const float ratio = adaptive[i] / fixed[i];
+        if (std::abs(ratio - 1.0f) < 1e-5f) ++balls;
+        else if (std::abs(ratio - 2.5f * 2.5f / 2.25f) < 1e-4f) ++discs;
+        else ADD_FAILURE() << "pixel " << i << ": start radius squared " << ratio << " times alpha's";
+    }
+    EXPECT_GT(balls, 0);
+    EXPECT_GT(discs, 0);
 }
 
 TEST(SppmRadius, ErrorFallsAsPassesGrow) {

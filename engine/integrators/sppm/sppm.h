@@ -178,7 +178,7 @@ private:
     // render.lightweight's camera path: a path-traced sample that leaves out the caustics
     // its visible point's photons bring (sppm_lightweight_camera_pass.cpp).
     int tracePixelLightweight(size_t index, Rng& rng);
-    float autoRadius(float pathLength) const;
+    float autoRadius(float pathLength, bool inMedium) const;
     // With adaptive_radius, how wide a disc may start where fewer photons would be in it
     // (autoRadius).
     static constexpr float kFlatDiscPixels = 2.5f, kFlatPhotons = 64;

@@ -41,13 +41,15 @@ void SppmIntegrator::cameraPass(const CancelToken& cancel) {
 // biased coffee (k = 32: +1.7% in the mean), whose discs the cap leaves as they are (3.2
 // pixels). The glass Cornell box at 256²: 0.75 of the noise; the textured mesh at 512²
 // (1.8 pixels before): 0.94. docs/sppm.md#wider-starts-where-radii-follow-the-light.
-float SppmIntegrator::autoRadius(float pathLength) const {
+float SppmIntegrator::autoRadius(float pathLength, bool inMedium) const {
     const float pixels = static_cast<float>(width_) * static_cast<float>(height_);
     auto discPixels = [&](float photons) {
         return std::sqrt(photons * pixels / (kPi * static_cast<float>(settings_.photonsPerPass)));
     };
     float disc = std::clamp(discPixels(settings_.autoRadiusPhotons), 1.5f, 16.0f);
-    if (adaptsRadius_) disc = std::max(disc, std::min(kFlatDiscPixels, discPixels(kFlatPhotons)));
+    // A ball in a medium shrinks by alpha's schedule whatever the light (its photons' spread
+    // is not read: PhotonSpread), so it starts as it always did.
+    if (adaptsRadius_ && !inMedium) disc = std::max(disc, std::min(kFlatDiscPixels, discPixels(kFlatPhotons)));
     return scene_->camera().pixelFootprint(pathLength) * disc;
 }
 
@@ -276,7 +278,7 @@ float SppmIntegrator::passRadiusSquared(size_t index, float pathLength, float ex
     // The guide's training passes start from the first pass's radii, whatever pass follows.
     float r2 = global() || guidePass_ >= 0 ? 0.0f : pixels_[index].r2;
     if (r2 == 0) {
-        float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength);
+        float r = settings_.initialRadius > 0 ? settings_.initialRadius : autoRadius(pathLength, extinction > 0);
         // In a medium photons scatter about once in a mean free path 1 / sigma_t of the way
         // they travel, so where a disc of radius r_s would hold k photons on a surface the
         // same flux puts about sigma_t k (4/3 pi r^3) / (pi r_s^2) in a ball: r^3 = 3 r_s^2 /
