@@ -101,6 +101,45 @@ TEST(SceneHits, TexturedSphereCarriesLongitudeAndLatitude) {
     EXPECT_NEAR(top.uv.y, 1.0f, kEps);
 }
 
+// Casts `count` rays, rayAt(i), sixteen to a packet with every `emptyEvery`-th lane left
+// empty, and checks each lane's hit against the single-ray query's, bit for bit. Returns the
+// hits compared and, through shapeHits, how many of them were on shapes from `firstShape`.
+template <class RayAt>
+int expectLanesHitWhatSingleRaysHit(const Scene& scene, int count, int emptyEvery, RayAt rayAt, uint32_t firstShape,
+                                    int& shapeHits) {
+    int compared = 0;
+    for (int first = 0; first < count; first += Scene::RayPacket::kSize) {
+        Scene::RayPacket packet;
+        Ray rays[Scene::RayPacket::kSize];
+        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
+            rays[k] = rayAt(first + k);
+            if ((first / 16 + k) % emptyEvery == 0) packet.clearLane(k);
+            else packet.setLane(k, rays[k]);
+        }
+        scene.intersect(packet);
+        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
+            if (!packet.valid[k]) continue;
+            SurfaceHit single, lane;
+            const bool hitSingle = scene.intersect(rays[k], single);
+            EXPECT_EQ(scene.hitOf(packet, k, lane), hitSingle);
+            if (!hitSingle) continue;
+            ++compared;
+            shapeHits += single.shape >= firstShape;
+            EXPECT_EQ(lane.shape, single.shape);
+            EXPECT_EQ(lane.primitive, single.primitive);
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_EQ(lane.p[a], single.p[a]) << "ray " << first + k;
+                EXPECT_EQ(lane.ng[a], single.ng[a]);
+                EXPECT_EQ(lane.ns[a], single.ns[a]);
+            }
+            EXPECT_EQ(lane.uv.x, single.uv.x);
+            EXPECT_EQ(lane.uv.y, single.uv.y);
+            if (::testing::Test::HasFailure()) return compared;  // the first ray that differs says enough
+        }
+    }
+    return compared;
+}
+
 // Random rays through a box of quads around two spheres (one inside-out), cast once one by
 // one and once sixteen to a packet with lanes left empty: every lane's hit must match its
 // single ray's bit for bit, spheres included (the photon walk casts packets, and must land
@@ -113,39 +152,54 @@ TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
     d.shapes.push_back(test::sphere({0.5f, -1, 0}, 0.7f, 1));
     d.shapes.push_back(test::sphere({-0.6f, 0.4f, -0.5f}, 0.5f, 0, Color(0.0f), true));
     auto scene = Scene::build(std::move(d));
-    int sphereHits = 0, compared = 0;
-    for (int first = 0; first < 4096; first += Scene::RayPacket::kSize) {
-        Scene::RayPacket packet;
-        Ray rays[Scene::RayPacket::kSize];
-        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
-            Rng rng(7, 0, static_cast<uint64_t>(first + k), StreamPurpose::Test);
-            rays[k] = {Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 3.0f - Vec3(1.5f),
-                       sampleUniformSphere({rng.uniform(), rng.uniform()})};
-            if ((first / 16 + k) % 5 == 0) packet.clearLane(k);  // some lanes empty
-            else packet.setLane(k, rays[k]);
-        }
-        scene->intersect(packet);
-        for (int k = 0; k < Scene::RayPacket::kSize; ++k) {
-            if (!packet.valid[k]) continue;
-            SurfaceHit single, lane;
-            const bool hitSingle = scene->intersect(rays[k], single);
-            ASSERT_EQ(scene->hitOf(packet, k, lane), hitSingle);
-            if (!hitSingle) continue;
-            ++compared;
-            sphereHits += single.shape >= 3;
-            ASSERT_EQ(lane.shape, single.shape);
-            ASSERT_EQ(lane.primitive, single.primitive);
-            for (int a = 0; a < 3; ++a) {
-                ASSERT_EQ(lane.p[a], single.p[a]) << "ray " << first + k;
-                ASSERT_EQ(lane.ng[a], single.ng[a]);
-                ASSERT_EQ(lane.ns[a], single.ns[a]);
-            }
-            ASSERT_EQ(lane.uv.x, single.uv.x);
-            ASSERT_EQ(lane.uv.y, single.uv.y);
-        }
-    }
+    int sphereHits = 0;
+    const int compared = expectLanesHitWhatSingleRaysHit(*scene, 4096, 5, [](int i) {
+        Rng rng(7, 0, static_cast<uint64_t>(i), StreamPurpose::Test);
+        return Ray{Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 3.0f - Vec3(1.5f),
+                   sampleUniformSphere({rng.uniform(), rng.uniform()})};
+    }, 3, sphereHits);
     EXPECT_GT(compared, 1500);
     EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points are solved from the ray, were hit often
+}
+
+// A mesh whose hit data outgrows a core's L2 (a sphere of 131,072 triangles with vertex
+// normals and uvs, 3.7 MB) makes packets prefetch each lane's corners before hitOf() reads
+// them; every lane must still report what its single ray does, bit for bit. The box of quads
+// above (kilobytes) does not prefetch.
+TEST(SceneHits, PacketsThatPrefetchALargeMeshStillHitWhatSingleRaysHit) {
+    constexpr int kRings = 256, kSegments = 256;
+    ShapeDescription mesh;
+    mesh.material = 1;  // textured: its hits read the uvs
+    for (int i = 0; i <= kRings; ++i)
+        for (int j = 0; j <= kSegments; ++j) {
+            const float theta = kPi * static_cast<float>(i) / kRings, phi = 2.0f * kPi * static_cast<float>(j) / kSegments;
+            const Vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            mesh.mesh.positions.push_back(n);
+            mesh.mesh.normals.push_back(n);
+            mesh.mesh.uvs.push_back({static_cast<float>(j) / kSegments, static_cast<float>(i) / kRings});
+        }
+    for (uint32_t i = 0; i < kRings; ++i)
+        for (uint32_t j = 0; j < kSegments; ++j) {
+            const uint32_t a = i * (kSegments + 1) + j, b = a + 1, c = a + kSegments + 1, d = c + 1;
+            mesh.mesh.indices.insert(mesh.mesh.indices.end(), {a, c, b, b, c, d});
+        }
+    SceneDescription withMesh = baseScene();
+    withMesh.shapes.push_back(std::move(mesh));
+    auto scene = Scene::build(std::move(withMesh));
+    ASSERT_TRUE(scene->prefetchesHits());
+    SceneDescription small = baseScene();
+    small.shapes.push_back(test::quad({-2, -2, -2}, {4, 0, 0}, {0, 4, 0}, 0));
+    EXPECT_FALSE(Scene::build(std::move(small))->prefetchesHits());
+    int meshHits = 0;
+    const int compared = expectLanesHitWhatSingleRaysHit(*scene, 2048, 7, [](int i) {
+        Rng rng(13, 0, static_cast<uint64_t>(i), StreamPurpose::Test);
+        // From a sphere of radius 3 toward a point inside the mesh.
+        const Vec3 target = (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - Vec3(0.5f)) * 1.2f;
+        const Vec3 origin = sampleUniformSphere({rng.uniform(), rng.uniform()}) * 3.0f;
+        return Ray{origin, normalize(target - origin)};
+    }, 0, meshHits);
+    EXPECT_EQ(meshHits, compared);  // the mesh is the only shape
+    EXPECT_GT(compared, 1500);  // every ray aimed inside the sphere, most lanes filled
 }
 
 // Untextured flat triangles and spheres take a shorter way to their hit record (one table,
