@@ -237,6 +237,8 @@ void Scene::prefetchHitsOf(const RayPacket& packet) const {
     auto prefetch = [](const void* address) { __builtin_prefetch(address, 0, 3); };
     // First each triangle's line of corner indices (or its flat record), then, once those
     // are on their way for every lane, the corners they name: two rounds of misses in all.
+    // Hits on instances are left to hitOf() (their placement would be a third round; not
+    // measured).
     const ShapeDescription* mesh[RayPacket::kSize] = {};
     for (int lane = 0; lane < RayPacket::kSize; ++lane) {
         const unsigned geomID = p.hit.geomID[lane];
