@@ -162,14 +162,12 @@ TEST(SceneHits, PacketLanesHitExactlyWhatSingleRaysHit) {
     EXPECT_GT(sphereHits, 300);  // the spheres, whose hit points are solved from the ray, were hit often
 }
 
-// A mesh whose hit data outgrows a core's L2 (a sphere of 131,072 triangles with vertex
-// normals and uvs, 3.7 MB) makes packets prefetch each lane's corners before hitOf() reads
-// them; every lane must still report what its single ray does, bit for bit. The box of quads
-// above (kilobytes) does not prefetch.
-TEST(SceneHits, PacketsThatPrefetchALargeMeshStillHitWhatSingleRaysHit) {
+// A unit sphere of 131,072 triangles with vertex normals and uvs (3.7 MB of hit data, past
+// a core's L2), textured so that its hits read the uvs.
+ShapeDescription largeTexturedSphere() {
     constexpr int kRings = 256, kSegments = 256;
     ShapeDescription mesh;
-    mesh.material = 1;  // textured: its hits read the uvs
+    mesh.material = 1;
     for (int i = 0; i <= kRings; ++i)
         for (int j = 0; j <= kSegments; ++j) {
             const float theta = kPi * static_cast<float>(i) / kRings, phi = 2.0f * kPi * static_cast<float>(j) / kSegments;
@@ -183,23 +181,46 @@ TEST(SceneHits, PacketsThatPrefetchALargeMeshStillHitWhatSingleRaysHit) {
             const uint32_t a = i * (kSegments + 1) + j, b = a + 1, c = a + kSegments + 1, d = c + 1;
             mesh.mesh.indices.insert(mesh.mesh.indices.end(), {a, c, b, b, c, d});
         }
+    return mesh;
+}
+
+// From a sphere of radius 3 toward a point near the origin.
+Ray rayTowardTheOrigin(int i) {
+    Rng rng(13, 0, static_cast<uint64_t>(i), StreamPurpose::Test);
+    const Vec3 target = (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - Vec3(0.5f)) * 1.2f;
+    const Vec3 origin = sampleUniformSphere({rng.uniform(), rng.uniform()}) * 3.0f;
+    return Ray{origin, normalize(target - origin)};
+}
+
+// A mesh whose hit data outgrows a core's L2 makes packets prefetch each lane's corners
+// before hitOf() reads them; every lane must still report what its single ray does, bit for
+// bit. The box of quads above (kilobytes) does not prefetch.
+TEST(SceneHits, PacketsThatPrefetchALargeMeshStillHitWhatSingleRaysHit) {
     SceneDescription withMesh = baseScene();
-    withMesh.shapes.push_back(std::move(mesh));
+    withMesh.shapes.push_back(largeTexturedSphere());
     auto scene = Scene::build(std::move(withMesh));
     ASSERT_TRUE(scene->prefetchesHits());
     SceneDescription small = baseScene();
     small.shapes.push_back(test::quad({-2, -2, -2}, {4, 0, 0}, {0, 4, 0}, 0));
     EXPECT_FALSE(Scene::build(std::move(small))->prefetchesHits());
     int meshHits = 0;
-    const int compared = expectLanesHitWhatSingleRaysHit(*scene, 2048, 7, [](int i) {
-        Rng rng(13, 0, static_cast<uint64_t>(i), StreamPurpose::Test);
-        // From a sphere of radius 3 toward a point inside the mesh.
-        const Vec3 target = (Vec3(rng.uniform(), rng.uniform(), rng.uniform()) - Vec3(0.5f)) * 1.2f;
-        const Vec3 origin = sampleUniformSphere({rng.uniform(), rng.uniform()}) * 3.0f;
-        return Ray{origin, normalize(target - origin)};
-    }, 0, meshHits);
+    const int compared = expectLanesHitWhatSingleRaysHit(*scene, 2048, 7, rayTowardTheOrigin, 0, meshHits);
     EXPECT_EQ(meshHits, compared);  // the mesh is the only shape
-    EXPECT_GT(compared, 1500);  // every ray aimed inside the sphere, most lanes filled
+    EXPECT_GT(compared, 1500);      // every ray aimed inside the sphere, most lanes filled
+}
+
+// The same with the mesh placed twice as an object's instances (and a flat quad in the
+// object beside it): a lane's placement is prefetched first, as it names the shape.
+TEST(SceneHits, PacketsThatPrefetchInstancesStillHitWhatSingleRaysHit) {
+    SceneDescription d = baseScene();
+    d.objects = {{"balls", {largeTexturedSphere(), test::quad({-0.5f, -0.5f, 0.9f}, {1, 0, 0}, {0, 1, 0}, 0)}}};
+    d.instances = {{0, Transform::translate({-0.5f, 0.2f, 0}) * Transform::scale(Vec3(0.6f)), "left"},
+                   {0, Transform::translate({0.6f, -0.3f, 0.2f}) * Transform::rotate({0, 1, 1}, 50), "right"}};
+    auto scene = Scene::build(std::move(d));
+    ASSERT_TRUE(scene->prefetchesHits());
+    int hits = 0;
+    const int compared = expectLanesHitWhatSingleRaysHit(*scene, 2048, 7, rayTowardTheOrigin, 0, hits);
+    EXPECT_GT(compared, 1000);  // most rays meet one of the two balls
 }
 
 // Untextured flat triangles and spheres take a shorter way to their hit record (one table,

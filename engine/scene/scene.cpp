@@ -235,26 +235,36 @@ void Scene::prefetchHitsOf(const RayPacket& packet) const {
     // photon pass was no faster than without (3 rounds), unlike the gather's (sppm_gather.cpp),
     // whose lines wait a whole batch.
     auto prefetch = [](const void* address) { __builtin_prefetch(address, 0, 3); };
-    // First each triangle's line of corner indices (or its flat record), then, once those
-    // are on their way for every lane, the corners they name: two rounds of misses in all.
-    // Hits on instances are left to hitOf() (their placement would be a third round; not
-    // measured).
-    const ShapeDescription* mesh[RayPacket::kSize] = {};
+    // Each round asks for what the next one reads, for every lane before any lane reads it:
+    // an instance's placement (which names its shape), then each triangle's line of corner
+    // indices (or its flat record), then the corners they name.
+    constexpr uint32_t kNone = ~0u;
+    uint32_t shape[RayPacket::kSize];
     for (int lane = 0; lane < RayPacket::kSize; ++lane) {
-        const unsigned geomID = p.hit.geomID[lane];
-        if (geomID == RTC_INVALID_GEOMETRY_ID || p.hit.instID[0][lane] != RTC_INVALID_GEOMETRY_ID) continue;
+        shape[lane] = kNone;
+        const unsigned geomID = p.hit.geomID[lane], instID = p.hit.instID[0][lane];
+        if (geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        if (instID != RTC_INVALID_GEOMETRY_ID) prefetch(&placements_[instID - firstInstanceId_]);
+        else shape[lane] = geomID;
+    }
+    for (int lane = 0; lane < RayPacket::kSize; ++lane) {
+        const unsigned geomID = p.hit.geomID[lane], instID = p.hit.instID[0][lane];
+        if (geomID == RTC_INVALID_GEOMETRY_ID) continue;
+        if (instID != RTC_INVALID_GEOMETRY_ID) shape[lane] = placements_[instID - firstInstanceId_].firstShape + geomID;
         const unsigned prim = p.hit.primID[lane];
-        if (const uint32_t first = firstFlatTriangle_[geomID]; first != kNotFlat) {
+        if (const uint32_t first = firstFlatTriangle_[shape[lane]]; first != kNotFlat) {
             prefetch(&flatTriangles_[first + prim]);
-        } else if (const ShapeDescription& shape = *slots_[geomID]; shape.kind == ShapeDescription::Kind::Mesh) {
-            prefetch(&shape.mesh.indices[3 * prim]);
-            mesh[lane] = &shape;
+            shape[lane] = kNone;  // its record is all it reads
+        } else if (slots_[shape[lane]]->kind == ShapeDescription::Kind::Mesh) {
+            prefetch(&slots_[shape[lane]]->mesh.indices[3 * prim]);
+        } else {
+            shape[lane] = kNone;
         }
     }
     for (int lane = 0; lane < RayPacket::kSize; ++lane) {
-        if (!mesh[lane]) continue;
-        const TriangleMesh& m = mesh[lane]->mesh;
-        const ShapeHitData& d = hitData_[p.hit.geomID[lane]];
+        if (shape[lane] == kNone) continue;
+        const TriangleMesh& m = slots_[shape[lane]]->mesh;
+        const ShapeHitData& d = hitData_[shape[lane]];
         const uint32_t* corner = &m.indices[3 * p.hit.primID[lane]];
         for (int k = 0; k < 3; ++k) {
             prefetch(&m.positions[corner[k]]);

@@ -311,9 +311,10 @@ private:
     // Whether the triangles' hit data outgrows kHitBytesInCache (a core's L2), so that
     // prefetchHitsOf() pays. photon-bench, 2 threads, 2M photons a pass, each build
     // interleaved with the one before: the photon pass took 0.90x the time with a sphere of
-    // 1M smoothly shaded triangles in the Cornell box (894 -> 807 ms, 4 rounds) and 0.95x on
-    // the Bitterli coffee maker (615 -> 584 ms, 5 rounds); on photon-bench's own glass box
-    // (kilobytes, in cache) prefetching made it 4% slower, hence the threshold.
+    // 1M smoothly shaded triangles in the Cornell box (894 -> 807 ms, 4 rounds), 0.94x with
+    // three instances of it (1029 -> 970 ms, 3 rounds) and 0.95x on the Bitterli coffee
+    // maker (615 -> 584 ms, 5 rounds); on photon-bench's own glass box (kilobytes, in cache)
+    // prefetching made it 4% slower, hence the threshold.
     bool prefetchesHits_ = false;
     static constexpr size_t kHitBytesInCache = size_t(1) << 20;
     // A triangle of a mesh without textures or bending vertex normals (a quad, a faceted
