@@ -1,6 +1,7 @@
 #include "film/pixel_errors.h"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace photon {
 namespace {
@@ -33,19 +34,25 @@ void boxMean(int w, int h, int r, At at, Out out) {
 
 }  // namespace
 
-void forErrorPixels(int width, int height, const PixelFigure& luminanceAt,
+void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelFlag& lightAt,
                     const std::function<void(size_t pixel, float luminance, bool kept)>& visit) {
     const size_t n = size_t(width) * height;
     if (n == 0) return;
     double mean = 0;
     for (size_t i = 0; i < n; ++i) mean += luminanceAt(i);
     mean /= double(n);
-    // Rows y - 1, y and y + 1 of the luminance, in a ring of three.
-    std::vector<float> rows(size_t(3) * width);
+    // Rows y - 1, y and y + 1 of the luminance, in a ring of three, a light's pixels as
+    // infinitely bright.
+    const float kLight = std::numeric_limits<float>::infinity();
+    std::vector<float> rows(size_t(3) * width), shown(size_t(3) * width);
     auto row = [&](int y) { return &rows[size_t(y % 3) * width]; };
+    auto tested = [&](int y) { return &shown[size_t(y % 3) * width]; };
     auto load = [&](int y) {
-        float* r = row(y);
-        for (int x = 0; x < width; ++x) r[x] = luminanceAt(size_t(y) * width + x);
+        float *r = row(y), *t = tested(y);
+        for (int x = 0; x < width; ++x) {
+            r[x] = luminanceAt(size_t(y) * width + x);
+            t[x] = lightAt && lightAt(x, y) ? kLight : r[x];
+        }
     };
     load(0);
     for (int y = 0; y < height; ++y) {
@@ -54,7 +61,7 @@ void forErrorPixels(int width, int height, const PixelFigure& luminanceAt,
             bool kept = true;
             for (int j = std::max(0, y - 1); j <= std::min(height - 1, y + 1) && kept; ++j)
                 for (int i = std::max(0, x - 1); i <= std::min(width - 1, x + 1); ++i)
-                    if (row(j)[i] > 25 * mean) kept = false;
+                    if (tested(j)[i] > 25 * mean) kept = false;
             visit(size_t(y) * width + x, row(y)[x], kept);
         }
     }
@@ -62,7 +69,7 @@ void forErrorPixels(int width, int height, const PixelFigure& luminanceAt,
 
 std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, int height) {
     std::vector<bool> keep(luminance.size(), true);
-    forErrorPixels(width, height, [&](size_t i) { return luminance[i]; },
+    forErrorPixels(width, height, [&](size_t i) { return luminance[i]; }, {},
                    [&](size_t i, float, bool kept) { keep[i] = kept; });
     return keep;
 }
@@ -70,10 +77,10 @@ std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, in
 namespace {
 // The moments, storing each pixel's variance in `variance` when it is given.
 ErrorMoments measure(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                     std::vector<uint16_t>* variance) {
+                     const PixelFlag& lightAt, std::vector<uint16_t>* variance) {
     double sum = 0, varianceSum = 0;
     size_t kept = 0;
-    forErrorPixels(width, height, luminanceAt, [&](size_t i, float luminance, bool keep) {
+    forErrorPixels(width, height, luminanceAt, lightAt, [&](size_t i, float luminance, bool keep) {
         const float v = varianceAt(i);
         if (variance) (*variance)[i] = toBfloat16(v);
         if (keep) sum += luminance, varianceSum += v, ++kept;
@@ -83,16 +90,17 @@ ErrorMoments measure(int width, int height, const PixelFigure& luminanceAt, cons
 }
 }  // namespace
 
-ErrorMoments errorMomentsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt) {
-    return measure(width, height, luminanceAt, varianceAt, nullptr);
+ErrorMoments errorMomentsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
+                            const PixelFlag& lightAt) {
+    return measure(width, height, luminanceAt, varianceAt, lightAt, nullptr);
 }
 
 PixelErrors pixelErrorsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                          double decay) {
+                          const PixelFlag& lightAt, double decay) {
     PixelErrors e;
     e.width = width, e.height = height, e.decay = decay;
     e.variance.resize(size_t(width) * height);
-    e.moments = measure(width, height, luminanceAt, varianceAt, &e.variance);
+    e.moments = measure(width, height, luminanceAt, varianceAt, lightAt, &e.variance);
     return e;
 }
 

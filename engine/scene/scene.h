@@ -1,5 +1,6 @@
 // The immutable scene an integrator renders: Embree geometry, materials, lights, camera.
 #pragma once
+#include <algorithm>
 #include <embree3/rtcore.h>
 #include <deque>
 #include <map>
@@ -186,6 +187,10 @@ public:
         const Light* light = nullptr;
         size_t index = 0;
     };
+    // Whether any shape emits (an area light, a sky dome).
+    bool hasEmittingShapes() const {
+        return std::any_of(lightOfShape_.begin(), lightOfShape_.end(), [](int32_t i) { return i >= 0; });
+    }
     Emitter emitterAt(const SurfaceHit& hit) const {
         const int32_t i = lightOfShape_[hit.shape];
         return i < 0 ? Emitter{} : Emitter{&lightSampler_.light(size_t(i)), size_t(i)};

@@ -7,7 +7,8 @@ namespace photon {
 
 PixelMeanIntegrator::PixelMeanIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), width_(scene_->camera().width()), height_(scene_->camera().height()),
-      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()), halves_(sum_.size()) {}
+      sum_(static_cast<size_t>(width_) * height_), pass_(sum_.size()), halves_(sum_.size()),
+      lightsInView_(*scene_) {}
 
 bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     stats_ = PassStats{};
@@ -52,7 +53,7 @@ Image PixelMeanIntegrator::snapshot() const {
 
 std::optional<PixelErrors> PixelMeanIntegrator::pixelErrors() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return halves_.errors(width_, height_, [&](size_t i) { return meanLocked(i); }, 0.5);
+    return halves_.errors(width_, height_, [&](size_t i) { return meanLocked(i); }, lightsInView_, 0.5);
 }
 
 Image PixelMeanIntegrator::snapshotLocked() const {

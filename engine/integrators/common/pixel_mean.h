@@ -43,6 +43,7 @@ private:
 
     std::vector<Color> sum_, pass_;
     PassHalves halves_;
+    LightsInView lightsInView_;
     int passes_ = 0;
     mutable std::mutex mutex_;
 };

@@ -26,7 +26,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)), gathersInMedia_(gathersInMedia(*scene_)),
-      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), learnsLobeChoice_(learnsLobeChoice(settings_)),
+      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), lightsInView_(*scene_), learnsLobeChoice_(learnsLobeChoice(settings_)),
       adaptsCameraPaths_(adaptsCameraPaths(settings_)), adaptsRadius_(adaptsRadius(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     if (adaptsRadius_) radius_ = AdaptiveRadius(width_, height_);
@@ -418,7 +418,8 @@ Image SppmIntegrator::snapshot() const {
 std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
     std::lock_guard<std::mutex> lock(stateMutex_);
     const double decay = settings_.alpha / 2;  // film/pixel_errors.h
-    if (!global()) return halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, decay);
+    if (!global())
+        return halves_.errors(width_, height_, [&](size_t i) { return radianceLocked(i); }, lightsInView_, decay);
     if (!sumsHalfKnown_) return std::nullopt;
     const double passes = static_cast<double>(std::max<int64_t>(passes_, 1));
     auto all = [&](size_t i) { return static_cast<double>(fixedLuminance(&sums_.values[3 * i])); };
@@ -429,7 +430,7 @@ std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
             return halfSplitVariance(odd / PassSums::kScale, (all(i) - odd) / PassSums::kScale, sums_.oddCount,
                                      sums_.count - sums_.oddCount);
         },
-        decay);
+        lightsInView_.flag(), decay);
 }
 
 // Knaus & Zwicker 2011: the mean of the passes' direct light (over all camera paths, where

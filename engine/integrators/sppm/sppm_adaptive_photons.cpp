@@ -40,7 +40,7 @@ void SppmIntegrator::adaptToError() {
     if (budgetsPhotons && photonsTraced_) budget_.add({photons_, photonVarianceOfPass(), cameraCost, photonCost});
     if (!PhotonBudget::decidesAfter(passes_)) return;
     // The halves' variance of the render's mean, times the passes: a pass's own variance.
-    const std::optional<ErrorMoments> errors = halves_.moments(width_, height_, [&](size_t i) { return radianceLocked(i); });
+    const std::optional<ErrorMoments> errors = halves_.moments(width_, height_, [&](size_t i) { return radianceLocked(i); }, lightsInView_);
     if (!errors) return;  // resumed from a checkpoint without halves: the counts stay
     const double passVariance = errors->variance * static_cast<double>(passes_);
     if (budgetsPhotons) photons_ = budget_.next(photons_, passVariance);
