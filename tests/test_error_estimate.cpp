@@ -117,7 +117,7 @@ TEST(ErrorEstimate, AThumbnailsEstimateFallsSmoothlyToTheTrueError) {
     const LightsInView lights(*scene);
     double sum = 0, d2 = 0;
     size_t kept = 0;
-    forErrorPixels(kSize, kSize, [&](size_t i) { return 0.5f * (ya[i] + yb[i]); }, lights.flag(),
+    forErrorPixels(kSize, kSize, [&](size_t i) { return 0.5f * (ya[i] + yb[i]); }, lights.light(),
                    [&](size_t i, float mean, bool keep) {
                        if (keep) sum += mean, d2 += double(ya[i] - yb[i]) * (ya[i] - yb[i]), ++kept;
                    });
@@ -131,34 +131,35 @@ TEST(ErrorEstimate, AThumbnailsEstimateFallsSmoothlyToTheTrueError) {
 
 TEST(ErrorEstimate, LightsInViewAreThePixelsWhoseRaysFindTheLight) {
     // Against 9 x 9 rays over each pixel's closed square (corners and edges included): every
-    // pixel flagged has one of them on the light (its lattice rays are among them), and every
-    // pixel with one on the light is flagged or next to one that is, which the estimate
-    // leaves out with it.
+    // pixel that shows a light has one of them on it (its lattice rays are among them), and
+    // every pixel with one on the light shows it or is next to one that does, which the
+    // estimate leaves out with it. The light's luminance is what those rays see, within 5%.
     for (int size : {12, 37}) {
         const std::shared_ptr<const Scene> scene = Scene::build(test::exampleScene("cornell-box", size, 1, 0, 1));
         const LightsInView lights(*scene);
         auto dense = [&](int x, int y) {
+            float brightest = 0;
             for (int j = 0; j <= 8; ++j)
                 for (int i = 0; i <= 8; ++i) {
                     const Ray ray = scene->camera().generateRay(float(x) + float(i) / 8, float(y) + float(j) / 8, {0.5f, 0.5f});
                     SurfaceHit hit;
-                    if (scene->intersect(ray, hit) && !isBlack(scene->emitted(hit, -ray.d))) return true;
+                    if (scene->intersect(ray, hit)) brightest = std::max(brightest, luminance(scene->emitted(hit, -ray.d)));
                 }
-            return false;
+            return brightest;
         };
-        int flagged = 0, shown = 0;
+        int shown = 0, found = 0;
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
-                const bool d = dense(x, y);
-                flagged += lights.at(x, y), shown += d;
-                if (lights.at(x, y)) EXPECT_TRUE(d) << size << ": " << x << ", " << y;
+                const float d = dense(x, y), light = lights.at(x, y);
+                shown += light > 0, found += d > 0;
+                if (light > 0) EXPECT_NEAR(light / d, 1.0f, 0.05f) << size << ": " << x << ", " << y;
                 bool near = false;
                 for (int yy = std::max(y - 1, 0); yy <= std::min(y + 1, size - 1); ++yy)
-                    for (int xx = std::max(x - 1, 0); xx <= std::min(x + 1, size - 1); ++xx) near |= lights.at(xx, yy);
-                if (d) EXPECT_TRUE(near) << size << ": " << x << ", " << y;
+                    for (int xx = std::max(x - 1, 0); xx <= std::min(x + 1, size - 1); ++xx) near |= lights.at(xx, yy) > 0;
+                if (d > 0) EXPECT_TRUE(near) << size << ": " << x << ", " << y;
             }
-        std::printf("%d x %d: %d pixels flagged, %d show the light\n", size, size, flagged, shown);
-        EXPECT_GT(flagged, 0);
+        std::printf("%d x %d: %d pixels show the light, %d by 81 rays\n", size, size, shown, found);
+        EXPECT_GT(shown, 0);
     }
 }
 
@@ -197,20 +198,34 @@ TEST(ErrorEstimate, LightsSeenAndTheirNeighboursAreLeftOutReadingEachPixelTwice)
         EXPECT_EQ(keep[i], std::find(out.begin(), out.end(), i) == out.end()) << i;
 }
 
-TEST(ErrorEstimate, PixelsThatShowALightAreLeftOutWhateverTheirLuminance) {
-    // 10 x 8 pixels of luminance 1, one of them, (4, 3), flagged as showing a light: it and
-    // its eight neighbours are left out, though none is brighter than the rest.
+TEST(ErrorEstimate, PixelsThatShowABrightLightAreLeftOutWhateverTheirLuminance) {
+    // 10 x 8 pixels of luminance 1, one of them, (4, 3), showing a light in part: a light of
+    // luminance 1,000 (above 25 times the mean) leaves it and its eight neighbours out,
+    // though none of them is brighter than the rest; one of luminance 20 leaves none out.
     const int w = 10, h = 8;
     auto lum = [](size_t) { return 1.0f; };
     auto variance = [](size_t i) { return static_cast<float>(i); };
-    auto light = [](int x, int y) { return x == 4 && y == 3; };
+    auto lightOf = [](float luminance) {
+        return [luminance](int x, int y) { return x == 4 && y == 3 ? luminance : 0.0f; };
+    };
     double sum = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
             if (std::abs(x - 4) > 1 || std::abs(y - 3) > 1) sum += double(y * w + x);
-    const ErrorMoments m = errorMomentsOf(w, h, lum, variance, light);
-    EXPECT_DOUBLE_EQ(m.variance, sum / 71);
-    EXPECT_DOUBLE_EQ(m.luminance, 1.0);
+    const ErrorMoments bright = errorMomentsOf(w, h, lum, variance, lightOf(1000));
+    EXPECT_DOUBLE_EQ(bright.variance, sum / 71);
+    EXPECT_DOUBLE_EQ(bright.luminance, 1.0);
+    const ErrorMoments dim = errorMomentsOf(w, h, lum, variance, lightOf(20));
+    EXPECT_DOUBLE_EQ(dim.variance, (w * h - 1) / 2.0);  // the mean of 0 .. 79
+}
+
+TEST(ErrorEstimate, ALightsLuminanceIsKeptInAByteWithin5Percent) {
+    EXPECT_EQ(LightsInView::encode(0), 0);
+    EXPECT_EQ(LightsInView::decode(0), 0.0f);
+    for (float l = 1.0e-4f; l < 1.0e6f; l *= 1.37f)
+        EXPECT_NEAR(LightsInView::decode(LightsInView::encode(l)) / l, 1.0f, 0.05f) << l;
+    EXPECT_GT(LightsInView::encode(1.0e-9f), 0);  // clamped at both ends, never "none"
+    EXPECT_EQ(LightsInView::encode(1.0e9f), 255);
 }
 
 TEST(ErrorEstimate, TheHeatMapsScaleStepsByFactorsOfTen) {

@@ -1,7 +1,6 @@
 #include "film/pixel_errors.h"
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace photon {
 namespace {
@@ -34,16 +33,15 @@ void boxMean(int w, int h, int r, At at, Out out) {
 
 }  // namespace
 
-void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelFlag& lightAt,
+void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelLight& lightAt,
                     const std::function<void(size_t pixel, float luminance, bool kept)>& visit) {
     const size_t n = size_t(width) * height;
     if (n == 0) return;
     double mean = 0;
     for (size_t i = 0; i < n; ++i) mean += luminanceAt(i);
     mean /= double(n);
-    // Rows y - 1, y and y + 1 of the luminance, in a ring of three, a light's pixels as
-    // infinitely bright.
-    const float kLight = std::numeric_limits<float>::infinity();
+    // Rows y - 1, y and y + 1 of the luminance, in a ring of three, and of what is tested:
+    // the brighter of the pixel and the light it shows.
     std::vector<float> rows(size_t(3) * width), shown(size_t(3) * width);
     auto row = [&](int y) { return &rows[size_t(y % 3) * width]; };
     auto tested = [&](int y) { return &shown[size_t(y % 3) * width]; };
@@ -51,7 +49,7 @@ void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const
         float *r = row(y), *t = tested(y);
         for (int x = 0; x < width; ++x) {
             r[x] = luminanceAt(size_t(y) * width + x);
-            t[x] = lightAt && lightAt(x, y) ? kLight : r[x];
+            t[x] = lightAt ? std::max(r[x], lightAt(x, y)) : r[x];
         }
     };
     load(0);
@@ -77,7 +75,7 @@ std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, in
 namespace {
 // The moments, storing each pixel's variance in `variance` when it is given.
 ErrorMoments measure(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                     const PixelFlag& lightAt, std::vector<uint16_t>* variance) {
+                     const PixelLight& lightAt, std::vector<uint16_t>* variance) {
     double sum = 0, varianceSum = 0;
     size_t kept = 0;
     forErrorPixels(width, height, luminanceAt, lightAt, [&](size_t i, float luminance, bool keep) {
@@ -91,12 +89,12 @@ ErrorMoments measure(int width, int height, const PixelFigure& luminanceAt, cons
 }  // namespace
 
 ErrorMoments errorMomentsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                            const PixelFlag& lightAt) {
+                            const PixelLight& lightAt) {
     return measure(width, height, luminanceAt, varianceAt, lightAt, nullptr);
 }
 
 PixelErrors pixelErrorsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                          const PixelFlag& lightAt, double decay) {
+                          const PixelLight& lightAt, double decay) {
     PixelErrors e;
     e.width = width, e.height = height, e.decay = decay;
     e.variance.resize(size_t(width) * height);

@@ -47,28 +47,30 @@ inline float halfSplitVariance(double oddSum, double evenSum, int64_t oddCount, 
 
 // A pixel's figure, read where it is kept (no copy of the frame).
 using PixelFigure = std::function<float(size_t pixel)>;
-// Whether pixel (x, y) shows a light (integrators/common/lights_in_view.h); empty: none known.
-using PixelFlag = std::function<bool(int x, int y)>;
+// The luminance of the brightest light pixel (x, y) shows, 0 if none
+// (integrators/common/lights_in_view.h); an empty function: none known.
+using PixelLight = std::function<float(int x, int y)>;
 
 // The pixels the relative error is measured over: all but lights seen directly, i.e.
-// pixels that `lightAt` says show a light or that are brighter than 25 times the image's
-// mean luminance (the rule the comparisons with reference images follow, which also finds
-// lights seen in mirrors and a sun in the sky), and their eight neighbours: the pixels a
+// pixels brighter than 25 times the image's mean luminance (the rule the comparisons with
+// reference images follow, which also finds lights seen in mirrors and a sun in the sky)
+// or that show, by `lightAt`, a light that is (however little of the pixel it covers), and
+// their eight neighbours: the pixels a
 // light's edge crosses, which see it in some passes and not others, have little to do with
 // light transport but a variance far above any other's, and would make the estimate hinge
 // on a few pixels. Calls visit(pixel, its luminance, whether it is one of them) for every
 // pixel in order, reading each pixel's luminance twice (the mean, then three rows at a
-// time) and its flag once.
-void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelFlag& lightAt,
+// time) and its light once.
+void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelLight& lightAt,
                     const std::function<void(size_t pixel, float luminance, bool kept)>& visit);
 std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, int height);
 
 // The moments of a frame whose pixels' luminance and variance estimate are read in place.
 ErrorMoments errorMomentsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                            const PixelFlag& lightAt);
+                            const PixelLight& lightAt);
 // The same, keeping each pixel's variance for the heat map.
 PixelErrors pixelErrorsOf(int width, int height, const PixelFigure& luminanceAt, const PixelFigure& varianceAt,
-                          const PixelFlag& lightAt, double decay);
+                          const PixelLight& lightAt, double decay);
 
 // The image's relative error: RMS over errorPixels of the estimated standard error, over
 // their mean luminance (the relative noise photon-bench measures from two seeds). Summed

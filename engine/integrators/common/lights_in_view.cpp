@@ -1,4 +1,6 @@
 #include "integrators/common/lights_in_view.h"
+#include <algorithm>
+#include <cmath>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include "integrators/common/shading.h"
@@ -6,42 +8,50 @@
 namespace photon {
 namespace {
 
-// Whether the camera ray through film position (x, y) first lands on a surface that emits
-// toward it.
-bool showsLight(const Scene& scene, float x, float y) {
+// The luminance emitted toward the camera where its ray through film position (x, y)
+// first lands (0: none).
+float emittedToward(const Scene& scene, float x, float y) {
     const Ray ray = scene.camera().generateRay(x, y, {0.5f, 0.5f});
     Color beta(1.0f);
     int32_t medium = scene.description().camera.medium;
     SurfaceHit hit;
-    if (castPastBoundaries(scene, ray, beta, medium, hit) != RayEnd::Surface) return false;
-    return !isBlack(scene.emitted(hit, -ray.d));
+    if (castPastBoundaries(scene, ray, beta, medium, hit) != RayEnd::Surface) return 0.0f;
+    return luminance(scene.emitted(hit, -ray.d));
 }
 
 }  // namespace
 
+uint8_t LightsInView::encode(float luminance) {
+    if (!(luminance > 0)) return 0;
+    const float steps = std::round(kStepsPerOctave * (std::log2(luminance) - kLeastOctave));
+    return static_cast<uint8_t>(1.0f + std::clamp(steps, 0.0f, 254.0f));
+}
+
+float LightsInView::decode(uint8_t code) {
+    if (code == 0) return 0.0f;
+    return std::exp2(static_cast<float>(code - 1) / kStepsPerOctave + kLeastOctave);
+}
+
 void LightsInView::find() const {
     if (!scene_->hasEmittingShapes()) return;
     const int width = width_, height = height_;
-    wordsPerRow_ = (static_cast<size_t>(width) + 63) / 64;
-    rows_.assign(wordsPerRow_ * static_cast<size_t>(height), 0);
+    codes_.assign(static_cast<size_t>(width) * static_cast<size_t>(height), 0);
     // Blocks of 8 to 16 rows, each tracing the corners of its rows once (a block's last
     // corner row is traced again by the next block: at most 1/8 more corner rays).
     constexpr int kRowsPerBlock = 16;
     tbb::parallel_for(tbb::blocked_range<int>(0, height, kRowsPerBlock), [&](const tbb::blocked_range<int>& block) {
         const size_t corners = static_cast<size_t>(width) + 1;
-        std::vector<uint8_t> above(corners), below(corners);
-        auto cornerRow = [&](int y, std::vector<uint8_t>& row) {
-            for (int x = 0; x <= width; ++x)
-                row[x] = showsLight(*scene_, static_cast<float>(x), static_cast<float>(y));
+        std::vector<float> above(corners), below(corners);
+        auto cornerRow = [&](int y, std::vector<float>& row) {
+            for (int x = 0; x <= width; ++x) row[x] = emittedToward(*scene_, static_cast<float>(x), static_cast<float>(y));
         };
         cornerRow(block.begin(), above);
         for (int y = block.begin(); y < block.end(); ++y) {
             cornerRow(y + 1, below);
-            uint64_t* bits = &rows_[static_cast<size_t>(y) * wordsPerRow_];
+            uint8_t* codes = &codes_[static_cast<size_t>(y) * static_cast<size_t>(width)];
             for (int x = 0; x < width; ++x) {
-                const bool light = above[x] || above[x + 1] || below[x] || below[x + 1] ||
-                                   showsLight(*scene_, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-                if (light) bits[x >> 6] |= uint64_t(1) << (x & 63);
+                const float centre = emittedToward(*scene_, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+                codes[x] = encode(std::max({above[x], above[x + 1], below[x], below[x + 1], centre}));
             }
             std::swap(above, below);
         }

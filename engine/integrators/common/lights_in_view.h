@@ -1,12 +1,12 @@
-// Which pixels show a light's emitting surface straight from the camera: the pixels the
-// error estimate leaves out (film/pixel_errors.h) with their neighbours, whatever their
-// luminance. A pixel that a light's edge crosses sees the light in some passes and not in
-// others, so its variance dwarfs any other's; told apart by luminance alone (25 times the
-// image's mean) such a pixel drops in and out of the estimate as the mean moves, and on a
-// 16 x 16 image of the Bitterli Cornell box the estimate swung between 14% and 352% from
-// one pass to the next (docs/error-estimate.md).
+// The lights each pixel shows straight from the camera, by their emitted luminance: what
+// the error estimate (film/pixel_errors.h) tells lights seen directly by, with the pixel's
+// own luminance. A pixel that a light's edge crosses sees the light in some passes and not
+// in others, so its variance dwarfs any other's; told apart by the pixel's luminance alone
+// (25 times the image's mean) such a pixel drops in and out of the estimate as the mean
+// moves, and on a 16 x 16 image of the Bitterli Cornell box the estimate swung between 14%
+// and 352% from one pass to the next (docs/error-estimate.md). The light's own luminance
+// does not depend on how much of the pixel it covers.
 #pragma once
-#include <algorithm>
 #include <cstdint>
 #include <mutex>
 #include <vector>
@@ -20,28 +20,34 @@ public:
     explicit LightsInView(const Scene& scene)
         : scene_(&scene), width_(scene.camera().width()), height_(scene.camera().height()) {}
 
-    // Whether pixel (x, y) shows an emitting surface: a ray through its centre or one of
-    // its corners, from the lens's centre, lands first on a surface that emits toward the
-    // camera (past boundaries between media). Found by about two rays a pixel when first
-    // asked (the lattice of corners is shared; 0.62 s for a 3840 x 2160 Cornell box on two
-    // threads, 2.4 times one ray a pixel), then kept in a bit a pixel; the same on any thread
-    // count. None in a scene where no shape emits.
-    bool at(int x, int y) const {
+    // The luminance of the brightest emitting surface that pixel (x, y) shows, 0 if none:
+    // of the surfaces that the rays through its centre and its corners, from the lens's
+    // centre, land on first (past boundaries between media), where they emit toward the
+    // camera. Found by about two rays a pixel when first asked (the lattice of corners is
+    // shared; 0.62 s for a 3840 x 2160 Cornell box on two threads, 2.4 times one ray a
+    // pixel), then kept in a byte a pixel (within 5%: kStepsPerOctave); the same on any
+    // thread count. None in a scene where no shape emits.
+    float at(int x, int y) const {
         trace();
-        if (rows_.empty()) return false;
-        return (rows_[static_cast<size_t>(y) * wordsPerRow_ + static_cast<size_t>(x >> 6)] >> (x & 63)) & 1;
+        if (codes_.empty()) return 0.0f;
+        return decode(codes_[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)]);
     }
-
-    // Finds the pixels if not yet done. at() does so when first called; call it first where
-    // at() is then called from a parallel loop (the search runs one of its own).
+    // Finds the lights if not yet done. at() does so when first called; call this first
+    // where at() is then called from a parallel loop (the search runs one of its own).
     void trace() const {
         std::call_once(found_, [this] { find(); });
     }
-
     // at() as the error estimate reads it.
-    PixelFlag flag() const {
+    PixelLight light() const {
         return [this](int x, int y) { return at(x, y); };
     }
+
+    // Luminances as 1 + round(7 (log2 L + 16)): 2^-16 to 2^20.4 in steps of 1/7 octave
+    // (10%, so within 5%); 0 for none.
+    static constexpr float kStepsPerOctave = 7, kLeastOctave = -16;
+    static uint8_t encode(float luminance);
+    static constexpr size_t kBytesPerPixel = 1;
+    static float decode(uint8_t code);
 
 private:
     void find() const;
@@ -49,9 +55,7 @@ private:
     const Scene* scene_;
     int width_, height_;
     mutable std::once_flag found_;
-    // Each row's bits in words of its own, so that rows are found in parallel.
-    mutable std::vector<uint64_t> rows_;
-    mutable size_t wordsPerRow_ = 0;
+    mutable std::vector<uint8_t> codes_;  // by pixel
 };
 
 }  // namespace photon

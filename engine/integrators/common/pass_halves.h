@@ -25,21 +25,21 @@ public:
     void countPass(int64_t pass) { ++counts_[pass & 1]; }
     // The variance estimates of the render's image after the counted passes, whose pixel i
     // is radianceAt(i) (read pixel by pixel: no copy of the image, 12 bytes a pixel at a
-    // frame's peak), the pixels that show `lights` left out; nullopt for a render resumed
+    // frame's peak), lights seen directly told by `lights` too; nullopt for a render resumed
     // from a checkpoint that had no halves.
     template <class RadianceAt>
     std::optional<PixelErrors> errors(int width, int height, RadianceAt radianceAt, const LightsInView& lights,
                                       double decay) const {
         if (!known_) return std::nullopt;
         return pixelErrorsOf(width, height, [&](size_t i) { return luminance(radianceAt(i)); }, varianceAt(),
-                             lights.flag(), decay);
+                             lights.light(), decay);
     }
     // Their moments alone, keeping nothing of the frame's size.
     template <class RadianceAt>
     std::optional<ErrorMoments> moments(int width, int height, RadianceAt radianceAt, const LightsInView& lights) const {
         if (!known_) return std::nullopt;
         return errorMomentsOf(width, height, [&](size_t i) { return luminance(radianceAt(i)); }, varianceAt(),
-                              lights.flag());
+                              lights.light());
     }
 
     // Checkpoints carry the halves after the integrator's own state. A checkpoint written

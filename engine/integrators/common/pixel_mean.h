@@ -17,7 +17,9 @@ public:
     Image snapshot() const override;
     const PassStats& lastPassStats() const override { return stats_; }
     int passesDone() const override { return passes_; }
-    size_t bytesPerPixel() const override { return 2 * sizeof(Color) + 2 * sizeof(float); }
+    size_t bytesPerPixel() const override {
+        return 2 * sizeof(Color) + 2 * sizeof(float) + LightsInView::kBytesPerPixel;
+    }
     // The pixel sums, their halves and the pass count: each pass's samples are keyed by
     // pass and pixel, so that is the whole state.
     void saveState(std::ostream& out) const override;

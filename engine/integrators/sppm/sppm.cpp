@@ -95,7 +95,7 @@ size_t SppmIntegrator::bytesPerPixel() const {
                                (adaptsRadius_ ? AdaptiveRadius::kBytesPerPixel : 0);
     const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
                         static_cast<size_t>(std::max(height_, 1));
-    return state + sizeof(PassResult) + band;
+    return state + LightsInView::kBytesPerPixel + sizeof(PassResult) + band;
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
@@ -430,7 +430,7 @@ std::optional<PixelErrors> SppmIntegrator::pixelErrors() const {
             return halfSplitVariance(odd / PassSums::kScale, (all(i) - odd) / PassSums::kScale, sums_.oddCount,
                                      sums_.count - sums_.oddCount);
         },
-        lightsInView_.flag(), decay);
+        lightsInView_.light(), decay);
 }
 
 // Knaus & Zwicker 2011: the mean of the passes' direct light (over all camera paths, where

@@ -276,7 +276,7 @@ private:
     // estimate: their spread tracks the noise of the progressive estimate, whose radius
     // shrinks as the global schedule's does (checked against two seeds in the tests).
     PassHalves halves_;
-    LightsInView lightsInView_;  // the pixels the error estimate leaves out
+    LightsInView lightsInView_;  // the lights each pixel shows, for the error estimate
     // render.lobe_choice "learned" (learnsLobeChoice): each pixel's moments of its choices.
     bool learnsLobeChoice_;
     LearnedLobeChoice lobeChoice_;
