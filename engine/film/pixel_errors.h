@@ -55,12 +55,11 @@ using PixelLight = std::function<float(int x, int y)>;
 // pixels brighter than 25 times the image's mean luminance (the rule the comparisons with
 // reference images follow, which also finds lights seen in mirrors and a sun in the sky)
 // or that show, by `lightAt`, a light that is (however little of the pixel it covers), and
-// their eight neighbours: the pixels a
-// light's edge crosses, which see it in some passes and not others, have little to do with
-// light transport but a variance far above any other's, and would make the estimate hinge
-// on a few pixels. Calls visit(pixel, its luminance, whether it is one of them) for every
-// pixel in order, reading each pixel's luminance twice (the mean, then three rows at a
-// time) and its light once.
+// their eight neighbours: the pixels a light's edge crosses, which see it in some passes
+// and not others, have little to do with light transport but a variance far above any
+// other's, and would make the estimate hinge on a few pixels. Calls visit(pixel, its
+// luminance, whether it is one of them) for every pixel in order, reading each pixel's
+// luminance twice (the mean, then three rows at a time) and its light once.
 void forErrorPixels(int width, int height, const PixelFigure& luminanceAt, const PixelLight& lightAt,
                     const std::function<void(size_t pixel, float luminance, bool kept)>& visit);
 std::vector<bool> errorPixels(const std::vector<float>& luminance, int width, int height);

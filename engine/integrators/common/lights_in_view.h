@@ -46,8 +46,8 @@ public:
     // (10%, so within 5%); 0 for none.
     static constexpr float kStepsPerOctave = 7, kLeastOctave = -16;
     static uint8_t encode(float luminance);
-    static constexpr size_t kBytesPerPixel = 1;
     static float decode(uint8_t code);
+    static constexpr size_t kBytesPerPixel = 1;
 
 private:
     void find() const;

@@ -26,7 +26,8 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
     : scene_(std::move(scene)), settings_(scene_->settings()), emitter_(*scene_, settings_.projectionMaps),
       width_(scene_->camera().width()), height_(scene_->camera().height()), photons_(settings_.photonsPerPass),
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)), gathersInMedia_(gathersInMedia(*scene_)),
-      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), lightsInView_(*scene_), learnsLobeChoice_(learnsLobeChoice(settings_)),
+      halves_(global() ? 0 : static_cast<size_t>(width_) * height_), lightsInView_(*scene_),
+      learnsLobeChoice_(learnsLobeChoice(settings_)),
       adaptsCameraPaths_(adaptsCameraPaths(settings_)), adaptsRadius_(adaptsRadius(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     if (adaptsRadius_) radius_ = AdaptiveRadius(width_, height_);
