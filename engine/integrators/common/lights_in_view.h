@@ -27,15 +27,12 @@ public:
     // shared; 0.62 s for a 3840 x 2160 Cornell box on two threads, 2.4 times one ray a
     // pixel), then kept in a byte a pixel (within 5%: kStepsPerOctave); the same on any
     // thread count. None in a scene where no shape emits.
+    // The first call runs a parallel loop of its own: call it first outside any parallel
+    // loop that would then call it.
     float at(int x, int y) const {
-        trace();
+        std::call_once(found_, [this] { find(); });
         if (codes_.empty()) return 0.0f;
         return decode(codes_[static_cast<size_t>(y) * static_cast<size_t>(width_) + static_cast<size_t>(x)]);
-    }
-    // Finds the lights if not yet done. at() does so when first called; call this first
-    // where at() is then called from a parallel loop (the search runs one of its own).
-    void trace() const {
-        std::call_once(found_, [this] { find(); });
     }
     // at() as the error estimate reads it.
     PixelLight light() const {
