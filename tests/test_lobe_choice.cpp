@@ -125,9 +125,12 @@ void expectSameImageWithLessNoise(const char* scene, double ratio, SamplerKind s
     EXPECT_LT(learnedNoise, ratio * materialNoise) << learnedNoise << " against " << materialNoise;
 }
 
-TEST(LearnedLobeChoice, SameImageAsTheMaterialsChoiceWithLessNoise) {
-    // Measured: 0.077 against 0.138 (seeds 3 and 4: 0.069 against 0.098).
-    expectSameImageWithLessNoise("coated", 0.8);
+TEST(LearnedLobeChoice, SameImageAsTheMaterialsChoiceAtACoat) {
+    // The coat's highlight no longer rides on the choice: the coat's sample is drawn and its
+    // light counted in every pass (sppm_camera_pass.cpp), which took the material's choice's
+    // noise from 0.138 to 0.030, and the learned choice's from 0.077 to 0.030 (0.0298
+    // against 0.0301). Held to the same image and no more noise.
+    expectSameImageWithLessNoise("coated", 1.1);
 }
 
 TEST(LearnedLobeChoice, SameImageAsFresnelsChoiceAtGlassWithLessNoise) {

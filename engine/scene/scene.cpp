@@ -45,10 +45,23 @@ Scene::Scene(SceneDescription description) : description_(std::move(description)
     boundsMax_ = {b.upper_x, b.upper_y, b.upper_z};
     buildLights();
     prepareHitData();
+    buildEmitterScene();
+}
+
+// The world's emitting shapes (an object's are copied into the world per instance), each
+// under its own id, sharing its buffers with the whole scene's geometry.
+void Scene::buildEmitterScene() {
+    for (uint32_t i = 0; i < shapes_.size(); ++i) {
+        if (isBlack(shapes_[i].emission) || shapes_[i].invisible) continue;
+        if (!emitterScene_) emitterScene_ = rtcNewScene(device_);
+        addShape(shapes_[i], emitterScene_, i);
+    }
+    if (emitterScene_) rtcCommitScene(emitterScene_);
 }
 
 Scene::~Scene() {
     if (rtcScene_) rtcReleaseScene(rtcScene_);
+    if (emitterScene_) rtcReleaseScene(emitterScene_);
     for (RTCScene s : objectScenes_) rtcReleaseScene(s);
     if (device_) rtcReleaseDevice(device_);
 }
@@ -305,7 +318,13 @@ void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const 
     hit.uv = sphereUv(hit.ng * d.normalSign);
 }
 
-bool Scene::occluded(const Ray& ray) const {
+bool Scene::occluded(const Ray& ray) const { return occludedIn(rtcScene_, ray); }
+
+bool Scene::mayFindLight(const Ray& ray) const {
+    return !environmentLights_.empty() || (emitterScene_ && occludedIn(emitterScene_, ray));
+}
+
+bool Scene::occludedIn(RTCScene scene, const Ray& ray) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r;
@@ -320,7 +339,7 @@ bool Scene::occluded(const Ray& ray) const {
     r.mask = ~0u;
     r.flags = 0;
     r.time = 0;
-    rtcOccluded1(rtcScene_, &context, &r);
+    rtcOccluded1(scene, &context, &r);
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
 }
 

@@ -122,6 +122,12 @@ public:
     bool prefetchesHits() const { return prefetchesHits_; }
     // True if anything blocks the ray within (0, tMax).
     bool occluded(const Ray& ray) const;
+    // False where the ray cannot find light however it ends: no environment light shines
+    // and no emitting shape lies anywhere along it within (0, tMax), whatever stands in
+    // front. It asks Embree about the emitters alone, a handful of primitives in most
+    // scenes, so that a look-up of the light along a direction costs a whole ray only where
+    // it may find some.
+    bool mayFindLight(const Ray& ray) const;
 
     // The shapes a hit can name (SurfaceHit::shape): the world's, then each object's in
     // its own frame.
@@ -215,6 +221,8 @@ private:
     // Adds the shape's Embree geometry, with its alpha cutout if any, to `target` as
     // geometry `id`.
     void addShape(const ShapeDescription& shape, RTCScene target, uint32_t id);
+    void buildEmitterScene();
+    static bool occludedIn(RTCScene scene, const Ray& ray);
     RTCGeometry newMesh(const TriangleMesh& mesh);
     static void padForEmbree(TriangleMesh& mesh);
     RTCGeometry newSphere(const ShapeDescription& shape);
@@ -356,6 +364,7 @@ private:
     Vec3 boundsMin_, boundsMax_;
     RTCDevice device_ = nullptr;
     RTCScene rtcScene_ = nullptr;
+    RTCScene emitterScene_ = nullptr;  // the emitting shapes a ray can meet (mayFindLight)
 };
 
 }  // namespace photon

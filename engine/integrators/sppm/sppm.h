@@ -200,11 +200,12 @@ private:
     bool gathersInMedia() const { return gathersInMedia_; }
     static bool gathersInMedia(const Scene& scene);
     static float smoothDielectricReflectance(const Material& m, Vec3 woLocal);
-    // Traces one BSDF sample from the last vertex sp and adds to `direct` the light it finds,
-    // weighted against that vertex's light sample; `at` is its hit as cast, `medium` the
-    // one the path reached it in.
-    void lookUpLight(const Scene& scene, const SurfaceHit& at, const ShadingPoint& sp, Vec3 woLocal, Color beta,
-                     int32_t medium, PathSampler& sampler, Color& direct) const;
+    // Traces the BSDF sample s from sp and adds to `direct` the light it finds, weighted
+    // against the vertex's light sample; `at` is its hit as cast, `medium` the one the path
+    // reached it in. Returns whether it cast the ray: not where no light lies along it
+    // (Scene::mayFindLight).
+    static bool lookUpLight(const Scene& scene, const SurfaceHit& at, const ShadingPoint& sp, const BSDFSample& s,
+                            Color beta, int32_t medium, Color& direct);
     void buildGrid();
     void photonPass(const CancelToken& cancel, int64_t photons);
     // render.photon_guiding (sppm_guide_training.cpp): before the first pass, kGuidePasses
