@@ -1,6 +1,6 @@
 #include "integrators/common/pixel_mean.h"
-#include <chrono>
 #include "integrators/common/checkpoint.h"
+#include "integrators/common/milliseconds_since.h"
 #include "integrators/common/pixel_loop.h"
 
 namespace photon {
@@ -42,7 +42,7 @@ bool PixelMeanIntegrator::renderPass(const CancelToken& cancel) {
     halves_.countPass(passes_);
     ++passes_;
     stats_.cameraRays = static_cast<int64_t>(sum_.size());
-    stats_.cameraMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats_.cameraMs = millisecondsSince(start);
     return true;
 }
 

@@ -1,16 +1,12 @@
 // Two-pass photon mapping: construction, the per-pass driver, the camera pass and its
 // partition of light paths (docs/photonmap.md), snapshots and checkpoints.
 #include "integrators/photon_mapping/photon_mapping.h"
-#include <chrono>
 #include "integrators/common/direct_lighting.h"
+#include "integrators/common/milliseconds_since.h"
 
 namespace photon {
 
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 float sceneRadius(const Scene& scene) {
     return std::max(0.5f * length(scene.boundsMax() - scene.boundsMin()), 1e-3f);

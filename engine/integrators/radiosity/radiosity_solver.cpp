@@ -1,5 +1,6 @@
 #include "integrators/radiosity/radiosity_solver.h"
 #include <chrono>
+#include "integrators/common/milliseconds_since.h"
 
 namespace photon {
 
@@ -63,7 +64,7 @@ std::unique_ptr<RadiositySolution> RadiositySolution::compute(const Scene& scene
     for (size_t i = 0; i < patches.size(); ++i)
         sol->irradiance_[i] = sol->direct_[i] + gather(sol->formFactors_.rows[i], solved->reflected);
     sol->averageAtVertices();
-    sol->milliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    sol->milliseconds_ = millisecondsSince(start);
     return sol;
 }
 

@@ -3,17 +3,12 @@
 #include "integrators/common/checkpoint.h"
 #include <tbb/parallel_for.h>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace photon {
 
 namespace {
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Luminance in the pass sums' fixed point, from the fixed-point channels themselves, so
 // that it is exact and the same wherever the pass was rendered.
 int64_t fixedLuminance(const int64_t* rgb) {
@@ -41,6 +36,7 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
         pixels_.resize(n);
     }
     bandRows_ = rowsPerBand();
+    rowVariance_.assign(static_cast<size_t>(height_), 0.0);
     allocatePassBuffers();
     // Lightweight photon mapping's photons arrive only after a delta bounce: with no
     // material that has one, none would, and the path tracer has all the light.
@@ -77,7 +73,7 @@ void SppmIntegrator::allocatePassBuffers() {
     const size_t band = static_cast<size_t>(bandRows_) * width_;
     discs_.resize(band);
     visible_.resize(band);
-    results_.resize(static_cast<size_t>(width_) * height_);
+    results_.resize(static_cast<size_t>(bandRows_ + kHeldRows) * width_);
 }
 
 void SppmIntegrator::releasePassBuffers() {
@@ -94,27 +90,17 @@ size_t SppmIntegrator::bytesPerPixel() const {
                                (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0) +
                                (adaptsCameraPaths_ ? AdaptiveCameraPaths::kBytesPerPixel : 0) +
                                (adaptsRadius_ ? AdaptiveRadius::kBytesPerPixel : 0);
-    const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint)) * static_cast<size_t>(bandRows_) /
-                        static_cast<size_t>(std::max(height_, 1));
-    return state + LightsInView::kBytesPerPixel + sizeof(PassResult) + band;
+    const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(PassResult)) *
+                        static_cast<size_t>(bandRows_ + kHeldRows) / static_cast<size_t>(std::max(height_, 1));
+    return state + LightsInView::kBytesPerPixel + band;
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
-    if (global()) {
-        // Added straight into the render's sums, not through a batch of one pass: a batch is
-        // 32 bytes a pixel more at the peak (212 MiB for a 3840 x 2160 frame).
-        if (!traceGlobalPass(passes_, cancel)) return false;
-        std::lock_guard<std::mutex> lock(stateMutex_);
-        addPassEstimate(sums_);
-        passes_ = static_cast<int>(sums_.count);
-        return true;
-    }
+    // Added straight into the render's sums, not through a batch of one pass: a batch is
+    // 32 bytes a pixel more at the peak (212 MiB for a 3840 x 2160 frame).
+    if (global()) return traceGlobalPass(passes_, cancel, sums_, true);
     passIndex_ = passes_;
-    if (!traceOnePass(cancel)) return false;
-    auto t0 = std::chrono::steady_clock::now();
-    updateStatistics();
-    stats_.updateMs = millisecondsSince(t0);
-    return true;
+    return traceOnePass(cancel, [&](int first, int end, bool last) { commitBand(first, end, last); }, true);
 }
 
 // Knaus & Zwicker 2011, eq. 15: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) for passes counted
@@ -132,21 +118,25 @@ std::optional<PassSums> SppmIntegrator::renderPasses(int64_t first, int count, c
     batch.width = width_, batch.height = height_;
     batch.values.assign(static_cast<size_t>(width_) * height_ * 3, 0);
     batch.oddLuminance.assign(static_cast<size_t>(width_) * height_, 0);
-    for (int k = 0; k < count; ++k) {
-        if (!traceGlobalPass(first + k, cancel)) return std::nullopt;
-        addPassEstimate(batch);
-    }
+    for (int k = 0; k < count; ++k)
+        if (!traceGlobalPass(first + k, cancel, batch, false)) return std::nullopt;
     return batch;
 }
 
-bool SppmIntegrator::traceGlobalPass(int64_t index, const CancelToken& cancel) {
+bool SppmIntegrator::traceGlobalPass(int64_t index, const CancelToken& cancel, PassSums& sums, bool commits) {
     passIndex_ = index;
     globalShrink_ = static_cast<float>(globalShrinkAt(passIndex_));
-    if (!traceOnePass(cancel)) return false;
     double radiusSum = 0;
     size_t withRadius = 0;
-    for (const PassResult& r : results_)
-        if (r.radiusSquared > 0) radiusSum += std::sqrt(r.radiusSquared), ++withRadius;
+    auto onBand = [&](int first, int end, bool last) {
+        for (size_t i = static_cast<size_t>(first) * width_; i < static_cast<size_t>(end) * width_; ++i)
+            if (const float r2 = result(i).radiusSquared; r2 > 0) radiusSum += std::sqrt(r2), ++withRadius;
+        std::unique_lock<std::mutex> lock(stateMutex_, std::defer_lock);
+        if (commits) lock.lock();
+        addBandEstimate(sums, first, end, last);
+        if (commits) passes_ = static_cast<int>(sums_.count);
+    };
+    if (!traceOnePass(cancel, onBand, commits)) return false;
     stats_.meanRadius = withRadius ? radiusSum / static_cast<double>(withRadius) : 0.0;
     return true;
 }
@@ -161,13 +151,13 @@ void SppmIntegrator::addPasses(const PassSums& batch) {
 // One pass's estimate per pixel: the direct light its camera path found plus the photons'
 // flux within the pass's radius, Phi / (pi r_i^2 N_emitted) (Knaus & Zwicker 2011, eq. 11).
 Color SppmIntegrator::passEstimate(size_t i) const {
-    Color L = results_[i].direct.color();
+    Color L = result(i).direct.color();
     if (std::optional<Color> photons = passPhotonEstimate(i)) L += *photons;
     return L;
 }
 
 std::optional<Color> SppmIntegrator::passPhotonEstimate(size_t i) const {
-    const PassResult& r = results_[i];
+    const PassResult& r = result(i);
     if (r.photonCount == 0 || !(r.radiusSquared > 0)) return std::nullopt;
     const double emitted = static_cast<double>(photons_);
     const double toRadiance = 1.0 / (kPi * static_cast<double>(r.radiusSquared) * emitted);
@@ -177,10 +167,10 @@ std::optional<Color> SppmIntegrator::passPhotonEstimate(size_t i) const {
                  static_cast<float>(static_cast<double>(flux[2]) * toRadiance));
 }
 
-void SppmIntegrator::addPassEstimate(PassSums& sums) const {
+void SppmIntegrator::addBandEstimate(PassSums& sums, int first, int end, bool last) const {
     const bool odd = passIndex_ & 1;
     std::atomic<bool> overflow = false;
-    tbb::parallel_for(size_t(0), results_.size(), [&](size_t i) {
+    tbb::parallel_for(static_cast<size_t>(first) * width_, static_cast<size_t>(end) * width_, [&](size_t i) {
         const Color L = passEstimate(i);
         int64_t pass[3];
         bool over = false;
@@ -193,78 +183,23 @@ void SppmIntegrator::addPassEstimate(PassSums& sums) const {
     });
     // As PassSums::add: past 10^6 passes of a radiance of 5 * 10^5 the render cannot go on.
     if (overflow) throw std::invalid_argument("pass sums overflow");
+    if (!last) return;
     ++sums.count;
     sums.oddCount += odd;
 }
 
-bool SppmIntegrator::traceOnePass(const CancelToken& cancel) {
+bool SppmIntegrator::traceOnePass(const CancelToken& cancel, const BandResults& onBand, bool commits) {
     if (guide_ && !guide_->trained() && !trainGuide(cancel)) return false;
     stats_ = PassStats{};
-    if (!traceBands(cancel, photons_)) return false;
-    if (photonsTraced_) stats_.photons = photons_;
-    return true;
-}
-
-bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons) {
-    allocatePassBuffers();
-    photonsTraced_ = false;
-    for (bandFirstRow_ = 0; bandFirstRow_ < height_; bandFirstRow_ += bandRows_) {
-        bandOffset_ = static_cast<size_t>(bandFirstRow_) * width_;
-        auto t0 = std::chrono::steady_clock::now();
-        cameraPass(cancel);
-        stats_.cameraMs += millisecondsSince(t0);
-        if (cancel.cancelled()) return false;
-        if (tracesPhotons_) {
-            t0 = std::chrono::steady_clock::now();
-            buildGrid();
-            stats_.gridMs += millisecondsSince(t0);
-            stats_.gridEntries += static_cast<int64_t>(grid_.entryCount());
-            // A band where no camera path stored a visible point (all hair, or sky) gathers
-            // nothing whatever photons it traces: its pass is the same without them, and
-            // costs its camera paths alone (a tuft of hair under the sky: docs/sppm.md).
-            if (grid_.entryCount() > 0) {
-                t0 = std::chrono::steady_clock::now();
-                photonPass(cancel, photons);
-                stats_.photonMs += millisecondsSince(t0);
-                photonsTraced_ = true;
-                if (cancel.cancelled()) return false;
-            }
-        }
-        collectBand();
-    }
-    return true;
-}
-
-void SppmIntegrator::collectBand() {
-    const double fluxUnit = scene_->lights().totalAveragePower() / kFluxScale;
-    // The flux's rounding, from a stream of its own per pixel and pass: the same wherever
-    // and in whatever band the pixel is.
-    const RngStream rounding(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Rounding);
-    tbb::parallel_for(size_t(0), bandPixels(), [&](size_t k) {
-        const VisiblePoint& vp = visible_[k];
-        PassResult& r = results_[bandOffset_ + k];
-        const Color flux(static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
-                         static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
-                         static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
-        r.flux = SharedExponentColor::of(flux, Rng(rounding, bandOffset_ + k).uniform());
-        r.photonCount = vp.photonCount();
-        r.radiusSquared = discs_[k].radiusSquared;
-        // A ball's photons spread as a volume's, which the disc's rule does not read.
-        r.spread = vp.inMedium || guidePass_ >= 0 ? PhotonSpread::kUnknown : PhotonSpread::of(vp.high(), r.photonCount);
-    });
-}
-
-void SppmIntegrator::buildGrid() {
-    grid_.build(std::span<const GatherDisc>(discs_.data(), bandPixels()));
+    return traceBands(cancel, photons_, onBand, commits);
 }
 
 // Hachisuka & Jensen 2009, eq. 7-10: N' = N + alpha M, R'^2 = R^2 (N + alpha M)/(N + M),
 // tau' = (tau + Phi) R'^2 / R^2. Photon fluxes were normalised to a mean of 1, so Phi is
 // scaled back by the lights' total power here.
-void SppmIntegrator::updateStatistics() {
-    std::lock_guard<std::mutex> lock(stateMutex_);
-    tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
-        const PassResult& r = results_[i];
+void SppmIntegrator::addToStatistics(int first, int end) {
+    tbb::parallel_for(static_cast<size_t>(first) * width_, static_cast<size_t>(end) * width_, [&](size_t i) {
+        const PassResult& r = result(i);
         const float passLuminance = luminance(passEstimate(i));
         halves_.add(passIndex_, i, passLuminance);
         if (learnsLobeChoice_ && r.choice.made())
@@ -276,10 +211,13 @@ void SppmIntegrator::updateStatistics() {
         px.directSum += r.direct.color() * static_cast<float>(r.paths());  // the pass's is its paths' mean
         if (px.r2 == 0) px.r2 = r.radiusSquared;  // first pass with a visible point sets the start radius
     });
-    // After every pixel's moments: a pixel's radius reads its neighbours' too.
-    tbb::parallel_for(size_t(0), pixels_.size(), [&](size_t i) {
+}
+
+void SppmIntegrator::shrinkRadii(int first, int end) {
+    tbb::parallel_for(static_cast<size_t>(first) * width_, static_cast<size_t>(end) * width_, [&](size_t i) {
         PixelState& px = pixels_[i];
-        const float m = static_cast<float>(results_[i].photonCount);
+        const PassResult& r = result(i);
+        const float m = static_cast<float>(r.photonCount);
         if (m == 0 || px.r2 == 0) return;
         float nNew, shrink;
         if (adaptsRadius_) {
@@ -289,10 +227,14 @@ void SppmIntegrator::updateStatistics() {
             nNew = px.n + settings_.alpha * m;
             shrink = nNew / (px.n + m);
         }
-        px.tau = (px.tau + results_[i].flux.color()) * shrink;
+        px.tau = (px.tau + r.flux.color()) * shrink;
         px.r2 *= shrink;
         px.n = nNew;
     });
+}
+
+void SppmIntegrator::finishPass() {
+    std::lock_guard<std::mutex> lock(stateMutex_);
     halves_.countPass(passIndex_);
     if (learnsLobeChoice_) lobeChoice_.countPass();
     ++passes_;

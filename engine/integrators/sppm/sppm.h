@@ -5,6 +5,7 @@
 // updated. Photons are never stored, so memory does not grow with their number.
 #pragma once
 #include <algorithm>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -44,8 +45,8 @@ public:
     std::optional<PassSums> renderPasses(int64_t first, int count, const CancelToken& cancel) override;
     void addPasses(const PassSums& sums) override;
     std::optional<PixelErrors> pixelErrors() const override;
-    // When a render stops: the grid, the band's visible points and discs, and the pass
-    // results (24 bytes a pixel), which a next pass allocates again.
+    // When a render stops: the grid, the band's visible points, discs and pass results,
+    // which a next pass allocates again.
     void releasePassBuffers() override;
 
     // Persistent per-pixel statistics (the paper's N, R, tau) plus summed direct light.
@@ -56,10 +57,12 @@ public:
         float r2 = 0;     // squared gather radius; 0 until the pixel first sees a surface
     };
     const PixelState& pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
-    // Photons gathered by each pixel in the last pass (M in the paper), for tests.
-    uint32_t lastPhotonCount(int x, int y) const { return results_[static_cast<size_t>(y) * width_ + x].photonCount; }
-    // The squared radius each pixel gathered in during the last pass (0: no visible point), for tests.
-    float lastRadiusSquared(int x, int y) const { return results_[static_cast<size_t>(y) * width_ + x].radiusSquared; }
+    // Photons gathered by each pixel in the last pass (M in the paper), for tests of a
+    // render in one band (in bands, only the last band's rows are still held).
+    uint32_t lastPhotonCount(int x, int y) const { return result(static_cast<size_t>(y) * width_ + x).photonCount; }
+    // The squared radius each pixel gathered in during the last pass (0: no visible point),
+    // as lastPhotonCount.
+    float lastRadiusSquared(int x, int y) const { return result(static_cast<size_t>(y) * width_ + x).radiusSquared; }
     // The bands of rows a pass is rendered in (render.bands).
     int bandCount() const { return (height_ + bandRows_ - 1) / bandRows_; }
 
@@ -99,10 +102,10 @@ private:
     };
     static_assert(sizeof(VisiblePoint) == 64);
 
-    // What a pass leaves at each pixel for the statistics once all its bands are done (the
-    // visible points, their discs and the grid hold one band at a time): 24 bytes a pixel,
-    // the colours in 4 bytes each (dithered, so that the sums over passes keep no rounding
-    // bias: math/shared_exponent_color.h), for the whole frame.
+    // What a pass leaves at each pixel for its statistics: 24 bytes a pixel, the colours in
+    // 4 bytes each (dithered, so that the sums over passes keep no rounding bias:
+    // math/shared_exponent_color.h), held for the band under way and the kHeldRows rows
+    // before it (sppm_bands.cpp).
     struct PassResult {
         // The camera paths' direct light (their mean; lightweight: the path-traced light).
         SharedExponentColor direct;
@@ -129,13 +132,32 @@ private:
     static constexpr double kFluxScale = 4294967296.0;
 
     bool global() const { return settings_.radiusSchedule == RadiusSchedule::Global; }
-    // Renders pass passIndex_ (camera pass, grid, photon pass) without touching the state.
-    bool traceOnePass(const CancelToken& cancel);
-    // The pass's camera paths and `photons` photons, band by band, into results_; false once
-    // cancelled. Every band traces the same photons, so results_ is what one band would make.
-    bool traceBands(const CancelToken& cancel, int64_t photons);
-    // The band's visible points into results_.
+    // What is done with a band's results once they are in: rows [first, end) of the band
+    // just traced, `last` for the pass's last band. Results are read with result().
+    using BandResults = std::function<void(int first, int end, bool last)>;
+    // Renders pass passIndex_ (camera pass, grid, photon pass), band by band, each band's
+    // results to onBand; false once cancelled. `commits`: onBand changes the render, so
+    // once it has taken a band the pass goes on to its end whatever `cancel` says (a pass
+    // is added whole or not at all; with one band, onBand is called once, at the end).
+    bool traceOnePass(const CancelToken& cancel, const BandResults& onBand, bool commits);
+    // The pass's camera paths and `photons` photons, band by band (sppm_bands.cpp). Every
+    // band traces the same photons, so each pixel's result is what one band would make.
+    bool traceBands(const CancelToken& cancel, int64_t photons, const BandResults& onBand, bool commits);
+    // The band's visible points into its results.
     void collectBand();
+    // Before a band after the first: the last kHeldRows rows of the one before move to the
+    // front of results_.
+    void holdRows();
+    // The per-pixel schedule's statistics take a band's results. A pixel's statistics read
+    // its neighbours' moments, and its camera paths read theirs, so they go a row and two
+    // rows behind the band (sppm_bands.cpp).
+    void commitBand(int first, int end, bool last);
+    // Rows [first, end)'s pass results into their moments, direct light and start radius.
+    void addToStatistics(int first, int end);
+    // Rows [first, end)'s photons into N, R and tau, their neighbours' moments added.
+    void shrinkRadii(int first, int end);
+    // Once every pixel has its pass: the pass is counted and the counts adapt to its error.
+    void finishPass();
     // Sizes the visible points, discs and pass results if releasePassBuffers freed them.
     void allocatePassBuffers();
     // Frames above kOneBandPixels render in bands of at most kBandPixels (render.bands "auto").
@@ -147,12 +169,13 @@ private:
     Color passEstimate(size_t i) const;
     // Its photons' part, Phi / (pi r_i^2 N_emitted); none where the pixel gathered none.
     std::optional<Color> passPhotonEstimate(size_t i) const;
-    // Adds this pass's estimates to `sums` in fixed point (and their luminance to its odd
-    // half for an odd pass) and counts the pass there; throws std::invalid_argument, the
-    // sums then spent, where they would overflow.
-    void addPassEstimate(PassSums& sums) const;
-    // The global schedule's pass `index`: its radius, camera and photon passes.
-    bool traceGlobalPass(int64_t index, const CancelToken& cancel);
+    // Adds the estimates of this pass's rows [first, end) to `sums` in fixed point (and their
+    // luminance to its odd half for an odd pass), and at its `last` band counts the pass
+    // there; throws std::invalid_argument, the sums then spent, where they would overflow.
+    void addBandEstimate(PassSums& sums, int first, int end, bool last) const;
+    // The global schedule's pass `index`: its radius, camera and photon passes, each band's
+    // estimates added to `sums` (the render's own: `commits`).
+    bool traceGlobalPass(int64_t index, const CancelToken& cancel, PassSums& sums, bool commits);
     Image snapshotLocked() const;
     // Pixel i of the per-pixel schedule's image.
     Color radianceLocked(size_t i) const;
@@ -241,13 +264,14 @@ private:
     class GatherPipeline;
     class GatheringSink;
     void addPhoton(const PhotonHit& hit, uint32_t point, float d2OverR2, PhotonCounters& counters);
-    void updateStatistics();
     // After a pass's statistics: with render.adaptive_photons what the pass measured goes to
     // the budget, which at its decisions sets the photons of the passes that follow; with
     // render.adaptive_camera_paths the camera paths' scale is set at the same decisions.
     void adaptToError();
+    // Rows [first, end)'s sums of p^2 / M, each row's in a fixed order, into rowVariance_.
+    void measurePhotonVariance(int first, int end);
     // The mean over pixels of p^2 / M, the variance this pass's photons brought given its
-    // camera paths (photon_budget.h), summed in a fixed order.
+    // camera paths (photon_budget.h), summed row by row: the same in any band count.
     double photonVarianceOfPass() const;
     // The key of this render's checkpoints, with adaptive or fixed photon counts.
     CheckpointKey checkpointKeyWith(bool adaptivePhotons) const;
@@ -301,7 +325,16 @@ private:
     }
     std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
-    std::vector<PassResult> results_;  // the whole image's, for the pass under way
+    // The pass's results of the band's rows and of the kHeldRows rows before it, whose
+    // statistics wait for the band (commitBand): pixel i's at results_[i + kHeldRows * width_
+    // - bandOffset_]. Two rows of a 3840-pixel frame are 184 KB; the frame's were 199 MB.
+    static constexpr int kHeldRows = 2;
+    std::vector<PassResult> results_;
+    PassResult& result(size_t pixel) { return results_[pixel + kHeldRows * static_cast<size_t>(width_) - bandOffset_]; }
+    const PassResult& result(size_t pixel) const {
+        return results_[pixel + kHeldRows * static_cast<size_t>(width_) - bandOffset_];
+    }
+    std::vector<double> rowVariance_;  // measurePhotonVariance's, a row each
     HashGrid grid_;
     // render.photon_guiding: where photons leave the lights; while it is trained, each
     // thread's sums of what the pass's photons were worth, and the photons each pixel has

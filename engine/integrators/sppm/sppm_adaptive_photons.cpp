@@ -3,28 +3,30 @@
 // passes that follow, and at the same decisions the camera paths' scale is set
 // (camera_paths.h).
 #include "integrators/sppm/sppm.h"
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-#include <functional>
+#include <tbb/parallel_for.h>
+#include <algorithm>
 
 namespace photon {
 
+void SppmIntegrator::measurePhotonVariance(int first, int end) {
+    tbb::parallel_for(first, end, [&](int y) {
+        double sum = 0;
+        for (size_t i = static_cast<size_t>(y) * width_; i < static_cast<size_t>(y + 1) * width_; ++i) {
+            const std::optional<Color> photons = passPhotonEstimate(i);
+            if (!photons) continue;
+            const double p = luminance(*photons);
+            sum += p * p / static_cast<double>(result(i).photonCount);
+        }
+        rowVariance_[static_cast<size_t>(y)] = sum;
+    });
+}
+
 double SppmIntegrator::photonVarianceOfPass() const {
-    // parallel_deterministic_reduce splits the same way on any number of threads, so the
-    // sum's rounding, and with it the budget's choice, does not depend on them.
-    const double sum = tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<size_t>(0, results_.size(), 4096), 0.0,
-        [&](const tbb::blocked_range<size_t>& range, double partial) {
-            for (size_t i = range.begin(); i < range.end(); ++i) {
-                const std::optional<Color> photons = passPhotonEstimate(i);
-                if (!photons) continue;
-                const double p = luminance(*photons);
-                partial += p * p / static_cast<double>(results_[i].photonCount);
-            }
-            return partial;
-        },
-        std::plus<double>());
-    return results_.empty() ? 0.0 : sum / static_cast<double>(results_.size());
+    // Row by row, each row's sum in pixel order: the same on any number of threads and in
+    // any band count, and so is the budget's choice.
+    double sum = 0;
+    for (double row : rowVariance_) sum += row;
+    return sum / static_cast<double>(std::max<size_t>(pixels_.size(), 1));
 }
 
 void SppmIntegrator::adaptToError() {
@@ -51,7 +53,7 @@ void SppmIntegrator::adaptToError() {
         const double rays = static_cast<double>(stats_.cameraRays) +
                             static_cast<double>(stats_.photonRays) / static_cast<double>(bandCount());
         cameraPaths_.decide(rays, static_cast<double>(stats_.cameraRays) / static_cast<double>(stats_.cameraPaths),
-                            passVariance * static_cast<double>(results_.size()));
+                            passVariance * static_cast<double>(pixels_.size()));
     }
 }
 

@@ -102,11 +102,11 @@ SppmIntegrator::CameraWork SppmIntegrator::tracePixel(size_t index, Rng& rng) {
             choice = LobeChoiceRecord::of(choice.others(), choice.probability(),
                                           choice.directBeforeChoice() + luminance(direct) - luminance(first));
     }
-    PassResult& result = results_[index];
-    result.direct = SharedExponentColor::of(direct, rng.uniform());  // the pixel's last draw
-    result.choice = choice;
-    result.extraPaths = static_cast<uint8_t>(work.paths - 1);
-    result.squares = toBfloat16(static_cast<float>(squares));
+    PassResult& out = result(index);
+    out.direct = SharedExponentColor::of(direct, rng.uniform());  // the pixel's last draw
+    out.choice = choice;
+    out.extraPaths = static_cast<uint8_t>(work.paths - 1);
+    out.squares = toBfloat16(static_cast<float>(squares));
     return work;
 }
 

@@ -9,7 +9,7 @@ namespace photon {
 bool SppmIntegrator::trainGuide(const CancelToken& cancel) {
     const int64_t pass = passIndex_;
     const float shrink = globalShrink_;
-    guidePhotons_.assign(results_.size(), 0);
+    guidePhotons_.assign(static_cast<size_t>(width_) * height_, 0);
     emitter_.setGuide(&*guide_);
     bool trained = true;
     for (guidePass_ = 0; guidePass_ < kGuidePasses && trained; ++guidePass_) {
@@ -18,9 +18,16 @@ bool SppmIntegrator::trainGuide(const CancelToken& cancel) {
         globalShrink_ = 1;  // the global schedule's first radius
         // The first training pass only counts photons; the others' worth adds up over bands.
         for (std::vector<uint64_t>& worth : guideWorth_) std::fill(worth.begin(), worth.end(), 0);
-        trained = traceBands(cancel, guidePhotonsPerPass());
+        // A pixel's count is read by its own camera path alone (guideWeight), in the next
+        // pass, so each band's go in as it ends.
+        trained = traceBands(
+            cancel, guidePhotonsPerPass(),
+            [&](int first, int end, bool) {
+                for (size_t i = static_cast<size_t>(first) * width_; i < static_cast<size_t>(end) * width_; ++i)
+                    guidePhotons_[i] += result(i).photonCount;
+            },
+            false);
         if (!trained) break;
-        for (size_t i = 0; i < results_.size(); ++i) guidePhotons_[i] += results_[i].photonCount;
         if (guidePass_ > 0) teachGuide();
     }
     guidePass_ = -1;

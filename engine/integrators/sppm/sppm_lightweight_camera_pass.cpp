@@ -89,9 +89,9 @@ int SppmIntegrator::tracePixelLightweight(size_t index, Rng& rng) {
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
         medium = scene.mediumToward(hit, ray.d, medium);
     }
-    results_[index].direct = SharedExponentColor::of(L, rng.uniform());  // the pixel's last draw
-    results_[index].choice = {};
-    results_[index].extraPaths = 0;
+    result(index).direct = SharedExponentColor::of(L, rng.uniform());  // the pixel's last draw
+    result(index).choice = {};
+    result(index).extraPaths = 0;
     return rays;
 }
 
