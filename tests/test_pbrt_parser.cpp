@@ -325,6 +325,34 @@ TEST(PbrtParser, IncludeCyclesAndDepthAreRefused) {
     EXPECT_EQ(folder.errorOf("chain0.pbrt", small), "chain1.pbrt:1: Include \"chain2.pbrt\": the scene's files exceed 50 bytes");
 }
 
+// pbrt-v4 reads an included file's tokens where its Include stands, so a directive that the
+// file's last lines begin goes on in the includer: here a mesh's indices follow the Include.
+TEST(PbrtParser, AParameterListGoesOnAfterTheEndOfAnIncludedFile) {
+    IncludeFolder folder;
+    IncludeFolder::write(folder.scene / "split.pbrt",
+                         "WorldBegin\nInclude \"geometry/mesh.pbrt\"\n  \"integer indices\" [0 1 2]\nShape \"disk\"\n");
+    IncludeFolder::write(folder.scene / "geometry/mesh.pbrt", "Shape \"trianglemesh\"\n  \"point3 P\" [0 0 0 1 0 0\n0 1 0]\n");
+    std::vector<Directive> seen;
+    parseFile(folder.scene / "split.pbrt", folder.scene, [&](Directive&& d) { seen.push_back(std::move(d)); });
+    ASSERT_EQ(seen.size(), 3u);
+    EXPECT_EQ(seen[1].name, "Shape");
+    EXPECT_EQ(seen[1].where.str(), "geometry/mesh.pbrt:1");
+    ASSERT_EQ(seen[1].params.size(), 2u);
+    EXPECT_EQ(seen[1].params[0].numbers, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));
+    EXPECT_EQ(seen[1].params[0].where.str(), "geometry/mesh.pbrt:2");
+    EXPECT_EQ(seen[1].params[1].name, "indices");
+    EXPECT_EQ(seen[1].params[1].numbers, (std::vector<double>{0, 1, 2}));
+    EXPECT_EQ(seen[1].params[1].where.str(), "split.pbrt:3");
+    EXPECT_EQ(seen[2].strings, (std::vector<std::string>{"disk"}));
+    EXPECT_EQ(seen[2].where.str(), "split.pbrt:4");
+
+    // An error that spans the two names both places: a '[' the included file leaves open.
+    IncludeFolder::write(folder.scene / "open.pbrt", "WorldBegin\nInclude \"geometry/open.pbrt\"\nWorldEnd\n");
+    IncludeFolder::write(folder.scene / "geometry/open.pbrt", "Shape \"trianglemesh\" \"point3 P\" [0 0 0\n");
+    EXPECT_EQ(folder.errorOf("open.pbrt"),
+              "geometry/open.pbrt:1: unbalanced '[': parameter \"point3 P\" has no ']' before WorldEnd at open.pbrt:3");
+}
+
 TEST(PbrtParser, MissingOrOversizedSceneFiles) {
     IncludeFolder folder;
     try {

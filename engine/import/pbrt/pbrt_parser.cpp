@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <memory>
 #include <system_error>
 
 namespace photon::pbrt {
@@ -165,13 +166,15 @@ struct Session {
     size_t bytes = 0;
 };
 
-void parseInto(Session& session, std::string_view text, const std::string& name);
-
-// Reads the directives of one file (or in-memory text), handing Includes back to the session.
-class FileParser {
+// Reads the directives of the main file (or in-memory text) and the files it includes. As
+// in pbrt-v4, an included file's tokens stand where its Include was, so a directive that
+// its last lines begin may go on in the includer (after it, the rest of a parameter list):
+// one stream of tokens, from a stack of open files.
+class DirectiveReader {
 public:
-    FileParser(Session& session, std::string_view text, const std::string& name)
-        : session_(session), tokens_(text, name) {}
+    DirectiveReader(Session& session, std::string_view text, const std::string& name) : session_(session) {
+        open(text, name);
+    }
 
     void run() {
         for (;;) {
@@ -186,13 +189,42 @@ public:
     }
 
 private:
-    [[noreturn]] void fail(int line, const std::string& message) const {
-        throw ParseError(tokens_.at(line), message);
+    // An open file: its text (an include's own; the main file's is the caller's) and tokens.
+    struct OpenFile {
+        std::string text;
+        Tokenizer tokens;
+        int source;  // its index in names_
+        OpenFile(std::string owned, std::string_view view, const std::string& name, int index)
+            : text(std::move(owned)), tokens(text.empty() ? view : std::string_view(text), name), source(index) {}
+    };
+
+    void open(std::string_view text, const std::string& name, std::string owned = {}) {
+        names_.push_back(name);
+        files_.push_back(std::make_unique<OpenFile>(std::move(owned), text, name, static_cast<int>(names_.size()) - 1));
+    }
+
+    Location where(const Token& t) const { return {names_[static_cast<size_t>(t.source)], t.line}; }
+
+    [[noreturn]] void fail(const Location& at, const std::string& message) const { throw ParseError(at, message); }
+    [[noreturn]] void fail(const Token& at, const std::string& message) const { fail(where(at), message); }
+
+    // The next token of the stream: at the end of an included file, the includer's next.
+    Token fetch() {
+        for (;;) {
+            Token t = files_.back()->tokens.next();
+            if (t.kind == TokenKind::End && files_.size() > 1) {
+                files_.pop_back();
+                session_.chain.pop_back();
+                continue;
+            }
+            t.source = files_.back()->source;
+            return t;
+        }
     }
 
     const Token& peek() {
         if (!ahead_) {
-            next_ = tokens_.next();
+            next_ = fetch();
             ahead_ = true;
         }
         return next_;
@@ -205,13 +237,13 @@ private:
     }
 
     Directive directive(const Token& t) {
-        if (t.kind == TokenKind::CloseBracket) fail(t.line, "unbalanced ']'");
-        if (t.kind != TokenKind::Word) fail(t.line, "expected a directive, found " + shown(t));
+        if (t.kind == TokenKind::CloseBracket) fail(t, "unbalanced ']'");
+        if (t.kind != TokenKind::Word) fail(t, "expected a directive, found " + shown(t));
         const Signature* signature = signatureOf(t.text);
-        if (!signature) fail(t.line, "unknown directive '" + std::string(t.text.substr(0, 40)) + "'");
+        if (!signature) fail(t, "unknown directive '" + std::string(t.text.substr(0, 40)) + "'");
         Directive d;
         d.name = signature->name;
-        d.where = tokens_.at(t.line);
+        d.where = where(t);
         switch (signature->arguments) {
         case Arguments::Nothing: break;
         case Arguments::Numbers: numbers(d, signature->count); break;
@@ -236,10 +268,10 @@ private:
         if (bracketed) {
             Token close = take();
             if (close.kind != TokenKind::CloseBracket)
-                fail(close.line, d.name + ": expected ']' after the numbers, found " + shown(close));
+                fail(close, d.name + ": expected ']' after the numbers, found " + shown(close));
         }
         if (d.numbers.size() != count)
-            fail(d.where.line, d.name + ": expected " + plural(count, "number", "numbers") + ", found " +
+            fail(d.where, d.name + ": expected " + plural(count, "number", "numbers") + ", found " +
                                    std::to_string(d.numbers.size()));
     }
 
@@ -248,7 +280,7 @@ private:
         if (d.strings.size() < least) {
             std::string wanted = least == most ? plural(least, "string", "strings")
                                                : std::to_string(least) + " or " + plural(most, "string", "strings");
-            fail(d.where.line, d.name + ": expected " + wanted + ", found " + std::to_string(d.strings.size()) +
+            fail(d.where, d.name + ": expected " + wanted + ", found " + std::to_string(d.strings.size()) +
                                    " before " + shown(peek()));
         }
     }
@@ -259,7 +291,7 @@ private:
             d.strings.emplace_back(t.text);
             return;
         }
-        fail(t.line, d.name + ": expected All, StartTime or EndTime, found " + shown(t));
+        fail(t, d.name + ": expected All, StartTime or EndTime, found " + shown(t));
     }
 
     void params(Directive& d) {
@@ -269,7 +301,7 @@ private:
     Param param() {
         Token declaration = take();
         Param p;
-        p.where = tokens_.at(declaration.line);
+        p.where = where(declaration);
         const std::string written = unescape(declaration);
         // "type name", blanks around and between allowed, nothing more.
         std::vector<std::string_view> words;
@@ -283,32 +315,32 @@ private:
             rest.remove_prefix(end);
         }
         if (words.size() != 2)
-            fail(declaration.line, "expected a parameter declaration \"type name\", found " + shown(declaration));
+            fail(declaration, "expected a parameter declaration \"type name\", found " + shown(declaration));
         const ParamType* type = paramTypeOf(words[0]);
-        if (!type) fail(declaration.line, "unknown parameter type '" + std::string(words[0]) + "' in \"" + written + "\"");
+        if (!type) fail(declaration, "unknown parameter type '" + std::string(words[0]) + "' in \"" + written + "\"");
         p.type = words[0];
         p.name = words[1];
         const std::string label = "parameter \"" + written + "\"";
 
         const Token& first = peek();
         if (first.kind == TokenKind::OpenBracket) {
-            const int open = take().line;
+            const Token open = take();
             for (;;) {
                 Token v = take();
                 if (v.kind == TokenKind::CloseBracket) break;
                 if (v.kind == TokenKind::End) fail(open, "unbalanced '[': " + label + " has no ']'");
-                if (v.kind == TokenKind::OpenBracket) fail(v.line, "'[' inside the values of " + label);
+                if (v.kind == TokenKind::OpenBracket) fail(v, "'[' inside the values of " + label);
                 // A directive's name among the values: the ']' was forgotten.
                 if (v.kind == TokenKind::Word && signatureOf(v.text))
-                    fail(open, "unbalanced '[': " + label + " has no ']' before " + std::string(v.text) + " on line " +
-                                   std::to_string(v.line));
+                    fail(open, "unbalanced '[': " + label + " has no ']' before " + std::string(v.text) +
+                                   (v.source == open.source ? " on line " + std::to_string(v.line) : " at " + where(v).str()));
                 value(p, type->values, label, v);
             }
         } else if (first.kind == TokenKind::Number || first.kind == TokenKind::String ||
                    (first.kind == TokenKind::Word && (first.text == "true" || first.text == "false"))) {
             value(p, type->values, label, take());
         } else {
-            fail(declaration.line, label + " has no value");
+            fail(declaration, label + " has no value");
         }
         return p;
     }
@@ -319,11 +351,11 @@ private:
         switch (v.kind) {
         case TokenKind::Number:
             if (values == Values::Integers) {
-                if (std::trunc(v.number) != v.number || std::abs(v.number) > 2147483647.0) fail(v.line, wrongKind());
+                if (std::trunc(v.number) != v.number || std::abs(v.number) > 2147483647.0) fail(v, wrongKind());
             } else if (values != Values::Numbers && values != Values::NumbersOrStrings) {
-                fail(v.line, wrongKind());
+                fail(v, wrongKind());
             }
-            if (!p.strings.empty()) fail(v.line, label + " mixes numbers and strings");
+            if (!p.strings.empty()) fail(v, label + " mixes numbers and strings");
             p.numbers.push_back(v.number);
             return;
         case TokenKind::String:
@@ -333,10 +365,10 @@ private:
                     p.bools.push_back(v.text == "true");
                     return;
                 }
-                fail(v.line, wrongKind());
+                fail(v, wrongKind());
             }
-            if (values != Values::Strings && values != Values::NumbersOrStrings) fail(v.line, wrongKind());
-            if (!p.numbers.empty()) fail(v.line, label + " mixes numbers and strings");
+            if (values != Values::Strings && values != Values::NumbersOrStrings) fail(v, wrongKind());
+            if (!p.numbers.empty()) fail(v, label + " mixes numbers and strings");
             p.strings.push_back(unescape(v));
             return;
         case TokenKind::Word:
@@ -344,8 +376,8 @@ private:
                 p.bools.push_back(v.text == "true");
                 return;
             }
-            fail(v.line, wrongKind());
-        default: fail(v.line, wrongKind());
+            fail(v, wrongKind());
+        default: fail(v, wrongKind());
         }
     }
 
@@ -353,49 +385,50 @@ private:
         const std::string& written = d.strings.front();
         const std::string quoted = d.name + " \"" + written + "\"";
         Session& s = session_;
-        if (written.empty()) fail(d.where.line, d.name + ": empty file name");
+        if (written.empty()) fail(d.where, d.name + ": empty file name");
         const fs::path relative(written);
         if (relative.is_absolute())
-            fail(d.where.line, quoted + ": absolute paths are refused; name the file relative to the including file");
+            fail(d.where, quoted + ": absolute paths are refused; name the file relative to the including file");
         if (s.chain.size() > s.limits.maxIncludeDepth)
-            fail(d.where.line, quoted + ": includes nested more than " + std::to_string(s.limits.maxIncludeDepth) +
+            fail(d.where, quoted + ": includes nested more than " + std::to_string(s.limits.maxIncludeDepth) +
                                    " deep");
         const fs::path folder = s.chain.back().parent_path();
         std::error_code error;
         const fs::path target = fs::weakly_canonical(folder / relative, error);
         if (error || !isInside(target, s.root))
-            fail(d.where.line, quoted + ": outside the scene's folder");
-        if (!fs::is_regular_file(target, error)) fail(d.where.line, quoted + ": file not found");
+            fail(d.where, quoted + ": outside the scene's folder");
+        if (!fs::is_regular_file(target, error)) fail(d.where, quoted + ": file not found");
         for (const fs::path& open : s.chain)
-            if (open == target) fail(d.where.line, quoted + ": the file includes itself (an include cycle)");
+            if (open == target) fail(d.where, quoted + ": the file includes itself (an include cycle)");
         if (++s.files > s.limits.maxFiles)
-            fail(d.where.line, quoted + ": more than " + std::to_string(s.limits.maxFiles) + " files read");
+            fail(d.where, quoted + ": more than " + std::to_string(s.limits.maxFiles) + " files read");
         const std::uintmax_t size = fs::file_size(target, error);
         if (error || s.bytes > s.limits.maxTotalBytes || size > s.limits.maxTotalBytes - s.bytes)
-            fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
+            fail(d.where, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
         std::string text;
-        if (!readWhole(target, size, text)) fail(d.where.line, quoted + ": cannot be read");
+        if (!readWhole(target, size, text)) fail(d.where, quoted + ": cannot be read");
         try {
             decompressIfGzip(text, s.limits.maxTotalBytes - s.bytes, written);
         } catch (const GunzipLimitExceeded&) {
-            fail(d.where.line, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
+            fail(d.where, quoted + ": the scene's files exceed " + std::to_string(s.limits.maxTotalBytes) + " bytes");
         } catch (const std::runtime_error& e) {
-            fail(d.where.line, d.name + " " + e.what());
+            fail(d.where, d.name + " " + e.what());
         }
         s.bytes += text.size();
         s.chain.push_back(target);
-        parseInto(s, text, target.lexically_relative(s.root).generic_string());
-        s.chain.pop_back();
+        // The Include is the last token taken: the included file's tokens come next.
+        open({}, target.lexically_relative(s.root).generic_string(), std::move(text));
     }
 
     Session& session_;
-    Tokenizer tokens_;
+    std::vector<std::unique_ptr<OpenFile>> files_;  // the file being read last
+    std::vector<std::string> names_;                 // every file opened, by Token::source
     Token next_;
     bool ahead_ = false;
 };
 
 void parseInto(Session& session, std::string_view text, const std::string& name) {
-    FileParser(session, text, name).run();
+    DirectiveReader(session, text, name).run();
 }
 
 fs::path canonicalRoot(const fs::path& root, const std::string& name) {

@@ -41,6 +41,7 @@ struct Token {
     double number = 0;      // Number tokens only
     bool escaped = false;   // a String holding at least one backslash
     int line = 0;
+    int source = 0;  // the file it came from, as the parser numbers the files it reads
 };
 
 // "a word", "a string", ... for messages.
