@@ -8,7 +8,7 @@
 #include "scene/scene.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::adaptive_photons_tests {
 namespace {
 
 // Passes of N photons whose photons bring variance a / N and camera paths vc; a camera
@@ -173,4 +173,4 @@ TEST(AdaptivePhotons, OneAndTwoThreadsGiveIdenticalPixels) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::adaptive_photons_tests

@@ -9,7 +9,7 @@
 #include "scene/scene.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::lightweight_tests {
 namespace {
 
 constexpr int kResolution = 64, kRegion = 16;
@@ -82,4 +82,4 @@ TEST(Lightweight, IsBitIdenticalForASeedAtAnyThreadCount) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::lightweight_tests

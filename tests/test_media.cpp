@@ -267,6 +267,42 @@ TEST(MediaScene, MediaAndTheShapesThatBoundThem) {
     EXPECT_EQ(inMedia.lights[0].medium, 0);
 }
 
+// A density grid: two samples over the box [0, 2] x [0, 1] x [0, 1], moved 1 along x. Its
+// samples sit at the centres of the box's halves, x = 1.5 and 2.5 in the world; toward the
+// faces the density falls as toward zeros beyond, and outside the box it is zero.
+TEST(MediaScene, ADensityGridIsPlacedByItsBoundsAndTransform) {
+    Json doc = test::fullScene();
+    doc["media"] = {{"smoke",
+                     {{"scattering", {1, 1, 1}},
+                      {"density",
+                       {{"resolution", {2, 1, 1}},
+                        {"values", {1, 3}},
+                        {"bounds", {{0, 0, 0}, {2, 1, 1}}},
+                        {"transform", {{"translate", {1, 0, 0}}}}}}}}};
+    const SceneDescription d = load(doc);
+    ASSERT_TRUE(d.media[0].density);
+    const DensityGrid& grid = *d.media[0].density;
+    EXPECT_NEAR(grid.at({1.5f, 0.5f, 0.5f}), 1.0f, 1e-5f);
+    EXPECT_NEAR(grid.at({2.0f, 0.5f, 0.5f}), 2.0f, 1e-5f);
+    EXPECT_NEAR(grid.at({2.5f, 0.5f, 0.5f}), 3.0f, 1e-5f);
+    EXPECT_NEAR(grid.at({1.0f, 0.5f, 0.5f}), 0.5f, 1e-5f);
+    EXPECT_EQ(grid.at({0.9f, 0.5f, 0.5f}), 0.0f);
+    EXPECT_NEAR(d.media[0].densityLength({0, 0.5f, 0.5f}, {1, 0, 0}, 10), 0.5 * 0.75 + 2 + 0.5 * 2.25, 1e-5);
+    EXPECT_TRUE(d.media[0].scatters());
+
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["smoke"]["density"]["values"] = {1, 2, 3}; },
+                "media.smoke.density.values", "must hold nx * ny * nz = 2 numbers, not 3");
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["smoke"]["density"]["values"] = {1, -2}; },
+                "media.smoke.density.values[1]", "must be a finite number >= 0");
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["smoke"]["density"]["resolution"] = {2, 1}; },
+                "media.smoke.density.resolution", "must be [nx, ny, nz]");
+    expectError(
+        [&](Json& bad) {
+            bad["media"] = doc["media"], bad["media"]["smoke"]["density"]["bounds"] = {{0, 0, 0}, {2, 0, 1}};
+        },
+        "media.smoke.density.bounds", "each of the first corner's coordinates must be below the second's");
+}
+
 TEST(MediaScene, Errors) {
     auto withMedia = [](Json& doc) { doc["media"] = {{"wine", {{"absorption", {1, 2, 3}}}}}; };
     expectError(

@@ -491,6 +491,28 @@ Shape "sphere" "float radius" 0.1
                  "supported (the medium under the surface is homogeneous)");
 }
 
+// pbrt-v4's "uniformgrid" medium, made as smoke-plume makes it: the density in a file of its
+// own whose MakeNamedMedium the main file's coefficients finish after the Include, under a
+// transform that places the medium's box.
+TEST(PbrtImport, AUniformGridMediumKeepsItsDensityItsBoxAndItsPlace) {
+    writeScene("geometry/density.pbrt",
+               "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"integer ny\" 1 "
+               "\"integer nz\" 3\n  \"float density\" [0 1 2 3 4 5] \"point3 p0\" [-1 -1 -1] \"point3 p1\" [1 1 1]\n");
+    const ImportedScene s = import("AttributeBegin\nTranslate 1 2 3\nScale 2 2 2\nInclude \"geometry/density.pbrt\"\n"
+                                   "  \"spectrum sigma_a\" [300 1 830 1] \"spectrum sigma_s\" [300 4 830 4] \"float scale\" 0.5\n"
+                                   "MediumInterface \"smoke\" \"\"\nMaterial \"interface\"\nShape \"sphere\" \"float radius\" 1\n"
+                                   "AttributeEnd\n");
+    const Json& m = s.document["media"]["smoke"];
+    EXPECT_NEAR(vec(m["absorption"]).y, 0.5f, 1e-5f);
+    EXPECT_NEAR(vec(m["scattering"]).y, 2.0f, 1e-5f);
+    const Json& grid = m["density"];
+    EXPECT_EQ(grid["resolution"], Json({2, 1, 3}));
+    EXPECT_EQ(grid["values"], Json({0, 1, 2, 3, 4, 5}));
+    EXPECT_EQ(grid["bounds"], Json({{-1, -1, -1}, {1, 1, 1}}));
+    EXPECT_EQ(grid["transform"]["matrix"], Json({2, 0, 0, 1, 0, 2, 0, 2, 0, 0, 2, 3, 0, 0, 0, 1}));
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+}
+
 TEST(PbrtImport, ErrorsNameFileAndLine) {
     const std::string head = "Camera \"perspective\"\nWorldBegin\n";
     EXPECT_STREQ(importError(head + "Material \"measured\"\n").what(),
@@ -501,8 +523,11 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [1]\n").what(),
                  "bad.pbrt:3: medium \"fog\": \"g\" must lie in (-1, 1)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"nanovdb\"\n").what(),
-                 "bad.pbrt:3: medium \"smoke\": a \"nanovdb\" medium is not supported (photon renders homogeneous "
-                 "media)");
+                 "bad.pbrt:3: medium \"smoke\": a \"nanovdb\" medium is not supported (photon renders \"homogeneous\" "
+                 "and \"uniformgrid\" media)");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 "
+                                    "\"float density\" [1 2 3]\n").what(),
+                 "bad.pbrt:3: medium \"smoke\": \"density\" holds 3 values, nx * ny * nz = 2");
     EXPECT_STREQ(importError(head + "MediumInterface \"tea\" \"\"\n").what(),
                  "bad.pbrt:3: MediumInterface: no medium named \"tea\"");
     EXPECT_STREQ(importError(head + "NamedMaterial \"nope\"\n").what(),

@@ -9,7 +9,7 @@
 #include "scene/scene_loader.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::photon_guiding_tests {
 namespace {
 
 // The Cornell box with a point light beside its area light: two lights of unequal power.
@@ -190,4 +190,4 @@ TEST(PhotonGuiding, ResumedRenderIsBitIdenticalToUninterrupted) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::photon_guiding_tests

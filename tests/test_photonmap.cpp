@@ -17,7 +17,7 @@
 #include "scene_builders.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::photonmap_tests {
 namespace {
 
 Image render(SceneDescription d) {
@@ -230,9 +230,9 @@ TEST(PhotonKernel, KernelsIntegrateToOneOverTheUnitDisc) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::photonmap_tests
 
-namespace photon {
+namespace photon::photonmap_tests {
 namespace {
 
 TEST(PhotonMapSettings, ParsedFromTheRenderBlockWithDefaults) {
@@ -261,4 +261,4 @@ TEST(PhotonMapSettings, ParsedFromTheRenderBlockWithDefaults) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::photonmap_tests

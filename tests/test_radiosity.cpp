@@ -10,7 +10,7 @@
 #include "scene_builders.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::radiosity_tests {
 namespace {
 
 // Six inward-facing quads around [-1, 1]^3, all of albedo rho emitting Le, camera inside.
@@ -238,4 +238,4 @@ TEST(Radiosity, TooManyPatchesGrowThePatchSizeOrAreRefused) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::radiosity_tests

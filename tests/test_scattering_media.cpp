@@ -61,6 +61,28 @@ TEST(HenyeyGreenstein, IntegratesToOneAndSamplesFollowIt) {
     }
 }
 
+// The weights of `samples` free flights from the origin along z over [0, length], summed
+// over those that scatter in [a, b) and over those that reach the end.
+struct FlightTally {
+    Color inBin{0.0f}, through{0.0f};
+};
+FlightTally tallyFlights(const MediumDescription& m, float length, float a, float b, int samples, uint64_t seed) {
+    FlightTally tally;
+    Rng rng(seed, 0, 5, StreamPurpose::Camera);
+    for (int i = 0; i < samples; ++i) {
+        Color beta(1.0f);
+        ChromaticFlight firstFlight;
+        const float t = sampleFreeFlight(m, Vec3(0.0f), Vec3(0, 0, 1), length, rng.uniform(), beta, firstFlight);
+        if (t >= length) {
+            EXPECT_EQ(t, length);
+            tally.through += beta;
+        } else if (t >= a && t < b) {
+            tally.inBin += beta;
+        }
+    }
+    return tally;
+}
+
 // Free flight over a segment of length 0.7 in a medium whose extinction differs by
 // channel: per channel, the weight of flights that scatter in [a, b) averages
 // sigma_s (exp(-sigma_t a) - exp(-sigma_t b)) / sigma_t, and of those that reach the end
@@ -69,25 +91,38 @@ TEST(FreeFlight, WeightsAverageToTheTransportEquationsTerms) {
     MediumDescription m{"fog", Color(0.5f, 1.0f, 0.0f), Color(0.5f, 1.0f, 4.0f), 0.0f};
     const float length = 0.7f, a = 0.2f, b = 0.5f;
     constexpr int kSamples = 1000000;
-    Color inBin(0.0f), through(0.0f);
-    Rng rng(11, 0, 5, StreamPurpose::Camera);
-    for (int i = 0; i < kSamples; ++i) {
-        Color beta(1.0f);
-        ChromaticFlight firstFlight;
-        const float t = sampleFreeFlight(m, length, rng.uniform(), beta, firstFlight);
-        if (t >= length) {
-            EXPECT_EQ(t, length);
-            through += beta;
-        } else if (t >= a && t < b) {
-            inBin += beta;
-        }
-    }
+    const FlightTally tally = tallyFlights(m, length, a, b, kSamples, 11);
     const Color sigmaT = m.extinction();
     for (int c = 0; c < 3; ++c) {
         const double expectedBin = m.scattering[c] * (std::exp(-sigmaT[c] * a) - std::exp(-sigmaT[c] * b)) / sigmaT[c];
-        EXPECT_NEAR(inBin[c] / kSamples, expectedBin, 0.01 * expectedBin) << "channel " << c;
+        EXPECT_NEAR(tally.inBin[c] / kSamples, expectedBin, 0.01 * expectedBin) << "channel " << c;
         const double expectedThrough = std::exp(-sigmaT[c] * length);
-        EXPECT_NEAR(through[c] / kSamples, expectedThrough, 0.01 * expectedThrough) << "channel " << c;
+        EXPECT_NEAR(tally.through[c] / kSamples, expectedThrough, 0.01 * expectedThrough) << "channel " << c;
+    }
+}
+
+// Free flights through a density ramp rho(z) = z over [0, 2] (extinction 1, 2, 0.5 by
+// channel, albedo 1/2): the weight of the flights that scatter in [a, b) averages
+// sigma_s int_a^b rho exp(-sigma_t D(z)) dz = sigma_s / sigma_t (exp(-sigma_t D(a)) -
+// exp(-sigma_t D(b))), D(z) = z^2 / 2, and of those that go through, exp(-sigma_t D(2)).
+TEST(FreeFlight, FlightsFollowAVaryingDensity) {
+    // Samples max(z, 0) at z = -1, -0.75, ..., 2.75 (the centres of a 16-cell box over
+    // [-1.125, 2.875]), so that rho = z on [0, 2], where the flights go.
+    std::vector<float> values;
+    for (int k = 0; k < 16; ++k) values.push_back(std::max(0.0f, -1.0f + k * 0.25f));
+    MediumDescription m{"ramp", Color(0.5f, 1.0f, 0.25f), Color(0.5f, 1.0f, 0.25f), 0.0f};
+    m.density = std::make_shared<const DensityGrid>(
+        1, 1, 16, std::move(values), DensityGrid::latticeFromBox(1, 1, 16, {-50, -50, -1.125f}, {50, 50, 2.875f}));
+    const float a = 0.6f, b = 1.3f, length = 2.0f;
+    constexpr int kSamples = 400000;
+    const FlightTally tally = tallyFlights(m, length, a, b, kSamples, 3);
+    const Color sigmaT = m.extinction();
+    auto D = [](double z) { return z * z / 2; };
+    for (int c = 0; c < 3; ++c) {
+        const double bin = m.scattering[c] / sigmaT[c] * (std::exp(-sigmaT[c] * D(a)) - std::exp(-sigmaT[c] * D(b)));
+        EXPECT_NEAR(tally.inBin[c] / kSamples, bin, 0.015 * bin) << "channel " << c;
+        const double go = std::exp(-sigmaT[c] * D(length));
+        EXPECT_NEAR(tally.through[c] / kSamples, go, 0.015 * go) << "channel " << c;
     }
 }
 
@@ -133,30 +168,93 @@ TEST(ScatteringMedium, SingleScatteringInASlabMatchesTheIntegral) {
         }
 }
 
+// The same slab with a density that varies with depth (a grid of 3 x 3 x 6 samples over the
+// slab, equal across x and y, where the camera looks): single scattering of light from
+// straight above, seen from straight above, depends on the column's density only through
+// its integral D, L = E sigma_s p(1) (1 - exp(-2 sigma_t D)) / (2 sigma_t), since
+// d/dz exp(-2 sigma_t D(z)) = 2 sigma_t rho(z) exp(-2 sigma_t D(z)).
+TEST(ScatteringMedium, SingleScatteringInASlabOfVaryingDensityMatchesTheIntegral) {
+    const std::vector<float> column = {0.2f, 1.5f, 0.7f, 2.0f, 0.4f, 1.1f};
+    std::vector<float> values;
+    for (float v : column)
+        for (int k = 0; k < 9; ++k) values.push_back(v);
+    // Samples at the centres of 6 cells of 1/6 over z in [-0.5, 0.5]: over the half cell
+    // to each face the density falls to half the outermost sample's.
+    const float h = 1.0f / 6;
+    double D = 3 * h / 8 * (column.front() + column.back());
+    for (size_t k = 0; k + 1 < column.size(); ++k) D += h * (column[k] + column[k + 1]) / 2;
+    const auto grid = std::make_shared<const DensityGrid>(
+        3, 3, 6, std::move(values), DensityGrid::latticeFromBox(3, 3, 6, {-50, -50, -0.5f}, {50, 50, 0.5f}));
+    for (VolumePhotons volume : {VolumePhotons::Never, VolumePhotons::Always})
+        for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+            SceneDescription d = fogSlab(kind, 1);
+            d.media[0].density = grid;
+            d.render.volumePhotons = volume;
+            const MediumDescription fog = d.media[0];
+            const Color sigmaT = fog.extinction();
+            const float p = henyeyGreenstein(1.0f, fog.g);
+            const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 8, 8);
+            for (int c = 0; c < 3; ++c) {
+                const double expected = 10.0 * fog.scattering[c] * p * (1 - std::exp(-2 * sigmaT[c] * D)) / (2 * sigmaT[c]);
+                EXPECT_NEAR(seen[c], expected, 0.01 * expected)
+                    << "integrator " << int(kind) << ", volume photons " << int(volume) << ", channel " << c;
+            }
+        }
+}
+
+// A ball of `fog` bounded by an index-1 sphere in a white sky of radiance 1, seen from its
+// centre at 16 x 16 (256 passes of 1,000 photons, paths of up to 200 vertices).
+SceneDescription fogBallInAWhiteSky(IntegratorKind kind, MediumDescription fog) {
+    SceneDescription d;
+    d.camera = test::camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, 16, 16);
+    d.materials = {makeDielectric(1.0f)};
+    d.materialNames = {"boundary"};
+    d.media = {std::move(fog)};
+    d.camera.medium = 0;
+    d.shapes = {test::sphere({0, 0, 0}, 1.0f, 0)};
+    d.shapes[0].insideMedium = 0;
+    LightDescription sky;
+    sky.kind = LightDescription::Kind::Environment;
+    sky.radiance = Color(1.0f);
+    d.lights = {sky};
+    d.render.integrator = kind;
+    d.render.maxDepth = 200;
+    d.render.passes = 256;
+    d.render.photonsPerPass = 1000;
+    return d;
+}
+
 // A ball of fog that absorbs nothing (albedo 1 in every channel, extinction 1, 2 and 4 by
-// channel, g 0.5), bounded by an index-1 sphere, in a white sky of radiance 1, seen from
-// inside: light is neither lost nor made, so every pixel sees 1 (a white furnace for the
-// phase function's sampling, the light samples' in the medium, and their weighting).
+// channel, g 0.5) in a white sky, seen from inside: light is neither lost nor made, so
+// every pixel sees 1 (a white furnace for the phase function's sampling, the light samples'
+// in the medium, and their weighting).
 TEST(ScatteringMedium, AWhiteFurnaceOfFogStaysWhite) {
     for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
-        SceneDescription d;
-        d.camera = test::camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, 16, 16);
-        d.materials = {makeDielectric(1.0f)};
-        d.materialNames = {"boundary"};
-        d.media = {{"fog", Color(0.0f), Color(1.0f, 2.0f, 4.0f), 0.5f}};
-        d.camera.medium = 0;
-        d.shapes = {test::sphere({0, 0, 0}, 1.0f, 0)};
-        d.shapes[0].insideMedium = 0;
-        LightDescription sky;
-        sky.kind = LightDescription::Kind::Environment;
-        sky.radiance = Color(1.0f);
-        d.lights = {sky};
-        d.render.integrator = kind;
-        d.render.maxDepth = 200;
-        d.render.passes = 256;
-        d.render.photonsPerPass = 1000;
-        const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 16, 16);
+        const Color seen = test::meanOver(
+            test::renderImage(fogBallInAWhiteSky(kind, {"fog", Color(0.0f), Color(1.0f, 2.0f, 4.0f), 0.5f})), 0, 0, 16, 16);
         std::printf("  %s: %.4f %.4f %.4f\n", kind == IntegratorKind::Path ? "path" : "sppm", seen.x, seen.y, seen.z);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, 0.01f) << "integrator " << int(kind) << ", channel " << c;
+    }
+}
+
+// The white furnace with a ball of smoke whose density varies from 0 to 2 over a lattice
+// of 8 x 8 x 8 samples: light is still neither lost nor made, so the flights drawn on the
+// density's integral and the transmittance of the light samples' shadow rays through it
+// must agree, for the path tracer and for SPPM's camera paths. (SPPM gathering photons where
+// they scatter is held to single scattering in the uneven slab above: in this furnace it
+// read up to 7% low in blue at 256 passes, as it did in the same ball of even fog, with or
+// without the grid.)
+TEST(ScatteringMedium, AWhiteFurnaceOfUnevenSmokeStaysWhite) {
+    std::vector<float> values;
+    Rng rng(5, 0, 1, StreamPurpose::Camera);
+    for (int i = 0; i < 512; ++i) values.push_back(2.0f * rng.uniform());
+    MediumDescription smoke{"smoke", Color(0.0f), Color(1.0f, 2.0f, 4.0f), 0.5f};
+    smoke.density = std::make_shared<const DensityGrid>(
+        8, 8, 8, std::move(values), DensityGrid::latticeFromBox(8, 8, 8, Vec3(-1.0f), Vec3(1.0f)));
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        SceneDescription d = fogBallInAWhiteSky(kind, smoke);
+        d.render.volumePhotons = VolumePhotons::Never;
+        const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 16, 16);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, 0.01f) << "integrator " << int(kind) << ", channel " << c;
     }
 }

@@ -7,7 +7,7 @@
 #include "scene/scene_loader.h"
 #include "test_support.h"
 
-namespace photon {
+namespace photon::sppm_determinism_tests {
 namespace {
 
 Image renderWithThreads(int threads, IntegratorKind kind,
@@ -83,4 +83,4 @@ TEST(Determinism, PassesAfterRunStoppedGiveTheUninterruptedImage) {
 }
 
 }  // namespace
-}  // namespace photon
+}  // namespace photon::sppm_determinism_tests

@@ -14,6 +14,7 @@
 #include "description/curve_set.h"
 #include "description/pixel_filter_description.h"
 #include "materials/material.h"
+#include "math/density_grid.h"
 #include "math/transform.h"
 #include "texture/image_texture.h"
 #include <photon/vec.h>
@@ -79,18 +80,28 @@ inline Vec2 sphereUv(Vec3 n) {
     return {0.5f + phi / (2.0f * kPi), 0.5f + std::asin(std::clamp(n.y, -1.0f, 1.0f)) / kPi};
 }
 
-// A homogeneous medium (coloured glass, a liquid, fog, smoke, skin): light crossing a
-// distance d of it unscattered keeps exp(-(absorption + scattering) d) per channel
-// (Beer-Lambert), and where it scatters it turns by the Henyey-Greenstein phase function of
-// asymmetry g. Shapes bound it (ShapeDescription::insideMedium); docs/scene-format.md#media.
+// A medium (coloured glass, a liquid, fog, smoke, skin): light crossing a distance d of it
+// unscattered keeps exp(-(absorption + scattering) d) per channel (Beer-Lambert), and where
+// it scatters it turns by the Henyey-Greenstein phase function of asymmetry g. With a
+// density grid (smoke, clouds) both coefficients are times the density where the light is,
+// and d is the density's integral along the way. Shapes bound it
+// (ShapeDescription::insideMedium); docs/scene-format.md#media.
 struct MediumDescription {
     std::string name;
     Color absorption{0.0f};  // sigma_a, per unit of scene length, >= 0
     Color scattering{0.0f};  // sigma_s, per unit of scene length, >= 0
     float g = 0;             // the phase function's mean cosine, in (-1, 1): > 0 forward
+    std::shared_ptr<const DensityGrid> density;  // none: homogeneous (a density of 1)
 
     Color extinction() const { return absorption + scattering; }
-    bool scatters() const { return !isBlack(scattering); }
+    bool scatters() const { return !isBlack(scattering) && (!density || density->maxValue() > 0); }
+    // The density at p (1 where homogeneous).
+    float densityAt(Vec3 p) const { return density ? density->at(p) : 1.0f; }
+    // The density's integral along o + t d, t in [0, length], |d| = 1: the length itself
+    // where homogeneous (infinite for a ray that leaves the scene).
+    double densityLength(Vec3 o, Vec3 d, float length) const {
+        return density ? density->integral(o, d, length) : static_cast<double>(length);
+    }
 };
 
 struct ShapeDescription {

@@ -21,12 +21,16 @@ struct ChromaticFlight {
     Color ratios{1.0f};
 };
 
-// Samples the free flight of a ray over a segment of `length` (infinite if the ray leaves
-// the scene) in medium m with the number u in [0, 1) (the path's first flight also picks
-// its hero with it). Returns the distance at which the ray scatters, below `length`, or
-// `length`; beta is then weighted so that its expected value, over the flight and the
-// hero, is sigma_s T(t) at a scattering point's density and T(length) at the end.
-inline float sampleFreeFlight(const MediumDescription& m, float length, float u, Color& beta, ChromaticFlight& path) {
+// Samples the free flight of the ray o + t d (|d| = 1) over a segment of `length`
+// (infinite if the ray leaves the scene) in medium m with the number u in [0, 1) (the
+// path's first flight also picks its hero with it). Returns the distance at which the ray
+// scatters, below `length`, or `length`; beta is then weighted so that its expected value,
+// over the flight and the hero, is sigma_s T(t) at a scattering point's density and
+// T(length) at the end. In a medium of varying density the flight is drawn exactly on the
+// density's integral D(t) (DensityGrid::reach): T = exp(-sigma_t D), the density at the
+// point cancelling from the weight, so one number still draws a flight.
+inline float sampleFreeFlight(const MediumDescription& m, Vec3 o, Vec3 dir, float length, float u, Color& beta,
+                              ChromaticFlight& path) {
     if (path.hero < 0) {
         path.hero = std::min(static_cast<int>(u * 3), 2);
         u = u * 3 - static_cast<float>(path.hero);
@@ -34,11 +38,22 @@ inline float sampleFreeFlight(const MediumDescription& m, float length, float u,
     u = std::min(u, 0x1.fffffep-1f);
     const Color sigmaT = m.extinction();
     const int h = path.hero;
-    const float t = sigmaT[h] > 0 ? -std::log1p(-u) / sigmaT[h] : std::numeric_limits<float>::infinity();
+    // The density's integral the flight travels before it scatters, on the hero's extinction.
+    const double depth = sigmaT[h] > 0 ? -std::log1p(-static_cast<double>(u)) / sigmaT[h]
+                                       : std::numeric_limits<double>::infinity();
+    float t;
+    double travelled;  // the density's integral up to where the flight ends
+    if (m.density) {
+        const DensityGrid::Reach r = m.density->reach(o, dir, length, depth);
+        t = r.t, travelled = r.depth;
+    } else {
+        t = static_cast<float>(depth), travelled = depth;
+    }
     const bool scatters = t < length;
     const float d = scatters ? t : length;
+    if (!scatters && !m.density) travelled = length;
     Color tr;
-    for (int c = 0; c < 3; ++c) tr[c] = sigmaT[c] > 0 ? std::exp(-sigmaT[c] * d) : 1.0f;
+    for (int c = 0; c < 3; ++c) tr[c] = sigmaT[c] > 0 ? static_cast<float>(std::exp(-sigmaT[c] * travelled)) : 1.0f;
     // Each channel's density of this flight over the hero's, and the contribution's.
     const float hero = scatters ? sigmaT[h] * tr[h] : tr[h];
     const Color density = (scatters ? sigmaT * tr : tr) / hero;

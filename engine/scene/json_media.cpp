@@ -1,8 +1,52 @@
-// "media": named homogeneous media that absorb and scatter, and a shape's "medium": the
-// media on its two sides (docs/scene-format.md#media).
+// "media": named media that absorb and scatter, homogeneous or of a density sampled on a
+// grid, and a shape's "medium": the media on its two sides (docs/scene-format.md#media).
+#include <cmath>
+#include <limits>
 #include "scene/json_scene_parts.h"
 
 namespace photon::scene_json {
+
+namespace {
+// "density": {"resolution": [nx, ny, nz], "values": [...], "bounds": [p0, p1], "transform": T}.
+std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value) {
+    JsonObject obj = value.object();
+    const JsonValue resolution = obj.required("resolution");
+    const std::vector<JsonValue> n = resolution.elements();
+    if (n.size() != 3) resolution.fail("must be [nx, ny, nz]");
+    int size[3];
+    for (int a = 0; a < 3; ++a) size[a] = static_cast<int>(n[a].integer(1, 4096));
+    const double count = double(size[0]) * size[1] * size[2];
+    if (count > double(1 << 28)) resolution.fail("more than 2^28 samples");
+    // Read straight off the JSON: a grid's millions of numbers need no JsonValue each.
+    const JsonValue values = obj.required("values");
+    if (!values.json().is_array()) values.fail("must be an array");
+    if (double(values.json().size()) != count)
+        values.fail("must hold nx * ny * nz = " + std::to_string(int64_t(count)) + " numbers, not " +
+                    std::to_string(values.json().size()));
+    std::vector<float> samples;
+    samples.reserve(values.json().size());
+    for (const Json& v : values.json()) {
+        const double x = v.is_number() ? v.get<double>() : -1.0;
+        if (!(x >= 0 && x <= std::numeric_limits<float>::max()))
+            JsonValue(v, values.path() + "[" + std::to_string(samples.size()) + "]")
+                .fail("must be a finite number >= 0");
+        samples.push_back(static_cast<float>(x));
+    }
+    Vec3 p0(0.0f), p1(1.0f);
+    if (auto bounds = obj.optional("bounds")) {
+        const std::vector<JsonValue> corners = bounds->elements();
+        if (corners.size() != 2) bounds->fail("must be [[x0, y0, z0], [x1, y1, z1]]");
+        p0 = corners[0].vec3(), p1 = corners[1].vec3();
+        if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) bounds->fail("each of the first corner's coordinates must be below the second's");
+    }
+    Transform worldFromMedium;
+    if (auto transform = obj.optional("transform")) worldFromMedium = readTransform(*transform);
+    obj.finish();
+    return std::make_shared<const DensityGrid>(size[0], size[1], size[2], std::move(samples),
+                                               DensityGrid::latticeFromBox(size[0], size[1], size[2], p0, p1) *
+                                                   worldFromMedium.inverse());
+}
+}  // namespace
 
 void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
     JsonObject media = value.object();
@@ -21,6 +65,7 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
         m.absorption = coefficient("absorption");
         m.scattering = coefficient("scattering");
         if (auto g = obj.optional("g")) m.g = g->number(Range::open(-1.0f, 1.0f));
+        if (auto density = obj.optional("density")) m.density = readDensityGrid(*density);
         obj.finish();
         ctx.mediumIndex[name] = int32_t(scene.media.size());
         scene.media.push_back(std::move(m));

@@ -358,9 +358,9 @@ Color Scene::shadowTransmittance(Ray ray, int32_t medium) const {
     const Vec3 end = toPoint ? ray.o + ray.d * ray.tMax : Vec3{};
     for (int crossing = 0; crossing <= kMaxCrossings; ++crossing) {
         SurfaceHit hit;
-        if (!intersect(ray, hit)) return t * transmittance(medium, ray.tMax);
+        if (!intersect(ray, hit)) return t * transmittance(medium, ray.o, ray.d, ray.tMax);
         if (!passesThrough(hit)) return Color(0.0f);
-        t *= transmittance(medium, hit.t);
+        t *= transmittance(medium, ray.o, ray.d, hit.t);
         if (isBlack(t)) return t;
         medium = mediumToward(hit, ray.d, medium);
         ray = toPoint ? spawnRayTo(hit.p, hit.ng, end) : spawnRay(hit.p, hit.ng, ray.d);

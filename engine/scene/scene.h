@@ -143,14 +143,17 @@ public:
     const MediumDescription& medium(int32_t index) const { return description_.media[size_t(index)]; }
     // True if paths in `medium` (-1: none) may scatter in it (medium_scattering.h).
     bool scatters(int32_t medium) const { return medium >= 0 && scatteringMedia_ && this->medium(medium).scatters(); }
-    // What light keeps unscattered over `distance` in the medium (Beer-Lambert on its
-    // extinction); an infinite distance in a medium that absorbs or scatters a channel keeps
+    // What light keeps unscattered over `distance` along the ray o + t d (|d| = 1) in the
+    // medium (Beer-Lambert on its extinction, times its density's integral where it varies);
+    // an infinite distance in a homogeneous medium that absorbs or scatters a channel keeps
     // none of it.
-    Color transmittance(int32_t medium, float distance) const {
+    Color transmittance(int32_t medium, Vec3 o, Vec3 d, float distance) const {
         if (medium < 0) return Color(1.0f);
-        const Color sigmaT = this->medium(medium).extinction();
+        const MediumDescription& m = this->medium(medium);
+        const Color sigmaT = m.extinction();
+        const double length = m.densityLength(o, d, distance);
         Color t;
-        for (int c = 0; c < 3; ++c) t[c] = sigmaT[c] > 0 ? std::exp(-sigmaT[c] * distance) : 1.0f;
+        for (int c = 0; c < 3; ++c) t[c] = sigmaT[c] > 0 ? static_cast<float>(std::exp(-sigmaT[c] * length)) : 1.0f;
         return t;
     }
     // The medium a path is in after leaving the hit along w: the shape's outside where w

@@ -121,6 +121,8 @@ private:
     // is warned with what is done `instead` and the directive's parameters count as read.
     void unsupported(const Directive& d, const std::string& message, const std::string& instead = "left out");
     Json matrixJson(const Transform& t) const;
+    // A "uniformgrid" medium's density grid (pbrt_media.cpp), `what` naming the medium.
+    Json densityGrid(const Directive& d, const Params& p, const std::string& what);
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;

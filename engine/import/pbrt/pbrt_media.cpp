@@ -1,7 +1,9 @@
-// MakeNamedMedium and MediumInterface. photon renders homogeneous media that absorb and
-// scatter (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its
-// Henyey-Greenstein phase function, its coefficients given or a measured "preset". A medium that emits or varies in space is refused, or
-// under a lenient import keeps only what photon can render.
+// MakeNamedMedium and MediumInterface. photon renders media that absorb and scatter
+// (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its Henyey-Greenstein
+// phase function, its coefficients given or a measured "preset", and its "uniformgrid"
+// medium, whose density is sampled on a grid. A medium that emits, or of another kind
+// ("nanovdb", "cloud", "rgbgrid"), is refused, or under a lenient import keeps only what
+// photon can render.
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "import/pbrt/scattering_presets.h"
@@ -13,9 +15,10 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     const std::string& name = d.strings.at(0);
     const std::string type = p.string("type", "");
     const std::string what = "medium \"" + name + "\"";
-    if (type != "homogeneous") {
+    if (type != "homogeneous" && type != "uniformgrid") {
         media_[name] = false;
-        return unsupported(d, what + ": a \"" + type + "\" medium is not supported (photon renders homogeneous media)");
+        return unsupported(d, what + ": a \"" + type +
+                                  "\" medium is not supported (photon renders \"homogeneous\" and \"uniformgrid\" media)");
     }
     // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale".
     auto coefficient = [&](std::string_view key) {
@@ -42,8 +45,40 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     Json m = {{"absorption", rgb(absorption)}};
     if (!isBlack(scattering)) m["scattering"] = rgb(scattering);
     if (g != 0 && !isBlack(scattering)) m["g"] = g;
+    if (type == "uniformgrid") m["density"] = densityGrid(d, p, what);
     mediaJson_[name] = std::move(m);
     p.warnUnused(out_.warnings);
+}
+
+// pbrt-v4's GridMedium: "density" samples (x fastest) at the centres of the cells of the
+// box [p0, p1] cut nx x ny x nz times, in the medium's space, which the current transform
+// places in the world.
+Json SceneBuilder::densityGrid(const Directive& d, const Params& p, const std::string& what) {
+    int n[3];
+    const char* axes[3] = {"nx", "ny", "nz"};
+    for (int a = 0; a < 3; ++a) {
+        const double v = p.number(axes[a], 1);
+        if (!(v >= 1 && v <= 4096)) fail(d.where, what + ": \"" + axes[a] + "\" must lie in [1, 4096]");
+        n[a] = static_cast<int>(v);
+    }
+    const std::vector<double> density = p.numbers("density", {"float"});
+    const size_t count = size_t(n[0]) * n[1] * n[2];
+    if (density.size() != count)
+        fail(d.where, what + ": \"density\" holds " + std::to_string(density.size()) + " values, nx * ny * nz = " +
+                          std::to_string(count));
+    Json values = Json::array();
+    for (double v : density) {
+        if (!(v >= 0) || !std::isfinite(v)) fail(d.where, what + ": \"density\" values must be finite and >= 0");
+        values.push_back(v);
+    }
+    const Vec3 p0 = p.vec3("p0", Vec3(0.0f)), p1 = p.vec3("p1", Vec3(1.0f));
+    if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) fail(d.where, what + ": \"p0\" must lie below \"p1\" in x, y and z");
+    if (p.find("temperature"))
+        unsupported(d, what + " emits light by temperature: photon's media do not emit", "its emission left out");
+    Json grid = {{"resolution", {n[0], n[1], n[2]}}, {"values", std::move(values)},
+                 {"bounds", {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}}}};
+    if (!state_.ctm.identity()) grid["transform"] = matrixJson(pointCtm(d));
+    return grid;
 }
 
 void SceneBuilder::mediumInterface(const Directive& d) {

@@ -301,7 +301,8 @@ private:
         if (scene_.scatters(L.medium[i])) {
             if (scattersOnTheWay(i, found ? hit.t : std::numeric_limits<float>::infinity())) return 0;
         } else if (found && L.medium[i] >= 0) {
-            L.setBeta(i, L.beta(i) * scene_.transmittance(L.medium[i], hit.t));
+            const Vec3 o{L.ox()[i], L.oy()[i], L.oz()[i]};
+            L.setBeta(i, L.beta(i) * scene_.transmittance(L.medium[i], o, L.direction(i), hit.t));
         }
         if (!found) {
             counters_.missedAtEmission += L.depth[i] == 0;
@@ -363,7 +364,8 @@ private:
         const MediumDescription& m = scene_.medium(L.medium[i]);
         Color weight(1.0f);
         ChromaticFlight flight{L.hero[i], {L.ratioR[i], L.ratioG[i], L.ratioB[i]}};
-        const float t = sampleFreeFlight(m, segment, rng.uniform(), weight, flight);
+        const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
+        const float t = sampleFreeFlight(m, o, d, segment, rng.uniform(), weight, flight);
         L.hero[i] = flight.hero;
         L.ratioR[i] = flight.ratios.x, L.ratioG[i] = flight.ratios.y, L.ratioB[i] = flight.ratios.z;
         L.state[i] = rng.state();
@@ -372,7 +374,6 @@ private:
             return false;
         }
         ++counters_.segments;
-        const Vec3 d = L.direction(i), o{L.ox()[i], L.oy()[i], L.oz()[i]};
         if (settings_.arrivesInMedia && L.depth[i] >= settings_.firstArrivalDepth)
             sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i]});
         if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;

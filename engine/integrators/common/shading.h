@@ -49,8 +49,8 @@ inline float shadingCosineRatio(const SurfaceHit& hit, Vec3 w) {
 
 // A path's throughput after its ray's segment through the medium it is in (-1: none): to
 // the hit, or for a ray that leaves the scene, to infinity.
-inline void absorbAlong(const Scene& scene, int32_t medium, float distance, Color& beta) {
-    if (medium >= 0) beta *= scene.transmittance(medium, distance);
+inline void absorbAlong(const Scene& scene, int32_t medium, const Ray& ray, float distance, Color& beta) {
+    if (medium >= 0) beta *= scene.transmittance(medium, ray.o, ray.d, distance);
 }
 
 // Where a camera path's ray ended: it left the scene, met a surface, or scattered in a
@@ -90,7 +90,8 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         const bool found = scene.intersect(ray, hit);
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
         if (media && scene.scatters(medium)) {
-            const float t = sampleFreeFlight(scene.medium(medium), segment, media->sampler.get1D(), beta, media->flight);
+            const float t =
+                sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, media->sampler.get1D(), beta, media->flight);
             if (t < segment) {
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;
@@ -101,7 +102,7 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
                 return RayEnd::Scattered;
             }
         } else {
-            absorbAlong(scene, medium, segment, beta);
+            absorbAlong(scene, medium, ray, segment, beta);
         }
         if (!found) return RayEnd::Left;
         travelled += hit.t;

@@ -314,7 +314,10 @@ float SppmIntegrator::passRadiusSquared(size_t index, float pathLength, float ex
 
 void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength,
                                       float boundaryDistance) {
-    const Color sigmaT = scene_->medium(medium).extinction();
+    // In a medium of varying density, its coefficients where the point is.
+    const MediumDescription& m = scene_->medium(medium);
+    const float density = m.densityAt(p);
+    const Color sigmaT = m.extinction() * density;
     const float r2 = passRadiusSquared(index, pathLength, (sigmaT.x + sigmaT.y + sigmaT.z) / 3);
     const size_t local = index - bandOffset_;
     discs_[local] = GatherDisc{p, r2};
@@ -325,7 +328,9 @@ void SppmIntegrator::storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta,
     // statistics divide every pass's flux; the radius then shrinks by the disc's rule, still
     // consistent in a volume for alpha > 1/3 (Knaus & Zwicker 2011, sec. 4.3: a pass's
     // variance grows as r^-3, and r^2 falls as i^(alpha - 1)).
-    const Color sigmaS = scene_->medium(medium).scattering;
+    // Photons arriving in a medium of varying density count over the density where they
+    // scattered (addPhoton), so the point's weight is over the medium's sigma_s alone.
+    const Color sigmaS = m.scattering;
     Color weight;
     for (int c = 0; c < 3; ++c) weight[c] = sigmaS[c] > 0 ? beta[c] / sigmaS[c] : 0.0f;
     weight *= 0.75f / std::sqrt(r2);

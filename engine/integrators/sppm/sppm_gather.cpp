@@ -108,7 +108,17 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
         // Photons that scattered in a medium (no normal) go to the points in it; the facing
         // test below turns them away from surfaces.
         if (hit.n != Vec3{}) return;
-        c = vp.beta * henyeyGreenstein(dot(vp.n.decode(), hit.wi), scene_->medium(vp.material).g);
+        const MediumDescription& m = scene_->medium(vp.material);
+        c = vp.beta * henyeyGreenstein(dot(vp.n.decode(), hit.wi), m.g);
+        // Where the density varies, each photon counts over the density where it scattered
+        // (the point's beta is over the medium's sigma_s alone): the ball then averages the
+        // in-scattered radiance, which varies smoothly, not sigma_s L, which changes with
+        // the density from sample to sample (storeVolumePoint).
+        if (m.density) [[unlikely]] {
+            const float density = m.densityAt(hit.p);
+            if (!(density > 0)) return;
+            c /= density;
+        }
         kernel = kernelWeight(settings_.kernel, d2OverR2, KernelDomain::Ball);
     } else {
         Vec3 vn = vp.n.decode();
