@@ -46,6 +46,7 @@ LIBRARIES = {
     "assimp": {"engine", "engine-tests", "fuzz"},
     "tiny_obj_loader.h": {"engine"},
     "nanoflann.hpp": {"engine", "engine-tests"},
+    "nanovdb": {"engine", "engine-tests"},
     "zlib.h": {"engine", "engine-tests", "test-support"},
     "httplib.h": {"api", "service-tests", "fuzz"},
     "sqlite3.h": {"server", "service-tests"},

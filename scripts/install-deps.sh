@@ -5,7 +5,7 @@
 # libFuzzer runtimes, LLVM's linker).
 set -euo pipefail
 packages=(cmake g++ pkg-config libembree-dev libtbb-dev libopenimageio-dev openimageio-tools
-          nlohmann-json3-dev libassimp-dev libtinyobjloader-dev libnanoflann-dev libtinygltf-dev libcpp-httplib-dev libsqlite3-dev zlib1g-dev libgtest-dev
+          nlohmann-json3-dev libassimp-dev libtinyobjloader-dev libnanoflann-dev libnanovdb-dev libtinygltf-dev libcpp-httplib-dev libsqlite3-dev zlib1g-dev libgtest-dev
           libcli11-dev libspdlog-dev libhiredis-dev redis-server
           python3 python3-jsonschema chromium ccache ninja-build)
 if [ "${1:-}" = --hardening ]; then packages+=(clang-14 libclang-rt-14-dev lld-14); fi

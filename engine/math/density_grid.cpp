@@ -32,6 +32,12 @@ DensityGrid::DensityGrid(int nx, int ny, int nz, std::vector<float> values, cons
     }
 }
 
+DensityGrid::DensityGrid(int nx, int ny, int nz, std::shared_ptr<const Samples> samples, float maxValue,
+                         const Transform& latticeFromWorld)
+    : n_{nx, ny, nz}, samples_(std::move(samples)), latticeFromWorld_(latticeFromWorld), max_(maxValue) {
+    if (nx < 1 || ny < 1 || nz < 1 || !samples_) throw std::invalid_argument("density grid: no samples");
+}
+
 Transform DensityGrid::latticeFromBox(int nx, int ny, int nz, Vec3 p0, Vec3 p1) {
     const Vec3 scale{static_cast<float>(nx) / (p1.x - p0.x), static_cast<float>(ny) / (p1.y - p0.y),
                      static_cast<float>(nz) / (p1.z - p0.z)};
@@ -40,6 +46,8 @@ Transform DensityGrid::latticeFromBox(int nx, int ny, int nz, Vec3 p0, Vec3 p1) 
 
 float DensityGrid::sample(int i, int j, int k) const {
     if (i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) return 0.0f;
+    if (samples_) [[unlikely]]
+        return samples_->at(i, j, k);
     return values_[(static_cast<size_t>(k) * n_[1] + j) * n_[0] + i];
 }
 

@@ -10,6 +10,7 @@
 // medium, with no null collisions and no noise from estimated transmittance.
 #pragma once
 #include <cstddef>
+#include <memory>
 #include <vector>
 #include "math/transform.h"
 
@@ -20,6 +21,15 @@ public:
     // nx * ny * nz samples, x fastest, then y, then z (pbrt-v4's order); latticeFromWorld
     // takes a world point to lattice coordinates, where sample (i, j, k) sits at (i, j, k).
     DensityGrid(int nx, int ny, int nz, std::vector<float> values, const Transform& latticeFromWorld);
+    // Samples held elsewhere (a sparse grid read from a file, scene/nanovdb_density.h), at
+    // lattice points (i, j, k) in [0, n); `maxValue` bounds them.
+    class Samples {
+    public:
+        virtual ~Samples() = default;
+        virtual float at(int i, int j, int k) const = 0;
+    };
+    DensityGrid(int nx, int ny, int nz, std::shared_ptr<const Samples> samples, float maxValue,
+                const Transform& latticeFromWorld);
     // The lattice coordinates of a point in the box [p0, p1] that the samples fill, each at
     // the centre of its cell of the box cut nx * ny * nz times (pbrt-v4's SampledGrid):
     // n (p - p0) / (p1 - p0) - 1/2.
@@ -53,6 +63,7 @@ private:
 
     int n_[3];
     std::vector<float> values_;
+    std::shared_ptr<const Samples> samples_;  // instead of values_
     Transform latticeFromWorld_;
     float max_ = 0;
 };

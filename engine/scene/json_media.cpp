@@ -3,13 +3,36 @@
 #include <cmath>
 #include <limits>
 #include "scene/json_scene_parts.h"
+#include "scene/nanovdb_density.h"
 
 namespace photon::scene_json {
 
 namespace {
-// "density": {"resolution": [nx, ny, nz], "values": [...], "bounds": [p0, p1], "transform": T}.
-std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value) {
+// "density": {"file": "x.nvdb", "grid": "density", "transform": T}: a NanoVDB file's grid.
+std::shared_ptr<const DensityGrid> readNanoVdbGrid(JsonObject& obj, const LoadContext& ctx) {
+    const JsonValue file = obj.required("file");
+    const std::filesystem::path path = resolveFile(file, ctx);
+    std::string grid = "density";
+    if (auto name = obj.optional("grid")) grid = name->string();
+    Transform worldFromGrid;
+    if (auto transform = obj.optional("transform")) worldFromGrid = readTransform(*transform);
+    obj.finish();
+    try {
+        return readNanoVdbDensity(path, grid, worldFromGrid);
+    } catch (const std::runtime_error& e) {
+        file.fail(e.what());
+    }
+}
+
+// "density": {"resolution": [nx, ny, nz], "values": [...], "bounds": [p0, p1], "transform": T},
+// or a NanoVDB file's grid.
+std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value, const LoadContext& ctx) {
     JsonObject obj = value.object();
+    if (obj.has("file")) {
+        if (obj.has("resolution") || obj.has("values") || obj.has("bounds"))
+            value.fail("give either \"file\" or \"resolution\" and \"values\", not both");
+        return readNanoVdbGrid(obj, ctx);
+    }
     const JsonValue resolution = obj.required("resolution");
     const std::vector<JsonValue> n = resolution.elements();
     if (n.size() != 3) resolution.fail("must be [nx, ny, nz]");
@@ -65,7 +88,7 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
         m.absorption = coefficient("absorption");
         m.scattering = coefficient("scattering");
         if (auto g = obj.optional("g")) m.g = g->number(Range::open(-1.0f, 1.0f));
-        if (auto density = obj.optional("density")) m.density = readDensityGrid(*density);
+        if (auto density = obj.optional("density")) m.density = readDensityGrid(*density, ctx);
         obj.finish();
         ctx.mediumIndex[name] = int32_t(scene.media.size());
         scene.media.push_back(std::move(m));

@@ -123,6 +123,8 @@ private:
     Json matrixJson(const Transform& t) const;
     // A "uniformgrid" medium's density grid (pbrt_media.cpp), `what` naming the medium.
     Json densityGrid(const Directive& d, const Params& p, const std::string& what);
+    // A "nanovdb" medium's: its file's "density" grid.
+    Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what);
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;

@@ -1,9 +1,9 @@
 // MakeNamedMedium and MediumInterface. photon renders media that absorb and scatter
 // (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its Henyey-Greenstein
-// phase function, its coefficients given or a measured "preset", and its "uniformgrid"
-// medium, whose density is sampled on a grid. A medium that emits, or of another kind
-// ("nanovdb", "cloud", "rgbgrid"), is refused, or under a lenient import keeps only what
-// photon can render.
+// phase function, its coefficients given or a measured "preset", its "uniformgrid" medium,
+// whose density is sampled on a grid, and its "nanovdb" medium, whose density grid is in a
+// NanoVDB file. A medium that emits, or of another kind ("cloud", "rgbgrid"), is refused,
+// or under a lenient import keeps only what photon can render.
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "import/pbrt/scattering_presets.h"
@@ -15,10 +15,11 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     const std::string& name = d.strings.at(0);
     const std::string type = p.string("type", "");
     const std::string what = "medium \"" + name + "\"";
-    if (type != "homogeneous" && type != "uniformgrid") {
+    if (type != "homogeneous" && type != "uniformgrid" && type != "nanovdb") {
         media_[name] = false;
         return unsupported(d, what + ": a \"" + type +
-                                  "\" medium is not supported (photon renders \"homogeneous\" and \"uniformgrid\" media)");
+                                  "\" medium is not supported (photon renders \"homogeneous\", \"uniformgrid\" and "
+                                  "\"nanovdb\" media)");
     }
     // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale".
     auto coefficient = [&](std::string_view key) {
@@ -46,6 +47,7 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     if (!isBlack(scattering)) m["scattering"] = rgb(scattering);
     if (g != 0 && !isBlack(scattering)) m["g"] = g;
     if (type == "uniformgrid") m["density"] = densityGrid(d, p, what);
+    if (type == "nanovdb") m["density"] = nanoVdbGrid(d, p, what);
     mediaJson_[name] = std::move(m);
     p.warnUnused(out_.warnings);
 }
@@ -77,6 +79,22 @@ Json SceneBuilder::densityGrid(const Directive& d, const Params& p, const std::s
         unsupported(d, what + " emits light by temperature: photon's media do not emit", "its emission left out");
     Json grid = {{"resolution", {n[0], n[1], n[2]}}, {"values", std::move(values)},
                  {"bounds", {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}}}};
+    if (!state_.ctm.identity()) grid["transform"] = matrixJson(pointCtm(d));
+    return grid;
+}
+
+// pbrt-v4's NanoVDBMedium: the file's grid named "density", in the medium's space (the
+// current transform); a "temperature" grid would make it emit.
+Json SceneBuilder::nanoVdbGrid(const Directive& d, const Params& p, const std::string& what) {
+    const std::string file = p.string("filename", "");
+    if (file.empty()) fail(d.where, what + ": a \"nanovdb\" medium needs a \"filename\"");
+    if (auto why = checkRelativePath(file)) fail(d.where, what + ": \"" + file + "\": " + *why);
+    // pbrt-v4 lights the medium from the file's "temperature" grid, scaled by Lescale.
+    if (p.number("Lescale").value_or(0) > 0)
+        unsupported(d, what + " emits light (Lescale, by its file's temperature grid): photon's media do not emit",
+                    "its emission left out");
+    for (const char* emission : {"temperaturecutoff", "temperaturescale"}) p.find(emission);
+    Json grid = {{"file", file}, {"grid", "density"}};
     if (!state_.ctm.identity()) grid["transform"] = matrixJson(pointCtm(d));
     return grid;
 }
