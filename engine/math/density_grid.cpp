@@ -44,11 +44,16 @@ Transform DensityGrid::latticeFromBox(int nx, int ny, int nz, Vec3 p0, Vec3 p1) 
     return Transform::translate(Vec3(-0.5f)) * Transform::scale(scale) * Transform::translate(-p0);
 }
 
-float DensityGrid::sample(int i, int j, int k) const {
-    if (i < 0 || j < 0 || k < 0 || i >= n_[0] || j >= n_[1] || k >= n_[2]) return 0.0f;
-    if (samples_) [[unlikely]]
-        return samples_->at(i, j, k);
-    return values_[(static_cast<size_t>(k) * n_[1] + j) * n_[0] + i];
+void DensityGrid::corners(int i, int j, int k, float c[8]) const {
+    if (samples_) [[unlikely]] {
+        samples_->corners(i, j, k, n_, c);
+        return;
+    }
+    for (int corner = 0; corner < 8; ++corner) {
+        const int x = i + (corner & 1), y = j + ((corner >> 1) & 1), z = k + (corner >> 2);
+        const bool inside = x >= 0 && y >= 0 && z >= 0 && x < n_[0] && y < n_[1] && z < n_[2];
+        c[corner] = inside ? values_[(static_cast<size_t>(z) * n_[1] + y) * n_[0] + x] : 0.0f;
+    }
 }
 
 float DensityGrid::at(Vec3 p) const {
@@ -57,9 +62,8 @@ float DensityGrid::at(Vec3 p) const {
           u.z <= n_[2] - 0.5f))
         return 0.0f;
     const int i = static_cast<int>(std::floor(u.x)), j = static_cast<int>(std::floor(u.y)), k = static_cast<int>(std::floor(u.z));
-    const float c[8] = {sample(i, j, k),         sample(i + 1, j, k),     sample(i, j + 1, k),
-                        sample(i + 1, j + 1, k), sample(i, j, k + 1),     sample(i + 1, j, k + 1),
-                        sample(i, j + 1, k + 1), sample(i + 1, j + 1, k + 1)};
+    float c[8];
+    corners(i, j, k, c);
     return static_cast<float>(trilinear(c, u.x - i, u.y - j, u.z - k));
 }
 
@@ -99,9 +103,8 @@ void DensityGrid::walk(Vec3 o, Vec3 d, float length, Visit&& visit) const {
         const double tEnd = std::min(tNext[a], tExit);
         if (tEnd > t) {
             const int i = cell[0], j = cell[1], k = cell[2];
-            const float c[8] = {sample(i, j, k),         sample(i + 1, j, k),     sample(i, j + 1, k),
-                                sample(i + 1, j + 1, k), sample(i, j, k + 1),     sample(i + 1, j, k + 1),
-                                sample(i, j + 1, k + 1), sample(i + 1, j + 1, k + 1)};
+            float c[8];
+            corners(i, j, k, c);
             auto density = [&](double s) {
                 return trilinear(c, std::clamp(u0[0] + v[0] * s - i, 0.0, 1.0), std::clamp(u0[1] + v[1] * s - j, 0.0, 1.0),
                                  std::clamp(u0[2] + v[2] * s - k, 0.0, 1.0));

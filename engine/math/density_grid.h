@@ -26,7 +26,10 @@ public:
     class Samples {
     public:
         virtual ~Samples() = default;
-        virtual float at(int i, int j, int k) const = 0;
+        // The samples at the corners (i, j, k) + (x, y, z), corner x + 2 y + 4 z, zero
+        // outside [0, n): a cell's eight in one call, which a tree reads through one cached
+        // path to its leaf.
+        virtual void corners(int i, int j, int k, const int n[3], float c[8]) const = 0;
     };
     DensityGrid(int nx, int ny, int nz, std::shared_ptr<const Samples> samples, float maxValue,
                 const Transform& latticeFromWorld);
@@ -54,8 +57,8 @@ public:
     float maxValue() const { return max_; }
 
 private:
-    // The sample at lattice point (i, j, k); zero outside the lattice.
-    float sample(int i, int j, int k) const;
+    // The samples at the corners of the cell (i, j, k) (Samples::corners).
+    void corners(int i, int j, int k, float c[8]) const;
     // Calls visit(t0, t1, cell) for each lattice cell the line o + t d crosses for t in
     // [0, length], in order, until it returns false; `cell` evaluates the density at any t.
     template <class Visit>

@@ -20,9 +20,15 @@ class NanoVdbSamples final : public DensityGrid::Samples {
 public:
     NanoVdbSamples(nanovdb::GridHandle<> handle, const nanovdb::FloatGrid& grid)
         : handle_(std::move(handle)), grid_(grid), min_(grid.indexBBox().min()) {}
-    float at(int i, int j, int k) const override {
-        // An accessor of its own each time: the walk along a ray runs on many threads.
-        return std::max(grid_.getAccessor().getValue(min_ + nanovdb::Coord(i, j, k)), 0.0f);
+    void corners(int i, int j, int k, const int n[3], float c[8]) const override {
+        // An accessor of its own for each cell (the walk along a ray runs on many threads),
+        // whose cache serves the corners after the first.
+        const auto acc = grid_.getAccessor();
+        for (int corner = 0; corner < 8; ++corner) {
+            const int x = i + (corner & 1), y = j + ((corner >> 1) & 1), z = k + (corner >> 2);
+            const bool inside = x >= 0 && y >= 0 && z >= 0 && x < n[0] && y < n[1] && z < n[2];
+            c[corner] = inside ? std::max(acc.getValue(min_ + nanovdb::Coord(x, y, z)), 0.0f) : 0.0f;
+        }
     }
 
 private:
