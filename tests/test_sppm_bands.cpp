@@ -125,27 +125,33 @@ TEST(SppmBands, ACheckpointResumesInOtherBands) {
 // render as it was (false) or adds the whole pass (true), never a part. Cancels come at
 // delays stepping through the passes, before, inside and after their bands; whichever way
 // each falls, the image after it must be the one an uncancelled render has after as many
-// passes. (Passes here take 3-4 ms; in one run 6 of them were added whole though their
-// cancel came while they were traced.)
+// passes. (Passes here take 3-4 ms, 5-10 times that under the sanitizers: the delays are
+// in units of the pass's own time, measured first.)
 void expectPassesAddedWholeOrNotAtAll(SceneDescription d) {
     constexpr int kPasses = 6;
     d.render.passes = kPasses;
     std::vector<Image> after;  // after k passes, uncancelled
+    std::chrono::duration<double> passTime{};  // an uncancelled pass's, here (sanitizers slow it 5-10x)
     {
         SppmIntegrator whole(Scene::build(SceneDescription(d)));
         CancelToken never;
         after.push_back(whole.snapshot());
+        const auto start = std::chrono::steady_clock::now();
         for (int k = 0; k < kPasses; ++k) {
             ASSERT_TRUE(whole.renderPass(never));
             after.push_back(whole.snapshot());
         }
+        passTime = (std::chrono::steady_clock::now() - start) / kPasses;
     }
     SppmIntegrator sppm(Scene::build(std::move(d)));
     for (int attempt = 0; sppm.passesDone() < kPasses; ++attempt) {
         ASSERT_LT(attempt, 2000);
         CancelToken cancel;
+        // From no delay to twice a pass's time, in sixteenths: some cancels come before a
+        // pass's first band ends, some inside it, some after it.
+        const auto delay = passTime * ((attempt % 16) / 8.0);
         std::thread canceller([&] {
-            std::this_thread::sleep_for(std::chrono::microseconds(250 * (attempt % 64)));
+            std::this_thread::sleep_for(delay);
             cancel.cancel();
         });
         const int before = sppm.passesDone();
