@@ -1,0 +1,97 @@
+// pbrt-v4's media imported onto photon's (docs/import.md): the subsurface material's medium
+// and the media whose density varies in space ("uniformgrid" here, "nanovdb" in
+// test_nanovdb_density.cpp).
+#include <gtest/gtest.h>
+#include "import/pbrt/scattering_presets.h"
+#include "pbrt_import_fixture.h"
+
+namespace photon::pbrt_import_media_tests {
+namespace {
+
+using namespace test::pbrt_import;
+
+// pbrt-v4's "subsurface" becomes a dielectric whose shapes hold a scattering medium, its
+// coefficients as pbrt-v4's SubsurfaceMaterial::Create finds them, times "scale".
+TEST(PbrtImport, SubsurfaceIsADielectricAroundAScatteringMedium) {
+    const ImportedScene s = import(R"(
+AttributeBegin
+  Material "subsurface" "string name" "Skin1" "float scale" 10 "float eta" 1.4 "float roughness" 0.2
+  Shape "sphere" "float radius" 0.3
+AttributeEnd
+Material "subsurface" "rgb reflectance" [0.5 0.2 0.8] "rgb mfp" [0.1 0.2 0.4] "float scale" 0.5
+Shape "sphere" "float radius" 0.2
+Material "subsurface"
+Shape "sphere" "float radius" 0.1
+)");
+    const Json& doc = s.document;
+    const Json &skin = doc["shapes"][2], &reflecting = doc["shapes"][3], &milk = doc["shapes"][4];
+    const Json& material = doc["materials"][skin["material"].get<std::string>()];
+    EXPECT_EQ(material["type"], "dielectric");
+    EXPECT_FLOAT_EQ(material["ior"].get<float>(), 1.4f);
+    // As a dielectric's: pbrt's remapped alpha = sqrt(0.2), photon's roughness sqrt(alpha).
+    EXPECT_NEAR(material["roughness"].get<double>(), std::pow(0.2, 0.25), 1e-6);
+    EXPECT_FALSE(material.contains(std::string("\x01medium")));
+    // Jensen et al. 2001's skin 1 (mm^-1) times 10, with g = 0.
+    const Json& skinMedium = doc["media"][skin["medium"]["inside"].get<std::string>()];
+    const Color sigmaA = vec(skinMedium["absorption"]), sigmaS = vec(skinMedium["scattering"]);
+    EXPECT_NEAR(sigmaA.x, 0.32, 1e-5);
+    EXPECT_NEAR(sigmaA.z, 4.8, 1e-5);
+    EXPECT_NEAR(sigmaS.y, 8.8, 1e-5);
+    EXPECT_FALSE(skinMedium.contains("g"));
+    // From a reflectance and a mean free path (times scale): sigma_t = 1 / (scale mfp), and
+    // the albedo whose diffusion reflectance is the one given.
+    const Json& fromReflectance = doc["media"][reflecting["medium"]["inside"].get<std::string>()];
+    const Color a = vec(fromReflectance["absorption"]), sc = vec(fromReflectance["scattering"]);
+    const double mfp[3] = {0.05, 0.1, 0.2}, reflectance[3] = {0.5, 0.2, 0.8};
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(a[c] + sc[c], 1 / mfp[c], 1e-3 / mfp[c]) << c;
+        EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(sc[c] / (a[c] + sc[c]), 1.33), reflectance[c], 1e-4) << c;
+    }
+    // Nothing given: pbrt-v4's whole milk.
+    const Json& milkMedium = doc["media"][milk["medium"]["inside"].get<std::string>()];
+    EXPECT_NEAR(vec(milkMedium["scattering"]).z, 3.77, 1e-5);
+    EXPECT_FLOAT_EQ(doc["materials"][milk["material"].get<std::string>()]["ior"].get<float>(), 1.33f);
+
+    // A homogeneous medium's "preset" reads the same table, times its "scale".
+    const ImportedScene cream = import("MakeNamedMedium \"c\" \"string type\" \"homogeneous\" \"string preset\" \"Cream\" "
+                                       "\"float scale\" 100 \"float g\" 0.3\n");
+    EXPECT_NEAR(vec(cream.document["media"]["c"]["scattering"]).x, 738, 1e-3);
+    EXPECT_NEAR(vec(cream.document["media"]["c"]["absorption"]).z, 1.63, 1e-5);
+    EXPECT_NEAR(cream.document["media"]["c"]["g"].get<double>(), 0.3, 1e-6);
+
+    // The dipole's reflectance: none without scattering, all of it without absorption.
+    EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(0, 1.5), 0, 1e-12);
+    EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(1, 1.5), 1, 1e-12);
+    EXPECT_STREQ(importError(kHeader + "Material \"subsurface\" \"string name\" \"Jam\"\n").what(),
+                 "bad.pbrt:12: subsurface: no measured material named \"Jam\" (photon has Apple, Chicken1, Chicken2, "
+                 "Cream, Ketchup, Marble, Potato, Skimmilk, Skin1, Skin2, Spectralon, Wholemilk)");
+    EXPECT_STREQ(importError(kHeader + "Texture \"t\" \"spectrum\" \"constant\" \"rgb value\" [0.5 0.5 0.5]\n"
+                                       "Material \"subsurface\" \"texture reflectance\" \"t\"\n").what(),
+                 "bad.pbrt:13: subsurface: a textured \"reflectance\", \"mfp\", \"sigma_a\" or \"sigma_s\" is not "
+                 "supported (the medium under the surface is homogeneous)");
+}
+
+// pbrt-v4's "uniformgrid" medium, made as smoke-plume makes it: the density in a file of its
+// own whose MakeNamedMedium the main file's coefficients finish after the Include, under a
+// transform that places the medium's box.
+TEST(PbrtImport, AUniformGridMediumKeepsItsDensityItsBoxAndItsPlace) {
+    writeScene("geometry/density.pbrt",
+               "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"integer ny\" 1 "
+               "\"integer nz\" 3\n  \"float density\" [0 1 2 3 4 5] \"point3 p0\" [-1 -1 -1] \"point3 p1\" [1 1 1]\n");
+    const ImportedScene s = import("AttributeBegin\nTranslate 1 2 3\nScale 2 2 2\nInclude \"geometry/density.pbrt\"\n"
+                                   "  \"spectrum sigma_a\" [300 1 830 1] \"spectrum sigma_s\" [300 4 830 4] \"float scale\" 0.5\n"
+                                   "MediumInterface \"smoke\" \"\"\nMaterial \"interface\"\nShape \"sphere\" \"float radius\" 1\n"
+                                   "AttributeEnd\n");
+    const Json& m = s.document["media"]["smoke"];
+    EXPECT_NEAR(vec(m["absorption"]).y, 0.5f, 1e-5f);
+    EXPECT_NEAR(vec(m["scattering"]).y, 2.0f, 1e-5f);
+    const Json& grid = m["density"];
+    EXPECT_EQ(grid["resolution"], Json({2, 1, 3}));
+    EXPECT_EQ(grid["values"], Json({0, 1, 2, 3, 4, 5}));
+    EXPECT_EQ(grid["bounds"], Json({{-1, -1, -1}, {1, 1, 1}}));
+    EXPECT_EQ(grid["transform"]["matrix"], Json({2, 0, 0, 1, 0, 2, 0, 2, 0, 0, 2, 3, 0, 0, 0, 1}));
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+}
+
+}  // namespace
+}  // namespace photon::pbrt_import_media_tests
