@@ -11,7 +11,6 @@
 #include <photon/render.h>
 #include <photon/scene_convert.h>
 #include "import/pbrt/pbrt_import.h"
-#include "import/pbrt/scattering_presets.h"
 #include "pbrt_import_fixture.h"
 #include "materials/fresnel.h"
 #include "scene/ply_mesh.h"
