@@ -157,7 +157,7 @@ launcher=()
 san="$root/build-sanitize"
 san_build() {
     CC=clang-14 CXX=clang++-14 configure "$san" -DPHOTON_FUZZ=ON
-    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt photon-server photon-render photon-worker \
+    nice cmake --build "$san" -j2 --target fuzz_scene fuzz_obj fuzz_http fuzz_checkpoint fuzz_ply fuzz_pbrt fuzz_bsdf photon-server photon-render photon-worker \
         "${san_programs[@]}"
 }
 # fuzz_run TARGET CORPUS: new inputs go to build-sanitize/corpus (the seeds stay as they are).
@@ -220,6 +220,7 @@ step "fuzz: fuzz_scene ${fuzz_seconds}s" fuzz_run fuzz_scene scene
 step "fuzz: fuzz_obj ${fuzz_seconds}s" fuzz_run fuzz_obj obj
 step "fuzz: fuzz_ply ${fuzz_seconds}s" fuzz_run fuzz_ply ply
 step "fuzz: fuzz_pbrt ${fuzz_seconds}s" fuzz_run fuzz_pbrt pbrt
+step "fuzz: fuzz_bsdf ${fuzz_seconds}s" fuzz_run fuzz_bsdf bsdf
 step "fuzz: fuzz_http ${fuzz_seconds}s" fuzz_run fuzz_http http
 step "fuzz: fuzz_checkpoint ${fuzz_seconds}s" fuzz_run fuzz_checkpoint checkpoint
 step "asan+ubsan: tests" san_tests

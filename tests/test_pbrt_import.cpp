@@ -431,9 +431,9 @@ MakeNamedMaterial "later" "string type" "diffuse" "rgb reflectance" [0 0 0.8]
 
 TEST(PbrtImport, ErrorsNameFileAndLine) {
     const std::string head = "Camera \"perspective\"\nWorldBegin\n";
-    EXPECT_STREQ(importError(head + "Material \"measured\"\n").what(),
-                 "bad.pbrt:3: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                 "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, subsurface)");
+    EXPECT_STREQ(importError(head + "Material \"velvet\"\n").what(),
+                 "bad.pbrt:3: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+                 "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, interface, subsurface)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb Le\" [1 1 1]\n").what(),
                  "bad.pbrt:3: medium \"fog\" emits light (Le): photon's media do not emit");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [1]\n").what(),
@@ -473,7 +473,7 @@ MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1] "rgb Le"
 MediumInterface "" "fog"
 Attribute "shape" "float radius" [2]
 Texture "noise" "spectrum" "ptex" "string filename" "noise.ptx"
-MakeNamedMaterial "fur" "string type" "measured" "string filename" "fur.bsdf"
+MakeNamedMaterial "fur" "string type" "velvet" "string filename" "fur.bsdf"
 MakeNamedMaterial "painted" "string type" "diffuse" "texture reflectance" "noise"
 NamedMaterial "fur"
 Shape "nurbs" "integer nu" [4]
@@ -486,8 +486,8 @@ LightSource "goniometric" "string filename" "profile.exr"
         "import)",
         "scene.pbrt:16: Texture \"noise\": class \"ptex\" is not supported (photon imports imagemap, checkerboard, bilerp, "
         "dots, fbm, wrinkled, windy, marble, scale, mix, directionmix, constant); the constant 0.5 used (lenient import)",
-        "scene.pbrt:17: material \"measured\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-        "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, subsurface); rendered as a grey "
+        "scene.pbrt:17: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
+        "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, interface, subsurface); rendered as a grey "
         "diffuse material (lenient import)",
         "scene.pbrt:20: Shape \"nurbs\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, cylinder, "
         "bilinearmesh, loopsubdiv, curve); left out (lenient import)",

@@ -213,7 +213,7 @@ TEST(SceneLoaderErrors, UnknownNames) {
                 "unknown type \"area\" (expected one of point, spot, directional, environment)");
     expectError([](Json& d) { d["materials"]["white"]["type"] = "lambert"; }, "materials.white.type",
                 "unknown type \"lambert\" (expected one of diffuse, dielectric, mirror, conductor, plastic, "
-                "coated_diffuse, coated_conductor, diffuse_transmission, mix, hair)");
+                "coated_diffuse, coated_conductor, diffuse_transmission, mix, hair, measured)");
     expectError(
         [](Json& d) {
             d["materials"]["white"] = {{"type", "diffuse_transmission"}, {"reflectance", {0.6, 0.6, 0.6}},

@@ -81,13 +81,14 @@ public:
     // True if the non-delta lobes also scatter light to the far side of the surface
     // (diffuse transmission): light arriving from behind then counts where it is gathered.
     virtual bool transmits() const { return false; }
+    // True if the local frame's x axis must be the surface's dp/du: a fibre's scattering
+    // (hair) depends on where the fibre points, not only on its normal, and an anisotropic
+    // measured BRDF was measured against the surface's dp/du. The integrators then build the
+    // frame from the normal and dp/du (Scene::tangentsAt) instead of the normal alone, and
+    // store no visible point on it (a visible point keeps only a normal).
+    virtual bool alignsToTangent() const { return false; }
     // True if the material bends its shading normal by a normal or bump map
     // (materials/normal_map.h); bentNormal then gives it at `at` for the unbent n.
-    // True if the local frame's x axis must be the surface's dp/du: a fibre's scattering
-    // (hair) depends on where the fibre points, not only on its normal. The integrators
-    // then build the frame from the normal and dp/du (Scene::tangentsAt) instead of the
-    // normal alone, and store no visible point on it (a visible point keeps only a normal).
-    virtual bool alignsToTangent() const { return false; }
     virtual bool bendsNormal() const { return false; }
     virtual Vec3 bentNormal(const TexturePoint& at, Vec3 n, Vec3 ng, const SurfaceTangents& tangents) const {
         return n;

@@ -2,8 +2,10 @@
 // materials/material.h.
 #include <cmath>
 #include <functional>
+#include "materials/measured_brdf.h"
 #include "materials/named_metals.h"
 #include "scene/json_scene_parts.h"
+#include "scene/measured_brdf_file.h"
 #include "texture/textures.h"
 
 namespace photon::scene_json {
@@ -171,6 +173,22 @@ MaterialPtr readHair(JsonObject& obj) {
     return makeHair(h);
 }
 
+// {"type": "measured", "file": "x.bsdf"}: a measured BRDF in RGL's tensor files, read once
+// per scene however many materials name it.
+MaterialPtr readMeasured(JsonObject& obj, LoadContext& ctx) {
+    const JsonValue file = obj.required("file");
+    const std::filesystem::path path = resolveFile(file, ctx);
+    std::shared_ptr<const MeasuredBrdf>& brdf = ctx.measuredBrdfs[path];
+    if (!brdf) {
+        try {
+            brdf = readMeasuredBrdf(TensorFile::read(path.string(), file.string()));
+        } catch (const std::runtime_error& e) {
+            file.fail(e.what());
+        }
+    }
+    return makeMeasured(brdf);
+}
+
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined);
 
 // A part of a mix: the name of a material defined before it, or a material object.
@@ -199,10 +217,13 @@ MaterialPtr readMix(JsonObject& obj, LoadContext& ctx, const std::vector<Materia
 
 MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::vector<MaterialPtr>& defined) {
     JsonObject obj = value.object();
-    enum Type { Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, CoatedConductor, DiffuseTransmission, Mix, Hair };
+    enum Type {
+        Diffuse, Dielectric, Mirror, Conductor, Plastic, CoatedDiffuse, CoatedConductor, DiffuseTransmission, Mix, Hair,
+        Measured
+    };
     auto type = Type(obj.required("type").choice({"diffuse", "dielectric", "mirror", "conductor", "plastic",
                                                   "coated_diffuse", "coated_conductor", "diffuse_transmission", "mix",
-                                                  "hair"},
+                                                  "hair", "measured"},
                                                  "type"));
     MaterialPtr m;
     switch (type) {
@@ -222,10 +243,11 @@ MaterialPtr readMaterial(const JsonValue& value, LoadContext& ctx, const std::ve
         case DiffuseTransmission: m = readDiffuseTransmission(obj, ctx); break;
         case Mix: m = readMix(obj, ctx, defined); break;
         case Hair: m = readHair(obj); break;
+        case Measured: m = readMeasured(obj, ctx); break;
     }
     // Any material may bend its shading normal by a tangent-space map, read as stored, or
     // by a bump map's heights (scene units).
-    if (m->alignsToTangent())
+    if (type == Hair)
         for (const char* field : {"normal_map", "bump"})
             if (auto v = obj.optional(field)) v->fail("a hair fibre has no surface to bend the normal of");
     auto map = obj.optional("normal_map");

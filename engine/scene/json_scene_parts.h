@@ -13,6 +13,7 @@
 #include <vector>
 #include <photon/scene_file.h>
 #include "math/transform.h"
+#include "materials/measured_brdf.h"
 #include "texture/color_param.h"
 #include "texture/float_param.h"
 #include "texture/image_texture.h"
@@ -31,6 +32,8 @@ struct LoadContext {
     std::unordered_map<std::string, uint32_t> materialIndex;
     // Roughness ladders by material family and index, shared by textured roughnesses.
     std::map<std::pair<int, float>, std::shared_ptr<const RoughnessLevels>> roughnessLevels;
+    // Measured BRDFs by resolved path, read once however many materials name them.
+    std::map<std::filesystem::path, std::shared_ptr<const MeasuredBrdf>> measuredBrdfs;
     // Medium name -> index, for shapes' "medium".
     std::unordered_map<std::string, int32_t> mediumIndex;
     // Object name -> index, for instances.

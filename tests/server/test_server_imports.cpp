@@ -226,7 +226,7 @@ TEST_F(ImportsTest, ABrokenPbrtSceneIs400WithItsFileAndLine) {
     EXPECT_EQ(problem["path"], "scene.pbrt:8");
     EXPECT_EQ(problem["error"],
               "scene.pbrt:8: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-              "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, subsurface)");
+              "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, interface, subsurface)");
     EXPECT_FALSE(problem.contains("pointer"));  // not a place in photon's JSON
     // A missing included file: where the Include is.
     items = roomParts();
@@ -255,7 +255,7 @@ TEST_F(ImportsTest, LenientRendersWhatAStrictImportRefuses) {
     ASSERT_EQ(job["warnings"].size(), 2u) << job.dump();
     EXPECT_EQ(job["warnings"][1],
               "scene.pbrt:8: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-              "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, subsurface); rendered as a grey "
+              "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, interface, subsurface); rendered as a grey "
               "diffuse material (lenient import)");
     EXPECT_EQ(waitForStatus(job["id"], "completed")["settings"]["lenient"], true);
     // The same as a form field; the query, where given, wins.

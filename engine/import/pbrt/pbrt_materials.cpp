@@ -275,6 +275,12 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         m = hairJson(p);
     } else if (type == "subsurface") {
         m = subsurfaceJson(p);
+    } else if (type == "measured") {
+        // RGL's tabulated BRDFs (.bsdf), read by the scene loader (scene/measured_brdf_file.h).
+        const std::string file = p.string("filename", "");
+        if (file.empty()) fail(where, "measured: needs a \"string filename\" (a .bsdf file)");
+        if (auto why = checkRelativePath(file)) fail(where, "measured: \"" + file + "\": " + *why);
+        m = {{"type", "measured"}, {"file", file}};
     } else if (type == "mix") {
         const std::vector<std::string> names = p.strings("materials");
         if (names.size() != 2) fail(where, "mix: \"materials\" must name two materials");
@@ -287,8 +293,8 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         m = {{"type", "mix"}, {"materials", parts}, {"amount", floatValue(p, "amount").value_or(Json(0.5))}};
     } else {
         unsupported(p.directive(), "material \"" + type + "\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
-                                   "thindielectric, conductor, coatedconductor, diffusetransmission, hair, mix, interface, "
-                                   "subsurface)",
+                                   "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, "
+                                   "interface, subsurface)",
                     "rendered as a grey diffuse material");
         return Json{{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
     }

@@ -1,52 +1,16 @@
 #include "import/pbrt/pbrt_spectra.h"
-#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <photon/errors.h>
 #include "import/pbrt/pbrt_params.h"
+#include "math/spectrum_rgb.h"
 #include "materials/named_metals.h"
 #include "scene/scene_paths.h"
 
 namespace photon::pbrt {
 
 namespace {
-
-// The asymmetric Gaussian lobe of Wyman, Sloan & Shirley 2013, eq. 1.
-double lobe(double x, double mu, double below, double above) {
-    const double t = (x - mu) / (x < mu ? below : above);
-    return std::exp(-0.5 * t * t);
-}
-
-// CIE 1931 2-degree colour matching functions, multi-lobe fit (Wyman et al. 2013, eq. 2).
-std::array<double, 3> cie1931(double l) {
-    return {1.056 * lobe(l, 599.8, 37.9, 31.0) + 0.362 * lobe(l, 442.0, 16.0, 26.7) - 0.065 * lobe(l, 501.1, 20.4, 26.2),
-            0.821 * lobe(l, 568.8, 46.9, 40.5) + 0.286 * lobe(l, 530.9, 16.3, 31.1),
-            1.217 * lobe(l, 437.0, 11.8, 36.0) + 0.681 * lobe(l, 459.0, 26.0, 13.8)};
-}
-
-constexpr int kLambdaMin = 360, kLambdaMax = 830;
-
-// Linear sRGB of a spectrum given per nanometre, before the white balance.
-std::array<double, 3> unbalanced(const std::function<double(double)>& s) {
-    double xyz[3] = {0, 0, 0}, yIntegral = 0;
-    for (int l = kLambdaMin; l <= kLambdaMax; ++l) {
-        const auto c = cie1931(l);
-        const double v = s(l);
-        for (int i = 0; i < 3; ++i) xyz[i] += v * c[i];
-        yIntegral += c[1];
-    }
-    for (double& v : xyz) v /= yIntegral;
-    // XYZ -> linear sRGB (IEC 61966-2-1).
-    return {3.2406 * xyz[0] - 1.5372 * xyz[1] - 0.4986 * xyz[2], -0.9689 * xyz[0] + 1.8758 * xyz[1] + 0.0415 * xyz[2],
-            0.0557 * xyz[0] - 0.2040 * xyz[1] + 1.0570 * xyz[2]};
-}
-
-Color balanced(const std::function<double(double)>& s) {
-    static const std::array<double, 3> white = unbalanced([](double) { return 1.0; });
-    const auto c = unbalanced(s);
-    return {float(c[0] / white[0]), float(c[1] / white[1]), float(c[2] / white[2])};
-}
 
 Color unitLuminance(Color c, const Location& where) {
     const float y = luminance(c);
@@ -109,27 +73,6 @@ Color sampledSpectrum(const Param& p, const std::vector<double>& pairs) {
 }
 
 }  // namespace
-
-Color projectSpectrum(const std::vector<double>& wavelengths, const std::vector<double>& values) {
-    return balanced([&](double l) {
-        if (l <= wavelengths.front()) return values.front();
-        if (l >= wavelengths.back()) return values.back();
-        size_t i = 1;
-        while (wavelengths[i] < l) ++i;
-        const double t = (l - wavelengths[i - 1]) / (wavelengths[i] - wavelengths[i - 1]);
-        return values[i - 1] + t * (values[i] - values[i - 1]);
-    });
-}
-
-Color blackbodyColor(double kelvin) {
-    // Planck's law; the constant factors go with the normalisation.
-    const double c = 299792458.0, h = 6.62606957e-34, kb = 1.3806488e-23;
-    Color rgb = balanced([&](double nm) {
-        const double l = nm * 1e-9;
-        return (2 * h * c * c) / (std::pow(l, 5) * (std::exp((h * c) / (l * kb * kelvin)) - 1)) * 1e-13;
-    });
-    return rgb / luminance(rgb);
-}
 
 Color spectrumColor(const Param& p, SpectrumKind kind, const std::filesystem::path& baseDir) {
     const auto count = p.numbers.size() + p.strings.size();

@@ -22,13 +22,4 @@ enum class SpectrumKind { Reflectance, Illuminant, Index };
 // at the parameter's file:line for an unknown name or a malformed value.
 Color spectrumColor(const Param& p, SpectrumKind kind, const std::filesystem::path& baseDir);
 
-// A sampled spectrum (wavelengths in nm, ascending, with values) projected to linear sRGB:
-// CIE 1931 colour matching functions (Wyman, Sloan & Shirley 2013's analytic fit) under the
-// equal-energy illuminant, XYZ to sRGB (IEC 61966-2-1), white-balanced so that a constant
-// spectrum stays grey; values held constant past the table's ends.
-Color projectSpectrum(const std::vector<double>& wavelengths, const std::vector<double>& values);
-
-// Planck's law at `kelvin`, projected as above and scaled to unit luminance.
-Color blackbodyColor(double kelvin);
-
 }  // namespace photon::pbrt
