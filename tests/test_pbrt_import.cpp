@@ -438,9 +438,9 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
                  "bad.pbrt:3: medium \"fog\" emits light (Le): photon's media do not emit");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [1]\n").what(),
                  "bad.pbrt:3: medium \"fog\": \"g\" must lie in (-1, 1)");
-    EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"cloud\"\n").what(),
-                 "bad.pbrt:3: medium \"smoke\": a \"cloud\" medium is not supported (photon renders \"homogeneous\", "
-                 "\"uniformgrid\" and \"nanovdb\" media)");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"rgbgrid\"\n").what(),
+                 "bad.pbrt:3: medium \"smoke\": a \"rgbgrid\" medium is not supported (photon renders \"homogeneous\", "
+                 "\"uniformgrid\", \"nanovdb\" and \"cloud\" media)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"uniformgrid\" \"integer nx\" 2 "
                                     "\"float density\" [1 2 3]\n").what(),
                  "bad.pbrt:3: medium \"smoke\": \"density\" holds 3 values, nx * ny * nz = 2");

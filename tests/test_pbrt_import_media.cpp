@@ -10,6 +10,12 @@ namespace {
 
 using namespace test::pbrt_import;
 
+// A medium's absorption and scattering (their green channel), within 1e-5 relative.
+void expectCoefficients(const Json& medium, float absorption, float scattering) {
+    EXPECT_NEAR(vec(medium["absorption"]).y, absorption, 1e-5f * absorption);
+    EXPECT_NEAR(vec(medium["scattering"]).y, scattering, 1e-5f * scattering);
+}
+
 // pbrt-v4's "subsurface" becomes a dielectric whose shapes hold a scattering medium, its
 // coefficients as pbrt-v4's SubsurfaceMaterial::Create finds them, times "scale".
 TEST(PbrtImport, SubsurfaceIsADielectricAroundAScatteringMedium) {
@@ -83,14 +89,29 @@ TEST(PbrtImport, AUniformGridMediumKeepsItsDensityItsBoxAndItsPlace) {
                                    "MediumInterface \"smoke\" \"\"\nMaterial \"interface\"\nShape \"sphere\" \"float radius\" 1\n"
                                    "AttributeEnd\n");
     const Json& m = s.document["media"]["smoke"];
-    EXPECT_NEAR(vec(m["absorption"]).y, 0.5f, 1e-5f);
-    EXPECT_NEAR(vec(m["scattering"]).y, 2.0f, 1e-5f);
+    expectCoefficients(m, 0.5f, 2.0f);
     const Json& grid = m["density"];
     EXPECT_EQ(grid["resolution"], Json({2, 1, 3}));
     EXPECT_EQ(grid["values"], Json({0, 1, 2, 3, 4, 5}));
     EXPECT_EQ(grid["bounds"], Json({{-1, -1, -1}, {1, 1, 1}}));
     EXPECT_EQ(grid["transform"]["matrix"], Json({2, 0, 0, 1, 0, 2, 0, 2, 0, 0, 2, 3, 0, 0, 0, 1}));
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+}
+
+// pbrt-v4's procedural "cloud", made as pbrt-v4-scenes' clouds.pbrt makes it: its coefficients
+// as given (no "scale"), its noise's parameters and its box, for the loader to sample.
+TEST(PbrtImport, ACloudMediumKeepsItsNoiseAndItsBox) {
+    const ImportedScene s = import(
+        "MakeNamedMedium \"c\" \"string type\" \"cloud\" \"spectrum sigma_s\" [200 10 900 10] "
+        "\"spectrum sigma_a\" [200 .01 900 .01] \"float density\" 2 \"float frequency\" 4 \"point3 p1\" [1 2 1]\n"
+        "MediumInterface \"c\" \"\"\nMaterial \"\"\nTranslate .5 .5 .5\nShape \"sphere\" \"float radius\" 1\n");
+    const Json& m = s.document["media"]["c"];
+    expectCoefficients(m, 0.01f, 10.0f);
+    EXPECT_EQ(m["density"], Json({{"cloud", {{"density", 2}, {"frequency", 4}}}, {"bounds", {{0, 0, 0}, {1, 2, 1}}}}));
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nMakeNamedMedium \"c\" \"string type\" \"cloud\" "
+                             "\"float frequency\" 0\n").what(),
+                 "bad.pbrt:3: medium \"c\": \"frequency\" must be finite and > 0");
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 // "media": named media that absorb and scatter, homogeneous or of a density sampled on a
 // grid, and a shape's "medium": the media on its two sides (docs/scene-format.md#media).
+#include <array>
 #include <cmath>
 #include <limits>
 #include "scene/json_scene_parts.h"
+#include "media/cloud_density.h"
 #include "scene/nanovdb_density.h"
 
 namespace photon::scene_json {
@@ -24,24 +26,21 @@ std::shared_ptr<const DensityGrid> readNanoVdbGrid(JsonObject& obj, const LoadCo
     }
 }
 
-// "density": {"resolution": [nx, ny, nz], "values": [...], "bounds": [p0, p1], "transform": T},
-// or a NanoVDB file's grid.
-std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value, const LoadContext& ctx) {
-    JsonObject obj = value.object();
-    if (obj.has("file")) {
-        if (obj.has("resolution") || obj.has("values") || obj.has("bounds"))
-            value.fail("give either \"file\" or \"resolution\" and \"values\", not both");
-        return readNanoVdbGrid(obj, ctx);
+// The box a grid's samples fill: "bounds" [p0, p1], [0, 1]^3 where not given.
+std::pair<Vec3, Vec3> readBounds(JsonObject& obj) {
+    Vec3 p0(0.0f), p1(1.0f);
+    if (auto bounds = obj.optional("bounds")) {
+        const std::vector<JsonValue> corners = bounds->elements();
+        if (corners.size() != 2) bounds->fail("must be [[x0, y0, z0], [x1, y1, z1]]");
+        p0 = corners[0].vec3(), p1 = corners[1].vec3();
+        if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) bounds->fail("each of the first corner's coordinates must be below the second's");
     }
-    const JsonValue resolution = obj.required("resolution");
-    const std::vector<JsonValue> n = resolution.elements();
-    if (n.size() != 3) resolution.fail("must be [nx, ny, nz]");
-    int size[3];
-    for (int a = 0; a < 3; ++a) size[a] = static_cast<int>(n[a].integer(1, 4096));
-    const double count = double(size[0]) * size[1] * size[2];
-    if (count > double(1 << 28)) resolution.fail("more than 2^28 samples");
-    // Read straight off the JSON: a grid's millions of numbers need no JsonValue each.
-    const JsonValue values = obj.required("values");
+    return {p0, p1};
+}
+
+// The samples of "values", nx * ny * nz finite numbers >= 0, read straight off the JSON: a
+// grid's millions of numbers need no JsonValue each.
+std::vector<float> readSampleValues(const JsonValue& values, double count) {
     if (!values.json().is_array()) values.fail("must be an array");
     if (double(values.json().size()) != count)
         values.fail("must hold nx * ny * nz = " + std::to_string(int64_t(count)) + " numbers, not " +
@@ -55,13 +54,46 @@ std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value, const
                 .fail("must be a finite number >= 0");
         samples.push_back(static_cast<float>(x));
     }
-    Vec3 p0(0.0f), p1(1.0f);
-    if (auto bounds = obj.optional("bounds")) {
-        const std::vector<JsonValue> corners = bounds->elements();
-        if (corners.size() != 2) bounds->fail("must be [[x0, y0, z0], [x1, y1, z1]]");
-        p0 = corners[0].vec3(), p1 = corners[1].vec3();
-        if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) bounds->fail("each of the first corner's coordinates must be below the second's");
+    return samples;
+}
+
+// "cloud": {"density": 1, "wispiness": 1, "frequency": 5}: pbrt-v4's procedural cloud.
+CloudParameters readCloud(const JsonValue& value) {
+    JsonObject obj = value.object();
+    CloudParameters c;
+    c.density = obj.number("density", c.density, Range::nonNegative());
+    c.wispiness = obj.number("wispiness", c.wispiness, Range::nonNegative());
+    c.frequency = obj.number("frequency", c.frequency, Range::positive());
+    obj.finish();
+    return c;
+}
+
+// "density": {"resolution": [nx, ny, nz], "values": [...], "bounds": [p0, p1], "transform": T};
+// {"cloud": {...}, "bounds", "resolution" (chosen from the cloud's frequency where not
+// given), "transform"}, sampled at the grid's points; or a NanoVDB file's grid.
+std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value, const LoadContext& ctx) {
+    JsonObject obj = value.object();
+    if (obj.has("file")) {
+        if (obj.has("resolution") || obj.has("values") || obj.has("bounds") || obj.has("cloud"))
+            value.fail("give either \"file\" or \"resolution\" and \"values\", not both");
+        return readNanoVdbGrid(obj, ctx);
     }
+    const auto cloud = obj.optional("cloud");
+    if (cloud && obj.has("values")) value.fail("give either \"cloud\" or \"values\", not both");
+    const auto [p0, p1] = readBounds(obj);
+    std::array<int, 3> size{};
+    if (auto resolution = cloud ? obj.optional("resolution") : obj.required("resolution")) {
+        const std::vector<JsonValue> n = resolution->elements();
+        if (n.size() != 3) resolution->fail("must be [nx, ny, nz]");
+        for (int a = 0; a < 3; ++a) size[a] = static_cast<int>(n[a].integer(1, 4096));
+        if (double(size[0]) * size[1] * size[2] > double(1 << 28)) resolution->fail("more than 2^28 samples");
+    } else {
+        const CloudParameters c = readCloud(*cloud);
+        for (int a = 0; a < 3; ++a) size[a] = cloudResolution(c, p1[a] - p0[a]);
+    }
+    const double count = double(size[0]) * size[1] * size[2];
+    std::vector<float> samples =
+        cloud ? sampleCloud(readCloud(*cloud), size, p0, p1) : readSampleValues(obj.required("values"), count);
     Transform worldFromMedium;
     if (auto transform = obj.optional("transform")) worldFromMedium = readTransform(*transform);
     obj.finish();

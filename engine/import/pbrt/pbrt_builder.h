@@ -125,6 +125,7 @@ private:
     Json densityGrid(const Directive& d, const Params& p, const std::string& what);
     // A "nanovdb" medium's: its file's "density" grid.
     Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what);
+    Json cloudGrid(const Directive& d, const Params& p, const std::string& what);
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;

@@ -1,9 +1,9 @@
 // MakeNamedMedium and MediumInterface. photon renders media that absorb and scatter
 // (docs/scene-format.md#media): pbrt-v4's "homogeneous" medium, with its Henyey-Greenstein
 // phase function, its coefficients given or a measured "preset", its "uniformgrid" medium,
-// whose density is sampled on a grid, and its "nanovdb" medium, whose density grid is in a
-// NanoVDB file. A medium that emits, or of another kind ("cloud", "rgbgrid"), is refused,
-// or under a lenient import keeps only what photon can render.
+// whose density is sampled on a grid, its "nanovdb" medium, whose density grid is in a
+// NanoVDB file, and its procedural "cloud". A medium that emits, or of another kind
+// ("rgbgrid"), is refused, or under a lenient import keeps only what photon can render.
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "import/pbrt/scattering_presets.h"
@@ -15,16 +15,18 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     const std::string& name = d.strings.at(0);
     const std::string type = p.string("type", "");
     const std::string what = "medium \"" + name + "\"";
-    if (type != "homogeneous" && type != "uniformgrid" && type != "nanovdb") {
+    if (type != "homogeneous" && type != "uniformgrid" && type != "nanovdb" && type != "cloud") {
         media_[name] = false;
         return unsupported(d, what + ": a \"" + type +
-                                  "\" medium is not supported (photon renders \"homogeneous\", \"uniformgrid\" and "
-                                  "\"nanovdb\" media)");
+                                  "\" medium is not supported (photon renders \"homogeneous\", \"uniformgrid\", "
+                                  "\"nanovdb\" and \"cloud\" media)");
     }
-    // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale".
+    // pbrt-v4's HomogeneousMedium::Create: both coefficients default to 1, times "scale"
+    // (which its CloudMedium does not read).
+    const float scale = type == "cloud" ? 1.0f : float(p.number("scale", 1));
     auto coefficient = [&](std::string_view key) {
         const Param* param = p.find(key);
-        return (param ? spectrumColor(*param, SpectrumKind::Reflectance, baseDir_) : Color(1.0f)) * float(p.number("scale", 1));
+        return (param ? spectrumColor(*param, SpectrumKind::Reflectance, baseDir_) : Color(1.0f)) * scale;
     };
     Color absorption, scattering;
     if (auto preset = p.string("preset")) {
@@ -32,8 +34,8 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
         const auto measured = scatteringPreset(*preset);
         if (!measured)
             fail(d.where, what + ": no measured preset named \"" + *preset + "\" (photon has " + scatteringPresetNames() + ")");
-        absorption = measured->absorption * float(p.number("scale", 1));
-        scattering = measured->scattering * float(p.number("scale", 1));
+        absorption = measured->absorption * scale;
+        scattering = measured->scattering * scale;
     } else {
         absorption = coefficient("sigma_a"), scattering = coefficient("sigma_s");
     }
@@ -48,6 +50,7 @@ void SceneBuilder::makeNamedMedium(const Directive& d) {
     if (g != 0 && !isBlack(scattering)) m["g"] = g;
     if (type == "uniformgrid") m["density"] = densityGrid(d, p, what);
     if (type == "nanovdb") m["density"] = nanoVdbGrid(d, p, what);
+    if (type == "cloud") m["density"] = cloudGrid(d, p, what);
     mediaJson_[name] = std::move(m);
     p.warnUnused(out_.warnings);
 }
@@ -95,6 +98,24 @@ Json SceneBuilder::nanoVdbGrid(const Directive& d, const Params& p, const std::s
                     "its emission left out");
     for (const char* emission : {"temperaturecutoff", "temperaturescale"}) p.find(emission);
     Json grid = {{"file", file}, {"grid", "density"}};
+    if (!state_.ctm.identity()) grid["transform"] = matrixJson(pointCtm(d));
+    return grid;
+}
+
+// pbrt-v4's CloudMedium: its noise's "density", "wispiness" and "frequency", in the box
+// [p0, p1] of the medium's space; the scene loader samples it on a grid
+// (media/cloud_density.h).
+Json SceneBuilder::cloudGrid(const Directive& d, const Params& p, const std::string& what) {
+    Json cloud = Json::object();
+    for (const char* key : {"density", "wispiness", "frequency"})
+        if (auto v = p.number(key)) {
+            if (!(*v >= 0) || !std::isfinite(*v) || (*v == 0 && key[0] == 'f'))
+                fail(d.where, what + ": \"" + key + "\" must be finite and " + (key[0] == 'f' ? "> 0" : ">= 0"));
+            cloud[key] = *v;
+        }
+    const Vec3 p0 = p.vec3("p0", Vec3(0.0f)), p1 = p.vec3("p1", Vec3(1.0f));
+    if (!(p0.x < p1.x && p0.y < p1.y && p0.z < p1.z)) fail(d.where, what + ": \"p0\" must lie below \"p1\" in x, y and z");
+    Json grid = {{"cloud", cloud}, {"bounds", {{p0.x, p0.y, p0.z}, {p1.x, p1.y, p1.z}}}};
     if (!state_.ctm.identity()) grid["transform"] = matrixJson(pointCtm(d));
     return grid;
 }
