@@ -18,7 +18,8 @@ public:
     const PassStats& lastPassStats() const override { return stats_; }
     int passesDone() const override { return passes_; }
     size_t bytesPerPixel() const override {
-        return 2 * sizeof(Color) + 2 * sizeof(float) + LightsInView::kBytesPerPixel;
+        return 2 * sizeof(Color) + 2 * sizeof(float) +
+               lightsInView_.bytes() / std::max<size_t>(static_cast<size_t>(width_) * static_cast<size_t>(height_), 1);
     }
     // The pixel sums, their halves and the pass count: each pass's samples are keyed by
     // pass and pixel, so that is the whole state.

@@ -92,7 +92,8 @@ size_t SppmIntegrator::bytesPerPixel() const {
                                (adaptsRadius_ ? AdaptiveRadius::kBytesPerPixel : 0);
     const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(PassResult)) *
                         static_cast<size_t>(bandRows_ + kHeldRows) / static_cast<size_t>(std::max(height_, 1));
-    return state + LightsInView::kBytesPerPixel + band;
+    const size_t pixels = static_cast<size_t>(width_) * static_cast<size_t>(std::max(height_, 1));
+    return state + lightsInView_.bytes() / std::max<size_t>(pixels, 1) + band;
 }
 
 bool SppmIntegrator::renderPass(const CancelToken& cancel) {
