@@ -58,6 +58,8 @@ VALID = {
          "cone_angle": 30, "falloff_angle": 25},
         {"type": "directional", "direction": [0, -1, -0.3], "irradiance": [3, 3, 3]},
         {"type": "environment", "radiance": [0.1, 0.1, 0.1]},
+        {"type": "point", "position": [0, 1.5, 0], "intensity": [5, 5, 5], "image": "profile.exr",
+         "layout": "equal_area", "rotate": {"axis": [1, 0, 0], "angle": 90}},
     ],
     "render": {"integrator": "sppm", "passes": 64, "photons_per_pass": 200000, "time_limit": 0,
                "initial_radius": "auto", "alpha": 0.6667, "max_depth": 8, "seed": 1, "kernel": "uniform",

@@ -5,7 +5,9 @@
 #include <photon/errors.h>
 #include "description/scene_description.h"
 #include "import/pbrt/pbrt_import.h"
+#include "lights/light_factories.h"
 #include "pbrt_import_fixture.h"
+#include "scene_loader_fixture.h"
 #include "scene/ply_mesh.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -135,6 +137,43 @@ AttributeEnd
                  "bad.pbrt:4: infinite: the light's transform must be a rotation or a mirror image (it scales or shears)");
 }
 
+
+// pbrt-v4's goniometric light: a point light at the light frame's origin, the image's square
+// centred on the frame's +y (pbrt-v4 swaps y and z), its "power" taken over the image's mean.
+// Loaded, it shines I times each texel into its quadrant: the frame's (x, y, z) is the
+// square's (x, z, y), x to the right and its y up the image.
+TEST(PbrtImport, AGoniometricLightIsAPointLightWithAProfile) {
+    // 2 x 2 texels, grey: 1, 2 on the top row, 3, 6 below (equal-area: the four quadrants).
+    test::writeImage<float>(scratch() / "profile.exr", 2, 2, 3, {1, 1, 1, 2, 2, 2, 3, 3, 3, 6, 6, 6});
+    const ImportedScene s = import(R"(
+AttributeBegin
+  Translate 1 2 3
+  Rotate 90 1 0 0
+  LightSource "goniometric" "string filename" "profile.exr" "rgb I" [2 2 2] "float scale" 0.5
+AttributeEnd
+LightSource "goniometric" "string filename" "profile.exr" "float power" 30
+)");
+    const Json& l = s.document["lights"];
+    EXPECT_EQ(l[0]["type"], "point");
+    EXPECT_VEC3_NEAR(vec(l[0]["position"]), Vec3(1, 2, 3), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(1), 1e-6f);
+    EXPECT_EQ(l[0]["image"], "profile.exr");
+    EXPECT_EQ(l[0]["layout"], "equal_area");
+    // Rotate 90 about x takes the frame's +y to +z: the square's centre looks along world +z.
+    const SceneDescription d = loadImportedScene(s, scratch());
+    const std::unique_ptr<Light> light = makePointLight(d.lights[0]);
+    const Color centre = light->emittedDensity({0, 0, 1});
+    EXPECT_TRUE(centre.x > 0.99f && centre.x < 6.01f) << centre.x;  // one of the texels around the centre
+    // World (0.3, 0.3, 1) is the frame's (0.3, 1, -0.3): the square's x > 0, y < 0, the
+    // top right texel (2); world (-0.3, -0.3, 1) the bottom left (3).
+    EXPECT_NEAR(light->emittedDensity(normalize(Vec3(0.3f, 0.3f, 1))).x, 2.0f, 1e-5f);
+    EXPECT_NEAR(light->emittedDensity(normalize(Vec3(-0.3f, -0.3f, 1))).x, 3.0f, 1e-5f);
+    // power 30 over 4 pi times the texels' mean (3): I = 30 / (12 pi).
+    EXPECT_VEC3_NEAR(vec(l[1]["intensity"]), Vec3(float(30 / (12 * kPi))), 1e-6f);
+    EXPECT_NEAR(makePointLight(d.lights[1])->power().y, 30.0f, 1e-3f);
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nLightSource \"goniometric\"\n").what(),
+                 "bad.pbrt:3: goniometric: needs a \"filename\" (an equal-area image of the light's profile)");
+}
 
 // pbrt-v4 makes an area light of constant alpha 0 invisible: no ray meets it, and it lights
 // in full through light samples (pbrt-v4-scenes' kroken: a sphere of radius 90 with "float

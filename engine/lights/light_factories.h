@@ -7,7 +7,10 @@
 
 namespace photon {
 
+// Isotropic, or with d.environment.image its intensity profile over directions
+// (makeProfiledPointLight).
 std::unique_ptr<Light> makePointLight(const LightDescription& d);
+std::unique_ptr<Light> makeProfiledPointLight(const LightDescription& d);
 std::unique_ptr<Light> makeSpotLight(const LightDescription& d);
 std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphere bounds);
 // Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight);

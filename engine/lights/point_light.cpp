@@ -41,6 +41,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Light> makePointLight(const LightDescription& d) { return std::make_unique<PointLight>(d); }
+std::unique_ptr<Light> makePointLight(const LightDescription& d) {
+    if (d.environment.image) return makeProfiledPointLight(d);
+    return std::make_unique<PointLight>(d);
+}
 
 }  // namespace photon

@@ -22,31 +22,42 @@ void readSpotAngles(JsonObject& obj, LightDescription& l) {
     }
 }
 
-// A constant "radiance", or an "image" with its "layout", "scale" and "rotate" or "matrix"
-// (the light's frame to the world), documented in docs/scene-format.md.
-void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
-    auto image = obj.optional("image");
-    if (!image) {
-        for (std::string_view key : {"layout", "scale", "rotate", "matrix", "illuminance"})
-            if (auto v = obj.optional(key)) v->fail("is only allowed with \"image\"");
-        l.radiance = power(obj, "radiance");
-        return;
-    }
-    if (auto radiance = obj.optional("radiance")) radiance->fail("is not allowed with \"image\" (use \"scale\")");
+// An image over the sphere of directions, `image`, with its "layout", "scale" and "rotate" or
+// "matrix" (the light's frame to the world): an environment's radiance or a point light's
+// intensity profile (docs/scene-format.md).
+void readDirectionImage(const JsonValue& image, JsonObject& obj, LoadContext& ctx, LightDescription& l) {
     LightDescription::EnvironmentImage& e = l.environment;
-    e.image = loadImage(*image, ImageChannels::Color, ctx);
+    e.image = loadImage(image, ImageChannels::Color, ctx);
     // In the order of EnvironmentLayout.
     e.layout = EnvironmentLayout(obj.choice("layout", 0, {"latlong", "equal_area"}, "layout"));
     if (e.layout == EnvironmentLayout::EqualArea && e.image->width() != e.image->height())
-        image->fail("an equal-area image must be square, not " + std::to_string(e.image->width()) + "x" +
+        image.fail("an equal-area image must be square, not " + std::to_string(e.image->width()) + "x" +
                     std::to_string(e.image->height()));
     e.scale = obj.number("scale", 1, Range::nonNegative());
-    e.illuminance = obj.number("illuminance", 0, Range::nonNegative());
     if (auto rotate = obj.optional("rotate")) e.toWorld = readRotation(*rotate);
     if (auto matrix = obj.optional("matrix")) {
         if (obj.has("rotate")) matrix->fail("give \"rotate\" or \"matrix\", not both");
         e.toWorld = readOrientation(*matrix);
     }
+}
+
+// Without an "image", the fields that go with one are refused.
+void refuseImageFields(JsonObject& obj, std::initializer_list<std::string_view> keys) {
+    for (std::string_view key : keys)
+        if (auto v = obj.optional(key)) v->fail("is only allowed with \"image\"");
+}
+
+// A constant "radiance", or an "image" (readDirectionImage) and its "illuminance".
+void readEnvironment(JsonObject& obj, LoadContext& ctx, LightDescription& l) {
+    auto image = obj.optional("image");
+    if (!image) {
+        refuseImageFields(obj, {"layout", "scale", "rotate", "matrix", "illuminance"});
+        l.radiance = power(obj, "radiance");
+        return;
+    }
+    if (auto radiance = obj.optional("radiance")) radiance->fail("is not allowed with \"image\" (use \"scale\")");
+    readDirectionImage(*image, obj, ctx, l);
+    l.environment.illuminance = obj.number("illuminance", 0, Range::nonNegative());
 }
 
 // Four corners in order, a rectangle: the light comes in through it from the side of
@@ -72,6 +83,9 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
         case Kind::Point:
             l.position = obj.required("position").vec3();
             l.intensity = power(obj, "intensity");
+            // An intensity profile: the intensity times the image's texel toward each direction.
+            if (auto image = obj.optional("image")) readDirectionImage(*image, obj, ctx, l);
+            else refuseImageFields(obj, {"layout", "scale", "rotate", "matrix"});
             break;
         case Kind::Spot:
             l.position = obj.required("position").vec3();

@@ -58,6 +58,8 @@ namespace {
 bool emits(const LightDescription& l) {
     switch (l.kind) {
         case LightDescription::Kind::Point:
+            if (l.environment.image && !(l.environment.scale > 0 && !isBlack(l.environment.image->average()))) return false;
+            return !isBlack(l.intensity);
         case LightDescription::Kind::Spot: return !isBlack(l.intensity);
         case LightDescription::Kind::Directional: return !isBlack(l.irradiance);
         case LightDescription::Kind::Environment:

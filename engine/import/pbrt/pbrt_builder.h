@@ -126,6 +126,7 @@ private:
     // A "nanovdb" medium's: its file's "density" grid.
     Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what);
     Json cloudGrid(const Directive& d, const Params& p, const std::string& what);
+    Json goniometricLight(const Directive& d, const Params& p, Color intensity);
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;

@@ -10,6 +10,7 @@
 #include "import/pbrt/pbrt_builder.h"
 #include "import/pbrt/pbrt_spectra.h"
 #include "scene/scene_paths.h"
+#include "texture/image_texture.h"
 
 namespace photon::pbrt {
 
@@ -122,14 +123,46 @@ void SceneBuilder::lightSource(const Directive& d) {
             if (auto problem = portalProblem(q)) fail(d.where, "infinite: \"portal\" " + *problem);
             for (const Vec3& c : q) light["portal"].push_back(vec(c));
         }
+    } else if (type == "goniometric") {
+        light = goniometricLight(d, p, spectrum("I") * float(scale));
     } else {
-        return unsupported(d, "LightSource \"" + type + "\" is not supported (photon imports point, spot, distant, infinite)");
+        return unsupported(d, "LightSource \"" + type +
+                                  "\" is not supported (photon imports point, spot, goniometric, distant, infinite)");
     }
     // pbrt-v4 puts a light in MediumInterface's outside medium; distant and infinite lights
     // are outside the scene.
-    if (type == "point" || type == "spot")
+    if (type == "point" || type == "spot" || type == "goniometric")
         if (const std::string medium = renderedMedium(state_.outsideMedium); !medium.empty()) light["medium"] = medium;
     lights_.push_back(std::move(light));
+}
+
+// pbrt-v4's GoniometricLight: a point light at the light frame's origin whose intensity
+// toward each direction is I times the "filename" image's texel there, an equal-area square
+// in the light's frame with its y and z swapped (GoniometricLight::Create), so that the
+// square's centre looks along the frame's +y. "power" P scales I by P / (4 pi mean texel).
+// pbrt-v4 takes the image's texels as the mean of their RGB; photon keeps their colour.
+Json SceneBuilder::goniometricLight(const Directive& d, const Params& p, Color intensity) {
+    const std::string file = p.string("filename", "");
+    if (file.empty()) fail(d.where, "goniometric: needs a \"filename\" (an equal-area image of the light's profile)");
+    if (auto why = checkRelativePath(file)) fail(d.where, "goniometric: \"" + file + "\": " + *why);
+    if (const double power = p.number("power", -1); power > 0) {
+        std::shared_ptr<const ImageTexture> image;
+        try {
+            image = ImageTexture::load(baseDir_ / file);
+        } catch (const std::runtime_error& e) {
+            fail(d.where, "goniometric: \"" + file + "\": " + e.what());
+        }
+        const float mean = average(image->average());
+        if (!(mean > 0)) fail(d.where, "goniometric: \"" + file + "\" is black: it cannot send out a \"power\"");
+        intensity *= float(power / (4 * kPi * mean));
+    }
+    const Transform swapYZ{{1, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0}};
+    const Transform toWorld = state_.ctm * swapYZ;
+    if (!toWorld.orthonormal())
+        fail(d.where, "goniometric: the light's transform must be a rotation or a mirror image (it scales or shears)");
+    return {{"type", "point"},     {"position", vec(pointCtm(d).point({0, 0, 0}))},
+            {"intensity", rgb(intensity)}, {"image", file},
+            {"layout", "equal_area"}, {"matrix", orientationMatrix(toWorld)}};
 }
 
 void SceneBuilder::areaLightSource(const Directive& d) {
