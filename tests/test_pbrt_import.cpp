@@ -478,7 +478,7 @@ MakeNamedMaterial "painted" "string type" "diffuse" "texture reflectance" "noise
 NamedMaterial "fur"
 Shape "nurbs" "integer nu" [4]
 Shape "sphere" "float radius" [0.5] "float zmax" [0.2]
-LightSource "projection" "string filename" "slide.exr"
+LightSource "laser" "string filename" "slide.exr"
 )";
     const ImportedScene s = importPbrt(writeScene("scene.pbrt", kHeader + body), true);
     const std::vector<std::string> expected = {
@@ -491,8 +491,8 @@ LightSource "projection" "string filename" "slide.exr"
         "diffuse material (lenient import)",
         "scene.pbrt:20: Shape \"nurbs\" is not supported (photon imports trianglemesh, plymesh, sphere, disk, cylinder, "
         "bilinearmesh, loopsubdiv, curve); left out (lenient import)",
-        "scene.pbrt:22: LightSource \"projection\" is not supported (photon imports point, spot, goniometric, distant, "
-        "infinite); left out (lenient import)"};
+        "scene.pbrt:22: LightSource \"laser\" is not supported (photon imports point, spot, goniometric, projection, "
+        "distant, infinite); left out (lenient import)"};
     EXPECT_EQ(s.warnings, expected);
     const Json& m = s.document["materials"];
     EXPECT_EQ(m["fur"], Json::parse(R"({"type": "diffuse", "albedo": [0.5, 0.5, 0.5]})"));

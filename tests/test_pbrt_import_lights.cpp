@@ -172,7 +172,37 @@ LightSource "goniometric" "string filename" "profile.exr" "float power" 30
     EXPECT_VEC3_NEAR(vec(l[1]["intensity"]), Vec3(float(30 / (12 * kPi))), 1e-6f);
     EXPECT_NEAR(makePointLight(d.lights[1])->power().y, 30.0f, 1e-3f);
     EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nLightSource \"goniometric\"\n").what(),
-                 "bad.pbrt:3: goniometric: needs a \"filename\" (an equal-area image of the light's profile)");
+                 "bad.pbrt:3: goniometric: needs a \"filename\" (the image it sends out)");
+}
+
+// pbrt-v4's projection light: the image along the light frame's +z, its top toward the
+// frame's +y; "power" over A times the texels' mean luminance x cos^3 (pbrt-v4's sum).
+TEST(PbrtImport, AProjectionLightIsASlideProjector) {
+    test::writeImage<float>(scratch() / "slide.exr", 2, 1, 3, {1, 0, 0, 0, 0, 1});
+    const ImportedScene s = import(R"(
+AttributeBegin
+  Translate 0 2 0
+  Rotate 90 1 0 0
+  LightSource "projection" "string filename" "slide.exr" "float fov" 40 "float scale" 3
+AttributeEnd
+LightSource "projection" "string filename" "slide.exr" "float power" 10
+)");
+    const Json& l = s.document["lights"];
+    EXPECT_EQ(l[0]["type"], "projection");
+    EXPECT_VEC3_NEAR(vec(l[0]["position"]), Vec3(0, 2, 0), 1e-6f);
+    EXPECT_VEC3_NEAR(vec(l[0]["intensity"]), Vec3(3), 1e-6f);
+    EXPECT_EQ(l[0]["fov"], 40.0);
+    const SceneDescription d = loadImportedScene(s, scratch());
+    const std::unique_ptr<Light> light = makeProjectionLight(d.lights[0]);
+    // Rotate 90 about x takes the frame's +z to world -y: it projects down, the frame's +x
+    // (the image's left to right) along world +x: red to -x, blue to +x.
+    EXPECT_NEAR(light->emittedDensity(normalize(Vec3(-0.1f, -1, 0))).x, 3.0f, 1e-5f);
+    EXPECT_NEAR(light->emittedDensity(normalize(Vec3(0.1f, -1, 0))).z, 3.0f, 1e-5f);
+    EXPECT_TRUE(isBlack(light->emittedDensity(normalize(Vec3(0.1f, 1, 0)))));
+    // power 10: 2 x 1 texels at fov 90, A = 4 x 2, centres at (+-1, 0), cos^3 = 2^-1.5; the
+    // mean luminance x cos^3 (0.2126 + 0.0722) / 2 x 2^-1.5.
+    const double k = 8 * (0.2126 + 0.0722) / 2 * std::pow(2.0, -1.5);
+    EXPECT_NEAR(l[1]["intensity"][0].get<double>(), 10 / k, 1e-4 * 10 / k);
 }
 
 // pbrt-v4 makes an area light of constant alpha 0 invisible: no ray meets it, and it lights

@@ -91,57 +91,26 @@ TEST(ProfiledPointLight, PhotonsCarryThePowerAsTheProfileSpreadsIt) {
     EXPECT_GT(length(quadratureMoment), 0.1 * expectedPower);  // the profile is not balanced
 }
 
-SceneDescription profiledOverPlane(DirectLighting direct, int passes, int64_t photons) {
-    SceneDescription d = test::pointLightPlane(kRho, kIntensity, 1.0f, kResolution);
-    d.lights[0] = profiledLight();
-    d.render.direct = direct;
-    d.render.passes = passes;
-    d.render.photonsPerPass = photons;
-    return d;
-}
-
 // The radiance where the camera ray through film point (x, y) meets the plane:
 // rho / pi I(w) cos theta / r^2.
 double analyticRadiance(const Camera& camera, float x, float y) {
-    const Ray ray = camera.generateRay(x, y, {0.5f, 0.5f});
-    const Vec3 p = ray.o + ray.d * (-ray.o.y / ray.d.y);
-    const Vec3 toP = p - Vec3(0, 1, 0);
+    const Vec3 toP = test::planePointSeen(camera, x, y) - Vec3(0, 1, 0);
     const float r2 = lengthSquared(toP), cosTheta = 1.0f / std::sqrt(r2);
     return kRho / kPi * kIntensity * profileToward(toP) * cosTheta / r2;
 }
 
 // Shadow rays draw the profile's texels on the plane: every 4 x 4 block's mean within 1% of
-// the analytic one (16 x 16 points a pixel), where the light reaches it.
+// the analytic one, where the light reaches it.
 TEST(ProfiledPointLight, ShadowRaysDrawTheProfile) {
-    const SceneDescription d = profiledOverPlane(DirectLighting::LightSampling, 64, 1000);
-    const Image image = test::renderImage(d);
+    const SceneDescription d = test::lightOverPlane(profiledLight(), kRho, kResolution, DirectLighting::LightSampling, 64, 1000);
     const Camera camera(d.camera);
-    int lit = 0, dark = 0;
-    for (int by = 0; by < kResolution; by += 4)
-        for (int bx = 0; bx < kResolution; bx += 4) {
-            double expected = 0;
-            for (int j = 0; j < 64; ++j)
-                for (int i = 0; i < 64; ++i) expected += analyticRadiance(camera, bx + (i + 0.5f) / 16, by + (j + 0.5f) / 16);
-            expected /= 64 * 64;
-            const float got = test::meanOver(image, bx, by, bx + 4, by + 4).y;
-            EXPECT_NEAR(got, expected, 0.01 * expected + 1e-4) << "block " << bx << "," << by;
-            (expected > 1e-3 ? lit : dark) += 1;
-        }
-    EXPECT_GT(lit, 100);
+    const test::LitAndDark blocks = test::expectBlocksMatch(
+        test::renderImage(d), [&](float x, float y) { return Color(float(analyticRadiance(camera, x, y))); }, 0.01f);
+    EXPECT_GT(blocks.lit, 100);
 }
 
-// Photons draw the same image as shadow rays, in 16 x 16 blocks within 2%: smaller blocks
-// show the gather discs' blur at the texels' edges (an 8 x 8 block on the black texel took
-// twice the light of its neighbours).
 TEST(ProfiledPointLight, PhotonsDrawWhatShadowRaysDraw) {
-    const Image byRays = test::renderImage(profiledOverPlane(DirectLighting::LightSampling, 64, 1000));
-    const Image byPhotons = test::renderImage(profiledOverPlane(DirectLighting::Photons, 128, 100000));
-    for (int by = 0; by < kResolution; by += 16)
-        for (int bx = 0; bx < kResolution; bx += 16) {
-            const float a = test::meanOver(byRays, bx, by, bx + 16, by + 16).y;
-            const float b = test::meanOver(byPhotons, bx, by, bx + 16, by + 16).y;
-            EXPECT_NEAR(b, a, 0.02f * a) << "block " << bx << "," << by;
-        }
+    test::expectPhotonsDrawWhatShadowRaysDraw(profiledLight(), kRho, kResolution);
 }
 
 // In the scene format: a point light's "image" and the fields that go with it, which are

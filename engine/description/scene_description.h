@@ -168,12 +168,15 @@ struct InstanceDescription {
 enum class EnvironmentLayout { LatLong, EqualArea };
 
 struct LightDescription {
-    enum class Kind { Point, Spot, Directional, Environment } kind = Kind::Point;
+    enum class Kind { Point, Spot, Directional, Environment, Projection } kind = Kind::Point;
     Vec3 position, direction{0, -1, 0};
     Color intensity{0.0f};   // W/sr (point, spot)
     Color irradiance{0.0f};  // W/m^2 perpendicular to the direction (directional)
     Color radiance{0.0f};    // W/(m^2 sr) (environment without an image)
     float coneAngleDegrees = 30, falloffAngleDegrees = 25;  // spot: total and full-intensity half-angles
+    // Projection: the image's (environment.image's) full angle across its shorter side,
+    // along the light frame's +z (environment.toWorld), its top toward +y.
+    float projectionFovDegrees = 90;
     // Environment with an image: radiance from a direction is its texel times `scale`.
     struct EnvironmentImage {
         std::shared_ptr<const ImageTexture> image;
@@ -186,8 +189,8 @@ struct LightDescription {
         float illuminance = 0;
     };
     EnvironmentImage environment;  // image null: constant `radiance`
-    // Point and spot lights: the absorbing medium the light is in (-1: none), where its
-    // photons start.
+    // Point, spot and projection lights: the absorbing medium the light is in (-1: none),
+    // where its photons start.
     int32_t medium = -1;
     // Environment: the light comes in only through this rectangle (world space, corners in
     // order; light arrives from the side of cross(p3 - p0, p1 - p0)), as pbrt-v4's portals.

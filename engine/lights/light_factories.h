@@ -11,6 +11,9 @@ namespace photon {
 // (makeProfiledPointLight).
 std::unique_ptr<Light> makePointLight(const LightDescription& d);
 std::unique_ptr<Light> makeProfiledPointLight(const LightDescription& d);
+// A slide projector: d.environment.image projected through d.projectionFovDegrees along the
+// light frame's +z (projection_light.cpp).
+std::unique_ptr<Light> makeProjectionLight(const LightDescription& d);
 std::unique_ptr<Light> makeSpotLight(const LightDescription& d);
 std::unique_ptr<Light> makeDirectionalLight(const LightDescription& d, SceneSphere bounds);
 // Constant radiance, or an image when d.environment.image is set (makeImageEnvironmentLight);

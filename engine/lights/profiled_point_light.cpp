@@ -6,6 +6,7 @@
 // intensity times the image's integral over the sphere.
 #include "lights/environment_map.h"
 #include "lights/light_factories.h"
+#include "lights/point_emitter.h"
 
 namespace photon {
 namespace {
@@ -21,13 +22,7 @@ public:
     Color power() const override { return intensity_ * profile_.integral(); }
 
     std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2) const override {
-        const Vec3 toLight = position_ - p;
-        const float dist2 = lengthSquared(toLight);
-        if (dist2 <= 0) return std::nullopt;
-        const float dist = std::sqrt(dist2);
-        const Color intensity = emittedDensity(-toLight);
-        if (isBlack(intensity)) return std::nullopt;
-        return LightSample{toLight / dist, dist, intensity / dist2};
+        return samplePointEmitter(position_, p, [this](Vec3 w) { return emittedDensity(w); });
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2, Vec2 uDirection) const override {

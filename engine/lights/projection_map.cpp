@@ -1,4 +1,5 @@
 #include "lights/projection_map.h"
+#include "math/plane_solid_angle.h"
 #include <tbb/parallel_for.h>
 #include <algorithm>
 #include <cmath>
@@ -16,9 +17,6 @@ constexpr int kDiscSide = 512;
 
 float angleBetween(Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(a, b), -1.0f, 1.0f)); }
 
-// Solid angle of [0, u] x [0, v] on the plane at distance 1 (Girard's theorem for the
-// projected rectangle); differences of it give any axis-aligned rectangle's.
-double cornerSolidAngle(double u, double v) { return std::atan2(u * v, std::sqrt(1 + u * u + v * v)); }
 
 }  // namespace
 
@@ -108,8 +106,7 @@ Vec3 ProjectionMap::faceDirection(int face, float u, float v) const {
 }
 
 float ProjectionMap::solidAngle(const Cell& c) const {
-    return static_cast<float>(cornerSolidAngle(c.u1, c.v1) - cornerSolidAngle(c.u0, c.v1) -
-                              cornerSolidAngle(c.u1, c.v0) + cornerSolidAngle(c.u0, c.v0));
+    return static_cast<float>(rectangleSolidAngle(c.u0, c.u1, c.v0, c.v1));
 }
 
 // A cube-map cell is a spherical quadrilateral with great-circle edges, so the point

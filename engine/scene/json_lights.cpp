@@ -75,9 +75,9 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
     JsonObject obj = value.object();
     LightDescription l;
     // In the order of LightDescription::Kind.
-    l.kind = Kind(obj.required("type").choice({"point", "spot", "directional", "environment"}, "type"));
+    l.kind = Kind(obj.required("type").choice({"point", "spot", "directional", "environment", "projection"}, "type"));
     // A point or spot light may sit in an absorbing medium, where its photons start.
-    if (l.kind == Kind::Point || l.kind == Kind::Spot)
+    if (l.kind == Kind::Point || l.kind == Kind::Spot || l.kind == Kind::Projection)
         if (auto medium = obj.optional("medium")) l.medium = mediumNamed(*medium, ctx);
     switch (l.kind) {
         case Kind::Point:
@@ -96,6 +96,13 @@ LightDescription readLight(const JsonValue& value, LoadContext& ctx) {
         case Kind::Directional:
             l.direction = obj.required("direction").direction();
             l.irradiance = power(obj, "irradiance");
+            break;
+        case Kind::Projection:
+            l.position = obj.required("position").vec3();
+            l.intensity = power(obj, "intensity");
+            l.projectionFovDegrees = obj.number("fov", 90, Range::open(0, 180));
+            if (auto layout = obj.optional("layout")) layout->fail("does not apply to a projection (its image lies flat)");
+            readDirectionImage(obj.required("image"), obj, ctx, l);
             break;
         case Kind::Environment:
             readEnvironment(obj, ctx, l);

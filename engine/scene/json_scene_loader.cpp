@@ -61,6 +61,8 @@ bool emits(const LightDescription& l) {
             if (l.environment.image && !(l.environment.scale > 0 && !isBlack(l.environment.image->average()))) return false;
             return !isBlack(l.intensity);
         case LightDescription::Kind::Spot: return !isBlack(l.intensity);
+        case LightDescription::Kind::Projection:
+            return !isBlack(l.intensity) && l.environment.scale > 0 && !isBlack(l.environment.image->average());
         case LightDescription::Kind::Directional: return !isBlack(l.irradiance);
         case LightDescription::Kind::Environment:
             if (l.environment.image) return l.environment.scale > 0 && !isBlack(l.environment.image->average());

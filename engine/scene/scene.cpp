@@ -140,6 +140,7 @@ void Scene::buildLights() {
         switch (d.kind) {
             case LightDescription::Kind::Point: ownedLights_.push_back(makePointLight(d)); break;
             case LightDescription::Kind::Spot: ownedLights_.push_back(makeSpotLight(d)); break;
+            case LightDescription::Kind::Projection: ownedLights_.push_back(makeProjectionLight(d)); break;
             case LightDescription::Kind::Directional: ownedLights_.push_back(makeDirectionalLight(d, sphere)); break;
             case LightDescription::Kind::Environment:
                 ownedLights_.push_back(makeEnvironmentLight(d, sphere));

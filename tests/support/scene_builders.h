@@ -21,6 +21,10 @@ CameraDescription orthographicCamera(Vec3 position, Vec3 lookAt, float viewHeigh
 // light of intensity I at height h above the origin, seen from straight above at height 3
 // (fov 50, so the view spans +-1.4 units).
 SceneDescription pointLightPlane(float rho, float intensity, float height, int resolution, float halfSize = 20);
+// The same plane and camera under `light` alone, rendered with `direct`, `passes` passes and
+// `photons` photons a pass.
+SceneDescription lightOverPlane(const LightDescription& light, float rho, int resolution, DirectLighting direct,
+                                int passes, int64_t photons);
 
 // A scene of no shapes yet, its camera at (0, 0, 5) looking at the origin (it plays no
 // part in hit tests), with two materials: 0, grey diffuse; 1, diffuse under a 2x1 texture,

@@ -286,6 +286,50 @@ SceneDescription pointLightPlane(float rho, float intensity, float height, int r
     return d;
 }
 
+SceneDescription lightOverPlane(const LightDescription& light, float rho, int resolution, DirectLighting direct,
+                                int passes, int64_t photons) {
+    SceneDescription d = pointLightPlane(rho, 1.0f, 1.0f, resolution);
+    d.lights = {light};
+    d.render.direct = direct;
+    d.render.passes = passes;
+    d.render.photonsPerPass = photons;
+    return d;
+}
+
+Vec3 planePointSeen(const Camera& camera, float x, float y) {
+    const Ray ray = camera.generateRay(x, y, {0.5f, 0.5f});
+    return ray.o + ray.d * (-ray.o.y / ray.d.y);
+}
+
+LitAndDark expectBlocksMatch(const Image& image, const std::function<Color(float, float)>& radiance, float tolerance) {
+    constexpr int kBlock = 4, kPoints = 64;
+    LitAndDark counts;
+    for (int by = 0; by + kBlock <= image.height; by += kBlock)
+        for (int bx = 0; bx + kBlock <= image.width; bx += kBlock) {
+            Color expected(0.0f);
+            for (int j = 0; j < kBlock * kPoints; ++j)
+                for (int i = 0; i < kBlock * kPoints; ++i)
+                    expected += radiance(bx + (i + 0.5f) / kPoints, by + (j + 0.5f) / kPoints);
+            expected = expected / float(kBlock * kPoints * kBlock * kPoints);
+            const Color got = meanOver(image, bx, by, bx + kBlock, by + kBlock);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(got[c], expected[c], tolerance * expected[c] + 1e-4f) << "block " << bx << "," << by << " channel " << c;
+            (expected.y > 1e-3f ? counts.lit : counts.dark) += 1;
+        }
+    return counts;
+}
+
+void expectPhotonsDrawWhatShadowRaysDraw(const LightDescription& light, float rho, int resolution) {
+    const Image byRays = renderImage(lightOverPlane(light, rho, resolution, DirectLighting::LightSampling, 64, 1000));
+    const Image byPhotons = renderImage(lightOverPlane(light, rho, resolution, DirectLighting::Photons, 128, 100000));
+    for (int by = 0; by < resolution; by += 16)
+        for (int bx = 0; bx < resolution; bx += 16) {
+            const float a = meanOver(byRays, bx, by, bx + 16, by + 16).y;
+            const float b = meanOver(byPhotons, bx, by, bx + 16, by + 16).y;
+            EXPECT_NEAR(b, a, 0.02f * a + 1e-4f) << "block " << bx << "," << by;
+        }
+}
+
 SceneDescription furnace(float rho, float emission, int resolution) {
     SceneDescription d;
     d.camera = camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 60, resolution, resolution);

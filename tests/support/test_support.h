@@ -47,6 +47,20 @@ Image renderImage(SceneDescription d);
 // (scenes/cornell-box.json) at `resolution` with its two blocks made of `material`, or,
 // with `sphere`, the blocks replaced by one sphere of it (radius 0.3, on the floor).
 SceneDescription cornellBoxWith(MaterialPtr material, int resolution, bool sphere = false);
+// Where the camera ray through film point (x, y) meets the plane y = 0 (lightOverPlane's).
+Vec3 planePointSeen(const Camera& camera, float x, float y);
+// Each 4 x 4 block of `image` against the mean of `radiance` (film point to colour) over it,
+// by 64 x 64 points a pixel (a sharp edge through a pixel is then placed within 1/128 of a
+// pixel), per channel within `tolerance` of the expected value plus 1e-4. Returns how many
+// blocks are lit (green above 1e-3) and how many dark.
+struct LitAndDark {
+    int lit = 0, dark = 0;
+};
+LitAndDark expectBlocksMatch(const Image& image, const std::function<Color(float, float)>& radiance, float tolerance);
+// On lightOverPlane's plane, `light`'s photons (128 passes of 100k) draw what its shadow
+// rays (64 passes) draw: in 16 x 16 blocks within 2% (smaller blocks show the gather discs'
+// blur at sharp edges of the light's pattern).
+void expectPhotonsDrawWhatShadowRaysDraw(const LightDescription& light, float rho, int resolution);
 // Image means of the scene by the path tracer and by SPPM, with the passes and photons
 // given, at maximum depth 64 (transport the two see alike).
 struct PathAndSppmMeans {

@@ -15,6 +15,10 @@
 #include "import/pbrt/pbrt_parser.h"
 #include "math/transform.h"
 
+namespace photon {
+class ImageTexture;
+}
+
 namespace photon::pbrt {
 
 using Json = nlohmann::ordered_json;
@@ -127,6 +131,9 @@ private:
     Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what);
     Json cloudGrid(const Directive& d, const Params& p, const std::string& what);
     Json goniometricLight(const Directive& d, const Params& p, Color intensity);
+    Json projectionLight(const Directive& d, const Params& p, float scale);
+    std::pair<std::string, std::shared_ptr<const ImageTexture>> lightImage(const Directive& d, const Params& p,
+                                                                          const std::string& what, bool load);
 
     std::filesystem::path baseDir_;
     ImportedScene& out_;

@@ -125,13 +125,16 @@ void SceneBuilder::lightSource(const Directive& d) {
         }
     } else if (type == "goniometric") {
         light = goniometricLight(d, p, spectrum("I") * float(scale));
+    } else if (type == "projection") {
+        light = projectionLight(d, p, float(scale));
     } else {
         return unsupported(d, "LightSource \"" + type +
-                                  "\" is not supported (photon imports point, spot, goniometric, distant, infinite)");
+                                  "\" is not supported (photon imports point, spot, goniometric, projection, distant, "
+                                  "infinite)");
     }
     // pbrt-v4 puts a light in MediumInterface's outside medium; distant and infinite lights
     // are outside the scene.
-    if (type == "point" || type == "spot" || type == "goniometric")
+    if (type == "point" || type == "spot" || type == "goniometric" || type == "projection")
         if (const std::string medium = renderedMedium(state_.outsideMedium); !medium.empty()) light["medium"] = medium;
     lights_.push_back(std::move(light));
 }
@@ -141,17 +144,25 @@ void SceneBuilder::lightSource(const Directive& d) {
 // in the light's frame with its y and z swapped (GoniometricLight::Create), so that the
 // square's centre looks along the frame's +y. "power" P scales I by P / (4 pi mean texel).
 // pbrt-v4 takes the image's texels as the mean of their RGB; photon keeps their colour.
-Json SceneBuilder::goniometricLight(const Directive& d, const Params& p, Color intensity) {
+// The light's image "filename", relative to the scene's folder (`what` names the light in
+// errors), and the image itself when `load`: a light's "power" is over what its image sends.
+std::pair<std::string, std::shared_ptr<const ImageTexture>> SceneBuilder::lightImage(const Directive& d, const Params& p,
+                                                                                      const std::string& what, bool load) {
     const std::string file = p.string("filename", "");
-    if (file.empty()) fail(d.where, "goniometric: needs a \"filename\" (an equal-area image of the light's profile)");
-    if (auto why = checkRelativePath(file)) fail(d.where, "goniometric: \"" + file + "\": " + *why);
-    if (const double power = p.number("power", -1); power > 0) {
-        std::shared_ptr<const ImageTexture> image;
-        try {
-            image = ImageTexture::load(baseDir_ / file);
-        } catch (const std::runtime_error& e) {
-            fail(d.where, "goniometric: \"" + file + "\": " + e.what());
-        }
+    if (file.empty()) fail(d.where, what + ": needs a \"filename\" (the image it sends out)");
+    if (auto why = checkRelativePath(file)) fail(d.where, what + ": \"" + file + "\": " + *why);
+    if (!load) return {file, nullptr};
+    try {
+        return {file, ImageTexture::load(baseDir_ / file)};
+    } catch (const std::runtime_error& e) {
+        fail(d.where, what + ": \"" + file + "\": " + e.what());
+    }
+}
+
+Json SceneBuilder::goniometricLight(const Directive& d, const Params& p, Color intensity) {
+    const double power = p.number("power", -1);
+    const auto [file, image] = lightImage(d, p, "goniometric", power > 0);
+    if (power > 0) {
         const float mean = average(image->average());
         if (!(mean > 0)) fail(d.where, "goniometric: \"" + file + "\" is black: it cannot send out a \"power\"");
         intensity *= float(power / (4 * kPi * mean));
@@ -163,6 +174,34 @@ Json SceneBuilder::goniometricLight(const Directive& d, const Params& p, Color i
     return {{"type", "point"},     {"position", vec(pointCtm(d).point({0, 0, 0}))},
             {"intensity", rgb(intensity)}, {"image", file},
             {"layout", "equal_area"}, {"matrix", orientationMatrix(toWorld)}};
+}
+
+// pbrt-v4's ProjectionLight: the "filename" image projected along the light frame's +z
+// through "fov" across its shorter side, its top toward the frame's +y (pbrt-v4 flips y and
+// then looks the image up from its top), times "scale"; "power" P scales it by P over the
+// sum pbrt-v4 takes, A times the texels' mean luminance x cos^3 at their centres.
+Json SceneBuilder::projectionLight(const Directive& d, const Params& p, float scale) {
+    const double power = p.number("power", -1), fov = p.number("fov", 90);
+    if (!(fov > 0 && fov < 180)) fail(d.where, "projection: \"fov\" must lie in (0, 180)");
+    const auto [file, image] = lightImage(d, p, "projection", power > 0);
+    if (power > 0) {
+        const int w = image->width(), h = image->height();
+        const double t = std::tan(fov * kPi / 360), aspect = double(w) / h;
+        const double halfX = aspect > 1 ? aspect * t : t, halfY = aspect > 1 ? t : t / aspect;
+        double sum = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double px = (2 * (x + 0.5) / w - 1) * halfX, py = (2 * (y + 0.5) / h - 1) * halfY;
+                sum += luminance(image->texel(x, y)) * std::pow(1 + px * px + py * py, -1.5);
+            }
+        if (!(sum > 0)) fail(d.where, "projection: \"" + file + "\" is black: it cannot send out a \"power\"");
+        scale *= float(power / (4 * halfX * halfY * sum / (double(w) * h)));
+    }
+    if (!state_.ctm.orthonormal())
+        fail(d.where, "projection: the light's transform must be a rotation or a mirror image (it scales or shears)");
+    return {{"type", "projection"}, {"position", vec(pointCtm(d).point({0, 0, 0}))},
+            {"intensity", rgb(Color(scale))}, {"image", file},
+            {"fov", fov}, {"matrix", orientationMatrix(state_.ctm)}};
 }
 
 void SceneBuilder::areaLightSource(const Directive& d) {

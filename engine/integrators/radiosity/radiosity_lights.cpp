@@ -28,6 +28,7 @@ RadiosityLights::RadiosityLights(const Scene& scene, const PatchMesh& mesh, int 
         switch (d.kind) {
             case LightDescription::Kind::Point: others_.push_back(makePointLight(d)); break;
             case LightDescription::Kind::Spot: others_.push_back(makeSpotLight(d)); break;
+            case LightDescription::Kind::Projection: others_.push_back(makeProjectionLight(d)); break;
             case LightDescription::Kind::Directional: others_.push_back(makeDirectionalLight(d, sphere)); break;
             case LightDescription::Kind::Environment: others_.push_back(makeEnvironmentLight(d, sphere)); break;
         }
