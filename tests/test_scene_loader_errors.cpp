@@ -210,7 +210,7 @@ TEST(SceneLoaderErrors, UnknownNames) {
     expectError([](Json& d) { d["shapes"][1]["type"] = "cone"; }, "shapes[1].type",
                 "unknown type \"cone\" (expected one of quad, sphere, mesh, curves, instance)");
     expectError([](Json& d) { d["lights"][0]["type"] = "area"; }, "lights[0].type",
-                "unknown type \"area\" (expected one of point, spot, directional, environment)");
+                "unknown type \"area\" (expected one of point, spot, directional, environment, projection)");
     expectError([](Json& d) { d["materials"]["white"]["type"] = "lambert"; }, "materials.white.type",
                 "unknown type \"lambert\" (expected one of diffuse, dielectric, mirror, conductor, plastic, "
                 "coated_diffuse, coated_conductor, diffuse_transmission, mix, hair, measured)");

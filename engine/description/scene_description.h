@@ -94,6 +94,15 @@ struct MediumDescription {
     std::shared_ptr<const DensityGrid> density;  // none: homogeneous (a density of 1)
 
     Color extinction() const { return absorption + scattering; }
+    // What light keeps unscattered where the density integrates to `densityLength`:
+    // exp(-extinction densityLength) per channel (Beer-Lambert), 1 in a channel it does not
+    // touch, so that an infinite length keeps that channel whole.
+    Color transmittanceOver(double densityLength) const {
+        const Color sigmaT = extinction();
+        Color t;
+        for (int c = 0; c < 3; ++c) t[c] = sigmaT[c] > 0 ? static_cast<float>(std::exp(-sigmaT[c] * densityLength)) : 1.0f;
+        return t;
+    }
     bool scatters() const { return !isBlack(scattering) && (!density || density->maxValue() > 0); }
     // The density at p (1 where homogeneous).
     float densityAt(Vec3 p) const { return density ? density->at(p) : 1.0f; }

@@ -52,8 +52,7 @@ inline float sampleFreeFlight(const MediumDescription& m, Vec3 o, Vec3 dir, floa
     const bool scatters = t < length;
     const float d = scatters ? t : length;
     if (!scatters && !m.density) travelled = length;
-    Color tr;
-    for (int c = 0; c < 3; ++c) tr[c] = sigmaT[c] > 0 ? static_cast<float>(std::exp(-sigmaT[c] * travelled)) : 1.0f;
+    const Color tr = m.transmittanceOver(travelled);
     // Each channel's density of this flight over the hero's, and the contribution's.
     const float hero = scatters ? sigmaT[h] * tr[h] : tr[h];
     const Color density = (scatters ? sigmaT * tr : tr) / hero;

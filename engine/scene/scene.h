@@ -150,11 +150,7 @@ public:
     Color transmittance(int32_t medium, Vec3 o, Vec3 d, float distance) const {
         if (medium < 0) return Color(1.0f);
         const MediumDescription& m = this->medium(medium);
-        const Color sigmaT = m.extinction();
-        const double length = m.densityLength(o, d, distance);
-        Color t;
-        for (int c = 0; c < 3; ++c) t[c] = sigmaT[c] > 0 ? static_cast<float>(std::exp(-sigmaT[c] * length)) : 1.0f;
-        return t;
+        return m.transmittanceOver(m.densityLength(o, d, distance));
     }
     // The medium a path is in after leaving the hit along w: the shape's outside where w
     // leaves on the side its normal faces, else its inside; `current` where the shape bounds
