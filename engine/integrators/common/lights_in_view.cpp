@@ -35,36 +35,33 @@ float LightsInView::decode(uint8_t code) {
 void LightsInView::find() const {
     if (!scene_->hasEmittingShapes()) return;
     const int width = width_, height = height_;
-    // Blocks of 8 to 16 rows, each tracing the corners of its rows once (a block's last
-    // corner row is traced again by the next block: at most 1/8 more corner rays), each
-    // keeping its rows' lit pixels until they are joined in row order.
+    // Ranges of rows, each tracing the corners of its rows once (a range's last corner row is
+    // traced again by the next range), each row's lit pixels kept apart until they are
+    // joined in row order: the ranges oneTBB makes need not start at multiples of any size.
     constexpr int kRowsPerBlock = 16;
-    std::vector<std::vector<uint32_t>> blockLit((height + kRowsPerBlock - 1) / kRowsPerBlock);
-    std::vector<uint32_t> rowCount(static_cast<size_t>(height), 0);
+    std::vector<std::vector<uint32_t>> rowLit(static_cast<size_t>(height));
     tbb::parallel_for(tbb::blocked_range<int>(0, height, kRowsPerBlock), [&](const tbb::blocked_range<int>& block) {
         const size_t corners = static_cast<size_t>(width) + 1;
         std::vector<float> above(corners), below(corners);
         auto cornerRow = [&](int y, std::vector<float>& row) {
             for (int x = 0; x <= width; ++x) row[x] = emittedToward(*scene_, static_cast<float>(x), static_cast<float>(y));
         };
-        std::vector<uint32_t>& lit = blockLit[block.begin() / kRowsPerBlock];
         cornerRow(block.begin(), above);
         for (int y = block.begin(); y < block.end(); ++y) {
             cornerRow(y + 1, below);
+            std::vector<uint32_t>& lit = rowLit[static_cast<size_t>(y)];
             for (int x = 0; x < width; ++x) {
                 const float centre = emittedToward(*scene_, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-                if (const uint8_t code = encode(std::max({above[x], above[x + 1], below[x], below[x + 1], centre}))) {
+                if (const uint8_t code = encode(std::max({above[x], above[x + 1], below[x], below[x + 1], centre})))
                     lit.push_back(static_cast<uint32_t>(x) << 8 | code);
-                    ++rowCount[y];
-                }
             }
             std::swap(above, below);
         }
     });
     rowStart_.assign(static_cast<size_t>(height) + 1, 0);
-    for (int y = 0; y < height; ++y) rowStart_[y + 1] = rowStart_[y] + rowCount[y];
+    for (int y = 0; y < height; ++y) rowStart_[y + 1] = rowStart_[y] + static_cast<uint32_t>(rowLit[y].size());
     lit_.reserve(rowStart_.back());
-    for (const auto& lit : blockLit) lit_.insert(lit_.end(), lit.begin(), lit.end());
+    for (const auto& lit : rowLit) lit_.insert(lit_.end(), lit.begin(), lit.end());
 }
 
 }  // namespace photon
