@@ -1,6 +1,7 @@
 // Absorbing media (docs/scene-format.md#media): Beer-Lambert along camera paths and photon
 // paths, the medium a path is in changed where it crosses a boundary, the scene format.
 #include <gtest/gtest.h>
+#include "math/spectrum_rgb.h"
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -301,6 +302,46 @@ TEST(MediaScene, ADensityGridIsPlacedByItsBoundsAndTransform) {
             bad["media"] = doc["media"], bad["media"]["smoke"]["density"]["bounds"] = {{0, 0, 0}, {2, 0, 1}};
         },
         "media.smoke.density.bounds", "each of the first corner's coordinates must be below the second's");
+}
+
+// "emission": Le = radiance * scale, times its grid where the light is; with a temperature
+// grid, pbrt-v4's blackbody at (T - offset) * scale; and what is wrong with one, by path.
+TEST(MediaScene, AMediumThatEmits) {
+    Json doc = test::fullScene();
+    doc["media"] = {{"fire",
+                     {{"absorption", {1, 1, 1}},
+                      {"emission",
+                       {{"radiance", {1, 2, 3}},
+                        {"scale", 2},
+                        {"grid", {{"resolution", {2, 1, 1}}, {"values", {1, 3}}, {"bounds", {{0, 0, 0}, {2, 1, 1}}}}}}}}},
+                    {"hot",
+                     {{"absorption", {1, 1, 1}},
+                      {"emission",
+                       {{"temperature", {{"resolution", {1, 1, 1}}, {"values", {1700}}}},
+                        {"temperature_offset", 200},
+                        {"temperature_scale", 2}}}}}};
+    const SceneDescription d = load(doc);
+    ASSERT_TRUE(d.media[0].emits());
+    EXPECT_VEC3_NEAR(d.media[0].emission->at({0.5f, 0.5f, 0.5f}), Color(2, 4, 6), 1e-5f);
+    EXPECT_VEC3_NEAR(d.media[0].emission->at({1.5f, 0.5f, 0.5f}), Color(6, 12, 18), 1e-4f);
+    const Color hot = d.media[1].emission->at({0.5f, 0.5f, 0.5f}), expected = blackbodyPeakColor(3000);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(hot[c], expected[c], 1e-4f * expected[c]) << c;
+
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["fire"]["absorption"] = {0, 0, 0}; },
+                "media.fire.emission", "a medium emits in proportion to its \"absorption\" (sigma_a Le), which is 0");
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["fire"]["emission"]["temperature_scale"] = 2; },
+                "media.fire.emission.temperature_scale", "applies only with a \"temperature\" grid");
+    expectError([&](Json& bad) { bad["media"] = doc["media"], bad["media"]["hot"]["emission"]["temperature_scale"] = 0; },
+                "media.hot.emission.temperature_scale", "must be > 0");
+    // Homogeneous, it needs shapes it is inside of: not the camera's medium alone.
+    expectError(
+        [&](Json& bad) {
+            bad["media"] = doc["media"], bad["media"]["fire"]["emission"].erase("grid");
+            bad["camera"]["medium"] = "fire";
+        },
+        "media.fire.emission",
+        "a homogeneous medium that emits must lie inside shapes that bound it (its light leaves from their box), or "
+        "have a \"density\" or emission \"grid\" to say where it is");
 }
 
 TEST(MediaScene, Errors) {

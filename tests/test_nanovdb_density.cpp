@@ -9,6 +9,7 @@
 #include <nanovdb/util/GridBuilder.h>
 #include <nanovdb/util/IO.h>
 #include "math/rng.h"
+#include "math/spectrum_rgb.h"
 #include "scene_loader_fixture.h"
 #include "support/pbrt_import_fixture.h"
 
@@ -91,6 +92,48 @@ TEST(NanoVdbDensity, ASparseGridIsTheDenseGridOfItsSamples) {
         const Vec3 dir = normalize(Vec3{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f});
         EXPECT_NEAR(sparse.integral(o, dir, 6.0f), dense.integral(o, dir, 6.0f), 1e-4) << ray;
     }
+}
+
+// pbrt-v4's nanovdb medium emits by its file's "temperature" grid, times "Lescale": a file
+// holding a density of 1 and a temperature of 1,700 K over the same voxels, imported with
+// "temperaturecutoff" 200 and "temperaturescale" 2, glows with pbrt-v4's blackbody at
+// 3,000 K times 3 where the voxels are, and a file without one does not.
+TEST(NanoVdbDensity, ATemperatureGridMakesAPbrtMediumEmit) {
+    auto constantGrid = [](float value, const char* name) {
+        nanovdb::GridBuilder<float> builder(0.0f);
+        auto acc = builder.getAccessor();
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                for (int k = 0; k < 4; ++k) acc.setValue(nanovdb::Coord(i, j, k), value);
+        return builder.getHandle<>(0.25, nanovdb::Vec3d(0, 0, 0), name);
+    };
+    // Beside the pbrt file, and beside the JSON scene its media are loaded in.
+    for (const std::filesystem::path& dir :
+         {test::pbrt_import::scratch() / "volumes", test::fixture().scene / "volumes"}) {
+        std::filesystem::create_directories(dir);
+        std::vector<nanovdb::GridHandle<>> grids;
+        grids.push_back(constantGrid(1.0f, "density"));
+        grids.push_back(constantGrid(1700.0f, "temperature"));
+        nanovdb::io::writeGrids((dir / "fire.nvdb").string(), grids);
+        nanovdb::io::writeGrid((dir / "smoke.nvdb").string(), constantGrid(1.0f, "density"));
+    }
+    const std::string medium = "MakeNamedMedium \"m\" \"string type\" \"nanovdb\" \"rgb sigma_a\" [1 1 1] "
+                               "\"float Lescale\" 3 \"float temperaturecutoff\" 200 \"float temperaturescale\" 2 "
+                               "\"string filename\" ";
+    const ImportedScene fire = test::pbrt_import::import(medium + "\"volumes/fire.nvdb\"\n");
+    const Json& emission = fire.document["media"]["m"]["emission"];
+    EXPECT_EQ(emission, Json::parse(R"({"scale": 3, "temperature": {"file": "volumes/fire.nvdb", "grid": "temperature"},
+                                         "temperature_offset": 200, "temperature_scale": 2})"));
+    Json doc = test::fullScene();
+    doc["media"] = fire.document["media"];
+    const SceneDescription d = load(doc);
+    ASSERT_TRUE(d.media[0].emits());
+    const Color expected = 3.0f * blackbodyPeakColor(3000);
+    const Color seen = d.media[0].emission->at({0.25f, 0.5f, 0.5f});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], expected[c], 1e-4f * expected[c]) << c;
+    EXPECT_EQ(d.media[0].emission->at({-1, -1, -1}), Color(0.0f));  // no voxels there: 0 K
+    const ImportedScene smoke = test::pbrt_import::import(medium + "\"volumes/smoke.nvdb\"\n");
+    EXPECT_FALSE(smoke.document["media"]["m"].contains("emission"));
 }
 
 TEST(NanoVdbDensity, ErrorsNameTheFile) {

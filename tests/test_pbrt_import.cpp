@@ -434,8 +434,9 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
     EXPECT_STREQ(importError(head + "Material \"velvet\"\n").what(),
                  "bad.pbrt:3: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
                  "thindielectric, conductor, coatedconductor, diffusetransmission, hair, measured, mix, interface, subsurface)");
-    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"rgb Le\" [1 1 1]\n").what(),
-                 "bad.pbrt:3: medium \"fog\" emits light (Le): photon's media do not emit");
+    EXPECT_STREQ(importError(head + "MakeNamedMedium \"fire\" \"string type\" \"uniformgrid\" \"float density\" [1] "
+                                    "\"float temperature\" [1500] \"rgb Le\" [1 1 1]\n").what(),
+                 "bad.pbrt:3: medium \"fire\": give either \"Le\" or \"temperature\", not both");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\" \"float g\" [1]\n").what(),
                  "bad.pbrt:3: medium \"fog\": \"g\" must lie in (-1, 1)");
     EXPECT_STREQ(importError(head + "MakeNamedMedium \"smoke\" \"string type\" \"rgbgrid\"\n").what(),
@@ -469,7 +470,7 @@ TEST(PbrtImport, ErrorsNameFileAndLine) {
 // same features refuse the strict import (ErrorsNameFileAndLine).
 TEST(PbrtImport, LenientImportLeavesOutWhatPhotonCannotRender) {
     const std::string body = R"(
-MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1] "rgb Le" [1 1 1]
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [0 0 0] "rgb Le" [1 1 1]
 MediumInterface "" "fog"
 Attribute "shape" "float radius" [2]
 Texture "noise" "spectrum" "ptex" "string filename" "noise.ptx"
@@ -482,8 +483,8 @@ LightSource "laser" "string filename" "slide.exr"
 )";
     const ImportedScene s = importPbrt(writeScene("scene.pbrt", kHeader + body), true);
     const std::vector<std::string> expected = {
-        "scene.pbrt:13: medium \"fog\" emits light (Le): photon's media do not emit; its emission left out (lenient "
-        "import)",
+        "scene.pbrt:13: medium \"fog\" emits, but in proportion to its sigma_a (pbrt-v4's sigma_a Le), which is 0; "
+        "its emission left out (lenient import)",
         "scene.pbrt:16: Texture \"noise\": class \"ptex\" is not supported (photon imports imagemap, checkerboard, bilerp, "
         "dots, fbm, wrinkled, windy, marble, scale, mix, directionmix, constant); the constant 0.5 used (lenient import)",
         "scene.pbrt:17: material \"velvet\" is not supported (photon imports diffuse, coateddiffuse, dielectric, "
@@ -502,7 +503,7 @@ LightSource "laser" "string filename" "slide.exr"
     EXPECT_EQ(s.document["shapes"][2]["type"], "mesh");
     EXPECT_EQ(s.document["shapes"][2]["material"], "fur");
     EXPECT_EQ(s.document["shapes"][2]["medium"], Json::parse(R"({"outside": "fog"})"));
-    EXPECT_EQ(s.document["media"], Json::parse(R"({"fog": {"absorption": [1, 1, 1], "scattering": [1, 1, 1]}})"));
+    EXPECT_EQ(s.document["media"], Json::parse(R"({"fog": {"absorption": [0, 0, 0], "scattering": [1, 1, 1]}})"));
     EXPECT_FALSE(s.document.contains("lights"));
     loadImportedScene(s, scratch());  // what the lenient import wrote loads
     // Strict, the first of them is refused.

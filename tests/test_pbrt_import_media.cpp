@@ -114,5 +114,33 @@ TEST(PbrtImport, ACloudMediumKeepsItsNoiseAndItsBox) {
                  "bad.pbrt:3: medium \"c\": \"frequency\" must be finite and > 0");
 }
 
+// Media that emit, as pbrt-v4's media read their light: a homogeneous medium's "Le" times
+// "Lescale"; a uniform grid's "Le" (scaled to unit luminance unless "rgb") over pbrt-v4's
+// single "Lescale" sample where no grid of them is given, or a temperature grid with its
+// offset and scale; and a medium that would emit but absorbs nothing, refused.
+TEST(PbrtImport, MediaThatEmitKeepTheirLight) {
+    const ImportedScene s = import(
+        "MakeNamedMedium \"glow\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [2 2 2] \"rgb sigma_s\" [0 0 0] "
+        "\"rgb Le\" [1 2 3] \"float Lescale\" 4\n"
+        "MakeNamedMedium \"gas\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1 2] "
+        "\"spectrum Le\" [400 1 700 1] \"point3 p1\" [2 1 1]\n"
+        "MakeNamedMedium \"fire\" \"string type\" \"uniformgrid\" \"integer nx\" 2 \"float density\" [1 2] "
+        "\"float temperature\" [900 1400] \"float Lescale\" [0.5 3] \"float temperaturecutoff\" 200 "
+        "\"float temperaturescale\" 2\n");
+    const Json& media = s.document["media"];
+    EXPECT_EQ(media["glow"]["emission"], Json::parse(R"({"radiance": [1, 2, 3], "scale": 4})"));
+    const Json& gas = media["gas"]["emission"];
+    EXPECT_NEAR(luminance(vec(gas["radiance"])), 1.0f, 1e-4f);  // a spectrum, at unit luminance
+    EXPECT_EQ(gas["grid"], Json::parse(R"({"resolution": [1, 1, 1], "values": [1], "bounds": [[0, 0, 0], [2, 1, 1]]})"));
+    EXPECT_EQ(media["fire"]["emission"], Json::parse(R"({
+        "grid": {"resolution": [2, 1, 1], "values": [0.5, 3], "bounds": [[0, 0, 0], [1, 1, 1]]},
+        "temperature": {"resolution": [2, 1, 1], "values": [900, 1400], "bounds": [[0, 0, 0], [1, 1, 1]]},
+        "temperature_offset": 200, "temperature_scale": 2})"));
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
+    EXPECT_STREQ(importError("Camera \"perspective\"\nWorldBegin\nMakeNamedMedium \"f\" \"string type\" \"homogeneous\" "
+                             "\"rgb sigma_a\" [0 0 0] \"rgb Le\" [1 1 1]\n").what(),
+                 "bad.pbrt:3: medium \"f\" emits, but in proportion to its sigma_a (pbrt-v4's sigma_a Le), which is 0");
+}
+
 }  // namespace
 }  // namespace photon::pbrt_import_media_tests

@@ -202,28 +202,6 @@ TEST(ScatteringMedium, SingleScatteringInASlabOfVaryingDensityMatchesTheIntegral
         }
 }
 
-// A ball of `fog` bounded by an index-1 sphere in a white sky of radiance 1, seen from its
-// centre at 16 x 16 (256 passes of 1,000 photons, paths of up to 200 vertices).
-SceneDescription fogBallInAWhiteSky(IntegratorKind kind, MediumDescription fog) {
-    SceneDescription d;
-    d.camera = test::camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, 16, 16);
-    d.materials = {makeDielectric(1.0f)};
-    d.materialNames = {"boundary"};
-    d.media = {std::move(fog)};
-    d.camera.medium = 0;
-    d.shapes = {test::sphere({0, 0, 0}, 1.0f, 0)};
-    d.shapes[0].insideMedium = 0;
-    LightDescription sky;
-    sky.kind = LightDescription::Kind::Environment;
-    sky.radiance = Color(1.0f);
-    d.lights = {sky};
-    d.render.integrator = kind;
-    d.render.maxDepth = 200;
-    d.render.passes = 256;
-    d.render.photonsPerPass = 1000;
-    return d;
-}
-
 // A ball of fog that absorbs nothing (albedo 1 in every channel, extinction 1, 2 and 4 by
 // channel, g 0.5) in a white sky, seen from inside: light is neither lost nor made, so
 // every pixel sees 1 (a white furnace for the phase function's sampling, the light samples'
@@ -231,7 +209,7 @@ SceneDescription fogBallInAWhiteSky(IntegratorKind kind, MediumDescription fog) 
 TEST(ScatteringMedium, AWhiteFurnaceOfFogStaysWhite) {
     for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
         const Color seen = test::meanOver(
-            test::renderImage(fogBallInAWhiteSky(kind, {"fog", Color(0.0f), Color(1.0f, 2.0f, 4.0f), 0.5f})), 0, 0, 16, 16);
+            test::renderImage(test::ballOfMedium(kind, {"fog", Color(0.0f), Color(1.0f, 2.0f, 4.0f), 0.5f}, Color(1.0f))), 0, 0, 16, 16);
         std::printf("  %s: %.4f %.4f %.4f\n", kind == IntegratorKind::Path ? "path" : "sppm", seen.x, seen.y, seen.z);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, 0.01f) << "integrator " << int(kind) << ", channel " << c;
     }
@@ -252,7 +230,7 @@ TEST(ScatteringMedium, AWhiteFurnaceOfUnevenSmokeStaysWhite) {
     smoke.density = std::make_shared<const DensityGrid>(
         8, 8, 8, std::move(values), DensityGrid::latticeFromBox(8, 8, 8, Vec3(-1.0f), Vec3(1.0f)));
     for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
-        SceneDescription d = fogBallInAWhiteSky(kind, smoke);
+        SceneDescription d = test::ballOfMedium(kind, smoke, Color(1.0f));
         d.render.volumePhotons = VolumePhotons::Never;
         const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 16, 16);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], 1.0f, 0.01f) << "integrator " << int(kind) << ", channel " << c;

@@ -326,13 +326,13 @@ TEST(SceneLoaderErrors, Lights) {
             d.erase("lights");
             d["shapes"][5].erase("emission");
         },
-        "lights", "scene has no light (add a light or an emissive shape)");
+        "lights", "scene has no light (add a light, an emissive shape or a medium that emits)");
     expectError(
         [](Json& d) {
             d["lights"] = Json::array();
             d["shapes"][5]["emission"] = {0, 0, 0};
         },
-        "lights", "scene has no light (add a light or an emissive shape)");
+        "lights", "scene has no light (add a light, an emissive shape or a medium that emits)");
     expectError([](Json& d) { d["lights"][2]["direction"] = {0, 0, 0}; }, "lights[2].direction",
                 "must not be the zero vector");
     auto portal = [](Json corners) {

@@ -15,6 +15,7 @@
 #include "description/pixel_filter_description.h"
 #include "materials/material.h"
 #include "math/density_grid.h"
+#include "description/medium_emission.h"
 #include "math/transform.h"
 #include "texture/image_texture.h"
 #include <photon/vec.h>
@@ -92,8 +93,17 @@ struct MediumDescription {
     Color scattering{0.0f};  // sigma_s, per unit of scene length, >= 0
     float g = 0;             // the phase function's mean cosine, in (-1, 1): > 0 forward
     std::shared_ptr<const DensityGrid> density;  // none: homogeneous (a density of 1)
+    // Light it emits, sigma_a(p) Le(p) per unit length (description/medium_emission.h); none: dark.
+    std::shared_ptr<const MediumEmission> emission;
 
     Color extinction() const { return absorption + scattering; }
+    bool emits() const { return emission && !isBlack(absorption); }
+    // The grid whose samples say where it emits: the emission's own, else the density's
+    // (MediumEmission::grid); none where homogeneous (the shapes it is inside of then say).
+    std::shared_ptr<const DensityGrid> emissionRegion() const {
+        if (emission && emission->grid()) return emission->grid();
+        return density;
+    }
     // What light keeps unscattered where the density integrates to `densityLength`:
     // exp(-extinction densityLength) per channel (Beer-Lambert), 1 in a channel it does not
     // touch, so that an infinite length keeps that channel whole.

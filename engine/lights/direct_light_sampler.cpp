@@ -11,6 +11,10 @@ DirectLightSampler::DirectLightSampler(const LightSampler& byPower, LightSampler
     std::vector<double> infiniteSums;
     for (size_t i = 0; i < byPower.size(); ++i) {
         const double power = byPower.probability(i);
+        if (!byPower.light(i).sampledDirectly()) {
+            unsampled_ = true;  // never picked here (Light::sampledDirectly)
+            continue;
+        }
         if (std::optional<LightBounds> b = byPower.light(i).bounds()) {
             finiteSlot_[i] = static_cast<int32_t>(bounds.size());
             bounds.push_back(*b);
@@ -24,9 +28,17 @@ DirectLightSampler::DirectLightSampler(const LightSampler& byPower, LightSampler
     }
     for (double s : infiniteSums) infiniteCdf_.push_back(static_cast<float>(s / infinitePower));
     if (!infiniteCdf_.empty()) infiniteCdf_.back() = 1.0f;
+    infinitePower_ = infinitePower;
     finiteShare_ = infinite_.empty() ? 1.0f : static_cast<float>(finitePower / (finitePower + infinitePower));
     finite_ = LightImportances(bounds);
     if (finite_.size() > kMaxExhaustive) tree_ = LightTree(bounds);
+}
+
+float DirectLightSampler::infiniteProbability(size_t i) const {
+    // Their share, by power among themselves; the power sampler's own figure where every
+    // light is sampled (the same, to the bit, as it has always been).
+    if (!unsampled_) return byPower_->probability(i);
+    return static_cast<float>((1.0 - finiteShare_) * byPower_->probability(i) / infinitePower_);
 }
 
 float DirectLightSampler::importances(Vec3 p, Vec3 n, float* out) const {
@@ -41,7 +53,7 @@ LightSampler::Pick DirectLightSampler::pick(float u, Vec3 p, Vec3 n) const {
         size_t k = static_cast<size_t>(std::upper_bound(infiniteCdf_.begin(), infiniteCdf_.end(), v) - infiniteCdf_.begin());
         k = std::min(k, infinite_.size() - 1);
         const uint32_t i = infinite_[k];
-        return {&byPower_->light(i), byPower_->probability(i), i};
+        return {&byPower_->light(i), infiniteProbability(i), i};
     }
     const float v = std::min(u / finiteShare_, 0.99999994f);
     if (!tree_.empty()) {
@@ -68,7 +80,7 @@ LightSampler::Pick DirectLightSampler::pick(float u, Vec3 p, Vec3 n) const {
 float DirectLightSampler::probability(size_t i, Vec3 p, Vec3 n) const {
     if (!spatial()) return byPower_->probability(i);
     const int32_t slot = finiteSlot_[i];
-    if (slot < 0) return byPower_->probability(i);
+    if (slot < 0) return byPower_->light(i).sampledDirectly() ? infiniteProbability(i) : 0.0f;
     if (!tree_.empty()) return finiteShare_ * tree_.probability(static_cast<uint32_t>(slot), p, n);
     float each[kMaxExhaustive];
     const float sum = importances(p, n, each);

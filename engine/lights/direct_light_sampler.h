@@ -43,9 +43,13 @@ private:
     // With one finite light there is nothing to choose: its bound could only say when it
     // cannot reach the point, which its light sample finds out as cheaply (a zero BSDF or
     // cosine, before any shadow ray).
-    bool spatial() const { return kind_ == LightSamplerKind::Spatial && finite_.size() > 1; }
+    // Lights no sample is taken toward (an emitting medium) are left out of the choice
+    // likewise, so that "power" picks them only where nothing else is asked of it.
+    bool spatial() const { return kind_ == LightSamplerKind::Spatial && (finite_.size() > 1 || unsampled_); }
     // Each finite light's importance at p, into `out` (finite_.size() of them); their sum.
     float importances(Vec3 p, Vec3 n, float* out) const;
+    // The probability pick returns infinite light i with.
+    float infiniteProbability(size_t i) const;
 
     const LightSampler* byPower_ = nullptr;
     LightSamplerKind kind_ = LightSamplerKind::Power;
@@ -55,6 +59,8 @@ private:
     std::vector<uint32_t> infinite_;        // the infinite lights
     std::vector<float> infiniteCdf_;        // by power among themselves
     float finiteShare_ = 0;                 // the finite lights' share of the power
+    bool unsampled_ = false;                // some light is never sampled directly
+    double infinitePower_ = 0;              // the infinite lights' share of all the power
     LightTree tree_;                        // over finite_, beyond kMaxExhaustive of them
 };
 

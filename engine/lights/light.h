@@ -88,6 +88,11 @@ public:
     // Finite lights: where they are and which way they shine, for choosing among them by
     // what could reach a point (direct_light_sampler.h). None for infinite lights.
     virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
+    // False for a light no light sample is taken toward (a medium that emits, whose light
+    // a sample from inside it would weigh by an unbounded 1 / r^2): paths count its light in
+    // full wherever they cross it, and its photons arrive from their first hit on
+    // (PhotonPathSettings::unsampledLightsArriveFirst).
+    virtual bool sampledDirectly() const { return true; }
 };
 
 }  // namespace photon

@@ -1,5 +1,6 @@
 // Constructors for each kind of light, one file each under lights/.
 #pragma once
+#include <functional>
 #include <memory>
 #include "description/scene_description.h"
 #include "lights/light.h"
@@ -26,6 +27,11 @@ std::unique_ptr<Light> makePortalEnvironmentLight(const LightDescription& d, Sce
 // light. `kind`: how a mesh's light samples pick among its triangles (render.light_sampler).
 std::unique_ptr<Light> makeMeshAreaLight(const ShapeDescription& shape, LightSamplerKind kind);
 std::unique_ptr<Light> makeSphereAreaLight(const ShapeDescription& shape);
+// A medium that emits (MediumDescription::emits), whose photons leave from the cells of
+// `region` (medium_light.cpp) where `contains` says a point is in the medium. The medium
+// must outlive the light.
+std::unique_ptr<Light> makeMediumLight(const MediumDescription& medium, std::shared_ptr<const DensityGrid> region,
+                                       std::function<bool(Vec3)> contains);
 // The area light of an emitter no ray meets (ShapeDescription::invisible): `light` with its
 // samples weighted in full (invisible_area_light.cpp).
 std::unique_ptr<Light> makeInvisibleAreaLight(std::unique_ptr<Light> light);

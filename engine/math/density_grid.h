@@ -51,6 +51,14 @@ public:
     };
     Reach reach(Vec3 o, Vec3 d, float length, double depth) const;
 
+    // The sample at lattice point (i, j, k), 0 outside [0, n).
+    float sample(int i, int j, int k) const {
+        float c[8];
+        corners(i, j, k, c);
+        return c[0];
+    }
+    const Transform& latticeFromWorld() const { return latticeFromWorld_; }
+
     int nx() const { return n_[0]; }
     int ny() const { return n_[1]; }
     int nz() const { return n_[2]; }

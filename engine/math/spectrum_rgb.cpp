@@ -67,14 +67,23 @@ std::vector<Color> spectrumWeights(const std::vector<double>& wavelengths) {
     return weights;
 }
 
-Color blackbodyColor(double kelvin) {
-    // Planck's law; the constant factors go with the normalisation.
+namespace {
+// Planck's law at `kelvin` over the spectrum's value at its peak (Wien's displacement law,
+// lambda_max = 2.8977721e-3 m K / T): pbrt-v4's BlackbodySpectrum.
+double planckOverPeak(double nm, double kelvin) {
     const double c = 299792458.0, h = 6.62606957e-34, kb = 1.3806488e-23;
-    Color rgb = balanced([&](double nm) {
-        const double l = nm * 1e-9;
-        return (2 * h * c * c) / (std::pow(l, 5) * (std::exp((h * c) / (l * kb * kelvin)) - 1)) * 1e-13;
-    });
+    auto planck = [&](double l) { return 1 / (std::pow(l, 5) * (std::exp((h * c) / (l * kb * kelvin)) - 1)); };
+    return planck(nm * 1e-9) / planck(2.8977721e-3 / kelvin);
+}
+}  // namespace
+
+Color blackbodyColor(double kelvin) {
+    const Color rgb = blackbodyPeakColor(kelvin);
     return rgb / luminance(rgb);
+}
+
+Color blackbodyPeakColor(double kelvin) {
+    return balanced([&](double nm) { return planckOverPeak(nm, kelvin); });
 }
 
 }  // namespace photon

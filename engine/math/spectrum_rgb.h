@@ -19,5 +19,8 @@ std::vector<Color> spectrumWeights(const std::vector<double>& wavelengths);
 
 // Planck's law at `kelvin`, projected as above and scaled to unit luminance.
 Color blackbodyColor(double kelvin);
+// Planck's law at `kelvin` over its value at the peak wavelength, projected as above: pbrt-v4's
+// BlackbodySpectrum, which its media emit by temperature, unscaled.
+Color blackbodyPeakColor(double kelvin);
 
 }  // namespace photon

@@ -1,5 +1,5 @@
-// "media": named media that absorb and scatter, homogeneous or of a density sampled on a
-// grid, and a shape's "medium": the media on its two sides (docs/scene-format.md#media).
+// "media": named media that absorb, scatter and emit, homogeneous or of a density sampled
+// on a grid, and a shape's "medium": the media on its two sides (docs/scene-format.md#media).
 #include <array>
 #include <cmath>
 #include <limits>
@@ -101,6 +101,24 @@ std::shared_ptr<const DensityGrid> readDensityGrid(const JsonValue& value, const
                                                DensityGrid::latticeFromBox(size[0], size[1], size[2], p0, p1) *
                                                    worldFromMedium.inverse());
 }
+// "emission": {"radiance": [r, g, b], "scale": s, "grid": G, "temperature": G,
+// "temperature_offset": t0, "temperature_scale": k}: Le(p) = radiance * scale, times the
+// grid G's value at p, times pbrt-v4's blackbody at (T(p) - t0) k kelvin where a temperature
+// grid is given (description/medium_emission.h); the medium emits sigma_a(p) Le(p).
+std::shared_ptr<const MediumEmission> readEmission(const JsonValue& value, const LoadContext& ctx) {
+    JsonObject obj = value.object();
+    MediumEmission e;
+    if (auto radiance = obj.optional("radiance")) e.radiance = radiance->vec3(Range::nonNegative());
+    e.radiance *= obj.number("scale", 1.0f, Range::nonNegative());
+    if (auto grid = obj.optional("grid")) e.scale = readDensityGrid(*grid, ctx);
+    if (auto temperature = obj.optional("temperature")) e.temperature = readDensityGrid(*temperature, ctx);
+    for (const char* key : {"temperature_offset", "temperature_scale"})
+        if (!e.temperature && obj.has(key)) obj.required(key).fail("applies only with a \"temperature\" grid");
+    e.temperatureOffset = obj.number("temperature_offset", 0.0f);
+    e.temperatureScale = obj.number("temperature_scale", 1.0f, Range::positive());
+    obj.finish();
+    return std::make_shared<const MediumEmission>(std::move(e));
+}
 }  // namespace
 
 void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
@@ -121,6 +139,11 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
         m.scattering = coefficient("scattering");
         if (auto g = obj.optional("g")) m.g = g->number(Range::open(-1.0f, 1.0f));
         if (auto density = obj.optional("density")) m.density = readDensityGrid(*density, ctx);
+        if (auto emission = obj.optional("emission")) {
+            m.emission = readEmission(*emission, ctx);
+            if (isBlack(m.absorption))
+                emission->fail("a medium emits in proportion to its \"absorption\" (sigma_a Le), which is 0");
+        }
         obj.finish();
         ctx.mediumIndex[name] = int32_t(scene.media.size());
         scene.media.push_back(std::move(m));

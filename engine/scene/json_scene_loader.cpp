@@ -71,6 +71,28 @@ bool emits(const LightDescription& l) {
     return false;
 }
 
+// A homogeneous medium that emits sends its photons from the box around the shapes it is
+// inside of (Scene::boxAroundShapesHolding): one that fills the space around the shapes (the
+// camera's, their outside, a light's) has no such box. One that nothing names is left dark.
+void checkEmittingMediaHaveAPlace(const SceneDescription& scene) {
+    for (size_t i = 0; i < scene.media.size(); ++i) {
+        const MediumDescription& m = scene.media[i];
+        if (!m.emits() || m.emissionRegion()) continue;
+        const int32_t index = int32_t(i);
+        bool inside = false, around = scene.camera.medium == index;
+        for (const ShapeDescription& s : scene.shapes) {
+            if (!s.boundsMedium()) continue;
+            inside = inside || s.insideMedium == index;
+            around = around || s.outsideMedium == index;
+        }
+        for (const LightDescription& l : scene.lights) around = around || (l.medium == index && !inside);
+        if (around && !inside)
+            throw SceneError("media." + m.name + ".emission",
+                             "a homogeneous medium that emits must lie inside shapes that bound it (its light leaves "
+                             "from their box), or have a \"density\" or emission \"grid\" to say where it is");
+    }
+}
+
 // Without any light the render is black by construction: almost certainly a mistake,
 // and photon tracing would have no power to distribute.
 void checkHasLight(const SceneDescription& scene) {
@@ -81,7 +103,9 @@ void checkHasLight(const SceneDescription& scene) {
     for (const InstanceDescription& instance : scene.instances)
         for (const ShapeDescription& s : scene.objects[instance.object].shapes)
             if (!isBlack(s.emission)) return;
-    throw SceneError("lights", "scene has no light (add a light or an emissive shape)");
+    for (const MediumDescription& m : scene.media)
+        if (m.emits()) return;
+    throw SceneError("lights", "scene has no light (add a light, an emissive shape or a medium that emits)");
 }
 
 }  // namespace
@@ -132,6 +156,7 @@ SceneDescription loadSceneDocument(Json& doc, const fs::path& baseDir,
         for (const ObjectDescription& o : scene.objects) refuseCurves(o.shapes);
     }
     top.finish();
+    checkEmittingMediaHaveAPlace(scene);
     checkHasLight(scene);
     scene.files.assign(ctx.files.begin(), ctx.files.end());
     return scene;

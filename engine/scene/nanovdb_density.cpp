@@ -36,18 +36,27 @@ private:
     const nanovdb::FloatGrid& grid_;
     nanovdb::Coord min_;
 };
+
+// The file's grids, from their headers.
+std::vector<nanovdb::io::GridMetaData> gridsOf(const std::filesystem::path& file) {
+    try {
+        return nanovdb::io::readGridMetaData(file.string());
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("cannot read it as NanoVDB: ") + e.what());
+    }
+}
 }  // namespace
+
+bool nanoVdbHasGrid(const std::filesystem::path& file, const std::string& gridName) {
+    const std::vector<nanovdb::io::GridMetaData> grids = gridsOf(file);
+    return std::any_of(grids.begin(), grids.end(), [&](const auto& g) { return g.gridName == gridName; });
+}
 
 std::shared_ptr<const DensityGrid> readNanoVdbDensity(const std::filesystem::path& file, const std::string& gridName,
                                                       const Transform& worldFromGrid) {
     // The grid's size from its header, checked before anything is allocated: a scene sent to
     // the server must not make it hold more than its file could plausibly inflate to.
-    std::vector<nanovdb::io::GridMetaData> grids;
-    try {
-        grids = nanovdb::io::readGridMetaData(file.string());
-    } catch (const std::exception& e) {
-        throw std::runtime_error(std::string("cannot read it as NanoVDB: ") + e.what());
-    }
+    const std::vector<nanovdb::io::GridMetaData> grids = gridsOf(file);
     const auto meta = std::find_if(grids.begin(), grids.end(), [&](const auto& g) { return g.gridName == gridName; });
     if (meta == grids.end()) throw std::runtime_error("holds no grid named \"" + gridName + "\"");
     if (meta->gridType != nanovdb::GridType::Float) throw std::runtime_error("its grid \"" + gridName + "\" does not hold floats");

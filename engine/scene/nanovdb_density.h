@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 #include "math/density_grid.h"
 
 namespace photon {
@@ -16,5 +17,8 @@ namespace photon {
 // this build cannot read, a damaged file).
 std::shared_ptr<const DensityGrid> readNanoVdbDensity(const std::filesystem::path& file, const std::string& gridName,
                                                       const Transform& worldFromGrid);
+// Whether the file holds a grid of that name (a "temperature" grid makes pbrt-v4's nanovdb
+// medium emit); throws std::runtime_error where it cannot be read as NanoVDB.
+bool nanoVdbHasGrid(const std::filesystem::path& file, const std::string& gridName);
 
 }  // namespace photon

@@ -148,18 +148,41 @@ void Scene::buildLights() {
                 break;
         }
     }
+    // Media that emit send their photons into themselves, from the points of their grid
+    // that lie in them.
+    for (size_t i = 0; i < description_.media.size(); ++i) {
+        const MediumDescription& medium = description_.media[i];
+        if (!medium.emits()) continue;
+        const int32_t m = int32_t(i);
+        std::shared_ptr<const DensityGrid> region = medium.emissionRegion();
+        if (!region) region = boxAroundShapesHolding(m);
+        if (!region) continue;  // a homogeneous medium no shape holds: nowhere in the scene
+        lightMedium_.push_back(m);
+        ownedLights_.push_back(makeMediumLight(medium, std::move(region), [this, m](Vec3 p) { return inMedium(p, m); }));
+    }
     std::vector<const Light*> lights;
     for (const auto& l : ownedLights_) lights.push_back(l.get());
     lightSampler_ = LightSampler(std::move(lights));
     directLightSampler_ = DirectLightSampler(lightSampler_, description_.render.lightSampler);
     for (size_t i = 0; i < lightSampler_.size(); ++i)
         for (EnvironmentLight& e : environmentLights_)
-            if (&lightSampler_.light(i) == e.light) e.pickProbability = lightSampler_.probability(i);
+            if (&lightSampler_.light(i) == e.light) e.pickProbability = directLightSampler_.probability(i, Vec3(0.0f), Vec3(0.0f));
 
 }
 
 void Scene::prepareHitData() {
-    for (const MediumDescription& m : description_.media) scatteringMedia_ = scatteringMedia_ || m.scatters();
+    for (const MediumDescription& m : description_.media) {
+        scatteringMedia_ = scatteringMedia_ || m.scatters();
+        emittingMedia_ = emittingMedia_ || m.emits();
+    }
+    mediumBounded_.assign(description_.media.size(), 0);
+    mediumOutside_.assign(description_.media.size(), 0);
+    for (const ShapeDescription* shape : slots_) {
+        if (!shape->boundsMedium()) continue;
+        for (int32_t m : {shape->insideMedium, shape->outsideMedium})
+            if (m >= 0) mediumBounded_[size_t(m)] = 1;
+        if (shape->outsideMedium >= 0) mediumOutside_[size_t(shape->outsideMedium)] = 1;
+    }
     for (const ShapeDescription* shape : slots_) {
         materialOf_.push_back(shape->material);
         const std::optional<Material::SmoothSpecular> smooth = materials_[shape->material]->smoothSpecular();
@@ -321,8 +344,44 @@ void Scene::fillSphereHit(const ShapeDescription& shape, SurfaceHit& hit) const 
 
 bool Scene::occluded(const Ray& ray) const { return occludedIn(rtcScene_, ray); }
 
+std::shared_ptr<const DensityGrid> Scene::boxAroundShapesHolding(int32_t medium) const {
+    Vec3 lo(std::numeric_limits<float>::infinity()), hi = -lo;
+    for (const ShapeDescription& s : shapes_) {
+        if (!s.boundsMedium() || s.insideMedium != medium) continue;
+        if (s.kind == ShapeDescription::Kind::Sphere) {
+            lo = vmin(lo, s.center - Vec3(s.radius)), hi = vmax(hi, s.center + Vec3(s.radius));
+        } else {
+            for (Vec3 p : s.mesh.positions) lo = vmin(lo, p), hi = vmax(hi, p);
+        }
+    }
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) return nullptr;
+    // A homogeneous medium's cells, all alike: 16^3 over the box (a margin keeps its faces
+    // inside the grid's).
+    const Vec3 margin = (hi - lo) * (1.0f / 64);
+    constexpr int kCells = 16;
+    return std::make_shared<const DensityGrid>(kCells, kCells, kCells, std::vector<float>(kCells * kCells * kCells, 1.0f),
+                                               DensityGrid::latticeFromBox(kCells, kCells, kCells, lo - margin, hi + margin));
+}
+
+bool Scene::inMedium(Vec3 p, int32_t medium) const {
+    if (!mediumBounded_[size_t(medium)]) return true;
+    // A direction along no axis, so that a ray from a grid's lattice rarely grazes a box's
+    // edge; a ray caught between more surfaces than this gives up as one that met none.
+    constexpr int kMaxCrossings = 64;
+    Ray ray{p, normalize(Vec3{0.5377f, 0.6261f, 0.5647f})};
+    for (int crossing = 0; crossing < kMaxCrossings; ++crossing) {
+        SurfaceHit hit;
+        if (!intersect(ray, hit)) break;
+        const ShapeDescription& s = shape(hit.shape);
+        // Leaving through the side the normal faces: p is inside (mediumToward's sides).
+        if (s.boundsMedium()) return (dot(ray.d, hit.ng) > 0 ? s.insideMedium : s.outsideMedium) == medium;
+        ray = spawnRay(hit.p, hit.ng, ray.d);
+    }
+    return mediumOutside_[size_t(medium)] != 0;
+}
+
 bool Scene::mayFindLight(const Ray& ray) const {
-    return !environmentLights_.empty() || (emitterScene_ && occludedIn(emitterScene_, ray));
+    return !environmentLights_.empty() || emittingMedia_ || (emitterScene_ && occludedIn(emitterScene_, ray));
 }
 
 bool Scene::occludedIn(RTCScene scene, const Ray& ray) {

@@ -122,9 +122,9 @@ public:
     bool prefetchesHits() const { return prefetchesHits_; }
     // True if anything blocks the ray within (0, tMax).
     bool occluded(const Ray& ray) const;
-    // False where the ray cannot find light however it ends: no environment light shines
-    // and no emitting shape lies anywhere along it within (0, tMax), whatever stands in
-    // front. It asks Embree about the emitters alone, a handful of primitives in most
+    // False where the ray cannot find light however it ends: no environment light shines,
+    // no medium emits and no emitting shape lies anywhere along it within (0, tMax),
+    // whatever stands in front. It asks Embree about the emitters alone, a handful of primitives in most
     // scenes, so that a look-up of the light along a direction costs a whole ray only where
     // it may find some.
     bool mayFindLight(const Ray& ray) const;
@@ -140,6 +140,20 @@ public:
     // medium it is in (-1: none), changed where it crosses a shape that bounds one.
     bool hasMedia() const { return !description_.media.empty(); }
     bool hasScatteringMedia() const { return scatteringMedia_; }
+    // Whether any medium emits light (MediumDescription::emits): camera paths then carry a
+    // sampler through every medium, for the emission along their segments.
+    bool hasEmittingMedia() const { return emittingMedia_; }
+    // Whether point p lies in `medium`: the side facing p of the first shape bounding a
+    // medium that a ray from p meets (other surfaces crossed), or with none, whether the
+    // medium is on the outside of a shape that bounds it (and so around them all); true for
+    // a medium no shape bounds, which fills the scene. (Not the camera's medium as such:
+    // the camera may sit inside a shape.) What a light inside a grid larger than its
+    // medium's shapes asks before it emits there.
+    bool inMedium(Vec3 p, int32_t medium) const;
+    // A grid of cells over the shapes that have `medium` inside: where a homogeneous medium
+    // that emits sends its photons from (none where no shape has it inside; the scene loader
+    // refuses such a medium where anything else names it).
+    std::shared_ptr<const DensityGrid> boxAroundShapesHolding(int32_t medium) const;
     const MediumDescription& medium(int32_t index) const { return description_.media[size_t(index)]; }
     // True if paths in `medium` (-1: none) may scatter in it (medium_scattering.h).
     bool scatters(int32_t medium) const { return medium >= 0 && scatteringMedia_ && this->medium(medium).scatters(); }
@@ -178,7 +192,7 @@ public:
     // Radiance arriving along a ray that leaves the scene: the environment lights' sum.
     Color environment(const Ray& ray) const;
     // The environment lights (several when each comes in through its own portal: one per
-    // window) and the probability with which lights().pick() returns each: what a
+    // window) and the probability with which directLights() picks each: what a
     // BSDF-sampled ray that leaves the scene needs to weigh itself against light sampling.
     struct EnvironmentLight {
         const Light* light;
@@ -309,6 +323,9 @@ private:
     std::vector<int32_t> lightOfShape_;           // by shape: its area light's index in lightSampler_, or -1
     std::vector<uint8_t> passThrough_;            // by shape: see passesThrough()
     bool scatteringMedia_ = false;                // any medium scatters
+    bool emittingMedia_ = false;                  // any medium emits
+    std::vector<uint8_t> mediumBounded_;          // by medium: some shape bounds it
+    std::vector<uint8_t> mediumOutside_;          // by medium: it is where no shape's inside is
     std::vector<int32_t> lightMedium_;            // by light, in lightSampler_'s order
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).

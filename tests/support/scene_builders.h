@@ -38,6 +38,11 @@ SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind = Light
 // Camera at the centre of a closed sphere of radius 1, albedo rho, emitting Le inward.
 SceneDescription furnace(float rho, float emission, int resolution);
 
+// A ball of radius 1 of `medium` about the origin, bounded by an index-1 sphere, in a sky
+// of radiance `sky` (none where black), seen from its centre, the camera in the medium, at
+// 16 x 16: 256 passes of 1,000 photons, paths of up to 200 vertices.
+SceneDescription ballOfMedium(IntegratorKind kind, MediumDescription medium, Color sky);
+
 // A closed 2 m room of grey walls (albedo 0.6), 1 m high, under `lights` (an environment
 // light's come in through the holes of `ceiling`), seen from one corner at 24 x 24: for
 // the environment light's sampling (portals, the environment guide).

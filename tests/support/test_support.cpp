@@ -339,6 +339,28 @@ SceneDescription furnace(float rho, float emission, int resolution) {
     return d;
 }
 
+SceneDescription ballOfMedium(IntegratorKind kind, MediumDescription medium, Color sky) {
+    SceneDescription d;
+    d.camera = camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, 16, 16);
+    d.materials = {makeDielectric(1.0f)};
+    d.materialNames = {"boundary"};
+    d.media = {std::move(medium)};
+    d.camera.medium = 0;
+    d.shapes = {sphere({0, 0, 0}, 1.0f, 0)};
+    d.shapes[0].insideMedium = 0;
+    if (!isBlack(sky)) {
+        LightDescription environment;
+        environment.kind = LightDescription::Kind::Environment;
+        environment.radiance = sky;
+        d.lights = {environment};
+    }
+    d.render.integrator = kind;
+    d.render.maxDepth = 200;
+    d.render.passes = 256;
+    d.render.photonsPerPass = 1000;
+    return d;
+}
+
 std::string gzipped(std::string_view bytes) {
     z_stream zs{};
     if (deflateInit2(&zs, Z_BEST_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)

@@ -125,11 +125,16 @@ private:
     // is warned with what is done `instead` and the directive's parameters count as read.
     void unsupported(const Directive& d, const std::string& message, const std::string& instead = "left out");
     Json matrixJson(const Transform& t) const;
-    // A "uniformgrid" medium's density grid (pbrt_media.cpp), `what` naming the medium.
-    Json densityGrid(const Directive& d, const Params& p, const std::string& what);
-    // A "nanovdb" medium's: its file's "density" grid.
-    Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what);
+    // A "uniformgrid" medium's grid of the array `key` (pbrt_media.cpp), `what` naming the
+    // medium; and of given values over its box.
+    Json sampledGrid(const Directive& d, const Params& p, const std::string& what, const char* key);
+    Json boxGrid(const Directive& d, const Params& p, const std::string& what, std::array<int, 3> n, Json values);
+    // A "nanovdb" medium's: its file's grid `name`.
+    Json nanoVdbGrid(const Directive& d, const Params& p, const std::string& what, const char* name);
     Json cloudGrid(const Directive& d, const Params& p, const std::string& what);
+    // The medium's "emission", if it emits.
+    std::optional<Json> mediumEmission(const Directive& d, const Params& p, const std::string& type,
+                                       const std::string& what);
     Json goniometricLight(const Directive& d, const Params& p, Color intensity);
     Json projectionLight(const Directive& d, const Params& p, float scale);
     std::pair<std::string, std::shared_ptr<const ImageTexture>> lightImage(const Directive& d, const Params& p,

@@ -38,6 +38,7 @@ struct PhotonLanes {
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
     alignas(32) uint32_t cell[kWalkLanes];         // EmittedPhoton::cell
     alignas(32) int32_t medium[kWalkLanes];        // the medium it is in (-1: none)
+    alignas(32) int32_t firstArrival[kWalkLanes];  // the depth it arrives from (firstArrivalDepth)
     // Its flights in media that scatter (ChromaticFlight, free_flight.h): the hero channel,
     // and each channel's density over the hero's.
     alignas(32) int32_t hero[kWalkLanes];
@@ -268,6 +269,10 @@ private:
                 L.onlySpecular[i] = -1;
                 L.cell[i] = emitted_.cell[k];
                 L.medium[i] = scene_.hasMedia() ? scene_.lightMedium(size_t(emitted_.light[k])) : -1;
+                L.firstArrival[i] = settings_.unsampledLightsArriveFirst &&
+                                            !scene_.lights().light(size_t(emitted_.light[k])).sampledDirectly()
+                                        ? 0
+                                        : settings_.firstArrivalDepth;
                 L.hero[i] = -1;
                 L.ratioR[i] = L.ratioG[i] = L.ratioB[i] = 1.0f;
                 L.alive[i] = -1;
@@ -324,7 +329,7 @@ private:
         }
         if (shape.bounce == Bounce::Lambertian) {
             turnTowardViewer(hit, wi);  // the material is two-sided
-            if (depth >= settings_.firstArrivalDepth)
+            if (depth >= L.firstArrival[i])
                 sink_.arrive({hit.p, hit.ns, wi, L.beta(i), depth, L.onlySpecular[i] != 0, L.cell[i]});
             if (last) return 0;
             keepHit(i, hit, shape);
@@ -341,7 +346,7 @@ private:
         }
         ShadingPoint sp = makeShadingPoint(scene_, hit, wi);
         // No visible point is ever on a fibre (Material::alignsToTangent): none gathers there.
-        if (!sp.material->isDeltaOnly() && !sp.material->alignsToTangent() && depth >= settings_.firstArrivalDepth) {
+        if (!sp.material->isDeltaOnly() && !sp.material->alignsToTangent() && depth >= L.firstArrival[i]) {
             // Photons measure flux through the geometric surface, |wi.ng|; a bent shading
             // normal reflects in proportion to |wi.ns| instead (what the camera side's light
             // samples weigh by), so the arrival carries their ratio (Veach 1997, sec. 5.3).
@@ -374,7 +379,7 @@ private:
             return false;
         }
         ++counters_.segments;
-        if (settings_.arrivesInMedia && L.depth[i] >= settings_.firstArrivalDepth)
+        if (settings_.arrivesInMedia && L.depth[i] >= L.firstArrival[i])
             sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i]});
         if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;
         std::optional<Color> next = photonAfterRoulette(L.beta(i), weight, rng);

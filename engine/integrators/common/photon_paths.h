@@ -44,6 +44,10 @@ struct PhotonPathSettings {
     // Arrivals at smaller depths are not handed to the sink (1: no photons straight from
     // the lights, where direct light is found another way).
     int firstArrivalDepth = 0;
+    // Photons of lights no light sample is taken toward (Light::sampledDirectly: a medium
+    // that emits) arrive from their first hit whatever firstArrivalDepth: they bring that
+    // light's direct part, which nothing else does.
+    bool unsampledLightsArriveFirst = false;
     // Arrivals also where photons scatter in media (a volumetric photon map's photons); else
     // only on surfaces.
     bool arrivesInMedia = false;

@@ -1,9 +1,11 @@
 // What integrators need at a surface hit: the material, its local frame and its colour.
 #pragma once
+#include <bit>
 #include <limits>
 #include "math/frame.h"
 #include "math/path_sampler.h"
 #include "math/sampling.h"
+#include "media/emission_along.h"
 #include "media/free_flight.h"
 #include "media/henyey_greenstein.h"
 #include "scene/scene.h"
@@ -71,6 +73,16 @@ struct PathInMedia {
     float boundaryDistance = std::numeric_limits<float>::infinity();
 };
 
+// A number in [0, 1) drawn from the ray itself, for the emission estimate of a path that
+// carries no sampler: rays of camera paths differ from sample to sample, so their hashes are
+// as good as fresh numbers, and the same ray always draws the same.
+inline float numberOfRay(const Ray& ray) {
+    uint64_t h = 0;
+    for (float f : {ray.o.x, ray.o.y, ray.o.z, ray.d.x, ray.d.y, ray.d.z})
+        h = mix64<uint64_t>(h ^ std::bit_cast<uint32_t>(f));
+    return static_cast<float>(h >> 40) * 0x1p-24f;
+}
+
 // Casts the ray from inside `medium` to the first surface that is more than a boundary
 // between media (Scene::passesThrough), straight through those, as pbrt-v4's integrators
 // skip its "interface" surfaces: no path vertex there. beta takes on each medium's
@@ -79,9 +91,12 @@ struct PathInMedia {
 // that scatters may scatter first (sampleFreeFlight): hit then holds only the point (p) and
 // the distance (t). Without, the ray keeps only what crosses every medium unscattered (the
 // light it finds is the unscattered part, the expected value of what a sampled flight
-// would bring).
+// would bring). Light the media emit along each segment, to its end at the next surface
+// whether or not the path scatters before (sampleEmissionAlong; its number is the flight's,
+// each estimate unbiased on its own), is added to `emitted` with weight beta: in full,
+// since no light sample is ever taken toward a medium (Light::sampledDirectly).
 inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32_t& medium, SurfaceHit& hit,
-                                 PathInMedia* media = nullptr) {
+                                 PathInMedia* media = nullptr, Color* emitted = nullptr) {
     // A ray caught between more boundaries than this stops at the last as at a surface (a
     // dielectric of index 1, which sends it on unbent).
     constexpr int kMaxCrossings = 64;
@@ -89,9 +104,12 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
     for (int crossing = 0;; ++crossing) {
         const bool found = scene.intersect(ray, hit);
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
-        if (media && scene.scatters(medium)) {
-            const float t =
-                sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, media->sampler.get1D(), beta, media->flight);
+        const bool emits = emitted && medium >= 0 && scene.medium(medium).emits();
+        const bool flies = media && scene.scatters(medium);
+        const float u = flies || (emits && media) ? media->sampler.get1D() : emits ? numberOfRay(ray) : 0.0f;
+        if (emits) *emitted += beta * sampleEmissionAlong(scene.medium(medium), ray.o, ray.d, segment, u);
+        if (flies) {
+            const float t = sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, u, beta, media->flight);
             if (t < segment) {
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;
@@ -124,7 +142,7 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
 // below.
 inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium, bool countEmitted,
                            SurfaceHit& hit, Color& L) {
-    if (castPastBoundaries(scene, ray, beta, medium, hit) == RayEnd::Left) {
+    if (castPastBoundaries(scene, ray, beta, medium, hit, nullptr, countEmitted ? &L : nullptr) == RayEnd::Left) {
         if (countEmitted) L += beta * scene.environment(ray);
         return false;
     }
@@ -203,7 +221,7 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
 // way (castPastBoundaries), where it finds no light.
 inline RayEnd traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int32_t& medium,
                              const BounceSampling& bounce, SurfaceHit& hit, Color& L, PathInMedia* media) {
-    const RayEnd end = castPastBoundaries(scene, ray, beta, medium, hit, media);
+    const RayEnd end = castPastBoundaries(scene, ray, beta, medium, hit, media, &L);
     if (end == RayEnd::Left) {
         L += beta * environmentAfterBounce(scene, bounce, ray);
     } else if (end == RayEnd::Surface && bounce.delta) {

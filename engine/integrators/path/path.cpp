@@ -27,10 +27,10 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     BounceSampling bounce;
     const BsdfContinuation next{kAllLobes, 1.0f};
     int32_t medium = scene.description().camera.medium;
-    // Paths scatter in media that scatter (one number a segment in them); elsewhere they
-    // draw what they always did.
+    // Paths scatter in media that scatter and estimate the light of media that emit (one
+    // number a segment in them); elsewhere they draw what they always did.
     PathInMedia inMedia{sampler, {}};
-    PathInMedia* media = scene.hasScatteringMedia() ? &inMedia : nullptr;
+    PathInMedia* media = scene.hasScatteringMedia() || scene.hasEmittingMedia() ? &inMedia : nullptr;
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, L, media);

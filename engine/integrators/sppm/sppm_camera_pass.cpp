@@ -123,10 +123,10 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     // render.lobe_choice: the first choice between a diffuse base and other lobes (lobe_choice.h).
     int rays = 0;  // a light sample's shadow ray counted as one whether or not it is cast
     int32_t medium = scene.description().camera.medium;
-    // Paths scatter in media that scatter (one number a segment in them); elsewhere they
-    // draw what they always did.
+    // Paths scatter in media that scatter and estimate the light of media that emit (one
+    // number a segment in them); elsewhere they draw what they always did.
     PathInMedia inMedia{sampler, {}};
-    PathInMedia* media = scene.hasScatteringMedia() ? &inMedia : nullptr;
+    PathInMedia* media = scene.hasScatteringMedia() || scene.hasEmittingMedia() ? &inMedia : nullptr;
     // Whether the light the next ray lands on was counted already, by the look-up along the
     // same direction at the vertex it leaves.
     bool lightCounted = false;

@@ -36,9 +36,13 @@ void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
             PhotonPathSettings paths{settings_.seed, static_cast<uint64_t>(passIndex_), settings_.maxDepth};
             // Direct light may come from light sampling in the camera pass instead.
             paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
+            // But no light sample finds a medium's light: its photons bring its direct part.
+            paths.unsampledLightsArriveFirst = true;
             // Lightweight photon mapping's photons carry caustics only: they arrive after
-            // one or more delta bounces and end at their first non-delta surface.
-            if (settings_.lightweight) paths.specularOnly = true, paths.firstArrivalDepth = 1;
+            // one or more delta bounces and end at their first non-delta surface; the
+            // camera paths trace a medium's direct light as they trace all the rest.
+            if (settings_.lightweight)
+                paths.specularOnly = true, paths.firstArrivalDepth = 1, paths.unsampledLightsArriveFirst = false;
             paths.arrivesInMedia = gathersInMedia();
             PhotonPathCounters pathCounters;
             if (teaching) {
