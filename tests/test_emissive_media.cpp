@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include "import/scene_import.h"
 #include "scene/scene_loader.h"
+#include "lights/light_factories.h"
 #include "math/spectrum_rgb.h"
 #include "media/emission_along.h"
 #include "math/rng.h"
@@ -18,6 +19,8 @@
 
 namespace photon {
 namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
 
 // A density of 1 throughout the ball of radius 1 about the origin: 4 x 4 x 4 samples of 1
 // over [-1.5, 1.5]^3, whose interpolation is 1 within the box of their centres,
@@ -69,6 +72,51 @@ TEST(EmissionAlong, EstimatesTheIntegralAlongASegment) {
             const double expected = absorption[c] * radiance[c] * (1 - std::exp(-sigmaT[c] * length)) / sigmaT[c];
             EXPECT_NEAR(sum[c] / kSamples, expected, 1e-3 * expected) << "grid " << grid << ", channel " << c;
         }
+    }
+}
+
+// The medium as a light: the mean flux of its photons is the power it emits, 4 pi times
+// the integral of sigma_a rho Le over the grid's box, however its cells are drawn. Here the
+// density is 8 x 6 x 5 random samples (one row of them all zero) and Le is times a scale
+// grid of 3 x 3 x 3 random samples over part of the box, the grid the photons leave from:
+// its cells' weights at their centres miss some of the light. The integral by the midpoint
+// rule on 160^3 points.
+TEST(EmissiveMedium, ItsPhotonsCarryThePowerItEmits) {
+    Rng rng(3, 0, 1, StreamPurpose::Camera);
+    std::vector<float> values, scales;
+    for (int k = 0; k < 5; ++k)
+        for (int j = 0; j < 6; ++j)
+            for (int i = 0; i < 8; ++i) values.push_back(j == 2 ? 0.0f : 3.0f * rng.uniform() * rng.uniform());
+    for (int n = 0; n < 27; ++n) scales.push_back(rng.uniform() < 0.3f ? 0.0f : rng.uniform());
+    const Vec3 lo{-1, 0, 2}, hi{3, 1.5f, 4}, scaleLo{-0.5f, 0.2f, 2.5f};
+    MediumDescription m{"glow", Color(0.5f, 1.0f, 2.0f), Color(0.0f), 0.0f};
+    m.density = std::make_shared<const DensityGrid>(8, 6, 5, values, DensityGrid::latticeFromBox(8, 6, 5, lo, hi));
+    auto e = std::make_shared<MediumEmission>();
+    e->radiance = Color(1.0f, 0.5f, 0.25f);
+    e->scale = std::make_shared<const DensityGrid>(3, 3, 3, scales, DensityGrid::latticeFromBox(3, 3, 3, scaleLo, hi));
+    m.emission = e;
+    double integral = 0;
+    constexpr int kSteps = 160;
+    const Vec3 step = (hi - scaleLo) / float(kSteps);
+    for (int a = 0; a < kSteps; ++a)
+        for (int b = 0; b < kSteps; ++b)
+            for (int c = 0; c < kSteps; ++c) {
+                const Vec3 p = scaleLo + Vec3{(a + 0.5f) * step.x, (b + 0.5f) * step.y, (c + 0.5f) * step.z};
+                integral += double(m.density->at(p)) * e->scale->at(p);
+            }
+    integral *= double(step.x) * step.y * step.z;
+    const std::unique_ptr<Light> light = makeMediumLight(m, m.emissionRegion(), [](Vec3) { return true; });
+    Color sum(0.0f);
+    constexpr int kPhotons = 400000;
+    for (int n = 0; n < kPhotons; ++n) {
+        const std::optional<PhotonEmission> p = light->emitPhoton({rng.uniform(), rng.uniform()}, {rng.uniform(), rng.uniform()});
+        if (!p) continue;
+        ASSERT_TRUE(p->origin.x >= scaleLo.x && p->origin.x <= hi.x && p->origin.z >= scaleLo.z && p->origin.z <= hi.z);
+        sum += p->flux;
+    }
+    for (int c = 0; c < 3; ++c) {
+        const double expected = 4 * kPiD * m.absorption[c] * e->radiance[c] * integral;
+        EXPECT_NEAR(sum[c] / kPhotons, expected, 0.01 * expected) << "channel " << c;
     }
 }
 

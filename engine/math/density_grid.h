@@ -9,6 +9,7 @@
 // given depth. Free-flight sampling then needs one number a flight, as in a homogeneous
 // medium, with no null collisions and no noise from estimated transmittance.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -51,11 +52,12 @@ public:
     };
     Reach reach(Vec3 o, Vec3 d, float length, double depth) const;
 
-    // The sample at lattice point (i, j, k), 0 outside [0, n).
-    float sample(int i, int j, int k) const {
+    // The largest of the samples at the corners of lattice cell (i, j, k) (0 outside
+    // [0, n)): a bound on the density within the cell.
+    float cellMax(int i, int j, int k) const {
         float c[8];
         corners(i, j, k, c);
-        return c[0];
+        return *std::max_element(c, c + 8);
     }
     const Transform& latticeFromWorld() const { return latticeFromWorld_; }
 

@@ -37,7 +37,7 @@ void SppmIntegrator::photonPass(const CancelToken& cancel, int64_t photons) {
             // Direct light may come from light sampling in the camera pass instead.
             paths.firstArrivalDepth = settings_.direct == DirectLighting::Photons ? 0 : 1;
             // But no light sample finds a medium's light: its photons bring its direct part.
-            paths.unsampledLightsArriveFirst = true;
+            paths.unsampledLightsArriveFirst = scene_->hasEmittingMedia();
             // Lightweight photon mapping's photons carry caustics only: they arrive after
             // one or more delta bounces and end at their first non-delta surface; the
             // camera paths trace a medium's direct light as they trace all the rest.
