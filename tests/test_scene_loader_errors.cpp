@@ -223,7 +223,7 @@ TEST(SceneLoaderErrors, UnknownNames) {
         "reflectance + transmittance must not exceed 1 in any channel (a sheet cannot pass on more light than "
         "arrives)");
     expectError([](Json& d) { d["camera"]["type"] = "fisheye"; }, "camera.type",
-                "unknown type \"fisheye\" (expected one of perspective, orthographic, spherical)");
+                "unknown type \"fisheye\" (expected one of perspective, orthographic, spherical, realistic)");
     expectError([](Json& d) { d["render"]["integrator"] = "bdpt"; }, "render.integrator",
                 "unknown value \"bdpt\" (expected one of sppm, path, radiosity, photonmap)");
     expectError([](Json& d) { d["render"]["kernel"] = "gauss"; }, "render.kernel",

@@ -21,6 +21,12 @@ Camera::Camera(const CameraDescription& d)
     pixelSize_ = d.viewHeight / static_cast<float>(height_);
     // A spherical pixel's angular side: 4 pi / pixels steradians each on the equal-area
     // square, pi / height radians of latitude on the equirectangular map.
+    // A lens system's pixel: its side on the film over the effective focal length.
+    if (projection_ == Projection::LensSystem) {
+        lens_ = std::make_shared<const LensSystem>(d.lens, d.lensApertureDiameter, d.focusDistance, d.filmDiagonal,
+                                                   width_, height_, true);
+        pixelAngle_ = static_cast<float>(lens_->filmHeight() / lens_->focalLength()) / static_cast<float>(height_);
+    }
     if (projection_ == Projection::Spherical)
         pixelAngle_ = mapping_ == SphericalMapping::EqualArea
                           ? std::sqrt(4.0f * kPi / (static_cast<float>(width_) * static_cast<float>(height_)))
@@ -49,8 +55,17 @@ Vec3 Camera::sphericalDirection(float x, float y) const {
     return normalize(up_ * d.z - forward_ * d.x - right_ * d.y);
 }
 
+Camera::PixelSample Camera::throughLens(const FilmSample& f, Vec2 uLens) const {
+    const std::optional<LensSystem::Sample> s = lens_->sample(f.x, f.y, uLens);
+    if (!s) return {Ray{position_, forward_}, 0.0f};
+    const Vec3 origin = position_ + right_ * s->origin.x + up_ * s->origin.y + forward_ * s->origin.z;
+    const Vec3 direction = right_ * s->direction.x + up_ * s->direction.y + forward_ * s->direction.z;
+    return {Ray{origin, normalize(direction)}, f.weight * s->weight};
+}
+
 Ray Camera::generateRay(float x, float y, Vec2 uLens) const {
     if (projection_ == Projection::Spherical) return {position_, sphericalDirection(x, y)};
+    if (lens_) return throughLens({x, y, 1.0f}, uLens).ray;
     // Film point on the plane at distance 1: [-aspect, aspect] x [-1, 1] scaled by tan(fov/2).
     const float nx = 2.0f * x / static_cast<float>(width_) - 1.0f, ny = 1.0f - 2.0f * y / static_cast<float>(height_);
     // Orthographic: every ray along the view, from the film point on the camera's plane.

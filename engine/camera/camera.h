@@ -4,6 +4,8 @@
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "math/ray.h"
+#include <memory>
+#include "camera/lens_system.h"
 #include "camera/pixel_filter.h"
 #include "description/camera_projection.h"
 
@@ -37,10 +39,11 @@ public:
     };
     PixelSample samplePixel(int x, int y, Vec2 u, Vec2 uLens) const {
         const FilmSample f = sampleFilm(x, y, u);
+        if (lens_) [[unlikely]] return throughLens(f, uLens);
         return {generateRay(f.x, f.y, uLens), f.weight};
     }
     // Whether rays start across a lens (the uLens of samplePixel matters) or at a pinhole.
-    bool hasLens() const { return apertureRadius_ > 0; }
+    bool hasLens() const { return apertureRadius_ > 0 || lens_; }
     int width() const { return width_; }
     int height() const { return height_; }
     // Side of one pixel where a camera ray has travelled `distance` (along the view axis, and
@@ -54,6 +57,9 @@ private:
     using Projection = CameraProjection;
     using SphericalMapping = CameraSphericalMapping;
     Vec3 sphericalDirection(float x, float y) const;
+    // A lens system's sample, in the world: weight 0 (and a ray along the view) where the
+    // system stops it, else the filter's weight times the lens's (LensSystem::sample).
+    PixelSample throughLens(const FilmSample& f, Vec2 uLens) const;
 
     Vec3 position_, right_, up_, forward_;
     float tanHalfFov_ = 1, aspect_ = 1, pixelAngle_ = 0, apertureRadius_ = 0, focusDistance_ = 1;
@@ -62,6 +68,7 @@ private:
     float halfHeight_ = 1, pixelSize_ = 0;  // orthographic: half the view's height, one pixel's side
     int width_ = 1, height_ = 1;
     PixelFilter filter_;
+    std::shared_ptr<const LensSystem> lens_;  // CameraProjection::LensSystem
 };
 
 }  // namespace photon

@@ -12,6 +12,7 @@
 #include <memory>
 #include "description/camera_projection.h"
 #include "description/curve_set.h"
+#include "description/lens_interface.h"
 #include "description/pixel_filter_description.h"
 #include "materials/material.h"
 #include "math/density_grid.h"
@@ -33,7 +34,12 @@ struct CameraDescription {
     float viewHeight = 2;
     int width = 512, height = 512;
     float apertureRadius = 0;  // 0: pinhole
-    float focusDistance = 1;   // distance to the plane in focus when apertureRadius > 0
+    float focusDistance = 1;   // distance to the plane in focus when apertureRadius > 0, or of a lens system
+    // CameraProjection::LensSystem: its interfaces (mm, front first), the stop's diameter
+    // (mm; 0: its own) and the film's diagonal (mm); the image's side is the film's.
+    std::vector<LensInterface> lens;
+    float lensApertureDiameter = 0;
+    float filmDiagonal = 35;
     // The image's right is up x forward (pbrt's left-handed camera space) rather than
     // forward x up: the image mirrored left to right.
     bool leftHanded = false;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include "scene/json_scene_parts.h"
+#include "camera/lens_system.h"
 
 namespace photon::scene_json {
 
@@ -56,12 +57,30 @@ PixelFilterDescription readPixelFilter(const JsonValue& value) {
     return f;
 }
 
+// "lens": [[radius, thickness, index, aperture diameter], ...] in mm, front first (a
+// pbrt-v4 lens file's rows).
+std::vector<LensInterface> readLensRows(const JsonValue& value) {
+    std::vector<LensInterface> rows;
+    for (const JsonValue& row : value.elements()) {
+        const std::vector<JsonValue> n = row.elements();
+        if (n.size() != 4) row.fail("must be [radius, thickness, index, aperture diameter] (mm)");
+        const LensInterface s{n[0].number(), n[1].number(), n[2].number(), n[3].number()};
+        if (auto why = lensInterfaceError(s)) row.fail(*why);
+        rows.push_back(s);
+    }
+    if (rows.empty()) value.fail("needs at least one interface");
+    return rows;
+}
+
 }  // namespace
 
 CameraDescription readCamera(const JsonValue& value, const LoadContext& ctx) {
     JsonObject obj = value.object();
     CameraDescription c;
-    c.projection = CameraProjection(obj.choice("type", 0, {"perspective", "orthographic", "spherical"}, "type"));
+    std::optional<JsonValue> lensValue;
+    const JsonValue* lens = nullptr;
+    c.projection =
+        CameraProjection(obj.choice("type", 0, {"perspective", "orthographic", "spherical", "realistic"}, "type"));
     c.position = obj.required("position").vec3();
     c.lookAt = obj.required("look_at").vec3();
     if (auto up = obj.optional("up")) c.up = up->direction();
@@ -77,14 +96,35 @@ CameraDescription readCamera(const JsonValue& value, const LoadContext& ctx) {
         if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");
         if (auto lens = obj.optional("aperture_radius"); lens && lens->number() != 0)
             lens->fail("must be 0 for a spherical camera (it has no lens)");
+    } else if (c.projection == CameraProjection::LensSystem) {
+        if (auto fov = obj.optional("fov")) fov->fail("is not used by a realistic camera (its lens and film make its view)");
+        if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");
+        if (auto lens = obj.optional("aperture_radius"))
+            lens->fail("is not used by a realistic camera (its stop is \"aperture_diameter\", in mm)");
+        lensValue = obj.required("lens");
+        lens = &*lensValue;
+        c.lens = readLensRows(*lens);
+        c.lensApertureDiameter = obj.number("aperture_diameter", 0, Range::nonNegative());
+        c.filmDiagonal = obj.number("film_diagonal", 35, Range::positive());
     } else {
         c.fovDegrees = obj.required("fov").number(Range::open(0, 180));
         if (auto height = obj.optional("view_height")) height->fail("is only used by an orthographic camera");
     }
+    if (c.projection != CameraProjection::LensSystem)
+        for (const char* key : {"lens", "aperture_diameter", "film_diagonal"})
+            if (auto v = obj.optional(key)) v->fail("is only used by a realistic camera");
     if (auto res = obj.optional("resolution")) readResolution(*res, c);
     c.apertureRadius = obj.number("aperture_radius", 0, Range::nonNegative());
     // By default the point looked at is in focus.
     c.focusDistance = obj.number("focus_distance", length(c.lookAt - c.position), Range::positive());
+    // A lens system that cannot focus there says so where it is given.
+    if (lens) {
+        try {
+            LensSystem(c.lens, c.lensApertureDiameter, c.focusDistance, c.filmDiagonal, c.width, c.height);
+        } catch (const std::invalid_argument& e) {
+            lens->fail(e.what());
+        }
+    }
     c.leftHanded = obj.choice("handedness", 0, {"right", "left"}, "handedness") == 1;
     if (auto filter = obj.optional("filter")) c.filter = readPixelFilter(*filter);
     if (auto medium = obj.optional("medium")) c.medium = mediumNamed(*medium, ctx);

@@ -2,6 +2,7 @@
 // state (transform, material, area light, orientation, attribute stack), its named things
 // (materials, textures, coordinate systems, objects), and the photon JSON scene it writes.
 #pragma once
+#include "description/lens_interface.h"
 #include <array>
 #include <filesystem>
 #include <map>
@@ -187,8 +188,9 @@ private:
         bool seen = false;
         Transform cameraToWorld;
         double fov = 90, lensRadius = 0, focalDistance = 1e6;
-        // A realistic camera's lens system, kept as its paraxial focal length (lenient import).
-        std::optional<double> lensFocalLengthMm;
+        // A realistic camera's lens system (its rows, mm) and aperture diameter (mm).
+        std::vector<LensInterface> lens;
+        double lensApertureMm = 1;
         bool orthographic = false;
         std::optional<std::string> sphericalMapping;  // a spherical camera's "equal_area" or "equirectangular"
         std::optional<std::vector<double>> screenWindow;
@@ -207,7 +209,8 @@ private:
     // scales every light by it instead (1 with pbrt-v4's defaults, ISO 100 and a shutter of 1).
     double iso_ = 100, exposureTime_ = 1;
     double filmDiagonalMm_ = 35;  // pbrt-v4's Film "diagonal", for a realistic camera's view
-    double imagingRatio() const { return exposureTime_ * iso_ / 100; }
+    // A realistic camera's rays weigh the exposure time once more (pbrt-v4's RealisticCamera::GenerateRay).
+    double imagingRatio() const { return exposureTime_ * iso_ / 100 * (camera_.lens.empty() ? 1 : exposureTime_); }
     bool worldBegun_ = false;
 };
 

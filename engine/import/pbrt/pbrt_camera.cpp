@@ -19,7 +19,7 @@ void SceneBuilder::camera(const Directive& d) {
     Params p(d);
     const std::string& type = d.strings.at(0);
     if (type != "perspective" && type != "orthographic" && type != "spherical" && type != "realistic")
-        fail(d.where, "Camera \"" + type + "\" is not supported (photon has perspective, orthographic and spherical cameras)");
+        fail(d.where, "Camera \"" + type + "\" is not supported (photon has perspective, orthographic, spherical and realistic cameras)");
     camera_.orthographic = type == "orthographic";
     if (std::abs(pointCtm(d).determinant()) < 1e-12f) fail(d.where, "Camera: the transform is singular");
     camera_.seen = true;
@@ -57,16 +57,12 @@ void SceneBuilder::camera(const Directive& d) {
     if (auto frame = p.number("frameaspectratio")) camera_.frameAspectRatio = *frame;
 }
 
-// pbrt-v4's RealisticCamera traces rays through a lens system (lens_system.h), which
-// photon's camera cannot: a lenient import keeps what a thin lens can of it, the view its
-// paraxial focal length gives the film at the focus distance, its aperture and focus.
+// pbrt-v4's RealisticCamera: its lens file's rows, traced ray by ray (camera/lens_system.h),
+// its aperture diameter (pbrt-v4's default 1 mm, clamped to the stop's) and focus distance;
+// the film's diagonal comes with the Film.
 void SceneBuilder::realisticCamera(const Directive& d) {
     Params p(d);
     const std::string file = p.string("lensfile", "");
-    const double aperture = p.number("aperturediameter", 1.0), focus = p.number("focusdistance", 10.0);
-    const std::string refused = "Camera \"realistic\" (a lens system) is not supported (photon has perspective, "
-                                "orthographic and spherical cameras)";
-    if (!lenient_) fail(d.where, refused);
     if (file.empty()) fail(d.where, "Camera \"realistic\" needs a \"lensfile\"");
     if (auto why = checkRelativePath(file)) fail(d.where, "Camera \"realistic\": \"" + file + "\": " + *why);
     const std::filesystem::path path = baseDir_ / file;
@@ -76,22 +72,13 @@ void SceneBuilder::realisticCamera(const Directive& d) {
     text << in.rdbuf();
     const LensFile lens = parseLensFile(text.str());
     if (!lens.error.empty()) fail(d.where, "Camera \"realistic\": " + file + ": " + lens.error);
-    const std::optional<double> focal = paraxialFocalLength(lens.interfaces);
-    if (!focal) fail(d.where, "Camera \"realistic\": " + file + ": the lens system does not focus light");
-    // Lens files are in millimetres, the scene in metres (pbrt-v4 scales the rows by 0.001).
-    if (!(focus * 1000 > *focal))
-        fail(d.where, "Camera \"realistic\": the focus distance is inside the lens's focal length");
-    // pbrt-v4 clamps the aperture to the stop's own diameter.
-    const double stop = std::min(aperture, apertureStopDiameter(lens.interfaces).value_or(aperture));
-    camera_.lensFocalLengthMm = *focal;
-    camera_.lensRadius = stop / 2 * 0.001;
-    camera_.focalDistance = focus;
-    char instead[240];
-    std::snprintf(instead, sizeof instead,
-                  "rendered as a thin lens of its paraxial focal length, %.1f mm at f/%.1f, focused at %g: its "
-                  "distortion, vignetting and aberrations left out",
-                  *focal, *focal / stop, focus);
-    unsupported(d, refused, instead);
+    camera_.lens = lens.interfaces;
+    camera_.lensApertureMm = p.number("aperturediameter", 1.0);
+    camera_.focalDistance = p.number("focusdistance", 10.0);
+    if (!(camera_.lensApertureMm > 0)) fail(d.where, "Camera \"realistic\": \"aperturediameter\" must be > 0");
+    if (!(camera_.focalDistance > 0)) fail(d.where, "Camera \"realistic\": \"focusdistance\" must be > 0");
+    for (const char* unused : {"dispersionfactor", "aperture"})
+        if (p.find(unused)) warn(d.where, std::string("Camera \"realistic\": \"") + unused + "\" is not supported; left out");
 }
 
 namespace {
@@ -220,6 +207,14 @@ void SceneBuilder::writeCameraAndRender() {
         cam["mapping"] = *camera_.sphericalMapping;
         if (*camera_.sphericalMapping == "equal_area" && width_ != height_)
             warn(camera_.where, "Camera \"spherical\": an equal-area image that is not square is stretched");
+    } else if (!camera_.lens.empty()) {
+        cam["type"] = "realistic";
+        Json rows = Json::array();
+        for (const LensInterface& r : camera_.lens) rows.push_back({r.radius, r.thickness, r.eta, r.apertureDiameter});
+        cam["lens"] = std::move(rows);
+        cam["aperture_diameter"] = camera_.lensApertureMm;
+        cam["focus_distance"] = camera_.focalDistance;
+        cam["film_diagonal"] = filmDiagonalMm_;
     } else {
         writeViewOfLens(cam);
     }
@@ -258,15 +253,6 @@ void SceneBuilder::writeViewOfLens(Json& cam) const {
         if (!symmetric)
             fail(camera_.where, "Camera: a screenwindow that is not centred or not of the image's shape is not supported");
         tanHalf *= w[3] / defaultHalfHeight;
-    }
-    if (camera_.lensFocalLengthMm) {
-        // The film (pbrt-v4's diagonal, in mm, over the image's shape) at the image distance
-        // of the focus plane behind the rear principal plane: 1/v = 1/f - 1/focus.
-        const double f = *camera_.lensFocalLengthMm;
-        const double v = 1 / (1 / f - 1 / (camera_.focalDistance * 1000));
-        const double aspect = double(height_) / width_;
-        const double filmHeight = aspect * std::sqrt(filmDiagonalMm_ * filmDiagonalMm_ / (1 + aspect * aspect));
-        tanHalf = filmHeight / 2 / v;
     }
     if (camera_.orthographic) {
         // The screen is in camera space, which the camera's transform scales into the world.
