@@ -1,6 +1,7 @@
 // Absorbing media (docs/scene-format.md#media): Beer-Lambert along camera paths and photon
 // paths, the medium a path is in changed where it crosses a boundary, the scene format.
 #include <gtest/gtest.h>
+#include "media/diffusion_dipole.h"
 #include "math/spectrum_rgb.h"
 #include <cmath>
 #include <cstdio>
@@ -268,6 +269,34 @@ TEST(MediaScene, MediaAndTheShapesThatBoundThem) {
     EXPECT_EQ(inMedia.lights[0].medium, 0);
 }
 
+// A medium given by its look: a reflectance (here a texture) and a mean free path, divided by
+// the medium's scale as its coefficients are multiplied; its coefficients those of the
+// texture's mean (red, green, blue and white: 0.5 each), its walk one vertex by default.
+TEST(MediaScene, AMediumGivenByItsReflectance) {
+    Json doc = test::fullScene();
+    doc["media"] = {{"skin", {{"reflectance", {{"texture", "textures/wood.png"}}}, {"mean_free_path", {0.1, 0.2, 0.4}},
+                              {"scale", 2}, {"boundary_ior", 1.4}}},
+                    {"wax", {{"reflectance", {0.5, 0.5, 0.5}}, {"mean_free_path", {1, 1, 1}}, {"subsurface", false}}}};
+    doc["shapes"][3]["medium"] = {{"inside", "skin"}};
+    const SceneDescription d = load(doc);
+    const MediumDescription& skin = d.media[0];
+    ASSERT_TRUE(skin.reflectance);
+    EXPECT_TRUE(skin.reflectance->reflectance.textured());
+    EXPECT_VEC3_NEAR(skin.reflectance->meanFreePath, Color(0.05f, 0.1f, 0.2f), 1e-7f);
+    EXPECT_FLOAT_EQ(skin.reflectance->boundaryIor, 1.4f);
+    EXPECT_TRUE(skin.subsurface);
+    EXPECT_FALSE(d.media[1].subsurface);
+    const ScatteringCoefficients c = coefficientsOfReflectance(Color(0.5f), {0.05f, 0.1f, 0.2f}, 1.4);
+    EXPECT_VEC3_NEAR(skin.absorption, c.absorption, 1e-4f);
+    EXPECT_VEC3_NEAR(skin.scattering, c.scattering, 1e-4f);
+    EXPECT_NEAR(skin.absorption.x + skin.scattering.x, 20.0f, 1e-4f);
+    // The scene holds the textured medium's palette after the scene's media: (32 + 1)^3.
+    const auto scene = Scene::build(d);
+    EXPECT_EQ(scene->description().media.size(), 2u + 33u * 33u * 33u);
+    EXPECT_EQ(scene->mediumFamily(2), 0);
+    EXPECT_EQ(scene->mediumFamily(1), 1);
+}
+
 // A density grid: two samples over the box [0, 2] x [0, 1] x [0, 1], moved 1 along x. Its
 // samples sit at the centres of the box's halves, x = 1.5 and 2.5 in the world; toward the
 // faces the density falls as toward zeros beyond, and outside the box it is zero.
@@ -367,7 +396,22 @@ TEST(MediaScene, Errors) {
     expectError([&](Json& doc) { doc["media"] = {{"wine", {{"absorption", {1, -2, 3}}}}}; }, "media.wine.absorption[1]",
                 "must be >= 0");
     expectError([&](Json& doc) { doc["media"] = {{"wine", Json::object()}}; }, "media.wine",
-                "a medium needs \"absorption\", \"scattering\" or both");
+                "a medium needs \"absorption\", \"scattering\" or both, or \"reflectance\" and \"mean_free_path\"");
+    expectError([&](Json& doc) { doc["media"] = {{"skin", {{"reflectance", {0.5, 0.5, 0.5}}}}}; }, "media.skin.mean_free_path",
+                "missing required field");
+    expectError(
+        [&](Json& doc) {
+            doc["media"] = {{"skin", {{"reflectance", {0.5, 0.5, 0.5}}, {"mean_free_path", {1, 0, 1}}}}};
+        },
+        "media.skin.mean_free_path[1]", "must be > 0");
+    expectError(
+        [&](Json& doc) {
+            doc["media"] = {{"skin", {{"reflectance", {0.5, 0.5, 0.5}}, {"mean_free_path", {1, 1, 1}}, {"absorption", {1, 1, 1}}}}};
+        },
+        "media.skin.absorption",
+        "give either \"reflectance\" and \"mean_free_path\" or \"absorption\" and \"scattering\", not both");
+    expectError([&](Json& doc) { doc["media"] = {{"wine", {{"absorption", {1, 1, 1}}, {"boundary_ior", 1.4}}}}; },
+                "media.wine.boundary_ior", "applies only with \"reflectance\"");
     expectError([&](Json& doc) { doc["media"] = {{"fog", {{"scattering", {1, 1, 1}}, {"g", 1}}}}; }, "media.fog.g",
                 "must be in (-1, 1)");
     expectError(

@@ -44,15 +44,16 @@ Shape "sphere" "float radius" 0.1
     EXPECT_NEAR(sigmaA.z, 4.8, 1e-5);
     EXPECT_NEAR(sigmaS.y, 8.8, 1e-5);
     EXPECT_FALSE(skinMedium.contains("g"));
-    // From a reflectance and a mean free path (times scale): sigma_t = 1 / (scale mfp), and
-    // the albedo whose diffusion reflectance is the one given.
+    // From a reflectance and a mean free path (times scale): a medium given by its look,
+    // whose coefficients photon's loader finds (media/diffusion_dipole.h).
     const Json& fromReflectance = doc["media"][reflecting["medium"]["inside"].get<std::string>()];
-    const Color a = vec(fromReflectance["absorption"]), sc = vec(fromReflectance["scattering"]);
-    const double mfp[3] = {0.05, 0.1, 0.2}, reflectance[3] = {0.5, 0.2, 0.8};
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(a[c] + sc[c], 1 / mfp[c], 1e-3 / mfp[c]) << c;
-        EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(sc[c] / (a[c] + sc[c]), 1.33), reflectance[c], 1e-4) << c;
-    }
+    EXPECT_EQ(fromReflectance["reflectance"], Json({0.5f, 0.2f, 0.8f}));
+    EXPECT_EQ(fromReflectance["mean_free_path"], Json({0.05f, 0.1f, 0.2f}));
+    EXPECT_FLOAT_EQ(fromReflectance["boundary_ior"].get<float>(), 1.33f);
+    EXPECT_FALSE(fromReflectance.contains("absorption"));
+    // Every subsurface medium's walk counts as one vertex, as pbrt-v4's BSSRDF does.
+    EXPECT_EQ(fromReflectance["subsurface"], true);
+    EXPECT_EQ(skinMedium["subsurface"], true);
     // Nothing given: pbrt-v4's whole milk.
     const Json& milkMedium = doc["media"][milk["medium"]["inside"].get<std::string>()];
     EXPECT_NEAR(vec(milkMedium["scattering"]).z, 3.77, 1e-5);
@@ -65,16 +66,20 @@ Shape "sphere" "float radius" 0.1
     EXPECT_NEAR(vec(cream.document["media"]["c"]["absorption"]).z, 1.63, 1e-5);
     EXPECT_NEAR(cream.document["media"]["c"]["g"].get<double>(), 0.3, 1e-6);
 
-    // The dipole's reflectance: none without scattering, all of it without absorption.
-    EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(0, 1.5), 0, 1e-12);
-    EXPECT_NEAR(pbrt::dipoleDiffuseReflectance(1, 1.5), 1, 1e-12);
     EXPECT_STREQ(importError(kHeader + "Material \"subsurface\" \"string name\" \"Jam\"\n").what(),
                  "bad.pbrt:12: subsurface: no measured material named \"Jam\" (photon has Apple, Chicken1, Chicken2, "
                  "Cream, Ketchup, Marble, Potato, Skimmilk, Skin1, Skin2, Spectralon, Wholemilk)");
+    // A textured reflectance is the medium's texture; a textured mean free path is refused.
+    test::writeImage<uint8_t>(scratch() / "albedo.png", 2, 1, 3, {200, 150, 120, 180, 120, 100});
+    const ImportedScene head = import("Texture \"albedo\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.png\"\n"
+                                      "Material \"subsurface\" \"texture reflectance\" \"albedo\" \"rgb mfp\" [0.0013 0.00095 0.00067]\n"
+                                      "Shape \"sphere\" \"float radius\" 0.1\n");
+    const Json& skinOfHead = head.document["media"][head.document["shapes"][2]["medium"]["inside"].get<std::string>()];
+    EXPECT_EQ(skinOfHead["reflectance"]["type"], Json("image"));
+    EXPECT_EQ(skinOfHead["mean_free_path"], Json({0.0013f, 0.00095f, 0.00067f}));
     EXPECT_STREQ(importError(kHeader + "Texture \"t\" \"spectrum\" \"constant\" \"rgb value\" [0.5 0.5 0.5]\n"
-                                       "Material \"subsurface\" \"texture reflectance\" \"t\"\n").what(),
-                 "bad.pbrt:13: subsurface: a textured \"reflectance\", \"mfp\", \"sigma_a\" or \"sigma_s\" is not "
-                 "supported (the medium under the surface is homogeneous)");
+                                       "Material \"subsurface\" \"rgb reflectance\" [0.5 0.5 0.5] \"texture mfp\" \"t\"\n").what(),
+                 "bad.pbrt:13: subsurface: a textured \"mfp\" is not supported (only \"reflectance\" may be a texture)");
 }
 
 // pbrt-v4's "uniformgrid" medium, made as smoke-plume makes it: the density in a file of its

@@ -17,6 +17,7 @@
 #include "materials/material.h"
 #include "math/density_grid.h"
 #include "description/medium_emission.h"
+#include "description/medium_reflectance.h"
 #include "math/transform.h"
 #include "texture/image_texture.h"
 #include <photon/vec.h>
@@ -101,6 +102,16 @@ struct MediumDescription {
     std::shared_ptr<const DensityGrid> density;  // none: homogeneous (a density of 1)
     // Light it emits, sigma_a(p) Le(p) per unit length (description/medium_emission.h); none: dark.
     std::shared_ptr<const MediumEmission> emission;
+    // Given by its look (description/medium_reflectance.h): absorption and scattering are then
+    // those of its reflectance's mean, and where the reflectance is a texture, a path that
+    // enters through a shape holding it takes those of the reflectance where it enters.
+    std::shared_ptr<const MediumReflectance> reflectance;
+    // Light under a surface (skin, wax, marble): a path's walk in it counts as one vertex
+    // toward render.max_depth, as pbrt-v4 counts its subsurface material's BSSRDF, however
+    // often it scatters there; the walk ends by Russian roulette, by leaving, or after
+    // kMaxSubsurfaceEvents scattering events.
+    bool subsurface = false;
+    static constexpr int kMaxSubsurfaceEvents = 1024;
 
     Color extinction() const { return absorption + scattering; }
     bool emits() const { return emission && !isBlack(absorption); }

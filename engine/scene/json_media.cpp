@@ -5,6 +5,7 @@
 #include <limits>
 #include "scene/json_scene_parts.h"
 #include "media/cloud_density.h"
+#include "media/diffusion_dipole.h"
 #include "scene/nanovdb_density.h"
 
 namespace photon::scene_json {
@@ -119,6 +120,18 @@ std::shared_ptr<const MediumEmission> readEmission(const JsonValue& value, const
     obj.finish();
     return std::make_shared<const MediumEmission>(std::move(e));
 }
+// "reflectance" (a colour or texture in [0, 1]), "mean_free_path" (a colour > 0, divided by
+// the medium's "scale" as its coefficients are multiplied) and "boundary_ior" (1.33).
+std::shared_ptr<const MediumReflectance> readReflectance(JsonObject& obj, LoadContext& ctx, float scale) {
+    MediumReflectance r;
+    r.reflectance = readColorParam(obj.required("reflectance"), ctx, Range::closed(0, 1));
+    const JsonValue mfp = obj.required("mean_free_path");
+    r.meanFreePath = mfp.vec3(Range::positive());
+    if (!(scale > 0)) mfp.fail("a medium given by its reflectance needs a \"scale\" > 0");
+    r.meanFreePath /= scale;
+    r.boundaryIor = obj.number("boundary_ior", r.boundaryIor, Range::positive());
+    return std::make_shared<const MediumReflectance>(std::move(r));
+}
 }  // namespace
 
 void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene) {
@@ -133,16 +146,30 @@ void readMedia(const JsonValue& value, LoadContext& ctx, SceneDescription& scene
             auto v = obj.optional(key);
             return v ? v->vec3(Range::nonNegative()) * scale : Color(0.0f);
         };
-        if (!obj.has("absorption") && !obj.has("scattering"))
-            medium.fail("a medium needs \"absorption\", \"scattering\" or both");
-        m.absorption = coefficient("absorption");
-        m.scattering = coefficient("scattering");
+        if (obj.has("reflectance")) {
+            for (const char* key : {"absorption", "scattering"})
+                if (obj.has(key)) obj.required(key).fail("give either \"reflectance\" and \"mean_free_path\" or \"absorption\" and \"scattering\", not both");
+            m.reflectance = readReflectance(obj, ctx, scale);
+            const ScatteringCoefficients c = coefficientsOfReflectance(
+                m.reflectance->reflectance.average(), m.reflectance->meanFreePath, m.reflectance->boundaryIor);
+            m.absorption = c.absorption, m.scattering = c.scattering;
+        } else {
+            if (!obj.has("absorption") && !obj.has("scattering"))
+                medium.fail("a medium needs \"absorption\", \"scattering\" or both, or \"reflectance\" and \"mean_free_path\"");
+            for (const char* key : {"mean_free_path", "boundary_ior"})
+                if (obj.has(key)) obj.required(key).fail("applies only with \"reflectance\"");
+            m.absorption = coefficient("absorption");
+            m.scattering = coefficient("scattering");
+        }
+        m.subsurface = obj.boolean("subsurface", m.reflectance != nullptr);
         if (auto g = obj.optional("g")) m.g = g->number(Range::open(-1.0f, 1.0f));
         if (auto density = obj.optional("density")) m.density = readDensityGrid(*density, ctx);
         if (auto emission = obj.optional("emission")) {
             m.emission = readEmission(*emission, ctx);
             if (isBlack(m.absorption))
                 emission->fail("a medium emits in proportion to its \"absorption\" (sigma_a Le), which is 0");
+            if (m.reflectance && m.reflectance->reflectance.textured())
+                emission->fail("a medium whose \"reflectance\" is a texture cannot emit");
         }
         obj.finish();
         ctx.mediumIndex[name] = int32_t(scene.media.size());

@@ -19,7 +19,8 @@ std::shared_ptr<const Scene> Scene::build(SceneDescription description) {
     return std::shared_ptr<const Scene>(new Scene(std::move(description)));
 }
 
-Scene::Scene(SceneDescription description) : description_(std::move(description)), camera_(description_.camera) {
+Scene::Scene(SceneDescription description)
+    : description_(std::move(description)), palettes_(description_.media), camera_(description_.camera) {
     placeInstancedEmitters();
     for (ShapeDescription& shape : shapes_) padForEmbree(shape.mesh);
     for (ObjectDescription& object : description_.objects)
@@ -183,6 +184,10 @@ void Scene::prepareHitData() {
             if (m >= 0) mediumBounded_[size_t(m)] = 1;
         if (shape->outsideMedium >= 0) mediumOutside_[size_t(shape->outsideMedium)] = 1;
     }
+    for (size_t m = 0; m < description_.media.size(); ++m) {
+        const size_t family = size_t(palettes_.family(int32_t(m)));
+        mediumBounded_[m] = mediumBounded_[family], mediumOutside_[m] = mediumOutside_[family];
+    }
     for (const ShapeDescription* shape : slots_) {
         materialOf_.push_back(shape->material);
         const std::optional<Material::SmoothSpecular> smooth = materials_[shape->material]->smoothSpecular();
@@ -195,7 +200,7 @@ void Scene::prepareHitData() {
         const ShapeDescription& shape = *slots_[i];
         ShapeHitData& d = hitData_[i];
         d.normalSign = shape.flipNormals ? -1.0f : 1.0f;
-        d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture;
+        d.needsUv = materials_[shape.material]->textured() || shape.emissionTexture || palettes_.textured(shape.insideMedium);
         if (shape.kind != ShapeDescription::Kind::Mesh) continue;
         const TriangleMesh& m = shape.mesh;
         // Vertex normals equal to their faces' (a quad's, a flat mesh's) change nothing.
@@ -374,7 +379,8 @@ bool Scene::inMedium(Vec3 p, int32_t medium) const {
         if (!intersect(ray, hit)) break;
         const ShapeDescription& s = shape(hit.shape);
         // Leaving through the side the normal faces: p is inside (mediumToward's sides).
-        if (s.boundsMedium()) return (dot(ray.d, hit.ng) > 0 ? s.insideMedium : s.outsideMedium) == medium;
+        if (s.boundsMedium())
+            return (dot(ray.d, hit.ng) > 0 ? s.insideMedium : s.outsideMedium) == palettes_.family(medium);
         ray = spawnRay(hit.p, hit.ng, ray.d);
     }
     return mediumOutside_[size_t(medium)] != 0;
@@ -401,6 +407,12 @@ bool Scene::occludedIn(RTCScene scene, const Ray& ray) {
     r.time = 0;
     rtcOccluded1(scene, &context, &r);
     return r.tfar < 0;  // Embree sets tfar to -inf on a hit
+}
+
+int32_t Scene::paletteMediumToward(int32_t next, bool inward, const SurfaceHit& hit, int32_t current) const {
+    if (!palettes_.textured(next)) return next;
+    if (palettes_.family(current) == next) return current;
+    return inward ? palettes_.entered(next, {hit.uv, hit.p, hit.ng}) : next;
 }
 
 Color Scene::shadowTransmittance(Ray ray, int32_t medium) const {

@@ -12,6 +12,7 @@
 #include "lights/light_sampler.h"
 #include "math/ray.h"
 #include "description/scene_description.h"
+#include "scene/medium_palette.h"
 
 namespace photon {
 
@@ -174,8 +175,15 @@ public:
         if (!hasMedia()) return current;
         const ShapeDescription& s = shape(hit.shape);
         if (!s.boundsMedium()) return current;
-        return dot(w, hit.ng) > 0 ? s.outsideMedium : s.insideMedium;
+        const bool inward = dot(w, hit.ng) <= 0;
+        const int32_t next = inward ? s.insideMedium : s.outsideMedium;
+        if (palettes_.any()) [[unlikely]]
+            return paletteMediumToward(next, inward, hit, current);
+        return next;
     }
+    // The scene's medium an index a path carries stands for (a textured medium's palette:
+    // scene/medium_palette.h).
+    int32_t mediumFamily(int32_t medium) const { return palettes_.family(medium); }
     // True if the hit is on a surface that only separates media (a smooth dielectric of
     // index 1: pbrt-v4's "interface"): rays cross it unbent and unweakened, so camera paths
     // and shadow rays pass it without a vertex, taking on each medium's absorption.
@@ -231,6 +239,11 @@ public:
 
 private:
     explicit Scene(SceneDescription description);
+    // mediumToward() where media have palettes: a path entering a textured medium through a
+    // shape that holds it takes the palette's medium for the reflectance where it enters; one
+    // that stays in the same medium (crossing a surface inside it) keeps the one it has;
+    // entering through a shape's outside, it takes the medium's mean.
+    int32_t paletteMediumToward(int32_t next, bool inward, const SurfaceHit& hit, int32_t current) const;
     // Adds the shape's Embree geometry, with its alpha cutout if any, to `target` as
     // geometry `id`.
     void addShape(const ShapeDescription& shape, RTCScene target, uint32_t id);
@@ -327,6 +340,7 @@ private:
     std::vector<uint8_t> mediumBounded_;          // by medium: some shape bounds it
     std::vector<uint8_t> mediumOutside_;          // by medium: it is where no shape's inside is
     std::vector<int32_t> lightMedium_;            // by light, in lightSampler_'s order
+    MediumPalettes palettes_;                     // textured media's palettes, after the scene's media
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).
     struct Placement {

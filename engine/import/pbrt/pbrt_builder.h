@@ -28,6 +28,10 @@ using Json = nlohmann::ordered_json;
 inline Json rgb(Color c) { return Json::array({c.x, c.y, c.z}); }
 inline Json vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 
+// A constant colour clamped to [0, 1] (pbrt allows reflectances above 1; photon's loader
+// does not), with a warning; textures are left as they are (pbrt_materials.cpp).
+Json clampedReflectance(Json value, const Location& where, std::vector<std::string>& warnings);
+
 // pbrt's CTM is a 4x4 matrix, photon's transforms affine: the CTM's first three rows, and
 // its last, (0 0 0 1) unless a Transform or ConcatTransform gave it another. pbrt-v4 turns
 // directions by the upper 3x3 alone, so a projective CTM still orients infinite and distant

@@ -68,9 +68,9 @@ Json floatTextureAsColor(Json t) {
     return t;
 }
 
-// A constant colour clamped to [0, 1] (pbrt allows reflectances above 1; photon's loader
-// does not), with a warning; textures are left as they are.
-Json reflectance(Json value, const Location& where, std::vector<std::string>& warnings) {
+}  // namespace
+
+Json clampedReflectance(Json value, const Location& where, std::vector<std::string>& warnings) {
     if (!value.is_array()) return value;
     bool clamped = false;
     for (Json& v : value) {
@@ -83,6 +83,8 @@ Json reflectance(Json value, const Location& where, std::vector<std::string>& wa
     if (clamped) warnings.push_back(where.str() + ": a reflectance outside [0, 1] clamped to it");
     return value;
 }
+
+namespace {
 
 double number(const Json& v) { return v.is_number() ? v.get<double>() : -1; }
 
@@ -171,7 +173,7 @@ Json SceneBuilder::hairJson(const Params& p) {
     if (auto sigma = constant("sigma_a", colorValue(p, "sigma_a", int(SpectrumKind::Index)))) {
         m["sigma_a"] = *sigma;
     } else if (auto r = constant(reflectanceName, colorValue(p, reflectanceName, int(SpectrumKind::Reflectance)))) {
-        Json c = reflectance(*r, where, out_.warnings);
+        Json c = clampedReflectance(*r, where, out_.warnings);
         for (Json& x : c) x = std::clamp(x.get<double>(), 1e-4, 1.0);  // photon's "color" is in (0, 1]
         m["color"] = c;
     } else {
@@ -189,11 +191,11 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
     if (type == "interface" || type == "none" || type.empty()) return std::nullopt;
     if (type == "diffuse") {
         m = {{"type", "diffuse"},
-             {"albedo", reflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
+             {"albedo", clampedReflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
                                     where, out_.warnings)}};
     } else if (type == "coateddiffuse") {
         m = {{"type", "coated_diffuse"},
-             {"albedo", reflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
+             {"albedo", clampedReflectance(colorValue(p, "reflectance", int(SpectrumKind::Reflectance)).value_or(rgb(Color(0.5f))),
                                     where, out_.warnings)},
              {"ior", indexOfRefraction(p, baseDir_, out_.warnings)}};
         m.update(roughnessFields(p, false, "", true));
@@ -216,7 +218,7 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
         const std::string prefix = coated ? "conductor." : "";
         Json metal = Json::object();
         if (auto r = colorValue(p, "reflectance", int(SpectrumKind::Reflectance))) {
-            const Json f0 = reflectance(*r, where, out_.warnings);
+            const Json f0 = clampedReflectance(*r, where, out_.warnings);
             if (f0.is_array()) {
                 // pbrt-v4 makes a constant reflectance r an index: eta 1, k = 2 sqrt(r) /
                 // sqrt(1 - r), whose Fresnel is r at normal incidence (r at most 0.9999).
@@ -268,9 +270,9 @@ std::optional<Json> SceneBuilder::materialJson(const std::string& type, const Pa
             return Json{{"type", "product"}, {"a", c}, {"b", rgb(Color(float(scale)))}};
         };
         m = {{"type", "diffuse_transmission"},
-             {"reflectance", reflectance(scaled(colorValue(p, "reflectance", int(SpectrumKind::Reflectance))), where, out_.warnings)},
+             {"reflectance", clampedReflectance(scaled(colorValue(p, "reflectance", int(SpectrumKind::Reflectance))), where, out_.warnings)},
              {"transmittance",
-              reflectance(scaled(colorValue(p, "transmittance", int(SpectrumKind::Reflectance))), where, out_.warnings)}};
+              clampedReflectance(scaled(colorValue(p, "transmittance", int(SpectrumKind::Reflectance))), where, out_.warnings)}};
     } else if (type == "hair") {
         m = hairJson(p);
     } else if (type == "subsurface") {

@@ -27,50 +27,49 @@ Json SceneBuilder::subsurfaceJson(const Params& p) {
     if (!(scale >= 0)) fail(d.where, "subsurface: \"scale\" must be >= 0");
     if (!(g > -1 && g < 1)) fail(d.where, "subsurface: \"g\" must lie in (-1, 1)");
     const Json grey = {{"type", "diffuse"}, {"albedo", rgb(Color(0.5f))}};
-    // A constant colour parameter; a texture cannot vary a homogeneous medium.
-    bool textured = false;
-    auto constant = [&](std::string_view key, Color fallback) {
+    // A constant colour parameter; a texture can vary only the reflectance (the medium's
+    // palette, scene/medium_palette.h).
+    auto constant = [&](std::string_view key, Color fallback) -> std::optional<Color> {
         const Param* param = p.find(key);
         if (!param) return fallback;
-        if (param->type == "texture") {
-            textured = true;
-            return fallback;
-        }
+        if (param->type == "texture") return std::nullopt;
         return spectrumColor(*param, SpectrumKind::Reflectance, baseDir_);
     };
-    Color absorption, scattering;
-    double phaseG = g;
+    auto refuseTexture = [&](std::string_view key) {
+        unsupported(d, "subsurface: a textured \"" + std::string(key) +
+                           "\" is not supported (only \"reflectance\" may be a texture)",
+                    "rendered as a grey diffuse material");
+        return grey;
+    };
+    Json medium;
     if (auto name = p.string("name")) {
         const auto preset = scatteringPreset(*name);
         if (!preset)
             fail(d.where, "subsurface: no measured material named \"" + *name + "\" (photon has " +
                               scatteringPresetNames() + ")");
         // Reduced scattering coefficients: pbrt-v4 takes them with g = 0.
-        absorption = preset->absorption, scattering = preset->scattering, phaseG = 0;
+        medium = {{"absorption", rgb(preset->absorption * float(scale))}, {"scattering", rgb(preset->scattering * float(scale))}};
     } else if (p.has("reflectance")) {
-        const Color reflectance = constant("reflectance", Color(1.0f)), mfp = constant("mfp", Color(1.0f));
-        if (!textured)
-            for (int c = 0; c < 3; ++c) {
-                if (!(mfp[c] * scale > 0)) fail(d.where, "subsurface: \"mfp\" times \"scale\" must be > 0");
-                const double sigmaT = 1 / (mfp[c] * scale);
-                const double albedo = albedoOfDiffuseReflectance(std::clamp<double>(reflectance[c], 0, 1), eta);
-                scattering[c] = float(albedo * sigmaT);
-                absorption[c] = float((1 - albedo) * sigmaT);
-            }
+        // pbrt-v4's SubsurfaceFromDiffuse: sigma_t = 1 / (scale mfp), the albedo from the
+        // reflectance, read by photon's loader where a path enters (media/diffusion_dipole.h).
+        const std::optional<Color> mfp = constant("mfp", Color(1.0f));
+        if (!mfp) return refuseTexture("mfp");
+        if (!(std::min({mfp->x, mfp->y, mfp->z}) * scale > 0)) fail(d.where, "subsurface: \"mfp\" times \"scale\" must be > 0");
+        medium = {{"reflectance", clampedReflectance(*colorValue(p, "reflectance", int(SpectrumKind::Reflectance)), d.where, out_.warnings)},
+                  {"mean_free_path", rgb(*mfp * float(scale))},
+                  {"boundary_ior", eta}};
+        if (g != 0) medium["g"] = g;
     } else {
         // pbrt-v4's defaults, in mm^-1: Jensen et al.'s whole milk.
-        absorption = constant("sigma_a", {0.0011f, 0.0024f, 0.014f}) * float(scale);
-        scattering = constant("sigma_s", {2.55f, 3.21f, 3.77f}) * float(scale);
+        const std::optional<Color> sigmaA = constant("sigma_a", {0.0011f, 0.0024f, 0.014f});
+        const std::optional<Color> sigmaS = constant("sigma_s", {2.55f, 3.21f, 3.77f});
+        if (!sigmaA) return refuseTexture("sigma_a");
+        if (!sigmaS) return refuseTexture("sigma_s");
+        medium = {{"absorption", rgb(*sigmaA * float(scale))}, {"scattering", rgb(*sigmaS * float(scale))}};
+        if (g != 0) medium["g"] = g;
     }
-    if (p.has("name")) absorption = absorption * float(scale), scattering = scattering * float(scale);
-    if (textured) {
-        unsupported(d, "subsurface: a textured \"reflectance\", \"mfp\", \"sigma_a\" or \"sigma_s\" is not supported (the "
-                       "medium under the surface is homogeneous)",
-                    "rendered as a grey diffuse material");
-        return grey;
-    }
-    Json medium = {{"absorption", rgb(absorption)}, {"scattering", rgb(scattering)}};
-    if (phaseG != 0) medium["g"] = phaseG;
+    // pbrt-v4 counts its BSSRDF as one vertex of a path: so is the walk under the surface.
+    medium["subsurface"] = true;
     // Identical media are one.
     std::string mediumName;
     for (const auto& [name, existing] : mediaJson_.items())

@@ -34,6 +34,7 @@ struct PhotonLanes {
     alignas(32) float betaR[kWalkLanes], betaG[kWalkLanes], betaB[kWalkLanes];  // flux
     alignas(64) uint64_t state[kWalkLanes], increment[kWalkLanes];             // PCG32 streams
     alignas(32) int32_t depth[kWalkLanes];         // surfaces reached so far
+    alignas(32) int32_t walkEvents[kWalkLanes];    // scatterings under surfaces, which depth leaves out
     alignas(32) int32_t alive[kWalkLanes];         // masks: -1 true, 0 false
     alignas(32) int32_t onlySpecular[kWalkLanes];  // every bounce so far off a delta lobe
     alignas(32) uint32_t cell[kWalkLanes];         // EmittedPhoton::cell
@@ -266,6 +267,7 @@ private:
                 L.state[i] = emitted_.state[k];
                 L.increment[i] = emitted_.increment[k];
                 L.depth[i] = 0;
+                L.walkEvents[i] = 0;
                 L.onlySpecular[i] = -1;
                 L.cell[i] = emitted_.cell[k];
                 L.medium[i] = scene_.hasMedia() ? scene_.lightMedium(size_t(emitted_.light[k])) : -1;
@@ -381,7 +383,9 @@ private:
         ++counters_.segments;
         if (settings_.arrivesInMedia && L.depth[i] >= L.firstArrival[i])
             sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i]});
-        if (L.depth[i] + 1 == settings_.maxDepth || settings_.specularOnly) return true;
+        // A walk under a surface (MediumDescription::subsurface) is no vertex, as for camera paths.
+        const bool underSurface = m.subsurface && L.walkEvents[i] < MediumDescription::kMaxSubsurfaceEvents;
+        if (settings_.specularOnly || (!underSurface && L.depth[i] + 1 == settings_.maxDepth)) return true;
         std::optional<Color> next = photonAfterRoulette(L.beta(i), weight, rng);
         if (!next) return true;
         const PhaseSample s = sampleHenyeyGreenstein(-d, m.g, {rng.uniform(), rng.uniform()});
@@ -389,7 +393,7 @@ private:
         L.setRay(i, Ray{o + d * t, s.wi});
         L.state[i] = rng.state();
         L.onlySpecular[i] = 0;
-        ++L.depth[i];
+        ++(underSurface ? L.walkEvents : L.depth)[i];
         L.alive[i] = -1;
         return true;
     }

@@ -243,11 +243,26 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int3
 // How a camera path that scattered at p in a medium goes on: toward a direction drawn from
 // the medium's phase function (weight 1: it is drawn exactly), weighted against the light
 // sample taken there (sampleDirectLightInMedium, whose side of wo the BounceSampling
-// records, as a transmitting surface's).
-inline Ray scatterInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, Vec2 u, BounceSampling& bounce) {
+// records, as a transmitting surface's); with `noLightSample`, where none was taken, the
+// light its ray finds counts in full.
+inline Ray scatterInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, Vec2 u, BounceSampling& bounce,
+                           bool noLightSample = false) {
     const PhaseSample s = sampleHenyeyGreenstein(wo, scene.medium(medium).g, u);
-    bounce = BounceSampling{false, s.pdf, p, wo, 0.5f};
+    bounce = noLightSample ? BounceSampling{} : BounceSampling{false, s.pdf, p, wo, 0.5f};
     return Ray{p, s.wi};
+}
+
+// Whether a path's scattering event in `medium` is one of a walk under a surface
+// (MediumDescription::subsurface) that counts as no vertex toward render.max_depth: true
+// while the path has taken fewer than kMaxSubsurfaceEvents such events (counted in
+// `events`), after which they count as any other. Such events take no light sample: under
+// a refracting surface every shadow ray would end on it (Scene::shadowTransmittance), one
+// wasted ray an event, hundreds a walk; the ray the event sends on counts the light it
+// finds in full instead, so a light inside the medium is still rendered, unbiased.
+inline bool walksUnderSurface(const Scene& scene, int32_t medium, int& events) {
+    if (!scene.medium(medium).subsurface || events >= MediumDescription::kMaxSubsurfaceEvents) return false;
+    ++events;
+    return true;
 }
 
 }  // namespace photon

@@ -31,6 +31,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     // number a segment in them); elsewhere they draw what they always did.
     PathInMedia inMedia{sampler, {}};
     PathInMedia* media = scene.hasScatteringMedia() || scene.hasEmittingMedia() ? &inMedia : nullptr;
+    int walkEvents = 0;  // scattering events under surfaces (walksUnderSurface)
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
         const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, L, media);
@@ -42,9 +43,12 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
         Vec3 wo = -ray.d;
         if (end == RayEnd::Scattered) {
             // A vertex in the medium: its light sample, then the phase function's direction.
-            L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler);
-            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
-            if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;
+            // Under a surface the walk takes no light samples (walksUnderSurface).
+            const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
+            if (!underSurface) L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler);
+            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce, underSurface);
+            if (underSurface) --depth;  // the walk is no vertex: the next event has this depth too
+            if ((depth >= 3 || walkEvents >= 3) && !survivesRoulette(beta, sampler.get1D())) break;
             continue;
         }
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);

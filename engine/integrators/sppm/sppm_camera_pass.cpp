@@ -130,6 +130,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     // Whether the light the next ray lands on was counted already, by the look-up along the
     // same direction at the vertex it leaves.
     bool lightCounted = false;
+    int walkEvents = 0;  // scattering events under surfaces (walksUnderSurface)
     for (int depth = 0; depth < settings_.maxDepth; ++depth) {
         SurfaceHit hit;
         ++rays;
@@ -151,14 +152,19 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             }
             // Else its light sample, and the phase function's direction, whose ray at the
             // last vertex is traced only for the light it shares with the light sample.
-            direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
-            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
+            // Under a surface the walk takes no light samples (walksUnderSurface).
+            const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
+            if (!underSurface) direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
+            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce, underSurface);
             inMedia.boundaryNormal = Vec3(0.0f);
-            if (depth == settings_.maxDepth - 1) {
+            if (underSurface) {
+                --depth;  // the walk is no vertex: the next event has this depth too
+            } else if (depth == settings_.maxDepth - 1) {
                 traceCameraRay(scene, ray, beta, medium, bounce, hit, direct), ++rays;
                 break;
             }
-            if (depth >= 3 && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D())) break;
+            if ((depth >= 3 || walkEvents >= 3) && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D()))
+                break;
             continue;
         }
         ShadingPoint sp = makeShadingPoint(scene, hit, wo);
