@@ -78,6 +78,12 @@ public:
         float ior;
     };
     virtual std::optional<SmoothSpecular> smoothSpecular() const { return std::nullopt; }
+    // A dielectric boundary's index of refraction, smooth or rough (the inside's over the
+    // outside's); none for other materials.
+    virtual std::optional<float> refractiveIndex() const {
+        const std::optional<SmoothSpecular> s = smoothSpecular();
+        return s && s->ior > 0 ? std::optional<float>(s->ior) : std::nullopt;
+    }
     // True if the non-delta lobes also scatter light to the far side of the surface
     // (diffuse transmission): light arriving from behind then counts where it is gathered.
     virtual bool transmits() const { return false; }
@@ -227,5 +233,9 @@ Color hairReflectanceFromSigmaA(Color sigmaA, float betaN);
 // Translucent sheet: Lambertian reflection (reflectance, the tint) on the side light
 // arrives from and Lambertian transmission to the other (reflectance + transmittance <= 1).
 MaterialPtr makeDiffuseTransmission(ColorParam reflectance, ColorParam transmittance);
+// The surface of a subsurface medium (MediumDescription::subsurface) whose boundary is
+// `boundary`, a dielectric of index `ior`: light going out refracts as the boundary makes it,
+// light coming in goes into every direction, (1 - F) / pi (materials/subsurface_boundary.cpp).
+MaterialPtr makeSubsurfaceBoundary(MaterialPtr boundary, float ior);
 
 }  // namespace photon

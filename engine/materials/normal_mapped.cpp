@@ -28,6 +28,7 @@ public:
     bool textured() const override { return true; }
     bool twoSided() const override { return base_->twoSided(); }
     bool transmits() const override { return base_->transmits(); }
+    std::optional<float> refractiveIndex() const override { return base_->refractiveIndex(); }
     bool bendsNormal() const override { return true; }
     Vec3 bentNormal(const TexturePoint& at, Vec3 n, Vec3 ng, const SurfaceTangents& t) const override {
         return map_ ? mappedNormal(*map_, at, n, ng, t.dpdu) : bumpedNormal(height_, at, n, ng, t);

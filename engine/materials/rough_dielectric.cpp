@@ -15,6 +15,7 @@ public:
 
     unsigned lobes() const override { return kGlossyLobe; }
     bool twoSided() const override { return false; }  // inside and outside differ
+    std::optional<float> refractiveIndex() const override { return eta_; }
 
     // Reflection: F D G / (4 |cos_o cos_i|) (Walter eq. 20). Transmission (Walter eq. 21,
     // divided through by n_o^2):

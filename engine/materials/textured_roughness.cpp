@@ -37,6 +37,7 @@ public:
     bool twoSided() const override { return (*levels_)[0]->twoSided(); }
     bool textured() const override { return true; }
     bool transmits() const override { return (*levels_)[0]->transmits(); }
+    std::optional<float> refractiveIndex() const override { return (*levels_)[0]->refractiveIndex(); }
 
     Color eval(Vec3 wo, Vec3 wi, const MaterialInputs& in, TransportMode mode, unsigned lobes) const override {
         return at(in).eval(wo, wi, mode, lobes);

@@ -21,6 +21,7 @@ std::shared_ptr<const Scene> Scene::build(SceneDescription description) {
 
 Scene::Scene(SceneDescription description)
     : description_(std::move(description)), palettes_(description_.media), camera_(description_.camera) {
+    takeSubsurfaceBoundaries();
     placeInstancedEmitters();
     for (ShapeDescription& shape : shapes_) padForEmbree(shape.mesh);
     for (ObjectDescription& object : description_.objects)
@@ -47,6 +48,28 @@ Scene::Scene(SceneDescription description)
     buildLights();
     prepareHitData();
     buildEmitterScene();
+}
+
+// The shapes that hold a subsurface medium (MediumDescription::subsurface) inside a
+// dielectric take that boundary as one where light enters diffusely
+// (materials/subsurface_boundary.cpp): a material of their own, one per boundary material.
+void Scene::takeSubsurfaceBoundaries() {
+    std::map<uint32_t, uint32_t> boundaryOf;
+    auto take = [&](ShapeDescription& s) {
+        if (s.insideMedium < 0 || !s.boundsMedium() || !description_.media[size_t(s.insideMedium)].subsurface) return;
+        const std::optional<float> ior = materials_[s.material]->refractiveIndex();
+        if (!ior || *ior == 1.0f) return;
+        auto [it, added] = boundaryOf.try_emplace(s.material, uint32_t(materials_.size()));
+        if (added) {
+            description_.materialNames.resize(materials_.size());  // scenes built in code may name none
+            materials_.push_back(makeSubsurfaceBoundary(materials_[s.material], *ior));
+            description_.materialNames.push_back(description_.materialNames[s.material] + " (where light enters)");
+        }
+        s.material = it->second;
+    };
+    for (ShapeDescription& s : shapes_) take(s);
+    for (ObjectDescription& object : description_.objects)
+        for (ShapeDescription& s : object.shapes) take(s);
 }
 
 // The world's emitting shapes (an object's are copied into the world per instance), each

@@ -262,6 +262,7 @@ private:
     void placeInstancedEmitters();
     // Each object's Embree scene and its instances in the world's (scene_instances.cpp).
     void addObjectsAndInstances();
+    void takeSubsurfaceBoundaries();
     void buildLights();
     void prepareHitData();
     // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)

@@ -381,7 +381,9 @@ private:
             return false;
         }
         ++counters_.segments;
-        if (settings_.arrivesInMedia && L.depth[i] >= L.firstArrival[i])
+        // Not under a surface: a walk of hundreds of events would leave as many photons, and
+        // camera paths walk there instead of gathering them.
+        if (settings_.arrivesInMedia && !m.subsurface && L.depth[i] >= L.firstArrival[i])
             sink_.arrive({o + d * t, Vec3{}, -d, L.beta(i) * weight, L.depth[i], L.onlySpecular[i] != 0, L.cell[i]});
         // A walk under a surface (MediumDescription::subsurface) is no vertex, as for camera paths.
         const bool underSurface = m.subsurface && L.walkEvents[i] < MediumDescription::kMaxSubsurfaceEvents;
@@ -425,10 +427,15 @@ private:
         L.setBeta(i, *next);
         const Ray ray = spawnRay(sp.hit.p, sp.hit.ng, sp.frame.toWorld(s->wi));
         L.setRay(i, ray);
+        const int32_t before = L.medium[i];
         if (shape.boundsMedium) L.medium[i] = scene_.mediumToward(hit, ray.d, L.medium[i]);
         L.state[i] = rng.state();
         L.onlySpecular[i] = onlySpecular ? -1 : 0;
-        ++L.depth[i];
+        // A reflection off the inside of a subsurface medium's surface is part of its walk.
+        const bool underSurface = shape.boundsMedium && before >= 0 && L.medium[i] == before &&
+                                  scene_.medium(before).subsurface &&
+                                  L.walkEvents[i] < MediumDescription::kMaxSubsurfaceEvents;
+        ++(underSurface ? L.walkEvents : L.depth)[i];
         L.alive[i] = -1;
     }
 

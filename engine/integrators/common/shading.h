@@ -265,4 +265,12 @@ inline bool walksUnderSurface(const Scene& scene, int32_t medium, int& events) {
     return true;
 }
 
+// Whether a camera path's bounce at `hit`, which took it from medium `before` to `after`,
+// is a reflection off the inside of a subsurface medium's surface: part of the walk, no
+// vertex toward render.max_depth (walksUnderSurface, which counts it in `events`).
+inline bool reflectsUnderSurface(const Scene& scene, const SurfaceHit& hit, int32_t before, int32_t after, int& events) {
+    if (before < 0 || after != before || !scene.shape(hit.shape).boundsMedium()) return false;
+    return walksUnderSurface(scene, before, events);
+}
+
 }  // namespace photon

@@ -63,7 +63,9 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
         // Russian roulette after a few bounces, on the throughput's largest channel.
         if (depth >= 3 && !survivesRoulette(beta, sampler.get1D())) break;
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        const int32_t before = medium;
         medium = scene.mediumToward(hit, ray.d, medium);
+        if (reflectsUnderSurface(scene, hit, before, medium, walkEvents)) --depth;
     }
     return L;
 }

@@ -144,7 +144,8 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             // A vertex in the medium. With volume photons the path ends at its first one:
             // its light sample brings single scattering (unless photons bring direct light),
             // the photons gathered around it the rest.
-            if (gathersInMedia()) {
+            // (Not under a surface, where the path walks on: no photons are left there.)
+            if (gathersInMedia() && !scene.medium(medium).subsurface) {
                 if (directBySampling)
                     direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, false), ++rays;
                 if (first) storeVolumePoint(index, hit.p, wo, beta, medium, pathLength, inMedia.boundaryDistance);
@@ -267,7 +268,9 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         if (depth >= 3 && maxComponent(beta) < 1.0f && !survivesRoulette(beta, sampler.get1D())) break;
         bounce = bounceFrom(sp, *s);
         ray = spawnRay(hit.p, hit.ng, sp.frame.toWorld(s->wi));
+        const int32_t before = medium;
         leaveSurface(scene, hit, ray.d, medium, inMedia);
+        if (reflectsUnderSurface(scene, hit, before, medium, walkEvents)) --depth;
     }
     return rays;
 }
