@@ -189,5 +189,21 @@ TEST(SubsurfaceReflectance, SppmAgreesWithThePathTracerUnderATexturedBall) {
         }
 }
 
+// The palette's dither is hashed from the point and the walks draw from their paths' own
+// numbers: a textured ball over a floor renders the same image, bit for bit, on one thread
+// and on two, by both integrators.
+TEST(SubsurfaceReflectance, TheSameImageOnAnyNumberOfThreads) {
+    std::vector<Color> texels(16);
+    for (int i = 0; i < 16; ++i) texels[size_t(i)] = Color(0.1f + 0.05f * float(i), 0.5f, 0.9f - 0.05f * float(i));
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
+        SceneDescription d = ballOverFloor(mediumOf(ColorParam(image(16, texels)), Color(0.3f)));
+        d.render.integrator = kind;
+        d.render.passes = 6;
+        d.render.photonsPerPass = 4000;
+        const Image one = test::renderWithThreads(d, 1), two = test::renderWithThreads(d, 2);
+        EXPECT_EQ(one.rgb, two.rgb) << int(kind);
+    }
+}
+
 }  // namespace
 }  // namespace photon::subsurface_reflectance_tests
