@@ -245,10 +245,8 @@ TEST(ScatteringMedium, AWhiteFurnaceOfUnevenSmokeStaysWhite) {
 // paths through the medium, and for SPPM gathering photons where they scatter in it
 // (volume photons, which "auto" chooses here), whose balls reach past the glass near it
 // (storeVolumePoint counts only their part inside; without that, 3-6% dark). The medium is
-// imported as a subsurface one, whose light comes in diffusely: that is not the reverse of
-// the way out, and in a ball this thin (3-4 mean free paths across) it leaves the face 2%
-// dark (0.971-0.986 by channel); rendered as the volume it is (`subsurface` off) the ball
-// is exactly white.
+// imported as a subsurface one; rendered as the volume it is (`subsurface` off), its walks
+// counted vertex by vertex, refracted in and out, with volume photons where "auto" has them.
 TEST(ScatteringMedium, AnImportedSubsurfaceBallOfSpectralonInAWhiteSkyIsWhite) {
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / ("photon-subsurface-" + std::to_string(::getpid()));

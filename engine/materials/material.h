@@ -235,7 +235,7 @@ Color hairReflectanceFromSigmaA(Color sigmaA, float betaN);
 MaterialPtr makeDiffuseTransmission(ColorParam reflectance, ColorParam transmittance);
 // The surface of a subsurface medium (MediumDescription::subsurface) whose boundary is
 // `boundary`, a dielectric of index `ior`: light going out refracts as the boundary makes it,
-// light coming in goes into every direction, (1 - F) / pi (materials/subsurface_boundary.cpp).
+// light coming in goes by the dipole BSSRDF's separable Fresnel lobe (materials/subsurface_boundary.cpp).
 MaterialPtr makeSubsurfaceBoundary(MaterialPtr boundary, float ior);
 
 }  // namespace photon

@@ -51,7 +51,7 @@ Scene::Scene(SceneDescription description)
 }
 
 // The shapes that hold a subsurface medium (MediumDescription::subsurface) inside a
-// dielectric take that boundary as one where light enters diffusely
+// dielectric take that boundary as one where light comes in as from a diffuse sky
 // (materials/subsurface_boundary.cpp): a material of their own, one per boundary material.
 void Scene::takeSubsurfaceBoundaries() {
     std::map<uint32_t, uint32_t> boundaryOf;
