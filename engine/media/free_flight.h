@@ -21,6 +21,21 @@ struct ChromaticFlight {
     Color ratios{1.0f};
 };
 
+// In a homogeneous medium, the distance sampleFreeFlight draws with u for `path` (before it
+// is cut at the segment's end): known before the segment is, so a ray need only be cast that
+// far (castPastBoundaries).
+inline float homogeneousFlightDistance(const MediumDescription& m, float u, const ChromaticFlight& path) {
+    int h = path.hero;
+    if (h < 0) {
+        h = std::min(static_cast<int>(u * 3), 2);
+        u = u * 3 - static_cast<float>(h);
+    }
+    u = std::min(u, 0x1.fffffep-1f);
+    const float sigmaT = m.extinction()[h];
+    return sigmaT > 0 ? static_cast<float>(-std::log1p(-static_cast<double>(u)) / sigmaT)
+                      : std::numeric_limits<float>::infinity();
+}
+
 // Samples the free flight of the ray o + t d (|d| = 1) over a segment of `length`
 // (infinite if the ray leaves the scene) in medium m with the number u in [0, 1) (the
 // path's first flight also picks its hero with it). Returns the distance at which the ray
