@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include "description/scene_description.h"
+#include "media/guided_walk.h"
 
 namespace photon {
 
@@ -24,14 +25,15 @@ struct ChromaticFlight {
 // In a homogeneous medium, the distance sampleFreeFlight draws with u for `path` (before it
 // is cut at the segment's end): known before the segment is, so a ray need only be cast that
 // far (castPastBoundaries).
-inline float homogeneousFlightDistance(const MediumDescription& m, float u, const ChromaticFlight& path) {
+inline float homogeneousFlightDistance(const MediumDescription& m, float u, const ChromaticFlight& path,
+                                       const GuidedStep* step = nullptr) {
     int h = path.hero;
     if (h < 0) {
         h = std::min(static_cast<int>(u * 3), 2);
         u = u * 3 - static_cast<float>(h);
     }
     u = std::min(u, 0x1.fffffep-1f);
-    const float sigmaT = m.extinction()[h];
+    const float sigmaT = step && step->on && step->guided ? step->stretched(m.extinction()[h], h) : m.extinction()[h];
     return sigmaT > 0 ? static_cast<float>(-std::log1p(-static_cast<double>(u)) / sigmaT)
                       : std::numeric_limits<float>::infinity();
 }
@@ -44,8 +46,44 @@ inline float homogeneousFlightDistance(const MediumDescription& m, float u, cons
 // T(length) at the end. In a medium of varying density the flight is drawn exactly on the
 // density's integral D(t) (DensityGrid::reach): T = exp(-sigma_t D), the density at the
 // point cancelling from the weight, so one number still draws a flight.
+// With a guided walk's `step` (guided_walk.h; homogeneous media only) the flight is drawn on
+// the strategy the step's direction was drawn with, and weighed by the mixture of both
+// strategies' densities of direction and flight together.
 inline float sampleFreeFlight(const MediumDescription& m, Vec3 o, Vec3 dir, float length, float u, Color& beta,
-                              ChromaticFlight& path) {
+                              ChromaticFlight& path, const GuidedStep* step = nullptr) {
+    if (step && step->on && path.hero >= 0 && !m.density) {
+        const Color sigmaT = m.extinction();
+        const int h = path.hero;
+        u = std::min(u, 0x1.fffffep-1f);
+        const float used = step->guided ? step->stretched(sigmaT[h], h) : sigmaT[h];
+        const double flight = used > 0 ? -std::log1p(-static_cast<double>(u)) / used : std::numeric_limits<double>::infinity();
+        const bool scatters = flight < length;
+        const float d = scatters ? static_cast<float>(flight) : length;
+        // Per channel: a flight's density on extinction s, to d (scattering) or past it.
+        auto flightDensity = [&](float s) { return scatters ? s * std::exp(-s * d) : std::exp(-s * d); };
+        const Color guide = step->guideDensity();
+        Color density, weight;
+        for (int c = 0; c < 3; ++c) {
+            density[c] = (1 - GuidedStep::kGuidedProbability) * step->phase * flightDensity(sigmaT[c]) +
+                         GuidedStep::kGuidedProbability * guide[c] * flightDensity(step->stretched(sigmaT[c], c));
+            const float tr = std::exp(-sigmaT[c] * d);
+            weight[c] = step->phase * (scatters ? m.scattering[c] * tr : tr);
+        }
+        const float hero = density[h];
+        if (!(hero > 0)) {
+            beta = Color(0.0f);
+            return d;
+        }
+        const Color ratios = path.ratios * (density / hero);
+        const float mean = (ratios.x + ratios.y + ratios.z) / 3;
+        if (!(mean > 0)) {
+            beta = Color(0.0f);
+            return d;
+        }
+        beta = beta * (weight / hero) / mean;
+        path.ratios = ratios / mean;
+        return d;
+    }
     if (path.hero < 0) {
         path.hero = std::min(static_cast<int>(u * 3), 2);
         u = u * 3 - static_cast<float>(path.hero);

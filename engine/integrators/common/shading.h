@@ -71,6 +71,11 @@ struct PathInMedia {
     // part of their ball that lies in the medium (storeVolumePoint).
     Vec3 boundaryNormal{0.0f};
     float boundaryDistance = std::numeric_limits<float>::infinity();
+    // Under a surface (MediumDescription::subsurface): the outward normal of the surface the
+    // path came in by (zero: none), toward which its walk is guided, and how the step under
+    // way was drawn (media/guided_walk.h), which its next flight consumes.
+    Vec3 walkNormal{0.0f};
+    GuidedStep step;
 };
 
 // A number in [0, 1) drawn from the ray itself, for the emission estimate of a path that
@@ -110,12 +115,13 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         // scatters every few tenths of a millimetre). Nothing is drawn differently.
         Ray probe = ray;
         if (flies && !emits && !scene.medium(medium).density)
-            probe.tMax = std::min(probe.tMax, homogeneousFlightDistance(scene.medium(medium), u, media->flight));
+            probe.tMax = std::min(probe.tMax, homogeneousFlightDistance(scene.medium(medium), u, media->flight, &media->step));
         const bool found = scene.intersect(probe, hit);
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
         if (emits) *emitted += beta * sampleEmissionAlong(scene.medium(medium), ray.o, ray.d, segment, u);
         if (flies) {
-            const float t = sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, u, beta, media->flight);
+            const float t = sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, u, beta, media->flight, &media->step);
+            media->step.on = false;
             if (t < segment) {
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;
@@ -258,6 +264,39 @@ inline Ray scatterInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, 
     return Ray{p, s.wi};
 }
 
+// How a camera path's walk under a surface goes on from p (a scattering event that
+// walksUnderSurface counts): toward the surface it came in by with probability
+// GuidedStep::kGuidedProbability (guided_walk.h), else by the phase function; its next flight
+// weighs the two (sampleFreeFlight). No light sample was taken: the light its ray finds
+// counts in full. Without a walk normal (the camera inside the medium) or in a medium whose
+// density varies, the phase function's step as in scatterInMedium.
+inline Ray stepUnderSurface(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathInMedia& media,
+                            BounceSampling& bounce) {
+    const MediumDescription& m = scene.medium(medium);
+    const float uChoice = media.sampler.get1D();
+    const Vec2 u = media.sampler.get2D();
+    bounce = BounceSampling{};
+    const Vec3 n = media.walkNormal;
+    if ((n.x == 0 && n.y == 0 && n.z == 0) || m.density || media.flight.hero < 0)
+        return Ray{p, sampleHenyeyGreenstein(wo, m.g, u).wi};
+    GuidedStep& step = media.step;
+    step.on = true;
+    const Color sigmaT = m.extinction();
+    for (int c = 0; c < 3; ++c) step.nu0[c] = dwivediEigenvalue(sigmaT[c] > 0 ? m.scattering[c] / sigmaT[c] : 0.0f);
+    Vec3 wi;
+    step.guided = uChoice < GuidedStep::kGuidedProbability;
+    if (step.guided) {
+        const float mu = GuidedStep::sampleMu(u.x, step.nu0[media.flight.hero]);
+        const float sine = std::sqrt(std::max(0.0f, 1 - mu * mu)), phi = 2 * 3.14159265358979f * u.y;
+        wi = Frame::fromNormal(n).toWorld({sine * std::cos(phi), sine * std::sin(phi), mu});
+    } else {
+        wi = sampleHenyeyGreenstein(wo, m.g, u).wi;
+    }
+    step.mu = std::clamp(dot(wi, n), -1.0f, 1.0f);
+    step.phase = henyeyGreenstein(dot(wo, wi), m.g);
+    return Ray{p, wi};
+}
+
 // Whether a path's scattering event in `medium` is one of a walk under a surface
 // (MediumDescription::subsurface) that counts as no vertex toward render.max_depth: true
 // while the path has taken fewer than kMaxSubsurfaceEvents such events (counted in
@@ -269,6 +308,12 @@ inline bool walksUnderSurface(const Scene& scene, int32_t medium, int& events) {
     if (!scene.medium(medium).subsurface || events >= MediumDescription::kMaxSubsurfaceEvents) return false;
     ++events;
     return true;
+}
+
+// Where a camera path's bounce at `hit` took it from medium `before` into a subsurface
+// medium `after`, its walk there is guided back toward this surface (stepUnderSurface).
+inline void entersUnderSurface(const Scene& scene, const SurfaceHit& hit, int32_t before, int32_t after, PathInMedia& media) {
+    if (after >= 0 && after != before && scene.medium(after).subsurface) media.walkNormal = hit.ng;
 }
 
 // Whether a camera path's bounce at `hit`, which took it from medium `before` to `after`,

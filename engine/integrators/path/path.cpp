@@ -46,7 +46,8 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
             // Under a surface the walk takes no light samples (walksUnderSurface).
             const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
             if (!underSurface) L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler);
-            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce, underSurface);
+            ray = underSurface ? stepUnderSurface(scene, hit.p, wo, medium, inMedia, bounce)
+                               : scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
             if (underSurface) --depth;  // the walk is no vertex: the next event has this depth too
             if ((depth >= 3 || walkEvents >= 3) && !survivesRoulette(beta, sampler.get1D())) break;
             continue;
@@ -66,6 +67,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
         const int32_t before = medium;
         medium = scene.mediumToward(hit, ray.d, medium);
         if (reflectsUnderSurface(scene, hit, before, medium, walkEvents)) --depth;
+        entersUnderSurface(scene, hit, before, medium, inMedia);
     }
     return L;
 }

@@ -156,7 +156,8 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             // Under a surface the walk takes no light samples (walksUnderSurface).
             const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
             if (!underSurface) direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
-            ray = scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce, underSurface);
+            ray = underSurface ? stepUnderSurface(scene, hit.p, wo, medium, inMedia, bounce)
+                               : scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
             inMedia.boundaryNormal = Vec3(0.0f);
             if (underSurface) {
                 --depth;  // the walk is no vertex: the next event has this depth too
@@ -271,6 +272,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         const int32_t before = medium;
         leaveSurface(scene, hit, ray.d, medium, inMedia);
         if (reflectsUnderSurface(scene, hit, before, medium, walkEvents)) --depth;
+        entersUnderSurface(scene, hit, before, medium, inMedia);
     }
     return rays;
 }
