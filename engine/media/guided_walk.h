@@ -7,7 +7,9 @@
 //     p(mu) = 1 / ((nu0 - mu) ln((nu0 + 1) / (nu0 - 1))),   mu = cos(direction, n),
 // and its flight on the stretched extinction sigma_t (1 - mu / nu0), longer toward the surface,
 // shorter away; nu0 is Dwivedi's eigenvalue of the albedo. Each step is guided with
-// probability kGuidedProbability and otherwise classical (the phase function and sigma_t),
+// probability kGuidedProbability (3/4: against 1/2 and 0.9, the least noise at equal time on
+// a Skin1 ball and on scenes/subsurface.json, docs/sppm.md) and otherwise classical (the phase
+// function and sigma_t),
 // and weighed by the mixture of the two (one-sample multiple importance sampling, balance
 // heuristic), channel by channel with the path's chromatic weights (free_flight.h): every
 // step keeps its expectation, so the walk stays unbiased.
@@ -24,7 +26,7 @@ float dwivediEigenvalue(float albedo);
 
 // How the step under way was drawn, for its flight's weight (sampleFreeFlight).
 struct GuidedStep {
-    static constexpr float kGuidedProbability = 0.5f;
+    static constexpr float kGuidedProbability = 0.75f;
     bool on = false;      // the next flight is a guided walk's step
     bool guided = false;  // drawn toward the surface (else by the phase function)
     float mu = 0;         // cos between its direction and the surface normal
