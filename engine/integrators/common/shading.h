@@ -75,7 +75,7 @@ struct PathInMedia {
     // path came in by (zero: none), toward which its walk is guided, and how the step under
     // way was drawn (media/guided_walk.h), which its next flight consumes.
     Vec3 walkNormal{0.0f};
-    GuidedStep step;
+    GuidedStep step{};
 };
 
 // A number in [0, 1) drawn from the ray itself, for the emission estimate of a path that
