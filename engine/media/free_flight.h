@@ -38,6 +38,20 @@ inline float homogeneousFlightDistance(const MediumDescription& m, float u, cons
                       : std::numeric_limits<float>::infinity();
 }
 
+// Weighs a path by a flight whose density in each channel over the hero's is `density` and
+// whose contribution over the hero's density is `weight`: beta = f / mean(r) over the path,
+// the old mean being 1.
+inline void weighFlight(Color density, Color weight, Color& beta, ChromaticFlight& path) {
+    const Color ratios = path.ratios * density;
+    const float mean = (ratios.x + ratios.y + ratios.z) / 3;
+    if (!(mean > 0)) {
+        beta = Color(0.0f);
+        return;
+    }
+    beta = beta * weight / mean;
+    path.ratios = ratios / mean;
+}
+
 // Samples the free flight of the ray o + t d (|d| = 1) over a segment of `length`
 // (infinite if the ray leaves the scene) in medium m with the number u in [0, 1) (the
 // path's first flight also picks its hero with it). Returns the distance at which the ray
@@ -74,14 +88,7 @@ inline float sampleFreeFlight(const MediumDescription& m, Vec3 o, Vec3 dir, floa
             beta = Color(0.0f);
             return d;
         }
-        const Color ratios = path.ratios * (density / hero);
-        const float mean = (ratios.x + ratios.y + ratios.z) / 3;
-        if (!(mean > 0)) {
-            beta = Color(0.0f);
-            return d;
-        }
-        beta = beta * (weight / hero) / mean;
-        path.ratios = ratios / mean;
+        weighFlight(density / hero, weight / hero, beta, path);
         return d;
     }
     if (path.hero < 0) {
@@ -110,15 +117,7 @@ inline float sampleFreeFlight(const MediumDescription& m, Vec3 o, Vec3 dir, floa
     const float hero = scatters ? sigmaT[h] * tr[h] : tr[h];
     const Color density = (scatters ? sigmaT * tr : tr) / hero;
     const Color weight = (scatters ? m.scattering * tr : tr) / hero;
-    const Color ratios = path.ratios * density;
-    const float mean = (ratios.x + ratios.y + ratios.z) / 3;
-    if (!(mean > 0)) {
-        beta = Color(0.0f);
-        return d;
-    }
-    // beta = f / mean(r) over the path: the old mean was 1.
-    beta = beta * weight / mean;
-    path.ratios = ratios / mean;
+    weighFlight(density, weight, beta, path);
     return d;
 }
 
