@@ -26,7 +26,7 @@ inline __attribute__((always_inline)) void seedPcg32(U streamKey, U index, U& st
     state = (increment + key) * kMultiplier + increment;
 }
 
-enum class StreamPurpose : uint64_t { Camera = 1, Photon = 2, Test = 3, Setup = 4, Features = 5, Rounding = 6 };
+enum class StreamPurpose : uint64_t { Camera = 1, Photon = 2, Test = 3, Setup = 4, Features = 5, Rounding = 6, Coverage = 7 };
 
 // What a stream's paths share: the key made from (seed, pass, purpose). Built once per
 // pass and handed to every path's Rng, it saves two of the five mixing rounds per path.

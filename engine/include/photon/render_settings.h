@@ -130,6 +130,10 @@ struct RenderSettings {
     // photons' spread shows asks for, not by alpha's schedule alone (docs/sppm.md, "Radii
     // that follow the light").
     bool adaptiveRadius = true;
+    // SPPM: where a pass's photons show that an edge cuts a visible point's disc, short rays
+    // measure the share of the disc photons can land on, and the pass's estimate is divided
+    // by it instead of counting area past the edge (docs/sppm.md, "Discs cut by edges").
+    bool discCoverage = true;
     // SPPM in media that scatter: a camera path's visible point goes where it first scatters
     // in a medium, and photons are gathered there in a ball (a volumetric photon map's
     // estimate) as well as on surfaces (docs/sppm.md, "Volume photons"). Never: visible
@@ -185,6 +189,8 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     // Likewise: a checkpoint written before radii followed the light goes on with them, its
     // moments learnt anew (AdaptiveRadius::restore).
     if (!s.adaptiveRadius) visit(s.adaptiveRadius);
+    // Likewise: a checkpoint written before discs' coverage was measured goes on with it.
+    if (!s.discCoverage) visit(s.discCoverage);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):
@@ -200,6 +206,9 @@ inline bool adaptsCameraPaths(const RenderSettings& s) {
     return s.adaptiveCameraPaths && s.integrator == IntegratorKind::Sppm &&
            s.radiusSchedule == RadiusSchedule::PerPixel && !s.lightweight;
 }
+
+// Whether SPPM measures the share of each disc photons can land on (discCoverage).
+inline bool coversDiscs(const RenderSettings& s) { return s.discCoverage && s.integrator == IntegratorKind::Sppm; }
 
 // Whether SPPM's radii follow each pixel's photons (adaptiveRadius): with the per-pixel
 // schedule only, whose radii are per pixel.

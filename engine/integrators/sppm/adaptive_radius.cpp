@@ -16,9 +16,10 @@ constexpr uint32_t kMostSpreadPhotons = 1u << 21;            // PhotonSpread: 2^
 
 uint8_t PhotonSpread::of(uint32_t units, uint32_t photons) {
     if (photons == 0 || photons >= kMostSpreadPhotons) return kUnknown;
-    const double mean = static_cast<double>(units) / (static_cast<double>(photons) * kUnitsPerPhoton);
-    return static_cast<uint8_t>(std::lround(std::clamp(mean, 0.0, 1.0) * 254.0));
+    return code(static_cast<double>(units) / (static_cast<double>(photons) * kUnitsPerPhoton));
 }
+
+uint8_t PhotonSpread::code(double mean) { return static_cast<uint8_t>(std::lround(std::clamp(mean, 0.0, 1.0) * 254.0)); }
 
 float balancedRadiusSquared(float r2, float n, float beta) {
     const double b2 = static_cast<double>(beta) * beta;

@@ -45,6 +45,8 @@ struct PhotonSpread {
     // included), within [0, 1], in 1/254 (kUnknown: none, or too many to have summed).
     static uint8_t of(uint32_t units, uint32_t photons);
     static float mean(uint8_t code) { return static_cast<float>(code) / 254.0f; }
+    // A mean as that byte, clamped to [0, 1].
+    static uint8_t code(double mean);
 };
 
 // beta = dL / L from photons' mean spread s in a disc of squared radius r2 (above).

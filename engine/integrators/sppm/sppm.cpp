@@ -23,7 +23,8 @@ SppmIntegrator::SppmIntegrator(std::shared_ptr<const Scene> scene)
       adaptivePhotons_(adaptsPhotonsPerPass(settings_)), gathersInMedia_(gathersInMedia(*scene_)),
       halves_(global() ? 0 : static_cast<size_t>(width_) * height_), lightsInView_(*scene_),
       learnsLobeChoice_(learnsLobeChoice(settings_)),
-      adaptsCameraPaths_(adaptsCameraPaths(settings_)), adaptsRadius_(adaptsRadius(settings_)) {
+      adaptsCameraPaths_(adaptsCameraPaths(settings_)), adaptsRadius_(adaptsRadius(settings_)),
+      coversDiscs_(coversDiscs(settings_)) {
     if (learnsLobeChoice_) lobeChoice_ = LearnedLobeChoice(width_, height_);
     if (adaptsRadius_) radius_ = AdaptiveRadius(width_, height_);
     if (adaptsCameraPaths_) cameraPaths_ = AdaptiveCameraPaths(width_, height_);
@@ -73,6 +74,7 @@ void SppmIntegrator::allocatePassBuffers() {
     const size_t band = static_cast<size_t>(bandRows_) * width_;
     discs_.resize(band);
     visible_.resize(band);
+    if (coversDiscs_) edgeSeen_.assign(band, 0);
     results_.resize(static_cast<size_t>(bandRows_ + kHeldRows) * width_);
 }
 
@@ -81,6 +83,7 @@ void SppmIntegrator::releasePassBuffers() {
     // Assigned empty vectors, which take their storage with them (= {} would only clear).
     discs_ = std::vector<GatherDisc>();
     visible_ = std::vector<VisiblePoint>();
+    edgeSeen_ = std::vector<uint8_t>();
     results_ = std::vector<PassResult>();
 }
 
@@ -90,7 +93,8 @@ size_t SppmIntegrator::bytesPerPixel() const {
                                (learnsLobeChoice_ ? LearnedLobeChoice::kBytesPerPixel : 0) +
                                (adaptsCameraPaths_ ? AdaptiveCameraPaths::kBytesPerPixel : 0) +
                                (adaptsRadius_ ? AdaptiveRadius::kBytesPerPixel : 0);
-    const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(PassResult)) *
+    const size_t band = (sizeof(GatherDisc) + sizeof(VisiblePoint) + sizeof(PassResult) +
+                         (coversDiscs_ ? sizeof(uint8_t) : 0)) *
                         static_cast<size_t>(bandRows_ + kHeldRows) / static_cast<size_t>(std::max(height_, 1));
     const size_t pixels = static_cast<size_t>(width_) * static_cast<size_t>(std::max(height_, 1));
     return state + lightsInView_.bytes() / std::max<size_t>(pixels, 1) + band;

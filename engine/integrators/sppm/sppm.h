@@ -311,6 +311,8 @@ private:
     // render.adaptive_radius (adaptsRadius): each pixel's moments of its photons' spread.
     bool adaptsRadius_;
     AdaptiveRadius radius_;
+    // render.disc_coverage (coversDiscs): each visible point's disc measured (disc_coverage.h).
+    bool coversDiscs_;
     // The camera paths pixel i's direct light sum was made of.
     float directPaths(size_t i) const {
         return adaptsCameraPaths_ ? cameraPaths_.pathsTraced(i) : static_cast<float>(passes_);
@@ -325,6 +327,10 @@ private:
     }
     std::vector<GatherDisc> discs_;
     std::vector<VisiblePoint> visible_;
+    // render.disc_coverage: 1 where a band pixel's disc turned away a photon this pass (a
+    // surface facing elsewhere inside its sphere: an edge), so that its coverage is measured
+    // in full (collectBand).
+    std::vector<uint8_t> edgeSeen_;
     // The pass's results of the band's rows and of the kHeldRows rows before it, whose
     // statistics wait for the band (commitBand): pixel i's at results_[i + kHeldRows * width_
     // - bandOffset_]. Two rows of a 3840-pixel frame are 184 KB; the frame's were 199 MB.

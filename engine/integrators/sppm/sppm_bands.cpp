@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include "integrators/common/milliseconds_since.h"
+#include "integrators/sppm/disc_coverage.h"
 #include "integrators/sppm/sppm.h"
 #include <tbb/parallel_for.h>
 
@@ -63,17 +64,31 @@ void SppmIntegrator::collectBand() {
     // The flux's rounding, from a stream of its own per pixel and pass: the same wherever
     // and in whatever band the pixel is.
     const RngStream rounding(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Rounding);
+    const RngStream covering(settings_.seed, static_cast<uint64_t>(passIndex_), StreamPurpose::Coverage);
     tbb::parallel_for(size_t(0), bandPixels(), [&](size_t k) {
         const VisiblePoint& vp = visible_[k];
         PassResult& r = result(bandOffset_ + k);
         const Color flux(static_cast<float>(static_cast<double>(vp.flux[0]) * fluxUnit),
                          static_cast<float>(static_cast<double>(vp.flux[1]) * fluxUnit),
                          static_cast<float>(static_cast<double>(vp.flux[2]) * fluxUnit));
-        r.flux = SharedExponentColor::of(flux, Rng(rounding, bandOffset_ + k).uniform());
         r.photonCount = vp.photonCount();
         r.radiusSquared = discs_[k].radiusSquared;
         // A ball's photons spread as a volume's, which the disc's rule does not read.
         r.spread = vp.inMedium || guidePass_ >= 0 ? PhotonSpread::kUnknown : PhotonSpread::of(vp.high(), r.photonCount);
+        // render.disc_coverage: where the pass's photons showed an edge, the flux over the
+        // share of the disc photons can land on, and the spread read against a flat light's
+        // over that share. Only where photons came: elsewhere the flux is 0 whatever the share.
+        float share = 1;
+        if (coversDiscs_ && edgeSeen_[k] && r.photonCount > 0 && !vp.inMedium && guidePass_ < 0) {
+            const DiscCoverage coverage =
+                measureDiscCoverage(*scene_, discs_[k].center, vp.n.decode(), discs_[k].radiusSquared, vp.transmits,
+                                    settings_.kernel, Rng(covering, bandOffset_ + k).uniform());
+            share = coverage.share;
+            if (r.spread != PhotonSpread::kUnknown)
+                r.spread = PhotonSpread::code(PhotonSpread::mean(r.spread) - coverage.meanSpread + 0.5f);
+        }
+        if (coversDiscs_) edgeSeen_[k] = 0;
+        r.flux = SharedExponentColor::of(flux / share, Rng(rounding, bandOffset_ + k).uniform());
     });
 }
 

@@ -134,7 +134,11 @@ void SppmIntegrator::addPhoton(const PhotonHit& hit, uint32_t point, float d2Ove
             // and shrinks the radius (adaptive_radius.h). Not a photon that scattered in a
             // medium (no normal), nor in the guide's training passes, nor where radii follow
             // alpha's schedule alone (the spread is then never read).
-            if (adaptsRadius_ && !counters.guideWorth && hit.n != Vec3{})
+            // With the disc's coverage measured (render.disc_coverage) the estimate no longer
+            // counts that area: the photon marks the disc for a full measurement instead.
+            if (coversDiscs_) {
+                if (hit.n != Vec3{}) std::atomic_ref<uint8_t>(edgeSeen_[point]).store(1, std::memory_order_relaxed);
+            } else if (adaptsRadius_ && !counters.guideWorth && hit.n != Vec3{})
                 std::atomic_ref<uint64_t>(vp.gathered)
                     .fetch_add(static_cast<uint64_t>(PhotonSpread::kUnitsPerPhoton) << 32, std::memory_order_relaxed);
             return;

@@ -1,0 +1,99 @@
+#include "integrators/sppm/disc_coverage.h"
+#include <algorithm>
+#include <cmath>
+#include "integrators/common/shading.h"
+#include "math/frame.h"
+#include "math/ray.h"
+#include "scene/scene.h"
+
+namespace photon {
+
+namespace {
+// Surfaces a ray may pass on its way: glass, smooth or rough, and mirrors receive no photons
+// and let them through (or around) to what lies behind, and a sheet that transmits (diffuse
+// transmission) lights what is behind it. A few, so that a stack of them cannot cost much.
+constexpr int kPassable = 3;
+// Near the rim a column's half height, sqrt(1 - s) r, goes to 0; it keeps at least this
+// share of r, so that its ray starts clear of the surface it is to find.
+constexpr float kLeastHalfHeight = 0.25f;
+// The height over the surface, in r, at which a column's foot is looked for from the centre.
+constexpr float kLookHeight = 0.05f;
+constexpr float kGoldenFraction = 0.61803398875f;
+
+enum class Found { Nothing, Facing, FacingElsewhere };
+
+// The first surface along `ray` that photons land on and that does not let them through,
+// seen from the ray's origin: one facing as the disc's normal n does (the gather's own test,
+// sppm_gather.cpp), or one that does not. A sheet that transmits counts where it faces as
+// the disc does (photons land on it) and is passed where it does not.
+Found firstPhotonSurface(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
+    for (int passed = 0; passed <= kPassable; ++passed) {
+        SurfaceHit hit;
+        if (!scene.intersect(ray, hit)) return Found::Nothing;
+        const Material& m = scene.material(hit);
+        const bool through = m.isDeltaOnly() || m.refractiveIndex().has_value();
+        if (!through) {
+            turnTowardViewer(m, hit, -ray.d);
+            const float facing = dot(n, hit.ns);
+            if ((transmits ? std::abs(facing) : facing) >= 0.5f) return Found::Facing;
+            if (!m.transmits()) return Found::FacingElsewhere;
+        }
+        const float left = ray.tMax - hit.t;
+        ray = spawnRay(hit.p, hit.ng, ray.d);
+        ray.tMax = left;
+    }
+    return Found::Nothing;
+}
+
+// Whether photons land under the disc at `offset` (in its plane) from its centre p: the
+// column there, from the sphere's top down through it, first meets a surface facing as the
+// disc does, and the way to it from the centre, just over the surface, is not cut by one
+// facing elsewhere (a wall, a box's side: a column inside a box on the floor would find
+// the floor under it, where no photon comes). A surface facing as the disc does on that way
+// is the disc's own rising (a bowl's inside), not a wall.
+bool photonsLandAt(const Scene& scene, Vec3 p, Vec3 n, Vec3 offset, float r, float half, bool transmits) {
+    const float d = length(offset);
+    const Vec3 look = p + n * (kLookHeight * r);
+    if (d > 0 && firstPhotonSurface(scene, Ray{look, offset / d, d}, n, transmits) == Found::FacingElsewhere)
+        return false;
+    return firstPhotonSurface(scene, Ray{p + offset + n * half, -n, 2.0f * half}, n, transmits) == Found::Facing;
+}
+
+// The k-th of the spiral's columns: its offset from the centre in the disc's plane, its
+// s = d^2 / r^2 = (k + 1/2) / K (equal areas), and its half height.
+struct Column {
+    Vec3 offset;
+    float s, half;
+};
+Column columnOf(int k, const Frame& frame, float r, float turn) {
+    const float s = (static_cast<float>(k) + 0.5f) / kDiscCoverageColumns;
+    const float turns = static_cast<float>(k) * kGoldenFraction + turn;
+    const float phi = 2.0f * kPi * (turns - std::floor(turns));
+    const float d = r * std::sqrt(s);
+    return {frame.s * (d * std::cos(phi)) + frame.t * (d * std::sin(phi)), s,
+            r * std::max(std::sqrt(1.0f - s), kLeastHalfHeight)};
+}
+}  // namespace
+
+DiscCoverage measureDiscCoverage(const Scene& scene, Vec3 p, Vec3 n, float r2, bool transmits, KernelKind kernel,
+                                 float turn) {
+    const Frame frame = Frame::fromNormal(n);
+    const float r = std::sqrt(r2);
+    float all = 0, covered = 0, spread = 0;
+    int columns = 0;
+    for (int k = 0; k < kDiscCoverageColumns; ++k) {
+        const Column c = columnOf(k, frame, r, turn);
+        const float w = kernelWeight(kernel, c.s);
+        all += w;
+        if (!photonsLandAt(scene, p, n, c.offset, r, c.half, transmits)) continue;
+        covered += w;
+        spread += c.s;  // unweighted, as the photons' spread is summed
+        ++columns;
+    }
+    // The column nearest the centre stands on the point itself; should every one miss (a
+    // sliver of a surface), the disc is taken whole rather than divided by nothing.
+    if (!(covered > 0)) return {};
+    return {covered / all, spread / static_cast<float>(columns)};
+}
+
+}  // namespace photon
