@@ -52,11 +52,12 @@ Found firstPhotonSurface(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
 // the floor under it, where no photon comes). A surface facing as the disc does on that way
 // is the disc's own rising (a bowl's inside), not a wall.
 bool photonsLandAt(const Scene& scene, Vec3 p, Vec3 n, Vec3 offset, float r, float half, bool transmits) {
-    const float d = length(offset);
-    const Vec3 look = p + n * (kLookHeight * r);
-    if (d > 0 && firstPhotonSurface(scene, Ray{look, offset / d, d}, n, transmits) == Found::FacingElsewhere)
+    // The column first: where it finds nothing (past a wall, over a cliff) the way is not cast.
+    if (firstPhotonSurface(scene, Ray{p + offset + n * half, -n, 2.0f * half}, n, transmits) != Found::Facing)
         return false;
-    return firstPhotonSurface(scene, Ray{p + offset + n * half, -n, 2.0f * half}, n, transmits) == Found::Facing;
+    const float d = length(offset);
+    return !(d > 0) || firstPhotonSurface(scene, Ray{p + n * (kLookHeight * r), offset / d, d}, n, transmits) !=
+                           Found::FacingElsewhere;
 }
 
 // The k-th of the spiral's columns: its offset from the centre in the disc's plane, its
