@@ -36,6 +36,8 @@ bool SppmIntegrator::traceBands(const CancelToken& cancel, int64_t photons, cons
             // costs its camera paths alone (a tuft of hair under the sky: docs/sppm.md).
             if (grid_.entryCount() > 0) {
                 t0 = std::chrono::steady_clock::now();
+                // Unmarked, whatever a cancelled pass left (render.disc_coverage).
+                if (coversDiscs_) std::fill(edgeSeen_.begin(), edgeSeen_.end(), uint8_t{0});
                 photonPass(stop, photons);
                 stats_.photonMs += millisecondsSince(t0);
                 photonsTraced_ = true;
@@ -87,7 +89,6 @@ void SppmIntegrator::collectBand() {
             if (r.spread != PhotonSpread::kUnknown)
                 r.spread = PhotonSpread::code(PhotonSpread::mean(r.spread) - coverage.meanSpread + 0.5f);
         }
-        if (coversDiscs_) edgeSeen_[k] = 0;
         r.flux = SharedExponentColor::of(flux / share, Rng(rounding, bandOffset_ + k).uniform());
     });
 }
