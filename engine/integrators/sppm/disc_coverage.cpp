@@ -19,6 +19,7 @@ constexpr float kLeastHalfHeight = 0.25f;
 // The height over the surface, in r, at which a column's foot is looked for from the centre.
 constexpr float kLookHeight = 0.05f;
 constexpr float kGoldenFraction = 0.61803398875f;
+constexpr float kLargestRadiusSquared = 1e30f;  // r up to 1e15
 
 enum class Found { Nothing, Facing, FacingElsewhere };
 
@@ -78,6 +79,9 @@ Column columnOf(int k, const Frame& frame, float r, float turn) {
 
 DiscCoverage measureDiscCoverage(const Scene& scene, Vec3 p, Vec3 n, float r2, bool transmits, KernelKind kernel,
                                  float turn) {
+    // A radius no ray can be cast with (a damaged checkpoint's) leaves the disc whole: Embree
+    // takes no ray whose origin or direction has a coordinate beyond 1.8e18.
+    if (!(r2 > 0) || !(r2 < kLargestRadiusSquared)) return {};
     const Frame frame = Frame::fromNormal(n);
     const float r = std::sqrt(r2);
     float all = 0, covered = 0, spread = 0;
