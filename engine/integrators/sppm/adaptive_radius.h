@@ -16,7 +16,9 @@
 // box), which the disc turns away, adds 1 to the sum, as one at the rim would, and is not
 // counted: with the corner through the centre the mean reads 3/2 (clamped to 1) and the
 // radius shrinks as fast as it may. Without it the Cornell box's regions along its corners
-// came out 2.1% dark at 64 x 64 where alpha's schedule keeps them within 2%.
+// came out 2.1% dark at 64 x 64 where alpha's schedule keeps them within 2%. With
+// render.disc_coverage (disc_coverage.h) such a photon instead marks the disc, whose
+// measured share corrects the estimate and the mean s it is read against.
 //
 // With n photons in the disc the estimate's relative variance is about 1 / n, so c / r^2
 // with c = r^2 / n; its relative bias is beta r^2 / 8. The squared error
