@@ -109,22 +109,50 @@ TEST(DiscCoverage, ABoxOnTheFloorCutsTheDiscAndGlassDoesNot) {
     EXPECT_EQ(measureDiscCoverage(*scene, {-1.8f, 0, 0}, {0, 1, 0}, 1.0f, false, KernelKind::Uniform, 0.7f).share, 1.0f);
 }
 
-// A floor lit by a far point light, up to a wall it meets at x = 0, seen from above (32 x
-// 32, 0.0875 units a pixel), rendered by photons alone with a fixed radius of 0.2 (alpha
-// near 1, radii not following the light). The light stands off to the floor's side, so the
-// wall is lit too and its photons show the corner to the discs beside it.
-Image cornerRender(bool coverage, int threads = 0) {
+// A post thinner than the disc standing on the floor beside its centre: no photon comes
+// under it, but the floor behind it is lit from above and gathered like the rest, so only
+// its footprint is cut (the way to a column's foot behind it goes into the post and out
+// again). Measured 0.9866 and, with two posts in a row, 0.9901 (the spiral's fixed rings
+// against the footprints' 0.9873); counting the floor behind them as cut too, as a box's
+// side cuts it, read 0.9064 and 0.8617: the estimate there 9% and 15% high.
+TEST(DiscCoverage, APostCutsOnlyItsFootprint) {
+    SceneDescription d = test::hitTestScene();
+    d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0)};
+    for (const ShapeDescription& face : test::boxFaces({0.3f, 0, -0.1f}, {0.5f, 2, 0.1f}, 0)) d.shapes.push_back(face);
+    auto scene = Scene::build(std::move(d));
+    EXPECT_NEAR(meanCoverage(*scene, {0, 0, 0}).share, 1 - 0.2 * 0.2 / kPi, 0.003);
+    // Two posts in a row, the second behind the first: four crossings, still the footprints.
+    SceneDescription two = test::hitTestScene();
+    two.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0)};
+    for (float x0 : {0.2f, 0.5f})
+        for (const ShapeDescription& face : test::boxFaces({x0, 0, -0.1f}, {x0 + 0.1f, 2, 0.1f}, 0)) two.shapes.push_back(face);
+    auto rows = Scene::build(std::move(two));
+    EXPECT_NEAR(meanCoverage(*rows, {0, 0, 0}).share, 1 - 2 * 0.1 * 0.2 / kPi, 0.003);
+}
+
+// The floor scenes below, seen from above (32 x 32, 0.0875 units a pixel), rendered by
+// photons alone (`bounces` of them) with a fixed radius of 0.2: alpha near 1, radii not
+// following the light.
+SceneDescription floorUnderAFarLight(Vec3 light, int bounces) {
     SceneDescription d = test::pointLightPlane(0.5f, 4e6f, 1000, 32, 3);
-    d.shapes = {test::quad({-3, 0, 3}, {3, 0, 0}, {0, 0, -6}, 0), test::quad({0, 0, -3}, {0, 0, 6}, {0, 2, 0}, 0)};
-    d.lights[0].position = {-200, 1000, 0};
+    d.lights[0].position = light;
     d.render.direct = DirectLighting::Photons;
-    d.render.maxDepth = 1;
+    d.render.maxDepth = bounces;
     d.render.passes = 32;
     d.render.photonsPerPass = 100000;
     d.render.adaptivePhotons = false;
     d.render.adaptiveRadius = false;
     d.render.initialRadius = 0.2f;
     d.render.alpha = 0.9999f;
+    return d;
+}
+
+// A floor lit by a far point light, up to a wall it meets at x = 0. The light stands off to
+// the floor's side, so the wall is lit too and its photons show the corner to the discs
+// beside it.
+Image cornerRender(bool coverage, int threads = 0) {
+    SceneDescription d = floorUnderAFarLight({-200, 1000, 0}, 1);
+    d.shapes = {test::quad({-3, 0, 3}, {3, 0, 0}, {0, 0, -6}, 0), test::quad({0, 0, -3}, {0, 0, 6}, {0, 2, 0}, 0)};
     d.render.discCoverage = coverage;
     return threads > 0 ? test::renderWithThreads(std::move(d), threads) : test::renderImage(std::move(d));
 }
@@ -149,6 +177,35 @@ TEST(DiscCoverage, TheFloorAlongAWallMatchesItsIrradiance) {
         if (x == 15) EXPECT_LT(test::meanOver(plain, x, 4, x + 1, 28).y, 0.75 * expected);
         else EXPECT_NEAR(test::meanOver(plain, x, 4, x + 1, 28).y, expected, 0.015 * expected);
     }
+}
+
+// The floor of the scene above beside a black post 0.05 square (x from 0.02 to 0.07, z
+// within 0.025, two units tall), lit from straight above: its shadow is its footprint. Two
+// bounces, so that photons the floor sends up land on the post's sides and mark the discs
+// around it for measuring; the black post sends none back, so the floor's light is the far
+// light's alone. The pixels beside it (x from -0.175 to 0, z within 0.175), whose discs of
+// radius 0.2 reach past the post, against rho / pi E: within 1% (measured 0.6379 against
+// 0.6366, +0.2%); counting the floor behind the post as cut read them 3% high (0.6561).
+TEST(DiscCoverage, TheFloorBesideAThinPostMatchesItsIrradiance) {
+    const Vec3 light{0, 1000, 0};
+    SceneDescription d = floorUnderAFarLight(light, 2);
+    d.materials.push_back(makeDiffuse(Color(0.0f)));
+    d.materialNames.push_back("black");
+    d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0)};
+    for (const ShapeDescription& face : test::boxFaces({0.02f, 0, -0.025f}, {0.07f, 2, 0.025f}, 1)) d.shapes.push_back(face);
+    const Camera camera(d.camera);
+    const Image image = test::renderImage(std::move(d));
+    double expected = 0;
+    for (int y = 14; y < 18; ++y)
+        for (int x = 14; x < 16; ++x) {
+            const Vec3 p = test::planePointSeen(camera, x + 0.5f, y + 0.5f);
+            EXPECT_LT(p.x, 0.0f);
+            EXPECT_LT(std::abs(p.z), 0.175f);
+            const Vec3 toLight = light - p;
+            const double dist2 = dot(toLight, toLight);
+            expected += 0.5 / kPi * 4e6 * (toLight.y / std::sqrt(dist2)) / dist2 / 8;
+        }
+    EXPECT_NEAR(test::meanOver(image, 14, 14, 16, 18).y, expected, 0.01 * expected);
 }
 
 TEST(DiscCoverage, TheImageIsTheSameOnAnyThreadCount) {

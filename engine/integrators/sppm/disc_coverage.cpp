@@ -18,6 +18,9 @@ constexpr int kPassable = 3;
 constexpr float kLeastHalfHeight = 0.25f;
 // The height over the surface, in r, at which a column's foot is looked for from the centre.
 constexpr float kLookHeight = 0.05f;
+// Surfaces facing elsewhere the way to a column's foot is followed through (two posts'
+// sides each); a way that crosses more counts as ending inside.
+constexpr int kMostCrossings = 4;
 constexpr float kGoldenFraction = 0.61803398875f;
 constexpr float kLargestRadiusSquared = 1e30f;  // r up to 1e15
 
@@ -46,19 +49,44 @@ Found firstPhotonSurface(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
     return Found::Nothing;
 }
 
+// Whether the way from the centre to a column's foot, `ray` (just over the surface, as long
+// as the way), ends inside something standing on the disc: it crosses surfaces facing
+// elsewhere an odd number of times before its end, or more often than is worth following.
+// One crossing is a box's side, the foot under the box, where no photon comes; two are a
+// post or a table's leg passed through, the foot on the floor behind it, where photons come
+// from above and the gather counts them as it counts any in its sphere. A surface facing
+// as the disc does on the way is the disc's own rising (a bowl's inside), not a wall: the
+// way ends there, on the surface.
+bool wayEndsInside(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
+    int crossed = 0;
+    for (int hits = 0; hits <= kPassable + kMostCrossings; ++hits) {
+        SurfaceHit hit;
+        if (!scene.intersect(ray, hit)) break;
+        const Material& m = scene.material(hit);
+        if (!(m.isDeltaOnly() || m.refractiveIndex().has_value())) {
+            turnTowardViewer(m, hit, -ray.d);
+            const float facing = dot(n, hit.ns);
+            if ((transmits ? std::abs(facing) : facing) >= 0.5f) break;
+            if (!m.transmits() && ++crossed > kMostCrossings) return true;
+        }
+        const float left = ray.tMax - hit.t;
+        ray = spawnRay(hit.p, hit.ng, ray.d);
+        ray.tMax = left;
+    }
+    return crossed % 2 == 1;
+}
+
 // Whether photons land under the disc at `offset` (in its plane) from its centre p: the
 // column there, from the sphere's top down through it, first meets a surface facing as the
-// disc does, and the way to it from the centre, just over the surface, is not cut by one
-// facing elsewhere (a wall, a box's side: a column inside a box on the floor would find
-// the floor under it, where no photon comes). A surface facing as the disc does on that way
-// is the disc's own rising (a bowl's inside), not a wall.
+// disc does, and the way to it from the centre does not end inside something standing on
+// the disc (a column inside a box on the floor would find the floor under it, or the box's
+// bottom face, which a two-sided material turns up).
 bool photonsLandAt(const Scene& scene, Vec3 p, Vec3 n, Vec3 offset, float r, float half, bool transmits) {
     // The column first: where it finds nothing (past a wall, over a cliff) the way is not cast.
     if (firstPhotonSurface(scene, Ray{p + offset + n * half, -n, 2.0f * half}, n, transmits) != Found::Facing)
         return false;
     const float d = length(offset);
-    return !(d > 0) || firstPhotonSurface(scene, Ray{p + n * (kLookHeight * r), offset / d, d}, n, transmits) !=
-                           Found::FacingElsewhere;
+    return !(d > 0) || !wayEndsInside(scene, Ray{p + n * (kLookHeight * r), offset / d, d}, n, transmits);
 }
 
 // The k-th of the spiral's columns: its offset from the centre in the disc's plane, its

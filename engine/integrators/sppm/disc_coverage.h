@@ -13,15 +13,16 @@
 // evenly over the disc (a Fibonacci spiral, turned by a random angle each pass), each cast
 // from the sphere's top down through it: a column counts where the first surface it meets
 // that is not a pure mirror or glass (which photons pass through) faces as the point does,
-// and the way to its foot from the centre, just over the surface, crosses no surface facing
-// elsewhere. A column past a wall starts behind it and meets nothing, one past a table's
-// edge finds the floor beyond the sphere; one inside a box on the floor would find the floor
-// under it, where no photon comes, but the box's side cuts its way. The share is the columns
-// that count over K (weighted by the gather's kernel); its mean over the turns is the share
-// of the disc's projection the gather can see. The pass's flux is divided by it, and its
-// photons' spread compared with what a flat light over the seen part would give
-// (meanSpread), not with 1/2. The floor behind a post thinner than the disc counts as cut,
-// though photons reach it from other sides: there the estimate comes out high.
+// and the way to its foot from the centre, just over the surface, does not end inside
+// something standing on the disc. A column past a wall starts behind it and meets nothing,
+// one past a table's edge finds the floor beyond the sphere; one inside a box on the floor
+// would find the floor under it, where no photon comes, but the way there enters the box by
+// its side and stays in. The way to the floor behind a post or a table's leg thinner than
+// the disc goes in and out again: photons land there from above, and the gather counts them.
+// The share is the columns that count over K (weighted by the gather's kernel); its mean
+// over the turns is the share of the disc's projection the gather can see. The pass's flux
+// is divided by it, and its photons' spread compared with what a flat light over the seen
+// part would give (meanSpread), not with 1/2.
 //
 // Most discs are whole, and measuring every one each pass cost more than it saved (the
 // glass-sphere Cornell box at 256², with four outer columns of every disc looked at first:
