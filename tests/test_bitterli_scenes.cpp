@@ -185,15 +185,21 @@ class BitterliScenes : public testing::TestWithParam<Comparison> {};
 TEST_P(BitterliScenes, MatchTungstenReference) { compareWithReference(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(Imported, BitterliScenes,
-                         // Tungsten's references: 64 bounces for the Cornell box and the coffee
-                         // maker, direct light only for veach-mis (at max depth 1 every cell off
-                         // the plates agrees within 0.7%; at 64 the walls come out 9-50% brighter).
-                         // coffee, its metal one-sided as in the reference: SPPM's red 2.1%
-                         // above the reference (the path tracer's 0.3% below), the worst cell
-                         // 8.2% (the orange top at 128 passes; docs/import.md).
+                         // Tungsten's references: 64 bounces for the Cornell box (its file
+                         // was edited to 4), 16 for the coffee maker (its file's maxdepth 17,
+                         // as the collection writes Tungsten's max_bounces + 1), direct light
+                         // only for veach-mis (at max depth 1 every cell off the plates agrees
+                         // within 0.7%; at 64 the walls come out 9-50% brighter).
+                         // coffee, its metal one-sided as in the reference: means within 0.5%
+                         // (red), 1.1% (green) and 2.1% (blue); every cell within 5.1% but the
+                         // pot's foot (4, 6), 10.0% dark, where the reference's ring and pot,
+                         // which pass through each other, differ from the file (the path
+                         // tracer at 1,024 samples 7% there; docs/import.md). At max depth 64
+                         // the orange top's cells, whose red (albedo 1) loses nothing between
+                         // its parts, came out 5% bright and the mean's red 2.4%.
                          testing::Values(Comparison{"cornell-box", 128, 128, 64, 200000, 64},
                                          Comparison{"veach-mis", 160, 90, 128, 200000, 1},
-                                         Comparison{"coffee", 100, 125, 128, 200000, 64, 0.03f, 0.1f}),
+                                         Comparison{"coffee", 100, 125, 128, 200000, 17, 0.03f, 0.12f}),
                          [](const testing::TestParamInfo<Comparison>& info) {
                              std::string name = info.param.scene;
                              std::replace(name.begin(), name.end(), '-', '_');
