@@ -127,7 +127,9 @@ TEST(DiscCoverage, APostCutsOnlyItsFootprint) {
     for (float x0 : {0.2f, 0.5f})
         for (const ShapeDescription& face : test::boxFaces({x0, 0, -0.1f}, {x0 + 0.1f, 2, 0.1f}, 0)) two.shapes.push_back(face);
     auto rows = Scene::build(std::move(two));
-    EXPECT_NEAR(meanCoverage(*rows, {0, 0, 0}).share, 1 - 2 * 0.1 * 0.2 / kPi, 0.003);
+    // The spiral's sixteen rings stay where they are as it turns: a footprint thinner than
+    // the gap between two rings reads a few thousandths off.
+    EXPECT_NEAR(meanCoverage(*rows, {0, 0, 0}).share, 1 - 2 * 0.1 * 0.2 / kPi, 0.005);
 }
 
 // The floor scenes below, seen from above (32 x 32, 0.0875 units a pixel), rendered by
