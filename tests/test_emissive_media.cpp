@@ -154,10 +154,10 @@ TEST(EmissiveMedium, AGlowingBallThatOnlyAbsorbsShowsBeerLambertsIntegral) {
 // ball of it (extinction 1.5, 2 and 3 by channel, albedo 1/3 to 2/3) in a sky of Le seen
 // from inside, by the path tracer and by SPPM, whose camera paths scatter on through the
 // medium ("auto" here), or end at their first scattering point and gather the photons that
-// scatter around it, the medium's own from their first scattering on. Those balls reach past
-// the ball's surface near it, where no photon scatters, and the camera, inside, gives no
-// plane to count only their inside by: 2.3%, 3.2% and 3.0% low at 256 passes of 2,000
-// photons, within 4% here (docs/sppm.md, "Volume photons"). Before the medium light tested
+// scatter around it, the medium's own from their first scattering on: 2.3%, 3.2% and 3.0%
+// low at 256 passes of 2,000 photons, within 4% here, for a cause not found (not the balls
+// cut by the ball's surface; with no density grid 0.15%, 0.8% and 2.5% low; docs/sppm.md,
+// "Volume photons"). Before the medium light tested
 // whether its points lie in the medium, the grid's corners outside the ball made that 3-8%
 // high.
 TEST(EmissiveMedium, AGlowingBallInASkyOfItsOwnRadianceIsInEquilibrium) {
