@@ -26,25 +26,28 @@ constexpr float kLargestRadiusSquared = 1e30f;  // r up to 1e15
 
 enum class Found { Nothing, Facing, FacingElsewhere };
 
-// The first surface along `ray` that photons land on and that does not let them through,
+// The next surface along `ray` that photons land on and that does not let them through,
 // seen from the ray's origin: one facing as the disc's normal n does (the gather's own test,
 // sppm_gather.cpp), or one that does not. A sheet that transmits counts where it faces as
-// the disc does (photons land on it) and is passed where it does not.
-Found firstPhotonSurface(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
-    for (int passed = 0; passed <= kPassable; ++passed) {
+// the disc does (photons land on it) and is passed where it does not. Nothing once no
+// surface is left or `hitsLeft` surfaces were met (glass and mirrors passed among them);
+// `ray` goes on from just past the surface found, with what is left of its length.
+Found nextPhotonSurface(const Scene& scene, Ray& ray, Vec3 n, bool transmits, int& hitsLeft) {
+    while (hitsLeft-- > 0) {
         SurfaceHit hit;
         if (!scene.intersect(ray, hit)) return Found::Nothing;
         const Material& m = scene.material(hit);
-        const bool through = m.isDeltaOnly() || m.refractiveIndex().has_value();
-        if (!through) {
+        Found found = Found::Nothing;
+        if (!(m.isDeltaOnly() || m.refractiveIndex().has_value())) {
             turnTowardViewer(m, hit, -ray.d);
             const float facing = dot(n, hit.ns);
-            if ((transmits ? std::abs(facing) : facing) >= 0.5f) return Found::Facing;
-            if (!m.transmits()) return Found::FacingElsewhere;
+            if ((transmits ? std::abs(facing) : facing) >= 0.5f) found = Found::Facing;
+            else if (!m.transmits()) found = Found::FacingElsewhere;
         }
         const float left = ray.tMax - hit.t;
         ray = spawnRay(hit.p, hit.ng, ray.d);
         ray.tMax = left;
+        if (found != Found::Nothing) return found;
     }
     return Found::Nothing;
 }
@@ -58,22 +61,12 @@ Found firstPhotonSurface(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
 // as the disc does on the way is the disc's own rising (a bowl's inside), not a wall: the
 // way ends there, on the surface.
 bool wayEndsInside(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
-    int crossed = 0;
-    for (int hits = 0; hits <= kPassable + kMostCrossings; ++hits) {
-        SurfaceHit hit;
-        if (!scene.intersect(ray, hit)) break;
-        const Material& m = scene.material(hit);
-        if (!(m.isDeltaOnly() || m.refractiveIndex().has_value())) {
-            turnTowardViewer(m, hit, -ray.d);
-            const float facing = dot(n, hit.ns);
-            if ((transmits ? std::abs(facing) : facing) >= 0.5f) break;
-            if (!m.transmits() && ++crossed > kMostCrossings) return true;
-        }
-        const float left = ray.tMax - hit.t;
-        ray = spawnRay(hit.p, hit.ng, ray.d);
-        ray.tMax = left;
+    int crossed = 0, hitsLeft = kPassable + kMostCrossings + 1;
+    for (;;) {
+        const Found found = nextPhotonSurface(scene, ray, n, transmits, hitsLeft);
+        if (found != Found::FacingElsewhere) return crossed % 2 == 1;
+        if (++crossed > kMostCrossings) return true;
     }
-    return crossed % 2 == 1;
 }
 
 // Whether photons land under the disc at `offset` (in its plane) from its centre p: the
@@ -83,8 +76,9 @@ bool wayEndsInside(const Scene& scene, Ray ray, Vec3 n, bool transmits) {
 // bottom face, which a two-sided material turns up).
 bool photonsLandAt(const Scene& scene, Vec3 p, Vec3 n, Vec3 offset, float r, float half, bool transmits) {
     // The column first: where it finds nothing (past a wall, over a cliff) the way is not cast.
-    if (firstPhotonSurface(scene, Ray{p + offset + n * half, -n, 2.0f * half}, n, transmits) != Found::Facing)
-        return false;
+    Ray column{p + offset + n * half, -n, 2.0f * half};
+    int hitsLeft = kPassable + 1;
+    if (nextPhotonSurface(scene, column, n, transmits, hitsLeft) != Found::Facing) return false;
     const float d = length(offset);
     return !(d > 0) || !wayEndsInside(scene, Ray{p + n * (kLookHeight * r), offset / d, d}, n, transmits);
 }
