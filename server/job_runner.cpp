@@ -313,14 +313,17 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
     // A completed job keeps its checkpoint: it can render more passes from it.
     std::error_code ec;
     if (status != JobStatus::Completed) std::filesystem::remove(folders_.checkpointFile(id), ec);
+    // The log's last line too: a client that sees the status reads it (the render has stopped,
+    // so its progress is final).
+    const JobProgress progress = table_.find(id)->progress;
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, "%.1f", progress.elapsedSeconds);
+    appendJobLog(folders_.logFile(id), std::string(toString(status)) + " after " + std::to_string(progress.pass) +
+                                           " passes, " + elapsed + " s of rendering" +
+                                           (error.empty() ? "" : ": " + error));
     JobRecord job = table_.finish(id, status, error, utcNowIso8601());
     if (status == JobStatus::Failed) spdlog::warn("job {} failed: {}", id, error);
     else spdlog::info("job {} {} after {} passes", id, toString(status), job.progress.pass);
-    char elapsed[32];
-    std::snprintf(elapsed, sizeof elapsed, "%.1f", job.progress.elapsedSeconds);
-    appendJobLog(folders_.logFile(id), std::string(toString(status)) + " after " + std::to_string(job.progress.pass) +
-                                           " passes, " + elapsed + " s of rendering" +
-                                           (error.empty() ? "" : ": " + error));
     store_.update(job);
     hub_.publish(job, eventTypeFor(status));
     images_.drop(id);
@@ -328,11 +331,11 @@ void JobRunner::finish(const std::string& id, JobStatus status, const std::strin
 
 void JobRunner::pause(const std::string& id) {
     writeImages(id);  // served from disk while paused
+    appendJobLog(folders_.logFile(id), "paused after pass " + std::to_string(table_.find(id)->progress.pass));
     JobRecord job = table_.markPaused(id, utcNowIso8601());
     store_.update(job);
     hub_.publish(job, std::nullopt);
     images_.drop(id);
-    appendJobLog(folders_.logFile(id), "paused after pass " + std::to_string(job.progress.pass));
 }
 
 void JobRunner::writeImages(const std::string& id) {
