@@ -154,10 +154,14 @@ TEST(EmissiveMedium, AGlowingBallThatOnlyAbsorbsShowsBeerLambertsIntegral) {
 // ball of it (extinction 1.5, 2 and 3 by channel, albedo 1/3 to 2/3) in a sky of Le seen
 // from inside, by the path tracer and by SPPM, whose camera paths scatter on through the
 // medium ("auto" here), or end at their first scattering point and gather the photons that
-// scatter around it, the medium's own from their first scattering on: 2.3%, 3.2% and 3.0%
-// low at 256 passes of 2,000 photons, within 4% here, for a cause not found (not the balls
-// cut by the ball's surface; with no density grid 0.15%, 0.8% and 2.5% low; docs/sppm.md,
-// "Volume photons"). Before the medium light tested
+// scatter around it, the medium's own from their first scattering on. With volume photons
+// 40,000 photons a pass: at 2,000 (the helper's) the image's mean moves by 1.6%, 2.8% and
+// 5.1% (standard deviations by channel over 12 seeds, 256 passes) from seed to seed, more
+// than the tolerance, because all 256 pixels' balls lie within about half a unit of the
+// camera and share their photons; at 40,000, 0.45%, 0.7% and 0.8% (10 seeds; mean 0.998,
+// 0.998, 1.002 of Le), so 2.5% is three deviations. The 2-3% shortfall seed 1 showed at
+// 2,000 photons, once taken for a bias, is that spread: over 40 seeds at 2,000 the mean is
+// 0.997, 0.996 and 1.000 of Le (+-0.2%, 0.4%, 0.9%). Before the medium light tested
 // whether its points lie in the medium, the grid's corners outside the ball made that 3-8%
 // high.
 TEST(EmissiveMedium, AGlowingBallInASkyOfItsOwnRadianceIsInEquilibrium) {
@@ -167,10 +171,14 @@ TEST(EmissiveMedium, AGlowingBallInASkyOfItsOwnRadianceIsInEquilibrium) {
             if (kind == IntegratorKind::Path && volume == VolumePhotons::Always) continue;
             SceneDescription d = insideAGlowingBall(kind, m, Color(0.8f));
             d.render.volumePhotons = volume;
+            if (volume == VolumePhotons::Always) {
+                d.render.photonsPerPass = 40000;
+                d.render.adaptivePhotons = false;
+            }
             const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 16, 16);
             std::printf("  %s, volume photons %d: %.4f %.4f %.4f\n", kind == IntegratorKind::Path ? "path" : "sppm",
                         int(volume), seen.x, seen.y, seen.z);
-            const float tolerance = volume == VolumePhotons::Always ? 0.032f : 0.008f;
+            const float tolerance = volume == VolumePhotons::Always ? 0.02f : 0.008f;
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(seen[c], 0.8f, tolerance) << "integrator " << int(kind) << ", volume photons " << int(volume)
                                                       << ", channel " << c;
