@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <sstream>
+#include <cstdlib>
 #include <stdexcept>
 #include <zlib.h>
 #include "scene_builders.h"
@@ -211,7 +212,16 @@ double relativeNoiseOfLuminance(const Image& a, const Image& b) {
     return std::sqrt(d2 / double(kept) / 2) / (sum / double(kept));
 }
 
-std::unique_ptr<Renderer> resumedAfter(const SceneDescription& d, int passes) {
+uint64_t seedShift() {
+    static const uint64_t shift = [] {
+        const char* value = std::getenv("PHOTON_TEST_SEED_SHIFT");
+        return value ? static_cast<uint64_t>(std::strtoull(value, nullptr, 10)) : uint64_t{0};
+    }();
+    return shift;
+}
+
+std::unique_ptr<Renderer> resumedAfter(SceneDescription d, int passes) {
+    d.render.seed += seedShift();
     CancelToken cancel;
     std::stringstream saved;
     {
@@ -226,6 +236,7 @@ std::unique_ptr<Renderer> resumedAfter(const SceneDescription& d, int passes) {
 }
 
 Image renderImage(SceneDescription d) {
+    d.render.seed += seedShift();
     Renderer renderer(Scene::build(std::move(d)));
     CancelToken cancel;
     renderer.run(cancel);

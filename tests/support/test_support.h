@@ -40,7 +40,12 @@ inline SceneDescription exampleScene(const std::string& name, int resolution, in
     return d;
 }
 
-// Renders all the scene's passes; the snapshot after the last.
+// What PHOTON_TEST_SEED_SHIFT says (0 where unset): renderImage adds it to every scene's
+// seed, so that a run of the suite under other seeds (scripts/seed-sweep.sh) finds the
+// tests whose tolerance a seed's noise alone can cross.
+uint64_t seedShift();
+
+// Renders all the scene's passes (the seed shifted by seedShift()); the snapshot after the last.
 Image renderImage(SceneDescription d);
 
 // The small scene a material's SPPM image is held to the path tracer's on: the Cornell box
@@ -71,8 +76,8 @@ PathAndSppmMeans renderPathAndSppm(SceneDescription d, int pathPasses, int sppmP
 Image renderWithThreads(SceneDescription d, int threads);
 
 // A render of `d` stopped after `passes` passes and checkpointed, then resumed from that
-// checkpoint in a new renderer and run to its end.
-std::unique_ptr<Renderer> resumedAfter(const SceneDescription& d, int passes);
+// checkpoint in a new renderer and run to its end (the seed shifted by seedShift()).
+std::unique_ptr<Renderer> resumedAfter(SceneDescription d, int passes);
 
 // Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
 inline Color meanOver(const Image& image, int x0, int y0, int x1, int y1) {
