@@ -1,6 +1,7 @@
 // render.disc_coverage (integrators/sppm/disc_coverage.h): the share of a gather disc that
 // photons can land on, measured by rays, and SPPM's estimate divided by it.
 #include <gtest/gtest.h>
+#include <cstdio>
 #include <cmath>
 #include "integrators/sppm/disc_coverage.h"
 #include "materials/material.h"
@@ -152,19 +153,23 @@ SceneDescription floorUnderAFarLight(Vec3 light, int bounces) {
 // A floor lit by a far point light, up to a wall it meets at x = 0. The light stands off to
 // the floor's side, so the wall is lit too and its photons show the corner to the discs
 // beside it.
-Image cornerRender(bool coverage, int threads = 0) {
+Image cornerRender(bool coverage, int passes, int threads = 0) {
     SceneDescription d = floorUnderAFarLight({-200, 1000, 0}, 1);
+    d.render.passes = passes;
     d.shapes = {test::quad({-3, 0, 3}, {3, 0, 0}, {0, 0, -6}, 0), test::quad({0, 0, -3}, {0, 0, 6}, {0, 2, 0}, 0)};
     d.render.discCoverage = coverage;
     return threads > 0 ? test::renderWithThreads(std::move(d), threads) : test::renderImage(std::move(d));
 }
 
 // The column of pixels along the wall (x from -0.0875 to 0) against rho / pi E, E the far
-// light's irradiance: with the coverage within 1.5% (measured: +0.5%); without, low by the
-// share the wall cuts off, about a third (measured: -35%). Four columns further, where the
-// discs are whole, both alike.
+// light's irradiance, after 128 passes: with the coverage within 3% (over 12 seeds 0.994 of
+// it, standard deviation 0.008 a seed); without, low by the share the wall cuts off, about
+// a third (0.640). Three columns further, where the discs are whole, both within 1.5%
+// (0.997, deviation 0.004). The coverage is measured only in passes whose photons show
+// the wall inside a disc's sphere: with half the photons a pass (50,000) a disc by the
+// wall misses them in about one pass in five and the column reads 0.95 (docs/sppm.md).
 TEST(DiscCoverage, TheFloorAlongAWallMatchesItsIrradiance) {
-    const Image covered = cornerRender(true), plain = cornerRender(false);
+    const Image covered = cornerRender(true, 128), plain = cornerRender(false, 128);
     const Vec3 light{-200, 1000, 0};
     const Camera camera(test::pointLightPlane(0.5f, 4e6f, 1000, 32, 3).camera);
     for (int x : {15, 12}) {
@@ -175,43 +180,59 @@ TEST(DiscCoverage, TheFloorAlongAWallMatchesItsIrradiance) {
             const double dist2 = dot(toLight, toLight);
             expected += 0.5 / kPi * 4e6 * (toLight.y / std::sqrt(dist2)) / dist2 / 24;
         }
-        EXPECT_NEAR(test::meanOver(covered, x, 4, x + 1, 28).y, expected, 0.015 * expected) << "column " << x;
-        if (x == 15) EXPECT_LT(test::meanOver(plain, x, 4, x + 1, 28).y, 0.75 * expected);
-        else EXPECT_NEAR(test::meanOver(plain, x, 4, x + 1, 28).y, expected, 0.015 * expected);
+        const double withCoverage = test::meanOver(covered, x, 4, x + 1, 28).y;
+        const double whole = test::meanOver(plain, x, 4, x + 1, 28).y;
+        std::printf("  column %d: %.4f with the coverage, %.4f without, of %.4f\n", x, withCoverage / expected,
+                    whole / expected, expected);
+        EXPECT_NEAR(withCoverage, expected, (x == 15 ? 0.03 : 0.015) * expected) << "column " << x;
+        if (x == 15) EXPECT_LT(whole, 0.75 * expected);
+        else EXPECT_NEAR(whole, expected, 0.015 * expected);
     }
 }
 
-// The floor of the scene above beside a black post 0.05 square (x from 0.02 to 0.07, z
-// within 0.025, two units tall), lit from straight above: its shadow is its footprint. Two
-// bounces, so that photons the floor sends up land on the post's sides and mark the discs
-// around it for measuring; the black post sends none back, so the floor's light is the far
-// light's alone. The pixels beside it (x from -0.175 to 0, z within 0.175), whose discs of
-// radius 0.2 reach past the post, against rho / pi E: within 1% (measured 0.6379 against
-// 0.6366, +0.2%); counting the floor behind the post as cut read them 3% high (0.6561).
+// The floor of the scene above beside two black posts 0.05 square (x from 0.02 to 0.07
+// and, mirrored about x = -0.4375, from -0.945 to -0.895; z within 0.025; two units tall),
+// lit from straight above: each one's shadow is its footprint. Two bounces, so that
+// photons the floor sends up land on the posts' sides and mark the discs around them for
+// measuring; the black posts send none back, so the floor's light is the far light's alone.
+// The pixels beside each post on the camera's side of it (x from -0.175 to 0, and from
+// -0.875 to -0.7; z within 0.175), whose discs of radius 0.2 reach past the post, against
+// rho / pi E. Over 12 seeds with one post (512 passes of 50,000 photons) they read 0.9965
+// of it, standard deviation 0.0049 a seed (the measured shares of discs, drawn anew each
+// pass, more than the photons); counting the floor behind the post as cut read them
+// 1.0183 (deviation 0.0054). With the two posts' 16 pixels, 0.9970 (deviation 0.0042) and
+// 1.0187 (0.0043): 1.4% holds the first by 2.6 deviations and fails the second in six
+// seeds of seven.
 TEST(DiscCoverage, TheFloorBesideAThinPostMatchesItsIrradiance) {
     const Vec3 light{0, 1000, 0};
     SceneDescription d = floorUnderAFarLight(light, 2);
+    d.render.passes = 512;
+    d.render.photonsPerPass = 50000;
     d.materials.push_back(makeDiffuse(Color(0.0f)));
     d.materialNames.push_back("black");
     d.shapes = {test::quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0)};
-    for (const ShapeDescription& face : test::boxFaces({0.02f, 0, -0.025f}, {0.07f, 2, 0.025f}, 1)) d.shapes.push_back(face);
+    for (float x0 : {0.02f, -0.945f})
+        for (const ShapeDescription& face : test::boxFaces({x0, 0, -0.025f}, {x0 + 0.05f, 2, 0.025f}, 1))
+            d.shapes.push_back(face);
     const Camera camera(d.camera);
     const Image image = test::renderImage(std::move(d));
-    double expected = 0;
+    double expected = 0, seen = 0;
     for (int y = 14; y < 18; ++y)
-        for (int x = 14; x < 16; ++x) {
+        for (int x : {6, 7, 14, 15}) {
             const Vec3 p = test::planePointSeen(camera, x + 0.5f, y + 0.5f);
-            EXPECT_LT(p.x, 0.0f);
+            EXPECT_TRUE(x > 10 ? p.x < 0.0f : p.x > -0.875f && p.x < -0.7f) << x;
             EXPECT_LT(std::abs(p.z), 0.175f);
             const Vec3 toLight = light - p;
             const double dist2 = dot(toLight, toLight);
-            expected += 0.5 / kPi * 4e6 * (toLight.y / std::sqrt(dist2)) / dist2 / 8;
+            expected += 0.5 / kPi * 4e6 * (toLight.y / std::sqrt(dist2)) / dist2 / 16;
+            seen += image.at(x, y).y / 16;
         }
-    EXPECT_NEAR(test::meanOver(image, 14, 14, 16, 18).y, expected, 0.01 * expected);
+    std::printf("  beside the posts: %.4f of %.4f\n", seen / expected, expected);
+    EXPECT_NEAR(seen, expected, 0.014 * expected);
 }
 
 TEST(DiscCoverage, TheImageIsTheSameOnAnyThreadCount) {
-    const Image one = cornerRender(true, 1), two = cornerRender(true, 2);
+    const Image one = cornerRender(true, 32, 1), two = cornerRender(true, 32, 2);
     ASSERT_EQ(one.rgb.size(), two.rgb.size());
     for (size_t i = 0; i < one.rgb.size(); ++i) ASSERT_EQ(one.rgb[i], two.rgb[i]) << "value " << i;
 }
