@@ -223,9 +223,12 @@ TEST(CoatedDiffuse, SppmAgreesWithPathTracer) {
 // light it finds counted in full), not at 1 / (1 - pd) of that weight in the passes whose
 // path follows the coat and 0 in the others (pd at least 0.05, coat_over_diffuse.cpp). So
 // every pass is the answer, to the variation of F over the middle pixels (0.03%) and the
-// dithered rounding of a pass's light to 8 bits (PassResult): 8 passes are within 0.5%,
-// where the old estimate's mean over the middle 2 x 2 pixels, 1.053 F Le times the share
-// of their 32 paths that followed the coat, could at best be 1.3% low or 2% high.
+// dithered rounding of a pass's light to 8 bits with one exponent for its three channels
+// (PassResult), a share of the brightest: over 32 seeds the mean over the middle 2 x 2
+// pixels after 8 passes deviates by 0.055%, 0.084% and 0.21% by channel (Le 3, 2, 1; the
+// same in absolute terms), so each is held to 0.5% of green's F Le, 0.33%, 0.5% and 1% of
+// its own, where the old estimate, 1.053 F Le times the share of their 32 paths that
+// followed the coat, could at best be 1.3% low or 2% high.
 TEST(CoatedDiffuse, SppmFindsASmoothCoatsReflectionOfALightInEveryPass) {
     const std::string scene = R"({
         "camera": {"type": "perspective", "position": [0, 1, 2], "look_at": [0, 0, 0], "up": [0, 1, 0],
@@ -244,7 +247,7 @@ TEST(CoatedDiffuse, SppmFindsASmoothCoatsReflectionOfALightInEveryPass) {
         d.render.seed = seed;
         const Color middle = test::meanOver(test::renderImage(std::move(d)), 7, 7, 9, 9);
         for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(middle[c], F * static_cast<float>(3 - c), 0.005f * F * static_cast<float>(3 - c))
+            EXPECT_NEAR(middle[c], F * static_cast<float>(3 - c), 0.005f * F * 2.0f)
                 << "seed " << seed << ", channel " << c;
     }
 }

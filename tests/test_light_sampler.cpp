@@ -3,7 +3,9 @@
 // it picks with (exhaustively and through the tree), its estimate of point lights' irradiance
 // is exact, and rendered images agree with the power sampler's while being less noisy.
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <photon/render.h>
 #include "lights/direct_light_sampler.h"
 #include "math/lanes.h"
@@ -238,9 +240,9 @@ TEST(DirectLightSampler, BoundsInLanesAreTheBoundsOneAtATime) {
 // probabilities enter the multiple importance weights of BSDF samples that find a light),
 // and the spatial one with less noise. With independent numbers: Sobol passes
 // (render.sampler) stratify the light pick over a pixel's passes, so picking by power then
-// gives every light its share of them, and the gap narrows (0.0169 against 0.0184).
+// gives every light its share of them, and the gap narrows.
 SceneDescription floorUnderLights(LightSamplerKind kind, uint64_t seed) {
-    SceneDescription d = test::directLitFloor(kind, seed, 64);
+    SceneDescription d = test::directLitFloor(kind, seed, 256);
     d.render.sampler = SamplerKind::Independent;
     d.lights = {spotLight({-0.6f, 1.2f, 0.6f}, {0, -1, 0}, 3, 35, 25)};
     d.shapes.push_back(test::quad({0.6f, 0.4f, -0.6f}, {0.3f, 0, 0}, {0, 0.3f, 0}, 0, Color(4.0f)));   // faces +z
@@ -249,17 +251,50 @@ SceneDescription floorUnderLights(LightSamplerKind kind, uint64_t seed) {
     return d;
 }
 
+// The pixels that neither see a light nor touch one that does: where the lights' edges
+// cross a pixel its value follows where in the pixel each pass's camera ray went, the same
+// for both samplers (their renders of a seed draw the same rays), and a few such pixels
+// carried most of a pair's squared difference, so that the ratio of the samplers' noise
+// ranged from 0.27 to 0.85 over seeds. The floor itself stays below luminance 1, the lights
+// are 4 and 6.
+std::vector<bool> awayFromLights(const test::RendersBySampler& r) {
+    const int w = r.spatial.width, h = r.spatial.height;
+    std::vector<bool> keep(size_t(w) * h, true);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const Color sum = r.spatial.at(x, y) + r.spatial2.at(x, y) + r.power.at(x, y) + r.power2.at(x, y);
+            if (luminance(sum) < 4.0f) continue;
+            for (int j = std::max(0, y - 1); j <= std::min(h - 1, y + 1); ++j)
+                for (int i = std::max(0, x - 1); i <= std::min(w - 1, x + 1); ++i) keep[size_t(j) * w + i] = false;
+        }
+    return keep;
+}
+
+// RMS of the two renders' difference in luminance over sqrt 2, over their mean, on the
+// pixels kept.
+double relativeNoise(const Image& a, const Image& b, const std::vector<bool>& keep) {
+    double d2 = 0, sum = 0;
+    size_t kept = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            if (!keep[size_t(y) * a.width + x]) continue;
+            const double la = luminance(a.at(x, y)), lb = luminance(b.at(x, y));
+            d2 += (la - lb) * (la - lb), sum += (la + lb) / 2, ++kept;
+        }
+    return std::sqrt(d2 / double(kept) / 2) / (sum / double(kept));
+}
+
+// 256 passes a render. Over 16 seeds the spatial sampler's noise away from the lights is
+// 0.24-0.32 of the power sampler's (at 64 passes 0.25-0.29), held below 0.4; the 8 x 8
+// blocks' means agree within 3%.
 TEST(DirectLightSampler, SpatialAndPowerRenderTheSameImageTheSpatialWithLessNoise) {
     const test::RendersBySampler r = test::renderBySampler(floorUnderLights);
-    const Image &spatial = r.spatial, &spatial2 = r.spatial2, &power = r.power, &power2 = r.power2;
-    auto noise = [](const Image& a, const Image& b) {
-        double d2 = 0;
-        for (int y = 0; y < a.height; ++y)
-            for (int x = 0; x < a.width; ++x) d2 += std::pow(average(a.at(x, y) - b.at(x, y)), 2);
-        return std::sqrt(d2 / (a.width * a.height));
-    };
-    test::expectSameBlockMeans(spatial, spatial2, power, power2, 8, 0.03f);
-    EXPECT_LT(noise(spatial, spatial2), 0.7 * noise(power, power2));
+    const std::vector<bool> keep = awayFromLights(r);
+    EXPECT_GT(std::count(keep.begin(), keep.end(), true), 400);  // of 576
+    test::expectSameBlockMeans(r.spatial, r.spatial2, r.power, r.power2, 8, 0.03f);
+    const double spatial = relativeNoise(r.spatial, r.spatial2, keep), power = relativeNoise(r.power, r.power2, keep);
+    std::printf("  relative noise away from the lights: spatial %.4f, power %.4f (%.3f)\n", spatial, power, spatial / power);
+    EXPECT_LT(spatial, 0.4 * power);
 }
 
 }  // namespace
