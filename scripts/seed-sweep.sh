@@ -23,7 +23,7 @@ for shift in "${shifts[@]}"; do
     else
         status=1
         echo "seed shift $shift: failed (log: $log)"
-        grep -E '^\[  FAILED  \] [A-Za-z_/]+\.[A-Za-z_/0-9]+' "$log" | grep -v ' listed below' | sort -u | sed 's/^/    /'
+        grep -E '^\[  FAILED  \] [^ ]+$' "$log" | sort -u | sed 's/^/    /'
     fi
 done
 exit $status

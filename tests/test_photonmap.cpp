@@ -165,7 +165,9 @@ TEST(PhotonMap, ResumedRenderIsBitIdenticalToUninterrupted) {
     d.render.integrator = IntegratorKind::PhotonMap;
     d.render.photonMap = {20000, 20000, 30, 20, 0, 0, 4};
     CancelToken cancel;
-    Renderer whole(Scene::build(d));
+    SceneDescription seeded = d;  // at the seed resumedAfter renders with
+    seeded.render.seed += test::seedShift();
+    Renderer whole(Scene::build(seeded));
     whole.run(cancel);
     const std::unique_ptr<Renderer> resumed = test::resumedAfter(d, 2);
     EXPECT_EQ(resumed->integrator().passesDone(), 4);
