@@ -179,9 +179,14 @@ TEST(PortalLight, ARoomUnderAnImageRendersAsWithoutThePortal) {
     auto render = [&](bool portal, IntegratorKind kind, int passes, uint64_t seed) {
         return test::renderImage(roomUnder(sky(portal), kind, passes, seed));
     };
-    const Image plain1 = render(false, IntegratorKind::Path, 256, 1), plain2 = render(false, IntegratorKind::Path, 256, 2);
+    // Without the portal the path tracer finds the ring through the hole only by its BSDF
+    // samples, rarely and at full strength: over 12 seeds the worst 8 x 8 block differed
+    // from the portal's by 1.1-5.8% (median 1.9%) at 1,024 passes, by up to 5.7% (median
+    // 4.3%) at 256, so the bound is 8%; with the portal's light samples SPPM's worst block
+    // is within 4.2% (median 2.0%) of the portal's path-traced one.
+    const Image plain1 = render(false, IntegratorKind::Path, 1024, 1), plain2 = render(false, IntegratorKind::Path, 1024, 2);
     const Image portal1 = render(true, IntegratorKind::Path, 128, 1), portal2 = render(true, IntegratorKind::Path, 128, 2);
-    test::expectSameBlockMeans(plain1, plain2, portal1, portal2, 8, 0.05);
+    test::expectSameBlockMeans(plain1, plain2, portal1, portal2, 8, 0.08);
     const Image sppm1 = render(true, IntegratorKind::Sppm, 64, 1), sppm2 = render(true, IntegratorKind::Sppm, 64, 2);
     test::expectSameBlockMeans(sppm1, sppm2, portal1, portal2, 8, 0.05);
 }

