@@ -124,7 +124,8 @@ TEST(EmissiveMedium, ItsPhotonsCarryThePowerItEmits) {
 // so every pixel sees Le (1 - exp(-sigma_a)), by both integrators; and with a temperature
 // grid of 3,000 K throughout, pbrt-v4's blackbody at 3,000 K (its peak 1) in place of Le.
 // After 64 passes the image's mean deviates from seed to seed by at most 0.06% (16 seeds;
-// at 16 passes SPPM's by 0.27%, which a 0.5% bound held by two deviations), held to 0.2%.
+// at 16 passes the path tracer's by 0.27%, which a 0.5% bound held by two deviations),
+// held to 0.2%.
 TEST(EmissiveMedium, AGlowingBallThatOnlyAbsorbsShowsBeerLambertsIntegral) {
     const Color absorption(0.5f, 1.0f, 2.0f), radiance(1, 2, 3);
     for (bool temperature : {false, true})

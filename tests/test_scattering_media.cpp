@@ -132,8 +132,9 @@ TEST(FreeFlight, FlightsFollowAVaryingDensity) {
 //   L = E sigma_s p(1) (1 - exp(-2 sigma_t H)) / (2 sigma_t),
 // p(1) the phase function's value for wi = wo (straight back), H = 1. render.max_depth 1
 // keeps single scattering alone; the path tracer and SPPM agree with it within 1%. The two
-// tests render 512 passes: over 12 seeds the image's mean deviates by 0.12% (path) and
-// 0.25% (SPPM) a seed, means 0.9998 and 0.9992 (at 64 passes SPPM's deviated by 1%).
+// tests render 512 passes: over 12 seeds the image's mean deviates by 0.12% (SPPM) and
+// 0.25% (the path tracer) a seed, means 0.9998 and 0.9992 (at 64 passes the path tracer's
+// deviated by 1%).
 SceneDescription fogSlab(IntegratorKind kind, int maxDepth) {
     SceneDescription d;
     d.camera = test::orthographicCamera({0, 0, 3}, {0, 0, 0}, 0.5f, 8, 8);

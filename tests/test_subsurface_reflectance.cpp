@@ -166,7 +166,10 @@ TEST(SubsurfaceReflectance, AWalkUnderTheSurfaceIsOneVertex) {
             const Color walk = render(true, 256), cut = render(false, 64);
             std::printf("  mean free path %.2f, integrator %d: one vertex %.4f %.4f %.4f, vertex by vertex %.4f\n",
                         ball.meanFreePath, int(kind), walk.x, walk.y, walk.z, cut.y);
-            for (int c = 0; c < 3; ++c) EXPECT_NEAR(walk[c], 1.0f, 0.01f) << int(kind) << ", channel " << c;
+            // Over 12 seeds SPPM reads 0.9998 and 0.9997 (deviations 0.14% and 0.26% a
+            // seed), the path tracer 1.0009 and 1.0043 (0.34% and 0.55%): held to 1% and 2%.
+            const float bound = kind == IntegratorKind::Sppm ? 0.01f : 0.02f;
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(walk[c], 1.0f, bound) << int(kind) << ", channel " << c;
             if (ball.meanFreePath < 0.1f) EXPECT_LT(cut.y, 0.9f);
         }
 }

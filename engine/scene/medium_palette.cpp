@@ -62,8 +62,14 @@ int32_t MediumPalettes::entered(int32_t medium, const TexturePoint& at) const {
     const float u = static_cast<float>(h >> 40) * 0x1p-24f;
     int index = 0;
     for (int c = 0; c < 3; ++c) {
-        const float x = std::clamp(r[c], 0.0f, 1.0f) * kSteps + u;
-        index = index * kValues + std::min(int(x), kSteps);
+        // The step above with probability frac: u >= 1 - frac, which int(x + u) would be in
+        // exact arithmetic; in float, x + u rounds up to the next step for u within 2^-20
+        // of 1 even where frac is 0, so a reflectance on a step took its neighbour about once
+        // in a million entries (found by tests/test_subsurface_reflectance.cpp under seed 8).
+        const float x = std::clamp(r[c], 0.0f, 1.0f) * kSteps;
+        const float below = std::floor(x), frac = x - below;
+        const int step = int(below) + (u >= 1.0f - frac ? 1 : 0);
+        index = index * kValues + std::min(step, kSteps);
     }
     return first_[size_t(medium)] + index;
 }
