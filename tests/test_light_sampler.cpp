@@ -270,20 +270,6 @@ std::vector<bool> awayFromLights(const test::RendersBySampler& r) {
     return keep;
 }
 
-// RMS of the two renders' difference in luminance over sqrt 2, over their mean, on the
-// pixels kept.
-double relativeNoise(const Image& a, const Image& b, const std::vector<bool>& keep) {
-    double d2 = 0, sum = 0;
-    size_t kept = 0;
-    for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) {
-            if (!keep[size_t(y) * a.width + x]) continue;
-            const double la = luminance(a.at(x, y)), lb = luminance(b.at(x, y));
-            d2 += (la - lb) * (la - lb), sum += (la + lb) / 2, ++kept;
-        }
-    return std::sqrt(d2 / double(kept) / 2) / (sum / double(kept));
-}
-
 // 256 passes a render. Over 16 seeds the spatial sampler's noise away from the lights is
 // 0.24-0.32 of the power sampler's (at 64 passes 0.25-0.29), held below 0.4; the 8 x 8
 // blocks' means agree within 3%.
@@ -292,7 +278,8 @@ TEST(DirectLightSampler, SpatialAndPowerRenderTheSameImageTheSpatialWithLessNois
     const std::vector<bool> keep = awayFromLights(r);
     EXPECT_GT(std::count(keep.begin(), keep.end(), true), 400);  // of 576
     test::expectSameBlockMeans(r.spatial, r.spatial2, r.power, r.power2, 8, 0.03f);
-    const double spatial = relativeNoise(r.spatial, r.spatial2, keep), power = relativeNoise(r.power, r.power2, keep);
+    const double spatial = test::relativeNoiseOfLuminance(r.spatial, r.spatial2, keep);
+    const double power = test::relativeNoiseOfLuminance(r.power, r.power2, keep);
     std::printf("  relative noise away from the lights: spatial %.4f, power %.4f (%.3f)\n", spatial, power, spatial / power);
     EXPECT_LT(spatial, 0.4 * power);
 }

@@ -197,18 +197,23 @@ NoiseWithoutAndWith expectSameMeansAndMeasureNoise(const std::function<Image(boo
 }
 
 double relativeNoiseOfLuminance(const Image& a, const Image& b) {
-    const size_t n = size_t(a.width) * a.height;
-    std::vector<float> ya(n), yb(n), mean(n);
-    for (size_t i = 0; i < n; ++i) {
-        ya[i] = luminance(a.at(int(i % a.width), int(i / a.width)));
-        yb[i] = luminance(b.at(int(i % a.width), int(i / a.width)));
-        mean[i] = 0.5f * (ya[i] + yb[i]);
+    std::vector<float> mean(size_t(a.width) * a.height);
+    for (size_t i = 0; i < mean.size(); ++i) {
+        const int x = int(i % a.width), y = int(i / a.width);
+        mean[i] = 0.5f * (luminance(a.at(x, y)) + luminance(b.at(x, y)));
     }
-    const std::vector<bool> keep = errorPixels(mean, a.width, a.height);
+    return relativeNoiseOfLuminance(a, b, errorPixels(mean, a.width, a.height));
+}
+
+double relativeNoiseOfLuminance(const Image& a, const Image& b, const std::vector<bool>& keep) {
     double d2 = 0, sum = 0;
     size_t kept = 0;
-    for (size_t i = 0; i < n; ++i)
-        if (keep[i]) d2 += double(ya[i] - yb[i]) * (ya[i] - yb[i]), sum += mean[i], ++kept;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            if (!keep[size_t(y) * a.width + x]) continue;
+            const double la = luminance(a.at(x, y)), lb = luminance(b.at(x, y));
+            d2 += (la - lb) * (la - lb), sum += (la + lb) / 2, ++kept;
+        }
     return std::sqrt(d2 / double(kept) / 2) / (sum / double(kept));
 }
 

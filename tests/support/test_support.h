@@ -111,6 +111,8 @@ void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, con
 // difference / sqrt 2 over the mean, with lights seen directly and their neighbours left out
 // (film/pixel_errors.h), whose edge pixels are as noisy for every method.
 double relativeNoiseOfLuminance(const Image& a, const Image& b);
+// The same over the pixels `keep` marks (row by row), for a test that knows which to leave out.
+double relativeNoiseOfLuminance(const Image& a, const Image& b, const std::vector<bool>& keep);
 
 // A render without and with a change that must not change its expectation (`render(with,
 // seed)`, seeds 1 and 2 each): block means held to each other by expectSameBlockMeans, and
