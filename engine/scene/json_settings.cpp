@@ -232,6 +232,7 @@ RenderSettings readRender(const JsonValue& value) {
     r.adaptiveCameraPaths = obj.boolean("adaptive_camera_paths", r.adaptiveCameraPaths);
     r.adaptiveRadius = obj.boolean("adaptive_radius", r.adaptiveRadius);
     r.discCoverage = obj.boolean("disc_coverage", r.discCoverage);
+    r.equiangular = obj.boolean("equiangular", r.equiangular);
     r.sampler = SamplerKind(obj.choice("sampler", 0, {"sobol", "independent"}));
     if (auto volume = obj.optional("volume_photons")) {
         if (volume->json().is_string() && volume->string() == "auto") r.volumePhotons = VolumePhotons::Auto;

@@ -191,6 +191,9 @@ void Scene::buildLights() {
     for (size_t i = 0; i < lightSampler_.size(); ++i)
         for (EnvironmentLight& e : environmentLights_)
             if (&lightSampler_.light(i) == e.light) e.pickProbability = directLightSampler_.probability(i, Vec3(0.0f), Vec3(0.0f));
+    const bool anyScatters = std::any_of(description_.media.begin(), description_.media.end(),
+                                         [](const MediumDescription& m) { return m.scatters(); });
+    if (description_.render.equiangular && anyScatters) lightsAlongRays_ = PointLightChoice(lightSampler_);
 
 }
 

@@ -9,6 +9,7 @@
 #include "camera/camera.h"
 #include "lights/light.h"
 #include "lights/direct_light_sampler.h"
+#include "lights/point_light_choice.h"
 #include "lights/light_sampler.h"
 #include "math/ray.h"
 #include "description/scene_description.h"
@@ -233,6 +234,9 @@ public:
     int32_t lightMedium(size_t i) const { return lightMedium_[i]; }
     // How shadow rays pick a light (render.light_sampler).
     const DirectLightSampler& directLights() const { return directLightSampler_; }
+    // The point and spot lights camera paths sample along their rays through media that
+    // scatter (render.equiangular): none without such media, or with the setting off.
+    const PointLightChoice& lightsAlongRays() const { return lightsAlongRays_; }
     Vec3 boundsMin() const { return boundsMin_; }
     Vec3 boundsMax() const { return boundsMax_; }
     RTCScene embreeScene() const { return rtcScene_; }
@@ -390,6 +394,7 @@ private:
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     DirectLightSampler directLightSampler_;  // refers to lightSampler_
+    PointLightChoice lightsAlongRays_;       // refers to lightSampler_
     std::vector<EnvironmentLight> environmentLights_;
     Camera camera_;
     Vec3 boundsMin_, boundsMax_;

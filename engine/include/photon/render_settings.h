@@ -139,6 +139,11 @@ struct RenderSettings {
     // estimate) as well as on surfaces (docs/sppm.md, "Volume photons"). Never: visible
     // points on surfaces only, the path going on through the medium.
     VolumePhotons volumePhotons = VolumePhotons::Auto;
+    // The path tracer and SPPM's camera paths in media that scatter: each ray's segment
+    // through such a medium also samples the light of a point or spot light along it by
+    // equiangular distances (Kulla & Fajardo 2012), weighed against the light sample where
+    // the ray's free flight scatters (docs/path.md, "Point lights in media").
+    bool equiangular = true;
     PhotonMapSettings photonMap;
     RadiositySettings radiosity;
     DenoiseSettings denoise;
@@ -191,6 +196,8 @@ void visitStateSettings(const RenderSettings& s, Visit&& visit) {
     if (!s.adaptiveRadius) visit(s.adaptiveRadius);
     // Likewise: a checkpoint written before discs' coverage was measured goes on with it.
     if (!s.discCoverage) visit(s.discCoverage);
+    // Likewise: a checkpoint written before equiangular samples existed goes on with them.
+    if (!s.equiangular) visit(s.equiangular);
 }
 
 // Whether SPPM's camera paths learn their lobe choice per pixel (RenderSettings::lobeChoice):

@@ -42,7 +42,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
 }
 
 Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler,
-                                bool continues) {
+                                bool continues, const FlightSegment* along) {
     const float uLight = sampler.get1D();
     const Vec3 n = sampler.get1D() < 0.5f ? wo : -wo;
     const Vec2 u = sampler.get2D();
@@ -56,7 +56,8 @@ Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t med
     if (isBlack(transmittance)) return Color(0.0f);
     const float pickProbability = 0.5f * pick.probability;
     // The phase-function sample draws wi with density `phase` (scatterInMedium).
-    const float w = ls->pdf > 0 && continues ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
+    float w = ls->pdf > 0 && continues ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
+    if (along) w *= weightAgainstLightAlongRay(scene, *along, medium, pick.index, ls->wi);
     return ls->weight * transmittance * (phase * w / pickProbability);
 }
 

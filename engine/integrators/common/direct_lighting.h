@@ -31,9 +31,11 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
 // taken for the half of the sphere on wo's side or the other, each with probability 1/2
 // (unbiased, as for a surface that transmits). Its draws: the light (1D), the side (1D),
 // the point on the light (2D). `continues` false: the path ends here (an SPPM visible point
-// in the medium), and the light sample counts in full.
+// in the medium), and the light sample counts in full against the phase function. `along`:
+// the segment p's flight scattered on, where light may have been sampled along the ray too
+// (weightAgainstLightAlongRay).
 Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, PathSampler& sampler,
-                                bool continues = true);
+                                bool continues = true, const FlightSegment* along = nullptr);
 // The same with every number from `rng`.
 inline Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Rng& rng,
                                unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1) {

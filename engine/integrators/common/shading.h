@@ -2,6 +2,7 @@
 #pragma once
 #include <bit>
 #include <limits>
+#include "integrators/common/light_along_ray.h"
 #include "math/frame.h"
 #include "math/path_sampler.h"
 #include "math/sampling.h"
@@ -76,6 +77,12 @@ struct PathInMedia {
     // way was drawn (media/guided_walk.h), which its next flight consumes.
     Vec3 walkNormal{0.0f};
     GuidedStep step{};
+    // Where light sampled along the ray's segments through media that scatter goes
+    // (sampleLightAlongRay, render.equiangular), which the caller sets where a light sample
+    // would be taken at a point the ray scatters at (null: none is), and the last such
+    // segment, whose light sample sampleDirectLightInMedium weighs against those.
+    Color* lightAlong = nullptr;
+    FlightSegment segment{};
 };
 
 // A number in [0, 1) drawn from the ray itself, for the emission estimate of a path that
@@ -110,18 +117,29 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         const bool emits = emitted && medium >= 0 && scene.medium(medium).emits();
         const bool flies = media && scene.scatters(medium);
         const float u = flies || (emits && media) ? media->sampler.get1D() : emits ? numberOfRay(ray) : 0.0f;
+        // Light is sampled along the segment where a point it scatters at would take a light
+        // sample (not under a surface: walksUnderSurface).
+        const bool sampledAlong = flies && media->lightAlong && !scene.lightsAlongRays().empty() &&
+                                  !scene.medium(medium).subsurface && !media->step.on;
         // In a homogeneous medium the flight's distance is known first: the ray need only
         // reach that far, which spares Embree the rest of the scene (a walk under skin
-        // scatters every few tenths of a millimetre). Nothing is drawn differently.
+        // scatters every few tenths of a millimetre). Nothing is drawn differently. Light
+        // sampled along the segment needs all of it.
         Ray probe = ray;
-        if (flies && !emits && !scene.medium(medium).density)
+        if (flies && !emits && !sampledAlong && !scene.medium(medium).density)
             probe.tMax = std::min(probe.tMax, homogeneousFlightDistance(scene.medium(medium), u, media->flight, &media->step));
         const bool found = scene.intersect(probe, hit);
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
         if (emits) *emitted += beta * sampleEmissionAlong(scene.medium(medium), ray.o, ray.d, segment, u);
         if (flies) {
+            media->segment = FlightSegment{ray.o, ray.d, segment, media->flight.ratios, 0.0f, sampledAlong};
+            if (sampledAlong) {
+                const float uLight = media->sampler.get1D(), uDistance = media->sampler.get1D();
+                *media->lightAlong += sampleLightAlongRay(scene, media->segment, medium, beta, uLight, uDistance);
+            }
             const float t = sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, u, beta, media->flight, &media->step);
             media->step.on = false;
+            media->segment.scatteredAt = t;
             if (t < segment) {
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;

@@ -34,6 +34,8 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
     int walkEvents = 0;  // scattering events under surfaces (walksUnderSurface)
     for (int depth = 0;; ++depth) {
         SurfaceHit hit;
+        // A point the ray scatters at takes a light sample below the depth limit.
+        inMedia.lightAlong = depth < maxDepth ? &L : nullptr;
         const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, L, media);
         if (end == RayEnd::Left) break;
         // The ray after the last vertex is traced only for the light its BSDF sample shares
@@ -45,7 +47,7 @@ Color traceRadiance(const Scene& scene, Ray ray, PathSampler& sampler, int maxDe
             // A vertex in the medium: its light sample, then the phase function's direction.
             // Under a surface the walk takes no light samples (walksUnderSurface).
             const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
-            if (!underSurface) L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler);
+            if (!underSurface) L += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, true, &inMedia.segment);
             ray = underSurface ? stepUnderSurface(scene, hit.p, wo, medium, inMedia, bounce)
                                : scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
             if (underSurface) --depth;  // the walk is no vertex: the next event has this depth too

@@ -135,6 +135,8 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         SurfaceHit hit;
         ++rays;
         Color counted(0.0f);
+        // A point the ray scatters at takes a light sample, unless photons bring its direct light.
+        inMedia.lightAlong = !gathersInMedia() || directBySampling ? &direct : nullptr;
         const RayEnd end = traceCameraRay(scene, ray, beta, medium, bounce, hit, lightCounted ? counted : direct, media);
         lightCounted = false;
         if (end == RayEnd::Left) break;
@@ -147,7 +149,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             // (Not under a surface, where the path walks on: no photons are left there.)
             if (gathersInMedia() && !scene.medium(medium).subsurface) {
                 if (directBySampling)
-                    direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, false), ++rays;
+                    direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, false, &inMedia.segment), ++rays;
                 if (first) storeVolumePoint(index, hit.p, wo, beta, medium, pathLength, inMedia.boundaryDistance);
                 break;
             }
@@ -155,7 +157,8 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
             // last vertex is traced only for the light it shares with the light sample.
             // Under a surface the walk takes no light samples (walksUnderSurface).
             const bool underSurface = walksUnderSurface(scene, medium, walkEvents);
-            if (!underSurface) direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler), ++rays;
+            if (!underSurface)
+                direct += beta * sampleDirectLightInMedium(scene, hit.p, wo, medium, sampler, true, &inMedia.segment), ++rays;
             ray = underSurface ? stepUnderSurface(scene, hit.p, wo, medium, inMedia, bounce)
                                : scatterInMedium(scene, hit.p, wo, medium, sampler.get2D(), bounce);
             inMedia.boundaryNormal = Vec3(0.0f);

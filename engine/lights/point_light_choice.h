@@ -1,0 +1,44 @@
+// The lights that send from one point (point, spot, profiled point and projection lights:
+// EmissionGeometry::Kind::Point), picked by power: what a camera path samples along its ray
+// through a medium that scatters (equiangular distances, media/equiangular.h). Near such a
+// light the light a medium scatters grows as 1 / r^2, a spike that free flights, which stop
+// where the medium is dense and not where the light is, find too rarely.
+#pragma once
+#include <vector>
+#include "lights/light_sampler.h"
+
+namespace photon {
+
+class PointLightChoice {
+public:
+    PointLightChoice() = default;
+    // The point lights among `all`'s, each with its share of their summed power.
+    explicit PointLightChoice(const LightSampler& all);
+
+    struct Pick {
+        const Light* light = nullptr;
+        size_t index = 0;  // the light's index in `all`
+        float probability = 0;
+        Vec3 position;
+    };
+    bool empty() const { return index_.empty(); }
+    Pick pick(float u) const {
+        const LightSampler::Pick p = byPower_.pick(u);
+        if (!p.light) return {};
+        return {p.light, index_[p.index], p.probability, position_[p.index]};
+    }
+    // The probability pick() returns light i of `all` with (0 for a light that is not one).
+    float probability(size_t i) const {
+        return i < slot_.size() && slot_[i] >= 0 ? byPower_.probability(size_t(slot_[i])) : 0.0f;
+    }
+    // Where light i of `all` sends from (one of these lights: probability(i) > 0).
+    Vec3 position(size_t i) const { return position_[size_t(slot_[i])]; }
+
+private:
+    LightSampler byPower_;
+    std::vector<size_t> index_;    // by slot: the light's index in `all`
+    std::vector<Vec3> position_;   // by slot
+    std::vector<int32_t> slot_;    // by light of `all`: its slot, or -1
+};
+
+}  // namespace photon
