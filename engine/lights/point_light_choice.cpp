@@ -11,7 +11,7 @@ PointLightChoice::PointLightChoice(const LightSampler& all) {
         slot_[i] = int32_t(lights.size());
         lights.push_back(&all.light(i));
         index_.push_back(i);
-        position_.push_back(g.position);
+        beam_.push_back({g.position, g.frame.n, g.cosMax});
     }
     byPower_ = LightSampler(std::move(lights));
 }

@@ -15,29 +15,36 @@ public:
     // The point lights among `all`'s, each with its share of their summed power.
     explicit PointLightChoice(const LightSampler& all);
 
+    // Where a light sends from, and the cone outside which it sends nothing (a spot's beam,
+    // a projector's frustum; cosMax -1 for a light that shines every way).
+    struct Beam {
+        Vec3 position;
+        Vec3 axis;
+        float cosMax = -1;
+    };
     struct Pick {
         const Light* light = nullptr;
         size_t index = 0;  // the light's index in `all`
         float probability = 0;
-        Vec3 position;
+        Beam beam;
     };
     bool empty() const { return index_.empty(); }
     Pick pick(float u) const {
         const LightSampler::Pick p = byPower_.pick(u);
         if (!p.light) return {};
-        return {p.light, index_[p.index], p.probability, position_[p.index]};
+        return {p.light, index_[p.index], p.probability, beam_[p.index]};
     }
     // The probability pick() returns light i of `all` with (0 for a light that is not one).
     float probability(size_t i) const {
         return i < slot_.size() && slot_[i] >= 0 ? byPower_.probability(size_t(slot_[i])) : 0.0f;
     }
-    // Where light i of `all` sends from (one of these lights: probability(i) > 0).
-    Vec3 position(size_t i) const { return position_[size_t(slot_[i])]; }
+    // Light i of `all`'s beam (one of these lights: probability(i) > 0).
+    const Beam& beam(size_t i) const { return beam_[size_t(slot_[i])]; }
 
 private:
     LightSampler byPower_;
     std::vector<size_t> index_;    // by slot: the light's index in `all`
-    std::vector<Vec3> position_;   // by slot
+    std::vector<Beam> beam_;       // by slot
     std::vector<int32_t> slot_;    // by light of `all`: its slot, or -1
 };
 

@@ -18,14 +18,14 @@ struct EquiangularDistances {
     float distance = 0;  // D, from y to that point
     float thetaA = 0, thetaB = 0;
 
-    // For the segment [0, end] (end infinite: the ray leaves the scene) of the ray o + t d
-    // (|d| = 1); none where the ray passes through y (D = 0) or the segment is empty.
-    static std::optional<EquiangularDistances> toward(Vec3 o, Vec3 d, float end, Vec3 y) {
+    // For the segment [start, end] (end infinite: the ray leaves the scene) of the ray
+    // o + t d (|d| = 1); none where the ray passes through y (D = 0) or the segment is empty.
+    static std::optional<EquiangularDistances> toward(Vec3 o, Vec3 d, float start, float end, Vec3 y) {
         const Vec3 toY = y - o;
         const float foot = dot(toY, d);
         const float distance = length(toY - d * foot);
-        if (!(distance > 1e-6f * std::max(1.0f, std::abs(foot))) || !(end > 0)) return std::nullopt;
-        const float thetaA = std::atan2(-foot, distance);
+        if (!(distance > 1e-6f * std::max(1.0f, std::abs(foot))) || !(end > start)) return std::nullopt;
+        const float thetaA = std::atan2(start - foot, distance);
         const float thetaB = std::isinf(end) ? 1.57079632679489662f : std::atan2(end - foot, distance);
         if (!(thetaB > thetaA)) return std::nullopt;
         return EquiangularDistances{foot, distance, thetaA, thetaB};

@@ -1,4 +1,5 @@
 #include "integrators/common/light_along_ray.h"
+#include "math/ray_cone.h"
 #include "media/equiangular.h"
 #include "media/henyey_greenstein.h"
 #include "math/sampling.h"
@@ -6,6 +7,18 @@
 namespace photon {
 
 namespace {
+
+// The equiangular distances toward a light's point over the part of the segment inside its
+// beam: a spot's light reaches no other part, and samples drawn there would be wasted.
+std::optional<EquiangularDistances> distancesToward(const FlightSegment& s, const PointLightChoice::Beam& beam) {
+    RayInterval lit{0.0f, s.end};
+    if (beam.cosMax > 0) {
+        const std::optional<RayInterval> inside = rayInsideCone(s.o, s.d, 0.0f, s.end, beam.position, beam.axis, beam.cosMax);
+        if (!inside) return std::nullopt;
+        lit = *inside;
+    }
+    return EquiangularDistances::toward(s.o, s.d, lit.start, lit.end, beam.position);
+}
 
 // The densities with which each strategy draws the point at distance t of the segment
 // together with light `light`, whose direction from there is wi.
@@ -36,7 +49,7 @@ Color sampleLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t me
                           float uDistance) {
     const PointLightChoice::Pick pick = scene.lightsAlongRays().pick(uLight);
     if (!pick.light) return Color(0.0f);
-    const std::optional<EquiangularDistances> distances = EquiangularDistances::toward(s.o, s.d, s.end, pick.position);
+    const std::optional<EquiangularDistances> distances = distancesToward(s, pick.beam);
     if (!distances) return Color(0.0f);
     const float t = distances->sample(uDistance);
     const Vec3 x = s.o + s.d * t;
@@ -56,8 +69,7 @@ Color sampleLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t me
 
 float weightAgainstLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light, Vec3 wi) {
     if (!s.lightSampled || scene.lightsAlongRays().probability(light) == 0) return 1.0f;
-    const std::optional<EquiangularDistances> distances =
-        EquiangularDistances::toward(s.o, s.d, s.end, scene.lightsAlongRays().position(light));
+    const std::optional<EquiangularDistances> distances = distancesToward(s, scene.lightsAlongRays().beam(light));
     if (!distances) return 1.0f;
     const StrategyDensities p = densities(scene, s, medium, light, s.scatteredAt, wi, *distances);
     return powerHeuristic(p.flight, p.along);
