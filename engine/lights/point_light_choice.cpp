@@ -1,4 +1,5 @@
 #include "lights/point_light_choice.h"
+#include <algorithm>
 
 namespace photon {
 
@@ -11,7 +12,8 @@ PointLightChoice::PointLightChoice(const LightSampler& all) {
         slot_[i] = int32_t(lights.size());
         lights.push_back(&all.light(i));
         index_.push_back(i);
-        beam_.push_back({g.position, g.frame.n, g.cosMax});
+        const float solidAngle = 2 * 3.14159265358979f * (1 - std::max(-1.0f, g.cosMax));
+        beam_.push_back({g.position, g.frame.n, g.cosMax, average(all.light(i).power()) / solidAngle});
     }
     byPower_ = LightSampler(std::move(lights));
 }

@@ -1,5 +1,5 @@
 // The lights that send from one point (point, spot, profiled point and projection lights:
-// EmissionGeometry::Kind::Point), picked by power: what a camera path samples along its ray
+// EmissionGeometry::Kind::Point): what a camera path samples along its ray
 // through a medium that scatters (equiangular distances, media/equiangular.h). Near such a
 // light the light a medium scatters grows as 1 / r^2, a spike that free flights, which stop
 // where the medium is dense and not where the light is, find too rarely.
@@ -12,34 +12,30 @@ namespace photon {
 class PointLightChoice {
 public:
     PointLightChoice() = default;
-    // The point lights among `all`'s, each with its share of their summed power.
+    // The point lights among `all`'s.
     explicit PointLightChoice(const LightSampler& all);
 
-    // Where a light sends from, and the cone outside which it sends nothing (a spot's beam,
-    // a projector's frustum; cosMax -1 for a light that shines every way).
+    // Where a light sends from, the cone outside which it sends nothing (a spot's beam, a
+    // projector's frustum; cosMax -1 for a light that shines every way), and its mean
+    // intensity over that cone (the mean over channels of its power over the cone's solid
+    // angle, W/sr).
     struct Beam {
         Vec3 position;
         Vec3 axis;
         float cosMax = -1;
-    };
-    struct Pick {
-        const Light* light = nullptr;
-        size_t index = 0;  // the light's index in `all`
-        float probability = 0;
-        Beam beam;
+        float meanIntensity = 0;
     };
     bool empty() const { return index_.empty(); }
-    Pick pick(float u) const {
-        const LightSampler::Pick p = byPower_.pick(u);
-        if (!p.light) return {};
-        return {p.light, index_[p.index], p.probability, beam_[p.index]};
-    }
-    // The probability pick() returns light i of `all` with (0 for a light that is not one).
-    float probability(size_t i) const {
-        return i < slot_.size() && slot_[i] >= 0 ? byPower_.probability(size_t(slot_[i])) : 0.0f;
-    }
-    // Light i of `all`'s beam (one of these lights: probability(i) > 0).
-    const Beam& beam(size_t i) const { return beam_[size_t(slot_[i])]; }
+    // The lights, by slot.
+    size_t size() const { return index_.size(); }
+    const Light& light(size_t slot) const { return byPower_.light(slot); }
+    size_t index(size_t slot) const { return index_[slot]; }  // the light's index in `all`
+    const Beam& beam(size_t slot) const { return beam_[slot]; }
+    // A slot picked by power, and the probability of each.
+    LightSampler::Pick pickByPower(float u) const { return byPower_.pick(u); }
+    float powerProbability(size_t slot) const { return byPower_.probability(slot); }
+    // The slot of light i of `all`, -1 if it is not one of these.
+    int32_t slotOf(size_t i) const { return i < slot_.size() ? slot_[i] : -1; }
 
 private:
     LightSampler byPower_;

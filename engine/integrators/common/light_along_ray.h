@@ -22,7 +22,8 @@ struct FlightSegment {
 };
 
 // Light scattered toward the camera from one point of the segment in `medium`, drawn by
-// equiangular distances toward a light picked among Scene::lightsAlongRays by power, with
+// equiangular distances toward a light picked among Scene::lightsAlongRays by what it could
+// bring along the segment (light_along_ray.cpp: SegmentLightChoice), with
 // the weight against the light sample the path takes where its flight scatters. `beta` is
 // the path's throughput where the segment starts. Its draws: the light and the distance.
 Color sampleLightAlongRay(const Scene& scene, const FlightSegment& segment, int32_t medium, Color beta, float uLight,
