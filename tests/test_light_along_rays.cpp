@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include "math/density_grid.h"
 #include "math/ray_cone.h"
 #include "media/equiangular.h"
 #include "media/henyey_greenstein.h"
@@ -271,6 +272,33 @@ TEST(LightAlongRays, EquiangularSamplesHaveLessNoiseThanFreeFlightsAlone) {
                         kind == IntegratorKind::Path ? "path" : "sppm", with, without);
             EXPECT_LT(with, 0.5 * without) << name << ", integrator " << int(kind);
         }
+}
+
+// Equiangular samples in a medium whose density varies (a random grid of 4 x 4 x 6 samples
+// over a slab of fog, z in [-0.5, 0.5]), lit by a point light above it: there the free
+// flights alone are not heavy-tailed (no light within the medium), so the image with
+// equiangular samples, whose weights read the density where they land and the
+// transmittance through the grid, must match the image without them. The path tracer,
+// single scattering; over 12 seeds at 512 passes each the ratio of their means was 1.0015
+// (deviation 0.56% a seed, nearly all of it the free flights': 0.51% against 0.07%), so
+// the free flights render 2,048: 1.0016 (0.22%).
+TEST(LightAlongRays, UnevenSmokeUnderAPointLightRendersAsWithFreeFlightsAlone) {
+    std::vector<float> values;
+    Rng rng(4, 0, 1, StreamPurpose::Camera);
+    for (int i = 0; i < 96; ++i) values.push_back(2.0f * rng.uniform());
+    MediumDescription smoke = kFog;
+    smoke.density = std::make_shared<const DensityGrid>(
+        4, 4, 6, std::move(values), DensityGrid::latticeFromBox(4, 4, 6, {-1, -1, -0.5f}, {1, 1, 0.5f}));
+    auto render = [&](bool equiangular) {
+        SceneDescription d = lightsInFog(IntegratorKind::Path, equiangular, equiangular ? 512 : 2048, 1, {});
+        d.media = {smoke};
+        d.shapes = test::boxFaces({-1, -1, -0.5f}, {1, 1, 0.5f}, 0, 0);
+        d.lights = {test::pointLight({0.2f, 0.1f, 1.0f}, Color(2.0f), -1)};
+        return test::meanOver(test::renderImage(std::move(d)), 0, 0, 8, 8);
+    };
+    const Color with = render(true), without = render(false);
+    std::printf("  with %.5f %.5f %.5f, without %.5f %.5f %.5f\n", with.x, with.y, with.z, without.x, without.y, without.z);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(with[c], without[c], 0.015f * without[c]) << "channel " << c;
 }
 
 // rayInsideCone against membership tested point by point: rays from inside and outside the
