@@ -83,6 +83,7 @@ struct PathInMedia {
     // segment, whose light sample sampleDirectLightInMedium weighs against those.
     Color* lightAlong = nullptr;
     FlightSegment segment{};
+    int raysAlong = 0;  // the shadow rays of those samples, one each whether or not cast (SPPM's cost)
 };
 
 // A number in [0, 1) drawn from the ray itself, for the emission estimate of a path that
@@ -134,6 +135,7 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         if (flies) {
             media->segment = FlightSegment{ray.o, ray.d, segment, media->flight.ratios, 0.0f, sampledAlong};
             if (sampledAlong) {
+                ++media->raysAlong;
                 const float uLight = media->sampler.get1D(), uDistance = media->sampler.get1D();
                 *media->lightAlong += sampleLightAlongRay(scene, media->segment, medium, beta, uLight, uDistance);
             }

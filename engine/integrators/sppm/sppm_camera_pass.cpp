@@ -277,7 +277,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
         if (reflectsUnderSurface(scene, hit, before, medium, walkEvents)) --depth;
         entersUnderSurface(scene, hit, before, medium, inMedia);
     }
-    return rays;
+    return rays + inMedia.raysAlong;
 }
 
 void SppmIntegrator::leaveSurface(const Scene& scene, const SurfaceHit& hit, Vec3 d, int32_t& medium, PathInMedia& inMedia) {
