@@ -3,6 +3,7 @@
 #include <bit>
 #include <limits>
 #include "integrators/common/light_along_ray.h"
+#include "math/ball_in_half_spaces.h"
 #include "math/frame.h"
 #include "math/path_sampler.h"
 #include "math/sampling.h"
@@ -56,6 +57,14 @@ inline void absorbAlong(const Scene& scene, int32_t medium, const Ray& ray, floa
     if (medium >= 0) beta *= scene.transmittance(medium, ray.o, ray.d, distance);
 }
 
+// Whether the surface hit ends the medium a path is in toward w: beyond it lies another
+// medium that does not scatter (vacuum, the glass of a ball). A surface inside the medium
+// (a mirror in fog) has it on both sides, and its photons too.
+inline bool boundsMediumToward(const Scene& scene, const SurfaceHit& hit, Vec3 w, int32_t medium) {
+    const int32_t beyond = scene.mediumToward(hit, w, medium);
+    return beyond != medium && !scene.scatters(beyond);
+}
+
 // Where a camera path's ray ended: it left the scene, met a surface, or scattered in a
 // medium on the way.
 enum class RayEnd { Left, Surface, Scattered };
@@ -67,11 +76,15 @@ struct PathInMedia {
     ChromaticFlight flight;
     // The normal of the medium's boundary the ray's segment starts on (zero: none, e.g. the
     // camera or a scattering point), which the caller sets; castPastBoundaries sets it where
-    // the ray crosses into another medium, and where the ray scatters gives the distance from
-    // there to that boundary's plane (infinity with none): SPPM's volume points count the
-    // part of their ball that lies in the medium (storeVolumePoint).
+    // the ray crosses into another medium, and where the ray scatters gives the planes of
+    // that boundary and, with `seesAhead`, of the surface its segment would have ended at
+    // where that bounds the medium too (boundsMediumToward): SPPM's volume
+    // points count the part of their ball that lies in the medium (storeVolumePoint).
+    // `seesAhead` casts the segment whole where a homogeneous medium's flight would only
+    // need it to the point (nothing is drawn differently).
     Vec3 boundaryNormal{0.0f};
-    float boundaryDistance = std::numeric_limits<float>::infinity();
+    bool seesAhead = false;
+    CuttingPlane behind{}, ahead{};
     // Under a surface (MediumDescription::subsurface): the outward normal of the surface the
     // path came in by (zero: none), toward which its walk is guided, and how the step under
     // way was drawn (media/guided_walk.h), which its next flight consumes.
@@ -127,7 +140,7 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         // scatters every few tenths of a millimetre). Nothing is drawn differently. Light
         // sampled along the segment needs all of it.
         Ray probe = ray;
-        if (flies && !emits && !sampledAlong && !scene.medium(medium).density)
+        if (flies && !emits && !sampledAlong && !media->seesAhead && !scene.medium(medium).density)
             probe.tMax = std::min(probe.tMax, homogeneousFlightDistance(scene.medium(medium), u, media->flight, &media->step));
         const bool found = scene.intersect(probe, hit);
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
@@ -143,12 +156,17 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
             media->step.on = false;
             media->segment.scatteredAt = t;
             if (t < segment) {
+                const Vec3 n = media->boundaryNormal;
+                media->behind = n.x != 0 || n.y != 0 || n.z != 0
+                                    ? CuttingPlane{dot(ray.d, n) > 0 ? -n : n, t * std::abs(dot(ray.d, n))}
+                                    : CuttingPlane{};
+                media->ahead = found && boundsMediumToward(scene, hit, ray.d, medium)
+                                   ? CuttingPlane{dot(ray.d, hit.ng) > 0 ? hit.ng : -hit.ng,
+                                                  (segment - t) * std::abs(dot(ray.d, hit.ng))}
+                                   : CuttingPlane{};
                 hit = SurfaceHit{};
                 hit.p = ray.o + ray.d * t;
                 hit.t = travelled + t;
-                const Vec3 n = media->boundaryNormal;
-                media->boundaryDistance = n.x != 0 || n.y != 0 || n.z != 0 ? t * std::abs(dot(ray.d, n))
-                                                                          : std::numeric_limits<float>::infinity();
                 return RayEnd::Scattered;
             }
         } else {

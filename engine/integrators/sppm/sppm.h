@@ -208,10 +208,10 @@ private:
     void storeVisiblePoint(size_t index, const ShadingPoint& sp, Vec3 wo, Color beta, unsigned lobes, float pathLength);
     // A visible point where the first camera path scatters in `medium` at p, beta its
     // throughput with the flight's weight (render.volume_photons).
-    // `boundaryDistance`: to the plane of the medium's boundary the path crossed last
-    // (PathInMedia), infinity with none.
+    // `behind`, `ahead`: the planes of the medium's boundary the path crossed last and of
+    // the one its ray would have reached (PathInMedia), at infinity where there are none.
     void storeVolumePoint(size_t index, Vec3 p, Vec3 wo, Color beta, int32_t medium, float pathLength,
-                          float boundaryDistance);
+                          const CuttingPlane& behind, const CuttingPlane& ahead);
     // The medium a camera path goes on in from `hit` toward d, and the boundary it starts on.
     static void leaveSurface(const Scene& scene, const SurfaceHit& hit, Vec3 d, int32_t& medium, PathInMedia& inMedia);
     // The pixel's squared gather radius for this pass, from its statistics or (first pass,
