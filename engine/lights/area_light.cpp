@@ -17,11 +17,6 @@
 namespace photon {
 namespace {
 
-struct SurfacePoint {
-    Vec3 p, n;
-    Vec2 uv;  // only where the emission is textured
-};
-
 // Shared by every area light: direct-light samples and photons from uniform area samples.
 class AreaLight : public Light {
 public:
@@ -39,8 +34,14 @@ public:
         return solidAngleDensity(p, at, wi, area_, 1.0f);
     }
 
+    std::optional<LightPoint> samplePointByArea(Vec2 u) const override { return samplePoint(u); }
+    float pointDensity() const override { return 1.0f / area_; }
+    std::optional<LightSample> incidentFromPoint(Vec3 p, const LightPoint& y) const override {
+        return sampleTowards(p, y, area_, 1.0f);
+    }
+
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
-        SurfacePoint s = samplePoint(uPosition);
+        LightPoint s = samplePoint(uPosition);
         Frame frame = Frame::fromNormal(s.n);
         if (sides_ > 1) {  // the back with probability 1/2, u.x reused for the direction
             const bool back = uDirection.x >= 0.5f;
@@ -55,12 +56,12 @@ public:
 
 protected:
     // Uniform by area; n faces the (front) emitting side.
-    virtual SurfacePoint samplePoint(Vec2 u) const = 0;
+    virtual LightPoint samplePoint(Vec2 u) const = 0;
 
     // The light sample from p toward s, drawn uniformly by area on a part of the light of
     // area `area` picked with probability `pick`: by area pick / area, in solid angle
     // pick d^2 / (cos area).
-    std::optional<LightSample> sampleTowards(Vec3 p, const SurfacePoint& s, float area, float pick) const {
+    std::optional<LightSample> sampleTowards(Vec3 p, const LightPoint& s, float area, float pick) const {
         const Vec3 toLight = s.p - p;
         const float dist2 = lengthSquared(toLight);
         if (dist2 <= 0) return std::nullopt;
@@ -70,7 +71,7 @@ protected:
         if (sides_ > 1) cosLight = std::abs(cosLight);
         if (cosLight <= 0) return std::nullopt;
         return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p, s.n}) * (cosLight * area / dist2) / pick,
-                           dist2 / (cosLight * area) * pick};
+                           dist2 / (cosLight * area) * pick, s.n};
     }
     // The same density for the point a ray from p along wi met.
     static float solidAngleDensity(Vec3 p, const EmitterPoint& at, Vec3 wi, float area, float pick) {
@@ -148,7 +149,8 @@ public:
         const Vec3 onLight = p + *wi * dist;
         Vec2 uv;
         if (shape_.emissionTexture) uv = uvOn(i, onLight);
-        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight, tri.frame.n}) * angles->total, 1.0f / angles->total};
+        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight, tri.frame.n}) * angles->total, 1.0f / angles->total,
+                           tri.frame.n};
     }
 
     float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
@@ -238,15 +240,15 @@ private:
         const float uWithin = std::clamp((x - below) / parts.each[i].area, 0.0f, 0.99999994f);
         return sampleTowards(p, pointOn(i, parts.each[i], {uWithin, u.y}), parts.total, 1.0f);
     }
-    SurfacePoint pointOn(size_t i, const ClippedTriangle& part, Vec2 u) const {
+    LightPoint pointOn(size_t i, const ClippedTriangle& part, Vec2 u) const {
         const EmissionTriangles::Triangle& tri = triangles_[i];
         if (part.whole) {
             Vec2 barycentric;
-            SurfacePoint s{EmissionTriangles::pointOn(tri, u, barycentric), tri.frame.n, {}};
+            LightPoint s{EmissionTriangles::pointOn(tri, u, barycentric), tri.frame.n, {}};
             if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(i, barycentric.x, barycentric.y);
             return s;
         }
-        SurfacePoint s{part.pointAt(u), tri.frame.n, {}};
+        LightPoint s{part.pointAt(u), tri.frame.n, {}};
         if (shape_.emissionTexture) s.uv = uvOn(i, s.p);
         return s;
     }
@@ -289,12 +291,13 @@ private:
         return shape_.mesh.uvAt(i, (d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det);
     }
 
-    SurfacePoint samplePoint(Vec2 u) const override {
-        SurfacePoint s;
+    LightPoint samplePoint(Vec2 u) const override {
+        LightPoint s;
         Vec2 barycentric;
         size_t index;
         const EmissionTriangles::Triangle& tri = triangles_.samplePoint(u, s.p, barycentric, index);
         s.n = tri.frame.n;
+        s.triangle = uint32_t(index);
         if (shape_.emissionTexture) s.uv = shape_.mesh.uvAt(index, barycentric.x, barycentric.y);
         return s;
     }
@@ -359,7 +362,7 @@ public:
         const Vec3 onLight = p + wi * dist;
         const Vec3 normal = normalize(onLight - shape_.center);
         const Color Le = shape_.emissionAt({shape_.emissionTexture ? sphereUv(normal) : Vec2{}, onLight, normal});
-        return LightSample{wi, dist, Le / cone->pdf, cone->pdf};
+        return LightSample{wi, dist, Le / cone->pdf, cone->pdf, normal};
     }
 
     float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
@@ -401,9 +404,9 @@ private:
         return c;
     }
 
-    SurfacePoint samplePoint(Vec2 u) const override {
+    LightPoint samplePoint(Vec2 u) const override {
         Vec3 n = sampleUniformSphere(u);
-        return {shape_.center + n * shape_.radius, n * sign_, shape_.emissionTexture ? sphereUv(n) : Vec2{}};
+        return LightPoint{shape_.center + n * shape_.radius, n * sign_, shape_.emissionTexture ? sphereUv(n) : Vec2{}};
     }
     float sign_;
 };

@@ -22,7 +22,11 @@ public:
     }
     const EmissionTriangles* emissionTriangles() const override { return light_->emissionTriangles(); }
     std::optional<LightBounds> bounds() const override { return light_->bounds(); }
-    // pdfIncidentFrom stays 0 (no ray meets it); it has no projection map (emissionGeometry).
+    // Its points say where it is (Scene::placeLightsInMedia); pointDensity stays 0, so no
+    // camera ray samples it along the way (its light samples, of density 0, would weigh
+    // nothing against those). pdfIncidentFrom stays 0 (no ray meets it); it has no
+    // projection map (emissionGeometry).
+    std::optional<LightPoint> samplePointByArea(Vec2 u) const override { return light_->samplePointByArea(u); }
 
 private:
     std::unique_ptr<Light> light_;

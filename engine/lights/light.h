@@ -16,6 +16,14 @@ struct LightSample {
     float distance = std::numeric_limits<float>::infinity();  // to the sampled point; inf for infinite lights
     Color weight;            // incident radiance / pdf (solid angle), or irradiance for delta lights
     float pdf = 0;           // the solid-angle density wi was drawn with; 0 for delta lights
+    Vec3 normal{0.0f};       // area lights: the light's normal at the point sampled (else 0)
+};
+
+// A point drawn on an area light by area (Light::samplePointByArea).
+struct LightPoint {
+    Vec3 p, n;              // where, and the normal of the (front) emitting side
+    Vec2 uv;                // only where the emission is textured
+    uint32_t triangle = 0;  // the mesh's triangle (meshes only)
 };
 
 // A point on an area light that a ray met.
@@ -93,6 +101,15 @@ public:
     // full wherever they cross it, and its photons arrive from their first hit on
     // (PhotonPathSettings::unsampledLightsArriveFirst).
     virtual bool sampledDirectly() const { return true; }
+    // Area lights: a point drawn on the light before the point it lights is known (light
+    // sampled along a camera ray through a medium, light_along_ray.h), uniformly by area;
+    // the density of such points (1 / area; 0 for lights that draw none); and the light
+    // arriving at p from such a point y: weight Le |cos| / (d^2 pointDensity), pdf that
+    // draw's solid-angle density at p, d^2 pointDensity / |cos|. None where y's emitting
+    // side faces away from p.
+    virtual std::optional<LightPoint> samplePointByArea(Vec2 u) const { return std::nullopt; }
+    virtual float pointDensity() const { return 0; }
+    virtual std::optional<LightSample> incidentFromPoint(Vec3 p, const LightPoint& y) const { return std::nullopt; }
 };
 
 }  // namespace photon

@@ -9,7 +9,7 @@
 #include "camera/camera.h"
 #include "lights/light.h"
 #include "lights/direct_light_sampler.h"
-#include "lights/point_light_choice.h"
+#include "lights/lights_along_rays.h"
 #include "lights/light_sampler.h"
 #include "math/ray.h"
 #include "description/scene_description.h"
@@ -152,6 +152,9 @@ public:
     // the camera may sit inside a shape.) What a light inside a grid larger than its
     // medium's shapes asks before it emits there.
     bool inMedium(Vec3 p, int32_t medium) const;
+    // The medium around p: the one on p's side of the first boundary between media that a
+    // ray from p meets (-1: none on that side); nothing where the ray meets none.
+    std::optional<int32_t> mediumAround(Vec3 p) const;
     // A grid of cells over the shapes that have `medium` inside: where a homogeneous medium
     // that emits sends its photons from (none where no shape has it inside; the scene loader
     // refuses such a medium where anything else names it).
@@ -236,7 +239,7 @@ public:
     const DirectLightSampler& directLights() const { return directLightSampler_; }
     // The point and spot lights camera paths sample along their rays through media that
     // scatter (render.equiangular): none without such media, or with the setting off.
-    const PointLightChoice& lightsAlongRays() const { return lightsAlongRays_; }
+    const LightsAlongRays& lightsAlongRays() const { return lightsAlongRays_; }
     Vec3 boundsMin() const { return boundsMin_; }
     Vec3 boundsMax() const { return boundsMax_; }
     RTCScene embreeScene() const { return rtcScene_; }
@@ -269,6 +272,7 @@ private:
     void takeSubsurfaceBoundaries();
     void buildLights();
     void prepareHitData();
+    void placeLightsInMedia();  // and the camera
     // The rest of the hit record, once Embree's answer (t, shape, primitive, barycentric)
     // is in it: inline for flat triangles and plain spheres, out of line for the others.
     // Embree's geometry and instance ids name the shape and the instance. A hit on an
@@ -345,6 +349,7 @@ private:
     std::vector<uint8_t> mediumBounded_;          // by medium: some shape bounds it
     std::vector<uint8_t> mediumOutside_;          // by medium: it is where no shape's inside is
     std::vector<int32_t> lightMedium_;            // by light, in lightSampler_'s order
+    std::vector<uint8_t> lightMediumSaid_;        // by light: its medium is the scene's word, not placeLightsInMedia's
     MediumPalettes palettes_;                     // textured media's palettes, after the scene's media
     // An object's instance: where it is, and where its shapes start in slots_. Embree's
     // geometry id of instance k is firstInstanceId_ + k (the world's shapes come first).
@@ -394,7 +399,7 @@ private:
     std::vector<std::unique_ptr<Light>> ownedLights_;
     LightSampler lightSampler_;
     DirectLightSampler directLightSampler_;  // refers to lightSampler_
-    PointLightChoice lightsAlongRays_;       // refers to lightSampler_
+    LightsAlongRays lightsAlongRays_;       // refers to lightSampler_
     std::vector<EnvironmentLight> environmentLights_;
     Camera camera_;
     Vec3 boundsMin_, boundsMax_;

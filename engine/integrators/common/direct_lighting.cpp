@@ -57,7 +57,7 @@ Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t med
     const float pickProbability = 0.5f * pick.probability;
     // The phase-function sample draws wi with density `phase` (scatterInMedium).
     float w = ls->pdf > 0 && continues ? powerHeuristic(pickProbability * ls->pdf, phase) : 1.0f;
-    if (along) w *= weightAgainstLightAlongRay(scene, *along, medium, pick.index, ls->wi);
+    if (along) w *= weightAgainstLightAlongRay(scene, *along, medium, pick.index, *ls);
     return ls->weight * transmittance * (phase * w / pickProbability);
 }
 

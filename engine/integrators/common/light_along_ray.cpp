@@ -11,7 +11,7 @@ namespace {
 
 // The equiangular distances toward a light's point over the part of the segment inside its
 // beam: a spot's light reaches no other part, and samples drawn there would be wasted.
-std::optional<EquiangularDistances> distancesToward(const FlightSegment& s, const PointLightChoice::Beam& beam) {
+std::optional<EquiangularDistances> distancesToward(const FlightSegment& s, const LightsAlongRays::Beam& beam) {
     RayInterval lit{0.0f, s.end};
     if (beam.cosMax > 0) {
         const std::optional<RayInterval> inside = rayInsideCone(s.o, s.d, 0.0f, s.end, beam.position, beam.axis, beam.cosMax);
@@ -31,10 +31,10 @@ class SegmentLightChoice {
 public:
     static constexpr size_t kWeighed = 64;
 
-    SegmentLightChoice(const PointLightChoice& lights, const FlightSegment& s) : lights_(lights) {
+    SegmentLightChoice(const LightsAlongRays& lights, const FlightSegment& s) : lights_(lights) {
         if (lights.size() > kWeighed) return;
         for (size_t slot = 0; slot < lights.size(); ++slot) {
-            const PointLightChoice::Beam& beam = lights.beam(slot);
+            const LightsAlongRays::Beam& beam = lights.beam(slot);
             const std::optional<EquiangularDistances> e = distancesToward(s, beam);
             weights_[slot] = e ? beam.meanIntensity * (e->thetaB - e->thetaA) / e->distance : 0.0f;
             total_ += weights_[slot];
@@ -64,20 +64,33 @@ public:
     }
 
 private:
-    const PointLightChoice& lights_;
+    const LightsAlongRays& lights_;
     std::array<float, kWeighed> weights_{};
     float total_ = 0;
 };
 
+// The equiangular distances a segment draws for the light in `beam`: toward the point y
+// drawn on an area light, or toward a point light within its beam.
+std::optional<EquiangularDistances> distancesFor(const FlightSegment& s, const LightsAlongRays::Beam& beam, Vec3 y) {
+    return beam.area ? EquiangularDistances::toward(s.o, s.d, 0.0f, s.end, y) : distancesToward(s, beam);
+}
+
 // The densities with which each strategy draws the point at distance t of the segment
-// together with light `light`, whose direction from there is wi.
+// together with the light sample ls there (its direction, distance and, on an area light,
+// its point's normal): for an area light over t and the solid angle at the point, for a
+// point light over t alone. pLight: an area light's sample's solid-angle density for that
+// direction (none for a point light). And the weight of the light sample against the phase
+// function's direction where the path goes on from the point it scatters at (a ray that may
+// meet an area light), which both strategies' samples share.
 struct StrategyDensities {
-    float flight;  // the free flight, then the light sample's pick for the side wi is on
-    float along;   // the light's pick among the point lights, then the equiangular distance
+    float flight;  // the free flight, then the light sample's pick for the side wi is on and its point
+    float along;   // the light's pick among Scene::lightsAlongRays, the equiangular distance and its point
+    float againstPhase = 1;
 };
 
-StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light, float t, Vec3 wi,
-                            const EquiangularDistances& distances, float pickAlong) {
+StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light, float t,
+                            const LightSample& ls, std::optional<float> pLight, const EquiangularDistances& distances,
+                            float pickAlong) {
     const MediumDescription& m = scene.medium(medium);
     const Vec3 x = s.o + s.d * t;
     // The flight's density over the channels (free_flight.h: weighFlight's mean): on a
@@ -87,46 +100,72 @@ StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t 
     // sampleDirectLightInMedium picks the light for the half of the sphere on wo's side or
     // the other, each with probability 1/2, and keeps the sample only on that side.
     const Vec3 wo = -s.d;
-    const float side = dot(wi, wo);
-    const float pick = side == 0 ? 0.0f : 0.5f * scene.directLights().probability(light, x, side > 0 ? wo : -wo);
-    return {flight * pick, pickAlong * distances.pdf(t)};
+    const float side = dot(ls.wi, wo);
+    if (side == 0) return {0.0f, 0.0f};
+    const float pick = 0.5f * scene.directLights().probability(light, x, side > 0 ? wo : -wo);
+    const float along = pickAlong * distances.pdf(t);
+    if (!pLight) return {flight * pick, along};
+    // An area light: its point y drawn by area is, over the solid angle at x,
+    // pointDensity d^2 / |cos|.
+    const float cosLight = std::abs(dot(ls.normal, ls.wi));
+    const float pPoint = cosLight > 0 ? scene.lights().light(light).pointDensity() * ls.distance * ls.distance / cosLight : 0.0f;
+    // Where the path goes on, the light sample's share against the phase function's
+    // direction (0 where the light sample cannot draw y: the phase function's alone).
+    const float againstPhase = s.continues ? powerHeuristic(pick * *pLight, henyeyGreenstein(dot(wo, ls.wi), m.g)) : 1.0f;
+    return {flight * pick * *pLight, along * pPoint, againstPhase};
 }
 
 }  // namespace
 
 Color sampleLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t medium, Color beta, float uLight,
-                          float uDistance) {
-    const PointLightChoice& lights = scene.lightsAlongRays();
+                          float uDistance, Vec2 uPoint) {
+    const LightsAlongRays& lights = scene.lightsAlongRays();
     const SegmentLightChoice choice(lights, s);
     const int32_t slot = choice.pick(uLight);
     if (slot < 0) return Color(0.0f);
-    const std::optional<EquiangularDistances> distances = distancesToward(s, lights.beam(size_t(slot)));
+    const LightsAlongRays::Beam& beam = lights.beam(size_t(slot));
+    const Light& light = lights.light(size_t(slot));
+    // An area light's point is drawn first, and the distances toward it.
+    std::optional<LightPoint> y;
+    if (beam.area && !(y = light.samplePointByArea(uPoint))) return Color(0.0f);
+    const std::optional<EquiangularDistances> distances = distancesFor(s, beam, y ? y->p : Vec3(0.0f));
     if (!distances) return Color(0.0f);
     const float t = distances->sample(uDistance);
     const Vec3 x = s.o + s.d * t;
     const MediumDescription& m = scene.medium(medium);
     const Color sigmaS = m.scattering * m.densityAt(x);
     if (isBlack(sigmaS)) return Color(0.0f);
-    const std::optional<LightSample> ls = lights.light(size_t(slot)).sampleIncident(x, Vec3(0.0f), {0.5f, 0.5f});
+    const std::optional<LightSample> ls = y ? light.incidentFromPoint(x, *y) : light.sampleIncident(x, Vec3(0.0f), {0.5f, 0.5f});
     if (!ls) return Color(0.0f);
     const float phase = henyeyGreenstein(dot(-s.d, ls->wi), m.g);
     const Color transmittance = scene.shadowTransmittance(Ray{x, ls->wi, ls->distance * (1.0f - 1e-4f)}, medium);
     if (isBlack(transmittance)) return Color(0.0f);
-    const StrategyDensities p = densities(scene, s, medium, lights.index(size_t(slot)), t, ls->wi, *distances,
-                                          choice.probability(size_t(slot)));
-    if (!(p.along > 0)) return Color(0.0f);
+    // The light sample's density for y: for the side of wo that wi is on.
+    const Vec3 n = dot(ls->wi, s.d) < 0 ? -s.d : s.d;
+    const std::optional<float> pLight =
+        y ? std::optional<float>(light.pdfIncidentFrom(x, n, EmitterPoint{y->p, y->n, y->triangle}, ls->wi)) : std::nullopt;
+    const float pickAlong = choice.probability(size_t(slot));
+    const StrategyDensities p = densities(scene, s, medium, lights.index(size_t(slot)), t, *ls, pLight, *distances, pickAlong);
+    if (!(p.along > 0) || !(p.againstPhase > 0)) return Color(0.0f);
+    // ls->weight is Le |cos| / (d^2 pointDensity) on an area light, I / d^2 for a point
+    // light: over the rest of the draw's density, the pick and the distance.
     const Color toX = scene.transmittance(medium, s.o, s.d, t);
-    return beta * toX * sigmaS * ls->weight * transmittance * (phase * powerHeuristic(p.along, p.flight) / p.along);
+    return beta * toX * sigmaS * ls->weight * transmittance *
+           (phase * p.againstPhase * powerHeuristic(p.along, p.flight) / (pickAlong * distances->pdf(t)));
 }
 
-float weightAgainstLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light, Vec3 wi) {
-    const PointLightChoice& lights = scene.lightsAlongRays();
+float weightAgainstLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light,
+                                 const LightSample& ls) {
+    const LightsAlongRays& lights = scene.lightsAlongRays();
     const int32_t slot = lights.slotOf(light);
     if (!s.lightSampled || slot < 0) return 1.0f;
-    const std::optional<EquiangularDistances> distances = distancesToward(s, lights.beam(size_t(slot)));
+    const LightsAlongRays::Beam& beam = lights.beam(size_t(slot));
+    const std::optional<EquiangularDistances> distances =
+        distancesFor(s, beam, s.o + s.d * s.scatteredAt + ls.wi * ls.distance);
     if (!distances) return 1.0f;
     const float pickAlong = SegmentLightChoice(lights, s).probability(size_t(slot));
-    const StrategyDensities p = densities(scene, s, medium, light, s.scatteredAt, wi, *distances, pickAlong);
+    const StrategyDensities p = densities(scene, s, medium, light, s.scatteredAt, ls,
+                                          beam.area ? std::optional<float>(ls.pdf) : std::nullopt, *distances, pickAlong);
     return powerHeuristic(p.flight, p.along);
 }
 

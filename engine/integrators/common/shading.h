@@ -94,7 +94,10 @@ struct PathInMedia {
     // (sampleLightAlongRay, render.equiangular), which the caller sets where a light sample
     // would be taken at a point the ray scatters at (null: none is), and the last such
     // segment, whose light sample sampleDirectLightInMedium weighs against those.
+    // `lightAlongContinues`: whether such a point traces the phase function's direction for
+    // the light it finds (FlightSegment::continues).
     Color* lightAlong = nullptr;
+    bool lightAlongContinues = true;
     FlightSegment segment{};
     int raysAlong = 0;  // the shadow rays of those samples, one each whether or not cast (SPPM's cost)
 };
@@ -146,11 +149,15 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
         const float segment = found ? hit.t : std::numeric_limits<float>::infinity();
         if (emits) *emitted += beta * sampleEmissionAlong(scene.medium(medium), ray.o, ray.d, segment, u);
         if (flies) {
-            media->segment = FlightSegment{ray.o, ray.d, segment, media->flight.ratios, 0.0f, sampledAlong};
+            media->segment = FlightSegment{ray.o, ray.d, segment, media->flight.ratios, 0.0f, sampledAlong,
+                                           media->lightAlongContinues};
             if (sampledAlong) {
                 ++media->raysAlong;
                 const float uLight = media->sampler.get1D(), uDistance = media->sampler.get1D();
-                *media->lightAlong += sampleLightAlongRay(scene, media->segment, medium, beta, uLight, uDistance);
+                // A point on an area light, drawn only where there are some: scenes with point
+                // lights alone draw what they did before area lights were sampled along rays.
+                const Vec2 uPoint = scene.lightsAlongRays().hasAreaLights() ? media->sampler.get2D() : Vec2{};
+                *media->lightAlong += sampleLightAlongRay(scene, media->segment, medium, beta, uLight, uDistance, uPoint);
             }
             const float t = sampleFreeFlight(scene.medium(medium), ray.o, ray.d, segment, u, beta, media->flight, &media->step);
             media->step.on = false;

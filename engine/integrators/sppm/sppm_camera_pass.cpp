@@ -128,6 +128,7 @@ int SppmIntegrator::tracePath(size_t index, const Camera::PixelSample& start, Pa
     PathInMedia inMedia{sampler, {}};
     PathInMedia* media = scene.hasScatteringMedia() || scene.hasEmittingMedia() ? &inMedia : nullptr;
     inMedia.seesAhead = first && gathersInMedia();  // for the ball of the visible point it may leave
+    inMedia.lightAlongContinues = !gathersInMedia();  // a volume point ends the path (sampleDirectLightInMedium)
     // Whether the light the next ray lands on was counted already, by the look-up along the
     // same direction at the vertex it leaves.
     bool lightCounted = false;
