@@ -153,7 +153,8 @@ void Scene::buildLights() {
         if (isBlack(s.emission)) continue;
         lightOfShape_[i] = int32_t(ownedLights_.size());
         // An emitter that bounds a medium sends its photons into its outside medium (the
-        // side its normal faces); one that bounds none, into the medium of no shape.
+        // side its normal faces); one that bounds none, into the medium around it
+        // (placeLightsInMedia).
         lightMedium_.push_back(s.outsideMedium);
         lightMediumSaid_.push_back(s.boundsMedium() || s.outsideMedium >= 0);
         std::unique_ptr<Light> light = s.kind == ShapeDescription::Kind::Sphere
