@@ -79,7 +79,7 @@ std::optional<EquiangularDistances> distancesFor(const FlightSegment& s, const L
 // together with the light sample ls there (its direction, distance and, on an area light,
 // its point's normal): for an area light over t and the solid angle at the point, for a
 // point light over t alone. pLight: an area light's sample's solid-angle density for that
-// direction (none for a point light). And the weight of the light sample against the phase
+// direction (`area`; unused for a point light). And the weight of the light sample against the phase
 // function's direction where the path goes on from the point it scatters at (a ray that may
 // meet an area light), which both strategies' samples share.
 struct StrategyDensities {
@@ -89,7 +89,7 @@ struct StrategyDensities {
 };
 
 StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t medium, size_t light, float t,
-                            const LightSample& ls, std::optional<float> pLight, const EquiangularDistances& distances,
+                            const LightSample& ls, bool area, float pLight, const EquiangularDistances& distances,
                             float pickAlong) {
     const MediumDescription& m = scene.medium(medium);
     const Vec3 x = s.o + s.d * t;
@@ -104,15 +104,15 @@ StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t 
     if (side == 0) return {0.0f, 0.0f};
     const float pick = 0.5f * scene.directLights().probability(light, x, side > 0 ? wo : -wo);
     const float along = pickAlong * distances.pdf(t);
-    if (!pLight) return {flight * pick, along};
+    if (!area) return {flight * pick, along};
     // An area light: its point y drawn by area is, over the solid angle at x,
     // pointDensity d^2 / |cos|.
     const float cosLight = std::abs(dot(ls.normal, ls.wi));
     const float pPoint = cosLight > 0 ? scene.lights().light(light).pointDensity() * ls.distance * ls.distance / cosLight : 0.0f;
     // Where the path goes on, the light sample's share against the phase function's
     // direction (0 where the light sample cannot draw y: the phase function's alone).
-    const float againstPhase = s.continues ? powerHeuristic(pick * *pLight, henyeyGreenstein(dot(wo, ls.wi), m.g)) : 1.0f;
-    return {flight * pick * *pLight, along * pPoint, againstPhase};
+    const float againstPhase = s.continues ? powerHeuristic(pick * pLight, henyeyGreenstein(dot(wo, ls.wi), m.g)) : 1.0f;
+    return {flight * pick * pLight, along * pPoint, againstPhase};
 }
 
 }  // namespace
@@ -142,10 +142,10 @@ Color sampleLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t me
     if (isBlack(transmittance)) return Color(0.0f);
     // The light sample's density for y: for the side of wo that wi is on.
     const Vec3 n = dot(ls->wi, s.d) < 0 ? -s.d : s.d;
-    const std::optional<float> pLight =
-        y ? std::optional<float>(light.pdfIncidentFrom(x, n, EmitterPoint{y->p, y->n, y->triangle}, ls->wi)) : std::nullopt;
+    const float pLight = y ? light.pdfIncidentFrom(x, n, EmitterPoint{y->p, y->n, y->triangle}, ls->wi) : 0.0f;
     const float pickAlong = choice.probability(size_t(slot));
-    const StrategyDensities p = densities(scene, s, medium, lights.index(size_t(slot)), t, *ls, pLight, *distances, pickAlong);
+    const StrategyDensities p =
+        densities(scene, s, medium, lights.index(size_t(slot)), t, *ls, y.has_value(), pLight, *distances, pickAlong);
     if (!(p.along > 0) || !(p.againstPhase > 0)) return Color(0.0f);
     // ls->weight is Le |cos| / (d^2 pointDensity) on an area light, I / d^2 for a point
     // light: over the rest of the draw's density, the pick and the distance.
@@ -164,8 +164,8 @@ float weightAgainstLightAlongRay(const Scene& scene, const FlightSegment& s, int
         distancesFor(s, beam, s.o + s.d * s.scatteredAt + ls.wi * ls.distance);
     if (!distances) return 1.0f;
     const float pickAlong = SegmentLightChoice(lights, s).probability(size_t(slot));
-    const StrategyDensities p = densities(scene, s, medium, light, s.scatteredAt, ls,
-                                          beam.area ? std::optional<float>(ls.pdf) : std::nullopt, *distances, pickAlong);
+    const StrategyDensities p =
+        densities(scene, s, medium, light, s.scatteredAt, ls, beam.area, ls.pdf, *distances, pickAlong);
     return powerHeuristic(p.flight, p.along);
 }
 
