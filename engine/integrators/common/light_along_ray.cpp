@@ -34,11 +34,17 @@ public:
     SegmentLightChoice(const LightsAlongRays& lights, const FlightSegment& s) : lights_(lights) {
         if (lights.size() > kWeighed) return;
         for (size_t slot = 0; slot < lights.size(); ++slot) {
-            const LightsAlongRays::Beam& beam = lights.beam(slot);
-            const std::optional<EquiangularDistances> e = distancesToward(s, beam);
-            weights_[slot] = e ? beam.meanIntensity * (e->thetaB - e->thetaA) / e->distance : 0.0f;
+            weights_[slot] = weightOf(lights.beam(slot), s);
             total_ += weights_[slot];
         }
+    }
+    // The sum of the weights, which the segment keeps (FlightSegment::choiceTotal) so that
+    // the light sample's weight later asks for one light's probability without the others'.
+    float total() const { return total_; }
+    // probability(slot) of the choice whose total is `total`, to the bit.
+    static float probability(const LightsAlongRays& lights, const FlightSegment& s, size_t slot, float total) {
+        if (lights.size() > kWeighed) return lights.powerProbability(slot);
+        return total > 0 ? weightOf(lights.beam(slot), s) / total : 0.0f;
     }
     // The slot picked with u (-1: none, where no light's beam meets the segment).
     int32_t pick(float u) const {
@@ -64,6 +70,11 @@ public:
     }
 
 private:
+    static float weightOf(const LightsAlongRays::Beam& beam, const FlightSegment& s) {
+        const std::optional<EquiangularDistances> e = distancesToward(s, beam);
+        return e ? beam.meanIntensity * (e->thetaB - e->thetaA) / e->distance : 0.0f;
+    }
+
     const LightsAlongRays& lights_;
     std::array<float, kWeighed> weights_{};
     float total_ = 0;
@@ -117,10 +128,11 @@ StrategyDensities densities(const Scene& scene, const FlightSegment& s, int32_t 
 
 }  // namespace
 
-Color sampleLightAlongRay(const Scene& scene, const FlightSegment& s, int32_t medium, Color beta, float uLight,
+Color sampleLightAlongRay(const Scene& scene, FlightSegment& s, int32_t medium, Color beta, float uLight,
                           float uDistance, Vec2 uPoint) {
     const LightsAlongRays& lights = scene.lightsAlongRays();
     const SegmentLightChoice choice(lights, s);
+    s.choiceTotal = choice.total();
     const int32_t slot = choice.pick(uLight);
     if (slot < 0) return Color(0.0f);
     const LightsAlongRays::Beam& beam = lights.beam(size_t(slot));
@@ -163,7 +175,7 @@ float weightAgainstLightAlongRay(const Scene& scene, const FlightSegment& s, int
     const std::optional<EquiangularDistances> distances =
         distancesFor(s, beam, s.o + s.d * s.scatteredAt + ls.wi * ls.distance);
     if (!distances) return 1.0f;
-    const float pickAlong = SegmentLightChoice(lights, s).probability(size_t(slot));
+    const float pickAlong = SegmentLightChoice::probability(lights, s, size_t(slot), s.choiceTotal);
     const StrategyDensities p =
         densities(scene, s, medium, light, s.scatteredAt, ls, beam.area, ls.pdf, *distances, pickAlong);
     return powerHeuristic(p.flight, p.along);

@@ -25,6 +25,7 @@ struct FlightSegment {
     float scatteredAt = 0;     // where the flight scattered, if it did
     bool lightSampled = false; // light was sampled along it (sampleLightAlongRay)
     bool continues = true;     // a point it scatters at traces the phase function's direction for light
+    float choiceTotal = 0;     // what sampleLightAlongRay's choice of light weighed in all
 };
 
 // Light scattered toward the camera from one point of the segment in `medium`, drawn by
@@ -32,8 +33,8 @@ struct FlightSegment {
 // bring along the segment (light_along_ray.cpp: SegmentLightChoice), with
 // the weight against the light sample the path takes where its flight scatters. `beta` is
 // the path's throughput where the segment starts. Its draws: the light, the distance, and
-// the point on an area light (uPoint).
-Color sampleLightAlongRay(const Scene& scene, const FlightSegment& segment, int32_t medium, Color beta, float uLight,
+// the point on an area light (uPoint). It keeps its choice's total in the segment.
+Color sampleLightAlongRay(const Scene& scene, FlightSegment& segment, int32_t medium, Color beta, float uLight,
                           float uDistance, Vec2 uPoint);
 
 // The weight of the light sample ls toward light `light` (its index in Scene::lights) at the
