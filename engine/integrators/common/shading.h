@@ -167,7 +167,7 @@ inline RayEnd castPastBoundaries(const Scene& scene, Ray ray, Color& beta, int32
                 media->behind = n.x != 0 || n.y != 0 || n.z != 0
                                     ? CuttingPlane{dot(ray.d, n) > 0 ? -n : n, t * std::abs(dot(ray.d, n))}
                                     : CuttingPlane{};
-                media->ahead = found && boundsMediumToward(scene, hit, ray.d, medium)
+                media->ahead = media->seesAhead && found && boundsMediumToward(scene, hit, ray.d, medium)
                                    ? CuttingPlane{dot(ray.d, hit.ng) > 0 ? hit.ng : -hit.ng,
                                                   (segment - t) * std::abs(dot(ray.d, hit.ng))}
                                    : CuttingPlane{};
