@@ -41,8 +41,8 @@ TEST(AreaLightKinds, TwoSidedEmitsAlikeOnBothSides) {
     EXPECT_EQ(scene->emitted(hit, {0, -1, 0}), Color(2.0f));
     // Light samples reach points on either side; photons leave half up, half down, each
     // with the whole power.
-    EXPECT_TRUE(light.sampleIncident({0, 3, 0}, {0, -1, 0}, {0.3f, 0.6f}).has_value());
-    EXPECT_TRUE(light.sampleIncident({0, -3, 0}, {0, 1, 0}, {0.3f, 0.6f}).has_value());
+    EXPECT_TRUE(light.sampleIncident({0, 3, 0}, Vec3(0, -1, 0), {0.3f, 0.6f}).has_value());
+    EXPECT_TRUE(light.sampleIncident({0, -3, 0}, Vec3(0, 1, 0), {0.3f, 0.6f}).has_value());
     Rng rng(1, 0, 0, StreamPurpose::Test);
     int up = 0, n = 100000;
     for (int i = 0; i < n; ++i) {
@@ -86,10 +86,11 @@ TEST(AreaLightKinds, SphereLightsAreSampledByTheConeTheySubtend) {
     }
 }
 
-// Close to a quad light (two triangles; 2 cm), light samples are uniform in the solid angle
-// it subtends, and less noisy than samples uniform by area, whose weights swing with
-// cos / d^2; farther away (30 cm, 3 m) they are uniform by area. Either way they give Lambert's irradiance, on the
-// panel, with the density the MIS weights ask for.
+// Light samples on a quad light (two triangles) follow the solid angle it subtends, warped by
+// the receiver's cosine (cosine_warped_pieces.h), and are less noisy than samples uniform by
+// area, whose weights swing with cos / d^2: at 2 cm 1,000 times less, at 30 cm and 3 m
+// 29 and 42 times (before the warp they were uniform by area there). They give Lambert's
+// irradiance, on the panel, with the density the MIS weights ask for.
 TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
     auto scene = sceneWith(panel(Color(2.0f)));
     const Light& light = scene->lights().light(0);
@@ -111,8 +112,8 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
             EXPECT_NEAR(y.y, 1.0f, 1e-4f);
             EXPECT_LE(std::abs(y.x), 0.5f + 1e-4f);
             EXPECT_LE(std::abs(y.z), 0.5f + 1e-4f);
-            // (To rounding: y is found again from the direction and distance.)
-            EXPECT_NEAR(light.pdfIncidentFrom(p, n, {y, Vec3(0, -1, 0), 0}, ls->wi), ls->pdf, 1e-5f * ls->pdf);
+            // The density a ray along the sample is given where it meets the light.
+            test::expectRayFindsLightSample(*scene, light, p, n, *ls, i);
             // The same estimate from a point uniform on the panel: Le cos cos' A / d^2.
             const Vec3 q(-0.5f + u.x, 1, -0.5f + u.y), d = q - p;
             const double d2 = lengthSquared(d), c = d.y / std::sqrt(d2);
@@ -126,7 +127,7 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
         const double areaVariance = areaSquares / samples - areaMean * areaMean;
         std::printf("h %.2f: irradiance %.5f (Lambert %.5f); variance of light samples %.5g, of area samples %.5g\n", h, mean,
                     expected, variance, areaVariance);
-        if (h < 0.1f) EXPECT_LT(variance, 0.01 * areaVariance);
+        EXPECT_LT(variance, (h < 0.1f ? 0.01 : 0.1) * areaVariance);
     }
 }
 

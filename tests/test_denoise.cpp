@@ -168,9 +168,10 @@ TEST_F(DenoiseCornell, IsCloserToTheReferenceThanTheRawImage) {
     const double rawAll = rmse(*raw_, *reference_), denoisedAll = rmse(*denoised_, *reference_);
     std::printf("RMSE below 1: raw %.4f denoised %.4f (%.2fx); whole image: raw %.4f denoised %.4f (%.2fx)\n", raw,
                 denoised, denoised / raw, rawAll, denoisedAll, denoisedAll / rawAll);
-    // Measured 0.68x (0.0072; 0.60x of 0.014 when the raw image was noisier): the less
+    // Measured 0.85x (0.0071 of 0.0083; 0.68x of 0.0106 before light samples followed the
+    // receiver's cosine, 0.60x of 0.014 when the raw image was noisier still): the less
     // noise the raw image has, the less of its error the filter can take away.
-    EXPECT_LT(denoised, 0.75 * raw);
+    EXPECT_LT(denoised, 0.92 * raw);
     // Measured 0.96x: Sobol passes (render.sampler) stratify the 4 film samples of the
     // light's edge pixels, so the raw image's error there is already 12% below what
     // independent numbers gave (0.164 against 0.187; the denoiser then took it to 0.77x).

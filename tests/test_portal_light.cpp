@@ -92,7 +92,7 @@ TEST(PortalLight, TheDensityIntegratesToOneOverTheSphere) {
     const Vec3 p{0.3f, 0.2f, 0};
     double sum = 0;
     const int samples = 1000000;
-    for (int i = 0; i < samples; ++i) sum += light->pdfIncident(p, {0, 1, 0}, sampleUniformSphere({rng.uniform(), rng.uniform()}));
+    for (int i = 0; i < samples; ++i) sum += light->pdfIncident(p, Vec3(0, 1, 0), sampleUniformSphere({rng.uniform(), rng.uniform()}));
     EXPECT_NEAR(sum * 4 * kPi / samples, 1.0, 0.02);
 }
 
@@ -102,8 +102,8 @@ TEST(PortalLight, OnlyRaysThroughThePortalSeeTheSky) {
     EXPECT_EQ(light->radianceFromDirection({0, 0, 0}, normalize(Vec3{1, 1, 0})).y, 0.0f);   // past the window's edge
     EXPECT_EQ(light->radianceFromDirection({0, 0, 0}, {0, -1, 0}).y, 0.0f);                   // away from it
     EXPECT_EQ(light->radianceFromDirection({0, 2, 0}, {0, 1, 0}).y, 0.0f);                    // from outside
-    EXPECT_FALSE(light->sampleIncident({0, 2, 0}, {0, 1, 0}, {0.5f, 0.5f}));
-    EXPECT_EQ(light->pdfIncident({0, 0, 0}, {0, 1, 0}, {0, -1, 0}), 0.0f);
+    EXPECT_FALSE(light->sampleIncident({0, 2, 0}, Vec3(0, 1, 0), {0.5f, 0.5f}));
+    EXPECT_EQ(light->pdfIncident({0, 0, 0}, Vec3(0, 1, 0), {0, -1, 0}), 0.0f);
 }
 
 // The power through the window is A pi L; the photons carry it, and each enters through

@@ -1,7 +1,8 @@
 // Diffuse area lights on emissive shapes: radiance Le(uv) (a colour, times a texture if any)
 // leaves the side the normal faces, or both sides of a two-sided light. Light samples are
-// uniform by solid angle on spheres and meshes of a few triangles, elsewhere uniform by
-// area (a triangle picked in proportion to its area); photons leave
+// uniform by solid angle on spheres, by solid angle warped by the receiver's cosine on
+// meshes of a few triangles (a quad's two), elsewhere uniform by area on a triangle picked
+// by its bounds or its area; photons leave
 // cosine-distributed from a side picked with probability 1 / sides, so each carries
 // Le(uv) pi A sides (Jensen 2001, 5.1.3).
 #include <algorithm>
@@ -9,7 +10,7 @@
 #include "math/clipped_triangle.h"
 #include "math/frame.h"
 #include "math/sampling.h"
-#include "math/spherical_triangle.h"
+#include "lights/cosine_warped_pieces.h"
 #include "lights/emission_triangles.h"
 #include "lights/light_factories.h"
 #include "lights/light_tree.h"
@@ -25,19 +26,19 @@ public:
           power_(shape.meanEmission() * (kPi * area * sides_)) {}
     Color power() const override { return power_; }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2 u) const override {
-        return sampleTowards(p, samplePoint(u), area_, 1.0f);
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2 u) const override {
+        return sampleTowards(p, samplePoint(u), 1.0f / area_);
     }
 
     // sampleIncident's density for the point y: 1/A by area, d^2 / (cos A) in solid angle.
-    float pdfIncidentFrom(Vec3 p, Vec3, const EmitterPoint& at, Vec3 wi) const override {
-        return solidAngleDensity(p, at, wi, area_, 1.0f);
+    float pdfIncidentFrom(Vec3 p, ReceiverSide, const EmitterPoint& at, Vec3 wi) const override {
+        return solidAngleDensity(p, at, wi, 1.0f / area_);
     }
 
     std::optional<LightPoint> samplePointByArea(Vec2 u) const override { return samplePoint(u); }
     float pointDensity() const override { return 1.0f / area_; }
     std::optional<LightSample> incidentFromPoint(Vec3 p, const LightPoint& y) const override {
-        return sampleTowards(p, y, area_, 1.0f);
+        return sampleTowards(p, y, 1.0f / area_);
     }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
@@ -58,10 +59,9 @@ protected:
     // Uniform by area; n faces the (front) emitting side.
     virtual LightPoint samplePoint(Vec2 u) const = 0;
 
-    // The light sample from p toward s, drawn uniformly by area on a part of the light of
-    // area `area` picked with probability `pick`: by area pick / area, in solid angle
-    // pick d^2 / (cos area).
-    std::optional<LightSample> sampleTowards(Vec3 p, const LightPoint& s, float area, float pick) const {
+    // The light sample from p toward s, drawn with `density` by area: in solid angle
+    // density d^2 / cos.
+    std::optional<LightSample> sampleTowards(Vec3 p, const LightPoint& s, float density) const {
         const Vec3 toLight = s.p - p;
         const float dist2 = lengthSquared(toLight);
         if (dist2 <= 0) return std::nullopt;
@@ -70,13 +70,13 @@ protected:
         float cosLight = -dot(s.n, wi);
         if (sides_ > 1) cosLight = std::abs(cosLight);
         if (cosLight <= 0) return std::nullopt;
-        return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p, s.n}) * (cosLight * area / dist2) / pick,
-                           dist2 / (cosLight * area) * pick, s.n};
+        return LightSample{wi, dist, shape_.emissionAt({s.uv, s.p, s.n}) * (cosLight / (dist2 * density)),
+                           dist2 / cosLight * density, s.n};
     }
     // The same density for the point a ray from p along wi met.
-    static float solidAngleDensity(Vec3 p, const EmitterPoint& at, Vec3 wi, float area, float pick) {
+    static float solidAngleDensity(Vec3 p, const EmitterPoint& at, Vec3 wi, float density) {
         const float cosLight = std::abs(dot(at.ng, wi));
-        return cosLight > 0 ? lengthSquared(at.p - p) / (cosLight * area) * pick : 0.0f;
+        return cosLight > 0 ? lengthSquared(at.p - p) / cosLight * density : 0.0f;
     }
     // Photons of uniform emission from one side: what the photon walk emits in lanes.
     bool uniformOneSided() const { return !shape_.emissionTexture && sides_ == 1; }
@@ -115,59 +115,35 @@ public:
     const EmissionTriangles* emissionTriangles() const override { return uniformOneSided() ? &triangles_ : nullptr; }
     std::optional<LightBounds> bounds() const override { return bounds_; }
 
-    // Close to a mesh of a few triangles (a quad light's two), light samples are uniform in
-    // the solid angle its triangles subtend, each picked in proportion to its own: the
-    // density is one over the whole solid angle, without the 1 / d^2 and cosine at the light
-    // that area sampling's weights swing with there. Under a 1 x 1 quad the irradiance
-    // estimate's variance is 980x less at 2 cm (tests/test_area_light_kinds.cpp): a light
-    // panel against a wall. Farther than a quarter of the radius of a sphere around the mesh
-    // from its plane, or where one of its triangles subtends too little, samples are uniform
-    // by area: on the Bitterli scenes spherical sampling costs more time than it saves in
-    // error (a path 1.7x as slow for 5% less error on the Cornell box used everywhere, 13%
-    // slower for 0.4% on the coffee maker used within the whole radius; docs/path.md).
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
-        if (!byBounds_.empty()) return sampleByBounds(p, n, u);
-        std::optional<SolidAngles> angles = solidAnglesFrom(p);
-        if (!angles) {
-            if (triangles_.size() > EmissionTriangles::kFewTriangles) return AreaLight::sampleIncident(p, n, u);
-            const PartsAbove parts = partsAbove(p, n);
-            return parts.whole ? AreaLight::sampleIncident(p, n, u) : sampleAbove(p, parts, u);
-        }
-        if (!(angles->total > 0)) return std::nullopt;
-        // The triangle whose share of the solid angle holds u.x, and u.x reused within it.
-        const float x = u.x * angles->total;
-        float below = 0;
-        size_t i = 0;
-        while (i + 1 < triangles_.size() && x >= below + angles->each[i]) below += angles->each[i++];
-        const float uWithin = std::clamp((x - below) / angles->each[i], 0.0f, 0.99999994f);
-        const EmissionTriangles::Triangle& tri = triangles_[i];
-        std::optional<Vec3> wi = sampleSphericalTriangle(p, tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2, {uWithin, u.y});
-        if (!wi) return std::nullopt;
-        const float facing = dot(*wi, tri.frame.n);
+    // A mesh of a few triangles (a quad light's two) is sampled by the solid angle of what of
+    // it lies above the receiver, warped by the receiver's cosine (cosine_warped_pieces.h);
+    // a mesh of more, by a triangle picked by its bounds (with the spatial light sampler) or
+    // by its area, then uniformly by area on what of it lies above.
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide side, Vec2 u) const override {
+        if (!byBounds_.empty()) return sampleByBounds(p, side.n, u);
+        if (triangles_.size() > EmissionTriangles::kFewTriangles) return AreaLight::sampleIncident(p, side, u);
+        const std::optional<CosineWarpedPieces::Sample> s = warpedPieces(p, side).sample(u, [&](uint32_t i) {
+            return triangles_[i].frame.n;
+        });
+        if (!s) return std::nullopt;
+        const EmissionTriangles::Triangle& tri = triangles_[s->triangle];
+        const float facing = dot(s->wi, tri.frame.n);
         const float dist = facing != 0 ? dot(tri.p0 - p, tri.frame.n) / facing : 0.0f;
         if (!(dist > 0) || !std::isfinite(dist)) return std::nullopt;
-        const Vec3 onLight = p + *wi * dist;
+        const Vec3 onLight = p + s->wi * dist;
         Vec2 uv;
-        if (shape_.emissionTexture) uv = uvOn(i, onLight);
-        return LightSample{*wi, dist, shape_.emissionAt({uv, onLight, tri.frame.n}) * angles->total, 1.0f / angles->total,
-                           tri.frame.n};
+        if (shape_.emissionTexture) uv = uvOn(s->triangle, onLight);
+        return LightSample{s->wi, dist, shape_.emissionAt({uv, onLight, tri.frame.n}) / s->pdf, s->pdf, tri.frame.n};
     }
 
-    float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
-        if (!byBounds_.empty()) {
-            if (at.triangle >= triangles_.size() || !(dot(wi, n) > 0)) return 0.0f;
-            return solidAngleDensity(p, at, wi, areaAbove(at.triangle, partAbove(at.triangle, p, n)),
-                                     byBounds_.probability(at.triangle, p, n));
-        }
-        std::optional<SolidAngles> angles = solidAnglesFrom(p);
-        if (!angles) {
-            if (triangles_.size() > EmissionTriangles::kFewTriangles) return AreaLight::pdfIncidentFrom(p, n, at, wi);
-            if (!(dot(wi, n) > 0)) return 0.0f;
-            const PartsAbove parts = partsAbove(p, n);
-            return parts.whole ? AreaLight::pdfIncidentFrom(p, n, at, wi)
-                               : solidAngleDensity(p, at, wi, parts.total, 1.0f);
-        }
-        return angles->total > 0 ? 1.0f / angles->total : 0.0f;
+    float pdfIncidentFrom(Vec3 p, ReceiverSide side, const EmitterPoint& at, Vec3 wi) const override {
+        if (byBounds_.empty() && triangles_.size() > EmissionTriangles::kFewTriangles)
+            return AreaLight::pdfIncidentFrom(p, side, at, wi);
+        if (at.triangle >= triangles_.size() || !(dot(wi, side.n) > 0)) return 0.0f;
+        if (!byBounds_.empty())
+            return solidAngleDensity(p, at, wi, byBounds_.probability(at.triangle, p, side.n) /
+                                                    areaAbove(at.triangle, partAbove(at.triangle, p, side.n)));
+        return warpedPieces(p, side).density(at.triangle, at.p, triangles_[at.triangle].frame.n);
     }
 
 private:
@@ -197,8 +173,7 @@ private:
         if (!(pick.probability > 0)) return std::nullopt;
         const ClippedTriangle part = partAbove(pick.light, p, n);
         if (!(part.area > 0)) return std::nullopt;
-        return sampleTowards(p, pointOn(pick.light, part, {pick.rest, u.y}), areaAbove(pick.light, part),
-                             pick.probability);
+        return sampleTowards(p, pointOn(pick.light, part, {pick.rest, u.y}), pick.probability / areaAbove(pick.light, part));
     }
 
     // Light samples are kept from above the plane through p normal to n (the side of the
@@ -214,31 +189,19 @@ private:
     // Where no corner is cut off, the triangle is sampled as it always was: images of scenes
     // without a light across a surface's horizon are the same to the bit.
     float areaAbove(size_t i, const ClippedTriangle& part) const { return part.whole ? triangleArea_[i] : part.area; }
-    struct PartsAbove {
-        ClippedTriangle each[EmissionTriangles::kFewTriangles];
-        float total = 0;
-        bool whole = true;
-    };
-    PartsAbove partsAbove(Vec3 p, Vec3 n) const {
-        PartsAbove parts;
+    CosineWarpedPieces warpedPieces(Vec3 p, ReceiverSide side) const {
+        CosineWarpedPieces pieces(p, side.n, side.cosine);
+        const float inPlane = 1e-5f * (length(p - centre_) + length(centre_) + radius_);
         for (size_t i = 0; i < triangles_.size(); ++i) {
-            parts.each[i] = partAbove(i, p, n);
-            parts.total += parts.each[i].area;
-            parts.whole = parts.whole && parts.each[i].whole;
+            const EmissionTriangles::Triangle& tri = triangles_[i];
+            // A receiver in the triangle's plane (a point on the light itself, to rounding)
+            // gets nothing from it; the solid angle's formula would give it the whole 2 pi.
+            const float facing = dot(p - tri.p0, tri.frame.n);
+            if (std::abs(facing) <= inPlane || (sides_ == 1 && facing < 0)) continue;
+            pieces.add(uint32_t(i), partAbove(i, p, side.n), tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2, triangleArea_[i]);
         }
-        return parts;
-    }
-    // A mesh of a few triangles: the triangle by its area above, then a point on that part.
-    std::optional<LightSample> sampleAbove(Vec3 p, const PartsAbove& parts, Vec2 u) const {
-        if (!(parts.total > 0)) return std::nullopt;
-        const float x = u.x * parts.total;
-        float below = 0;
-        size_t i = 0;
-        while (i + 1 < triangles_.size() && x >= below + parts.each[i].area) below += parts.each[i++].area;
-        // (x rounded up to the total may pass the last part with area into one without.)
-        if (!(parts.each[i].area > 0)) return std::nullopt;
-        const float uWithin = std::clamp((x - below) / parts.each[i].area, 0.0f, 0.99999994f);
-        return sampleTowards(p, pointOn(i, parts.each[i], {uWithin, u.y}), parts.total, 1.0f);
+        pieces.weigh();
+        return pieces;
     }
     LightPoint pointOn(size_t i, const ClippedTriangle& part, Vec2 u) const {
         const EmissionTriangles::Triangle& tri = triangles_[i];
@@ -253,34 +216,6 @@ private:
         return s;
     }
 
-    struct SolidAngles {
-        float each[EmissionTriangles::kFewTriangles] = {};
-        float total = 0;
-    };
-    // The solid angle each triangle's emitting side subtends from p (0 for those p is
-    // behind), if the mesh is sampled so from p: p inside the sphere around the mesh and
-    // within a quarter of its radius of a triangle's plane.
-    std::optional<SolidAngles> solidAnglesFrom(Vec3 p) const {
-        if (triangles_.size() > EmissionTriangles::kFewTriangles || lengthSquared(p - centre_) > radius_ * radius_)
-            return std::nullopt;
-        float sides[EmissionTriangles::kFewTriangles];
-        bool near = false;
-        for (size_t i = 0; i < triangles_.size(); ++i) {
-            sides[i] = dot(p - triangles_[i].p0, triangles_[i].frame.n);
-            near = near || std::abs(sides[i]) < 0.25f * radius_;
-        }
-        if (!near) return std::nullopt;
-        SolidAngles a;
-        for (size_t i = 0; i < triangles_.size(); ++i) {
-            const EmissionTriangles::Triangle& tri = triangles_[i];
-            const float side = sides[i];
-            if (side == 0 || (sides_ == 1 && side < 0)) continue;
-            a.each[i] = sphericalTriangleSolidAngle(p, tri.p0, tri.p0 + tri.e1, tri.p0 + tri.e2);
-            if (a.each[i] < kMinSphericalTriangleSolidAngle) return std::nullopt;
-            a.total += a.each[i];
-        }
-        return a;
-    }
     // The texture coordinates at the point q of triangle i.
     Vec2 uvOn(size_t i, Vec3 q) const {
         const EmissionTriangles::Triangle& tri = triangles_[i];
@@ -340,9 +275,9 @@ public:
     explicit SphereAreaLight(const ShapeDescription& shape)
         : AreaLight(shape, 4.0f * kPi * shape.radius * shape.radius), sign_(shape.flipNormals ? -1.0f : 1.0f) {}
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide side, Vec2 u) const override {
         auto cone = coneFrom(p);
-        if (!cone) return AreaLight::sampleIncident(p, n, u);
+        if (!cone) return AreaLight::sampleIncident(p, side, u);
         // Below sin^2 = 0.00068523 (1.5 degrees) 1 - cos loses its digits in float: sample
         // sin^2 theta linearly there instead (pbrt-v4, sec. 6.2.4).
         float sin2Theta, cosTheta;
@@ -365,9 +300,9 @@ public:
         return LightSample{wi, dist, Le / cone->pdf, cone->pdf, normal};
     }
 
-    float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const override {
+    float pdfIncidentFrom(Vec3 p, ReceiverSide side, const EmitterPoint& at, Vec3 wi) const override {
         auto cone = coneFrom(p);
-        return cone ? cone->pdf : AreaLight::pdfIncidentFrom(p, n, at, wi);
+        return cone ? cone->pdf : AreaLight::pdfIncidentFrom(p, side, at, wi);
     }
 
     // Emits every way; seen from any direction it is a disc of area pi r^2.

@@ -14,7 +14,7 @@ public:
 
     Color power() const override { return irradiance_ * (kPi * bounds_.radius * bounds_.radius); }
 
-    std::optional<LightSample> sampleIncident(Vec3, Vec3, Vec2) const override {
+    std::optional<LightSample> sampleIncident(Vec3, ReceiverSide, Vec2) const override {
         return LightSample{-frame_.n, std::numeric_limits<float>::infinity(), irradiance_};
     }
 

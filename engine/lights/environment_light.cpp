@@ -18,15 +18,21 @@ public:
     }
 
     // Cosine-weighted directions about the surface normal: for a diffuse surface under a
-    // uniform sky the estimate is then exact (f cos / pdf = rho / pi * pi).
-    std::optional<LightSample> sampleIncident(Vec3, Vec3 n, Vec2 u) const override {
-        Vec3 local = sampleCosineHemisphere(u);
+    // uniform sky the estimate is then exact (f cos / pdf = rho / pi * pi). A point in a
+    // medium weighs no cosine: uniform over the side's hemisphere, as the sky is.
+    std::optional<LightSample> sampleIncident(Vec3, ReceiverSide side, Vec2 u) const override {
+        const Vec3 local = side.cosine ? sampleCosineHemisphere(u) : sampleUniformCone(u, 0.0f);
         if (local.z <= 0) return std::nullopt;
-        return LightSample{Frame::fromNormal(n).toWorld(local), std::numeric_limits<float>::infinity(),
-                           radiance_ / cosineHemispherePdf(local.z), cosineHemispherePdf(local.z)};
+        const float pdf = side.cosine ? cosineHemispherePdf(local.z) : uniformConePdf(0.0f);
+        return LightSample{Frame::fromNormal(side.n).toWorld(local), std::numeric_limits<float>::infinity(), radiance_ / pdf,
+                           pdf};
     }
 
-    float pdfIncident(Vec3, Vec3 n, Vec3 wi) const override { return cosineHemispherePdf(std::max(0.0f, dot(n, wi))); }
+    float pdfIncident(Vec3, ReceiverSide side, Vec3 wi) const override {
+        const float cosine = dot(side.n, wi);
+        if (!side.cosine) return cosine > 0 ? uniformConePdf(0.0f) : 0.0f;
+        return cosineHemispherePdf(std::max(0.0f, cosine));
+    }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         Frame travel = Frame::fromNormal(-sampleUniformSphere(uDirection));

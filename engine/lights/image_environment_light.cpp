@@ -19,14 +19,14 @@ public:
 
     Color power() const override { return map_.integral() * (scale_ * discArea()); }
 
-    std::optional<LightSample> sampleIncident(Vec3, Vec3, Vec2 u) const override {
+    std::optional<LightSample> sampleIncident(Vec3, ReceiverSide, Vec2 u) const override {
         std::optional<EnvironmentMap::DirectionSample> s = map_.sample(u);
         if (!s) return std::nullopt;
         return LightSample{toWorld(s->direction), std::numeric_limits<float>::infinity(),
                            s->radiance * (scale_ / s->pdf), s->pdf};
     }
 
-    float pdfIncident(Vec3, Vec3, Vec3 wi) const override { return map_.pdf(toLocal(wi)); }
+    float pdfIncident(Vec3, ReceiverSide, Vec3 wi) const override { return map_.pdf(toLocal(wi)); }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         std::optional<EnvironmentMap::DirectionSample> s = map_.sample(uDirection);

@@ -12,8 +12,8 @@ class InvisibleAreaLight final : public Light {
 public:
     explicit InvisibleAreaLight(std::unique_ptr<Light> light) : light_(std::move(light)) {}
     Color power() const override { return light_->power(); }
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const override {
-        std::optional<LightSample> s = light_->sampleIncident(p, n, u);
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide side, Vec2 u) const override {
+        std::optional<LightSample> s = light_->sampleIncident(p, side, u);
         if (s) s->pdf = 0;  // no BSDF sample can find it: nothing to weigh against
         return s;
     }

@@ -65,25 +65,37 @@ struct EmissionGeometry {
 
 class EmissionTriangles;
 
+// The side of a receiving point that a light sample is for: the directions above the plane
+// through it normal to n. A surface weighs the light it receives by its cosine to n, and a
+// light may shape its samples by that cosine (cosine_warped_pieces.h, the uniform sky); a
+// point in a medium does not, and its n only splits the sphere of directions in two
+// (sampleDirectLightInMedium). A surface's normal converts to its side.
+struct ReceiverSide {
+    Vec3 n;
+    bool cosine = true;
+    ReceiverSide(Vec3 normal, bool weighsByCosine = true) : n(normal), cosine(weighsByCosine) {}  // NOLINT(google-explicit-constructor)
+};
+
 class Light {
 public:
     virtual ~Light() = default;
     // Total emitted power, W per channel.
     virtual Color power() const = 0;
-    // Light arriving at p on a surface with normal n (lights may use n to sample only
-    // directions above the surface).
-    virtual std::optional<LightSample> sampleIncident(Vec3 p, Vec3 n, Vec2 u) const = 0;
+    // Light arriving at p from above the side's plane (lights may sample only directions
+    // above it).
+    virtual std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide side, Vec2 u) const = 0;
     virtual std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const = 0;
     // Infinite lights: radiance arriving along a ray from `origin` that leaves the scene in
     // direction d (a light behind a portal shines only along rays through it).
     virtual Color radianceFromDirection(Vec3 origin, Vec3 d) const { return Color(0.0f); }
-    // Infinite lights: the solid-angle density with which sampleIncident(p, n, .) returns
+    // Infinite lights: the solid-angle density with which sampleIncident(p, side, .) returns
     // the direction wi, for weighting it against BSDF sampling (multiple importance
     // sampling, Veach 1997 ch. 9). 0 for lights no ray can find (delta lights).
-    virtual float pdfIncident(Vec3 p, Vec3 n, Vec3 wi) const { return 0; }
+    virtual float pdfIncident(Vec3 p, ReceiverSide side, Vec3 wi) const { return 0; }
     // Area lights: the same for the direction wi from p (whose light samples are kept from
-    // above n) whose ray first meets the light at `at`. 0 for lights no ray can find.
-    virtual float pdfIncidentFrom(Vec3 p, Vec3 n, const EmitterPoint& at, Vec3 wi) const { return 0; }
+    // above the side's plane) whose ray first meets the light at `at`. 0 for lights no ray
+    // can find.
+    virtual float pdfIncidentFrom(Vec3 p, ReceiverSide side, const EmitterPoint& at, Vec3 wi) const { return 0; }
     // For projection maps (projection_map.h): where photons leave from, and how much power
     // leaves which way. emittedDensity, for point kinds: radiant intensity (W/sr) toward
     // world direction w; for parallel kinds: the power per unit area crossing the emission

@@ -108,7 +108,7 @@ public:
 
     Color power() const override { return power_; }
     bool sampledDirectly() const override { return false; }
-    std::optional<LightSample> sampleIncident(Vec3, Vec3, Vec2) const override { return std::nullopt; }
+    std::optional<LightSample> sampleIncident(Vec3, ReceiverSide, Vec2) const override { return std::nullopt; }
 
     std::optional<PhotonEmission> emitPhoton(Vec2 uPosition, Vec2 uDirection) const override {
         if (cellX_.empty()) return std::nullopt;

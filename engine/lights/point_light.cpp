@@ -10,7 +10,7 @@ public:
     explicit PointLight(const LightDescription& d) : position_(d.position), intensity_(d.intensity) {}
     Color power() const override { return intensity_ * (4.0f * kPi); }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2) const override {
         Vec3 toLight = position_ - p;
         float dist2 = lengthSquared(toLight);
         if (dist2 <= 0) return std::nullopt;

@@ -55,7 +55,7 @@ public:
 
     Color power() const override { return power_; }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2 u) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2 u) const override {
         const std::optional<UvWindow> window = windowFrom(p);
         if (!window) return std::nullopt;
         const std::optional<WindowedPiecewiseConstant2D::Sample> s = lightDistribution_.sample(u, *window);
@@ -69,7 +69,7 @@ public:
         return LightSample{wi, std::numeric_limits<float>::infinity(), L / pdf, pdf};
     }
 
-    float pdfIncident(Vec3 p, Vec3, Vec3 wi) const override {
+    float pdfIncident(Vec3 p, ReceiverSide, Vec3 wi) const override {
         const std::optional<UvWindow> window = windowFrom(p);
         const Vec3 local = frame_.toLocal(wi);
         if (!window || !(local.z > 0)) return 0;

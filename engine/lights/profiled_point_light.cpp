@@ -21,7 +21,7 @@ public:
 
     Color power() const override { return intensity_ * profile_.integral(); }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2) const override {
         return samplePointEmitter(position_, p, [this](Vec3 w) { return emittedDensity(w); });
     }
 

@@ -43,7 +43,7 @@ public:
 
     Color power() const override { return power_; }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2) const override {
         return samplePointEmitter(position_, p, [this](Vec3 w) { return emittedDensity(w); });
     }
 

@@ -26,7 +26,7 @@ public:
         return intensity_ * (2.0f * kPi * ((1.0f - cosFalloffStart_) + (cosFalloffStart_ - cosTotal_) / 2.0f));
     }
 
-    std::optional<LightSample> sampleIncident(Vec3 p, Vec3, Vec2) const override {
+    std::optional<LightSample> sampleIncident(Vec3 p, ReceiverSide, Vec2) const override {
         Vec3 toLight = position_ - p;
         float dist2 = lengthSquared(toLight);
         if (dist2 <= 0) return std::nullopt;

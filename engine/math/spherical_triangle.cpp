@@ -67,4 +67,26 @@ std::optional<Vec3> sampleSphericalTriangle(Vec3 p, Vec3 v0, Vec3 v1, Vec3 v2, V
     return Vec3(static_cast<float>(wn.x), static_cast<float>(wn.y), static_cast<float>(wn.z));
 }
 
+std::optional<Vec2> invertSphericalTriangleSample(Vec3 p, Vec3 v0, Vec3 v1, Vec3 v2, Vec3 w) {
+    const D3 a = normalize(d3(v0) - d3(p)), b = normalize(d3(v1) - d3(p)), c = normalize(d3(v2) - d3(p));
+    const D3 wd = normalize(d3(w));
+    // The solid angle of the unit vectors' triangle (Van Oosterom & Strackee 1983).
+    auto solidAngle = [](D3 x, D3 y, D3 z) {
+        return std::abs(2.0 * std::atan2(dot(x, cross(y, z)), 1 + dot(x, y) + dot(x, z) + dot(y, z)));
+    };
+    const double whole = solidAngle(a, b, c);
+    if (!(whole > 0)) return std::nullopt;
+    // c': where the great circle through b and w meets the arc from a to c (sampling drew
+    // the sub-triangle (a, b, c') first, then w on the arc from b to c').
+    const D3 m = cross(b, wd), nac = cross(a, c);
+    D3 cp = cross(nac, m);
+    if (dot(m, m) < 1e-20 || dot(cp, cp) < 1e-20) return Vec2{0.0f, 0.0f};  // w is b
+    cp = normalize(cp);
+    if (dot(cp, a + c) < 0) cp = cp * -1.0;
+    const double ux = solidAngle(a, b, cp) / whole;
+    const double denominator = 1 - dot(cp, b);
+    const double uy = denominator > 0 ? (1 - dot(wd, b)) / denominator : 0.0;
+    return Vec2{static_cast<float>(std::clamp(ux, 0.0, 1.0)), static_cast<float>(std::clamp(uy, 0.0, 1.0))};
+}
+
 }  // namespace photon

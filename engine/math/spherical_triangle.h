@@ -21,4 +21,9 @@ float sphericalTriangleSolidAngle(Vec3 p, Vec3 v0, Vec3 v1, Vec3 v2);
 // triangle is degenerate as seen from p.
 std::optional<Vec3> sampleSphericalTriangle(Vec3 p, Vec3 v0, Vec3 v1, Vec3 v2, Vec2 u);
 
+// The inverse: the two numbers from which sampleSphericalTriangle draws the direction w (a
+// unit vector from p inside the triangle); none if the triangle is degenerate. The corners
+// of [0,1]^2 go to v1 ((0,0) and (1,0)), v0 (0,1) and v2 (1,1).
+std::optional<Vec2> invertSphericalTriangleSample(Vec3 p, Vec3 v0, Vec3 v1, Vec3 v2, Vec3 w);
+
 }  // namespace photon

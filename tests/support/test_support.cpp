@@ -1,3 +1,4 @@
+#include <array>
 #include "test_support.h"
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -65,14 +66,14 @@ SceneDescription lightOnly(ShapeDescription light, LightSamplerKind kind) {
     return d;
 }
 
-void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, Vec3 n, const LightSample& ls, int k) {
+void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, ReceiverSide side, const LightSample& ls, int k) {
     SurfaceHit hit;
     if (!scene.intersect(Ray{p, ls.wi}, hit)) {
         ADD_FAILURE() << "the ray along sample " << k << " found nothing";
         return;
     }
     EXPECT_NEAR(hit.t, ls.distance, 1e-4f * ls.distance);
-    const float pdf = light.pdfIncidentFrom(p, n, {hit.p, hit.ng, hit.primitive}, ls.wi);
+    const float pdf = light.pdfIncidentFrom(p, side, {hit.p, hit.ng, hit.primitive}, ls.wi);
     EXPECT_NEAR(pdf, ls.pdf, 1e-3f * ls.pdf) << "sample " << k;
 }
 
@@ -180,10 +181,22 @@ void expectSameBlockMeans(const Image& a1, const Image& a2, const Image& b1, con
 }
 
 double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, double le) {
+    // In double: seen edge-on from afar the edges' terms nearly cancel, and in float a
+    // light 3 m away at 3 degrees came out 0.9% off.
+    using D3 = std::array<double, 3>;
+    const auto unitToward = [&](Vec3 c) {
+        const D3 d{double(c.x) - p.x, double(c.y) - p.y, double(c.z) - p.z};
+        const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        return D3{d[0] / l, d[1] / l, d[2] / l};
+    };
     double sum = 0;
     for (size_t i = 0; i < corners.size(); ++i) {
-        const Vec3 a = normalize(corners[i] - p), b = normalize(corners[(i + 1) % corners.size()] - p);
-        sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(normalize(cross(a, b)), n);
+        const D3 a = unitToward(corners[i]), b = unitToward(corners[(i + 1) % corners.size()]);
+        const D3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+        const double sine = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        if (!(sine > 0)) continue;
+        sum += std::atan2(sine, cosine) * (c[0] * n.x + c[1] * n.y + c[2] * n.z) / sine;
     }
     return le / 2 * std::abs(sum);
 }

@@ -131,7 +131,7 @@ double polygonIrradiance(Vec3 p, Vec3 n, const std::vector<Vec3>& corners, doubl
 // The ray from p along a light sample (the k-th) meets the light where the sample lies, and
 // the light gives that point the density the sample was drawn with (what BSDF samples that
 // find the light weigh themselves against).
-void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, Vec3 n, const LightSample& ls, int k);
+void expectRayFindsLightSample(const Scene& scene, const Light& light, Vec3 p, ReceiverSide side, const LightSample& ls, int k);
 
 // The irradiance at p (normal n) from the scene's light 0 by `samples` of its light samples:
 // their mean, variance, and how many brought nothing (no sample, or one from behind p). With

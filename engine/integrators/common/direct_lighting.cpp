@@ -48,7 +48,7 @@ Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t med
     const Vec2 u = sampler.get2D();
     LightSampler::Pick pick = scene.directLights().pick(uLight, p, n);
     if (!pick.light) return Color(0.0f);
-    std::optional<LightSample> ls = pick.light->sampleIncident(p, n, u);
+    std::optional<LightSample> ls = pick.light->sampleIncident(p, ReceiverSide(n, false), u);
     if (!ls || !(dot(ls->wi, n) > 0)) return Color(0.0f);
     const float phase = henyeyGreenstein(dot(wo, ls->wi), scene.medium(medium).g);
     const Ray shadow = std::isinf(ls->distance) ? Ray{p, ls->wi} : Ray{p, ls->wi, ls->distance * (1.0f - 1e-4f)};
