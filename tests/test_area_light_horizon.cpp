@@ -121,7 +121,7 @@ TEST(AreaLightHorizon, LightSamplesComeFromAboveTheReceiversPlane) {
             EXPECT_LT(e.nothing, samples / 1000);
             // One quad: 0.16-0.31x the variance of sampling it whole by area when the part
             // above was sampled by area; by its solid angle warped by the receiver's cosine
-            // (cosine_warped_pieces.h) 0.009-0.043x. Among 32 triangles the pick by bounds
+            // (warped_light_pieces.h) 0.009-0.043x. Among 32 triangles the pick by bounds
             // decides more than the clipping does (0.11x from the origin, but 1.4x from the
             // point tilted away, where the bounds' cones are loose this close).
             if (cells == 1) EXPECT_LT(e.variance, 0.1 * before);

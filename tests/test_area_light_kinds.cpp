@@ -87,10 +87,11 @@ TEST(AreaLightKinds, SphereLightsAreSampledByTheConeTheySubtend) {
 }
 
 // Light samples on a quad light (two triangles) follow the solid angle it subtends, warped by
-// the receiver's cosine (cosine_warped_pieces.h), and are less noisy than samples uniform by
-// area, whose weights swing with cos / d^2: at 2 cm 1,000 times less, at 30 cm and 3 m
-// 29 and 42 times (before the warp they were uniform by area there). They give Lambert's
-// irradiance, on the panel, with the density the MIS weights ask for.
+// the receiver's cosine (warped_light_pieces.h), and are less noisy than samples uniform by
+// area, whose weights swing with cos / d^2: at 2 cm 1,000 times less, at 30 cm 29 times
+// (before the warp they were uniform by area there). At 3 m, wholly above the receiver and
+// farther than WarpedLightPieces::kNear times its radius, it is sampled uniformly by area.
+// Each gives Lambert's irradiance, on the panel, with the density the MIS weights ask for.
 TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
     auto scene = sceneWith(panel(Color(2.0f)));
     const Light& light = scene->lights().light(0);
@@ -127,7 +128,7 @@ TEST(AreaLightKinds, QuadLightsAreSampledByTheSolidAngleTheySubtend) {
         const double areaVariance = areaSquares / samples - areaMean * areaMean;
         std::printf("h %.2f: irradiance %.5f (Lambert %.5f); variance of light samples %.5g, of area samples %.5g\n", h, mean,
                     expected, variance, areaVariance);
-        EXPECT_LT(variance, (h < 0.1f ? 0.01 : 0.1) * areaVariance);
+        if (h < 1) EXPECT_LT(variance, (h < 0.1f ? 0.01 : 0.1) * areaVariance);
     }
 }
 

@@ -189,7 +189,7 @@ TEST(PathSampler, PathTracerWithSobolSamplesReachesTheAnalyticRadianceWithLessNo
     const ErrorOverSeeds independent = errorOverSeeds(SamplerKind::Independent, 32, analytic, IntegratorKind::Path);
     // Measured with light samples uniform by area on the square: means within 0.0002 and
     // 0.0006, error 0.029 against 0.117 of the mean. Drawn by solid angle warped by the
-    // plane's cosine (cosine_warped_pieces.h) the light samples leave less to stratify:
+    // plane's cosine (warped_light_pieces.h) the light samples leave less to stratify:
     // 0.0101 against 0.0214.
     EXPECT_NEAR(sobol.bias, 0.0, 0.003);
     EXPECT_NEAR(independent.bias, 0.0, 0.008);

@@ -17,6 +17,9 @@ struct LightSample {
     Color weight;            // incident radiance / pdf (solid angle), or irradiance for delta lights
     float pdf = 0;           // the solid-angle density wi was drawn with; 0 for delta lights
     Vec3 normal{0.0f};       // area lights: the light's normal at the point sampled (else 0)
+    // Mesh lights: the triangle the point lies on. A point on an edge two triangles share is
+    // either's to rounding (a ray may name the other), and their densities may differ there.
+    uint32_t triangle = 0;
 };
 
 // A point drawn on an area light by area (Light::samplePointByArea).
@@ -67,13 +70,20 @@ class EmissionTriangles;
 
 // The side of a receiving point that a light sample is for: the directions above the plane
 // through it normal to n. A surface weighs the light it receives by its cosine to n, and a
-// light may shape its samples by that cosine (cosine_warped_pieces.h, the uniform sky); a
+// light may shape its samples by that cosine (warped_light_pieces.h, the uniform sky); a
 // point in a medium does not, and its n only splits the sphere of directions in two
 // (sampleDirectLightInMedium). A surface's normal converts to its side.
+// `fitted`: whether the light may spend arithmetic on fitting its samples to what it brings
+// to this receiver (warped_light_pieces.h); the path tracer asks it at a path's first vertex
+// only, where the light sample is most of a pixel's estimate, and points in media never
+// (there is no cosine to fit, and on the Cornell box in fog SPPM rendered 0.66 times the
+// passes with it).
 struct ReceiverSide {
     Vec3 n;
     bool cosine = true;
-    ReceiverSide(Vec3 normal, bool weighsByCosine = true) : n(normal), cosine(weighsByCosine) {}  // NOLINT(google-explicit-constructor)
+    bool fitted = true;
+    ReceiverSide(Vec3 normal, bool weighsByCosine = true, bool fit = true)  // NOLINT(google-explicit-constructor)
+        : n(normal), cosine(weighsByCosine), fitted(fit) {}
 };
 
 class Light {

@@ -140,7 +140,7 @@ struct LightSampleEstimate {
     double mean = 0, variance = 0;
     int nothing = 0;
 };
-LightSampleEstimate irradianceFromLightSamples(const Scene& scene, Vec3 p, Vec3 n, int samples, bool checkDensity);
+LightSampleEstimate irradianceFromLightSamples(const Scene& scene, Vec3 p, ReceiverSide side, int samples, bool checkDensity);
 
 // Component-wise closeness of two Vec3 (or Color) values, in a gtest test body; Vec3
 // must name photon::Vec3 where it is used.

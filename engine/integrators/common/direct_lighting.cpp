@@ -3,7 +3,7 @@
 namespace photon {
 
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler, unsigned lobes,
-                        BsdfContinuation next, int32_t medium) {
+                        BsdfContinuation next, int32_t medium, bool fitted) {
     const float uLight = sampler.get1D();
     const Vec2 u = sampler.get2D();
     // Light is kept only from above n: a surface that only reflects sees none from below its
@@ -17,7 +17,7 @@ Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, Pat
     if (sideProbability < 1.0f && sampler.get1D() < 0.5f) n = -n;
     LightSampler::Pick pick = scene.directLights().pick(uLight, sp.hit.p, n);
     if (!pick.light) return Color(0.0f);
-    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, n, u);
+    std::optional<LightSample> ls = pick.light->sampleIncident(sp.hit.p, ReceiverSide(n, true, fitted), u);
     if (!ls || !(dot(ls->wi, n) > 0)) return Color(0.0f);
     const Vec3 woLocal = sp.frame.toLocal(wo), wiLocal = sp.frame.toLocal(ls->wi);
     Color f = sp.material->eval(woLocal, wiLocal, sp.inputs, TransportMode::Radiance, lobes);
@@ -48,7 +48,7 @@ Color sampleDirectLightInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t med
     const Vec2 u = sampler.get2D();
     LightSampler::Pick pick = scene.directLights().pick(uLight, p, n);
     if (!pick.light) return Color(0.0f);
-    std::optional<LightSample> ls = pick.light->sampleIncident(p, ReceiverSide(n, false), u);
+    std::optional<LightSample> ls = pick.light->sampleIncident(p, ReceiverSide(n, false, false), u);
     if (!ls || !(dot(ls->wi, n) > 0)) return Color(0.0f);
     const float phase = henyeyGreenstein(dot(wo, ls->wi), scene.medium(medium).g);
     const Ray shadow = std::isinf(ls->distance) ? Ray{p, ls->wi} : Ray{p, ls->wi, ls->distance * (1.0f - 1e-4f)};

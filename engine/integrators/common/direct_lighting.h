@@ -21,9 +21,12 @@ struct BsdfContinuation {
 // through the material's `lobes` only. Its draws: the light (1D), the point on it (2D), and
 // for a material that transmits, the side (1D). `medium`: the one the path arrived in at
 // sp; the shadow ray starts in the medium on the light's side of the surface and takes on
-// the absorption of each medium it crosses (Scene::shadowTransmittance).
+// the absorption of each medium it crosses (Scene::shadowTransmittance). `fitted`: whether
+// the light fits its sample to this point (ReceiverSide::fitted; the BounceSampling of the
+// path's continuation must say the same).
 Color sampleDirectLight(const Scene& scene, const ShadingPoint& sp, Vec3 wo, PathSampler& sampler,
-                        unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1);
+                        unsigned lobes = kAllLobes, BsdfContinuation next = {}, int32_t medium = -1,
+                        bool fitted = true);
 // In-scattered radiance toward wo at a point p where a path scatters in `medium`, from one
 // light picked by Scene::directLights, through the medium's phase function, weighted
 // against the phase-function sample the path goes on with (scatterInMedium, shading.h).

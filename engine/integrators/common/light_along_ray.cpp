@@ -147,14 +147,14 @@ Color sampleLightAlongRay(const Scene& scene, FlightSegment& s, int32_t medium, 
     const MediumDescription& m = scene.medium(medium);
     const Color sigmaS = m.scattering * m.densityAt(x);
     if (isBlack(sigmaS)) return Color(0.0f);
-    const std::optional<LightSample> ls = y ? light.incidentFromPoint(x, *y) : light.sampleIncident(x, ReceiverSide(Vec3(0.0f), false), {0.5f, 0.5f});
+    const std::optional<LightSample> ls = y ? light.incidentFromPoint(x, *y) : light.sampleIncident(x, ReceiverSide(Vec3(0.0f), false, false), {0.5f, 0.5f});
     if (!ls) return Color(0.0f);
     const float phase = henyeyGreenstein(dot(-s.d, ls->wi), m.g);
     const Color transmittance = scene.shadowTransmittance(Ray{x, ls->wi, ls->distance * (1.0f - 1e-4f)}, medium);
     if (isBlack(transmittance)) return Color(0.0f);
     // The light sample's density for y: for the side of wo that wi is on.
     const Vec3 n = dot(ls->wi, s.d) < 0 ? -s.d : s.d;
-    const float pLight = y ? light.pdfIncidentFrom(x, ReceiverSide(n, false), EmitterPoint{y->p, y->n, y->triangle}, ls->wi) : 0.0f;
+    const float pLight = y ? light.pdfIncidentFrom(x, ReceiverSide(n, false, false), EmitterPoint{y->p, y->n, y->triangle}, ls->wi) : 0.0f;
     const float pickAlong = choice.probability(size_t(slot));
     const StrategyDensities p =
         densities(scene, s, medium, lights.index(size_t(slot)), t, *ls, y.has_value(), pLight, *distances, pickAlong);

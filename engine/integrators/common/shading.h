@@ -225,6 +225,7 @@ struct BounceSampling {
     Vec3 p, n;          // the vertex left, and its shading normal
     float sideProbability = 1;  // see lightSampleSideProbability
     bool cosine = true;  // a surface's vertex; false: a point in a medium (ReceiverSide)
+    bool fitted = true;  // the vertex's light sample was fitted to it (ReceiverSide)
 };
 
 // Light samples at a surface that transmits are taken for one side, picked with this
@@ -253,7 +254,7 @@ inline Color environmentAfterBounce(const Scene& scene, const BounceSampling& bo
             L += Le;
             continue;
         }
-        const float pLight = bounce.sideProbability * e.pickProbability * e.light->pdfIncident(bounce.p, ReceiverSide(n, bounce.cosine), ray.d);
+        const float pLight = bounce.sideProbability * e.pickProbability * e.light->pdfIncident(bounce.p, ReceiverSide(n, bounce.cosine, bounce.fitted), ray.d);
         L += Le * powerHeuristic(bounce.pdf, pLight);
     }
     return L;
@@ -266,7 +267,7 @@ inline float areaLightBounceWeight(const Scene& scene, const BounceSampling& bou
                                    const SurfaceHit& hit, Vec3 d) {
     const Vec3 n = bounce.sideProbability < 1 && dot(d, bounce.n) < 0 ? -bounce.n : bounce.n;
     const float pick = scene.directLights().probability(e.index, bounce.p, n);
-    const float pLight = bounce.sideProbability * pick * e.light->pdfIncidentFrom(bounce.p, ReceiverSide(n, bounce.cosine), {hit.p, hit.ng, hit.primitive}, d);
+    const float pLight = bounce.sideProbability * pick * e.light->pdfIncidentFrom(bounce.p, ReceiverSide(n, bounce.cosine, bounce.fitted), {hit.p, hit.ng, hit.primitive}, d);
     return powerHeuristic(bounce.pdf, pLight);
 }
 
@@ -306,7 +307,7 @@ inline bool traceCameraRay(const Scene& scene, const Ray& ray, Color& beta, int3
 inline Ray scatterInMedium(const Scene& scene, Vec3 p, Vec3 wo, int32_t medium, Vec2 u, BounceSampling& bounce,
                            bool noLightSample = false) {
     const PhaseSample s = sampleHenyeyGreenstein(wo, scene.medium(medium).g, u);
-    bounce = noLightSample ? BounceSampling{} : BounceSampling{false, s.pdf, p, wo, 0.5f, false};
+    bounce = noLightSample ? BounceSampling{} : BounceSampling{false, s.pdf, p, wo, 0.5f, false, false};
     return Ray{p, s.wi};
 }
 

@@ -1,8 +1,11 @@
-// Light samples on quad lights by solid angle warped by the receiver's cosine
-// (engine/lights/cosine_warped_pieces.h): the inverse of the spherical triangle's map, the
-// bilinear density, and the density a ray that finds the light is given.
+// Light samples on mesh lights that follow what each part brings to the receiver
+// (engine/lights/warped_light_pieces.h): by solid angle warped by its cosine close by, by
+// area through the corners' geometric term farther away. The inverse of the spherical
+// triangle's map, the bilinear density, Lambert's irradiance with less variance than
+// samples uniform by area, and the density a ray that finds the light is given.
 #include <gtest/gtest.h>
 #include <cmath>
+#include "lights/warped_light_pieces.h"
 #include "math/bilinear_density.h"
 #include "math/rng.h"
 #include "math/sampling.h"
@@ -14,7 +17,7 @@
 namespace photon {
 namespace {
 
-TEST(CosineWarpedLight, TheSphericalTrianglesMapIsInvertedToItsNumbers) {
+TEST(WarpedLightPieces, TheSphericalTrianglesMapIsInvertedToItsNumbers) {
     Rng rng(5, 0, 0, StreamPurpose::Test);
     const Vec3 p(0.1f, -0.3f, 0.2f);
     const Vec3 triangles[][3] = {{{0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}},
@@ -37,7 +40,7 @@ TEST(CosineWarpedLight, TheSphericalTrianglesMapIsInvertedToItsNumbers) {
     std::printf("largest difference %.3g\n", worst);
 }
 
-TEST(CosineWarpedLight, BilinearSamplesFollowTheirDensity) {
+TEST(WarpedLightPieces, BilinearSamplesFollowTheirDensity) {
     // E[g(u) / density(u)] is the integral of g over the square, 1 + 1/2 + 1/3 here.
     const double exact = 1.0 + 0.5 + 1.0 / 3.0;
     for (const BilinearCorners& c : {BilinearCorners{{1, 1, 1, 1}}, BilinearCorners{{0.01f, 1, 3, 0.2f}},
@@ -84,19 +87,22 @@ double uniformAreaVariance(Vec3 p, Vec3 n, int samples) {
 // Receivers wholly below the quad, tilted ones that still see all of it, and ones far to its
 // side that see it at a grazing angle: Lambert's irradiance, the density a ray that finds the
 // light gives, and how much less the estimate varies than with points uniform by area.
-TEST(CosineWarpedLight, AQuadsIrradianceWithLessVarianceThanByArea) {
+TEST(WarpedLightPieces, AQuadsIrradianceWithLessVarianceThanByArea) {
     auto scene = ceilingQuad();
     struct Receiver {
         Vec3 p, n;
         double atMost;  // of the variance by area
     };
+    // Farther than WarpedLightPieces::kNear radii and wholly above the receiver's plane, the
+    // quad is sampled uniformly by area (the last two): the same variance.
     const Receiver receivers[] = {
         {{0.1f, 0.7f, 0.2f}, {0, 1, 0}, 0.1},                       // under it, 30 cm
         {{0.2f, 0.98f, 0.1f}, {0, 1, 0}, 0.01},                     // under it, 2 cm
-        {{0.3f, -2.0f, 0.0f}, {0, 1, 0}, 0.1},                      // 3 m below
-        {{2.0f, 0.9f, 0.0f}, normalize(Vec3(-1, 1, 0)), 0.2},       // beside it, tilted toward it
-        {{3.0f, 0.95f, 0.5f}, {0, 1, 0}, 0.2},                      // far to its side, grazing
+        {{2.0f, 0.9f, 0.0f}, normalize(Vec3(-1, 1, 0)), 0.01},      // beside it, tilted toward it
         {{0.0f, 0.5f, 0.0f}, normalize(Vec3(0.2f, 1, -0.3f)), 0.1},  // below it, tilted
+        {{2.5f, 0.99f, 0.3f}, normalize(Vec3(-0.1f, 1, 0)), 0.2},   // to its side, grazing, one triangle near and one far
+        {{0.3f, -2.0f, 0.0f}, {0, 1, 0}, 1.1},                      // 3 m below
+        {{3.0f, 0.95f, 0.5f}, {0, 1, 0}, 1.1},                      // far to its side, grazing
     };
     for (const Receiver& r : receivers) {
         SCOPED_TRACE(testing::Message() << "receiver " << r.p.x << " " << r.p.y << " " << r.p.z);
@@ -109,6 +115,11 @@ TEST(CosineWarpedLight, AQuadsIrradianceWithLessVarianceThanByArea) {
         EXPECT_NEAR(e.mean, exact, std::max(4 * std::sqrt(e.variance / samples), 1e-4 * exact));
         EXPECT_EQ(e.nothing, 0);
         EXPECT_LT(e.variance, r.atMost * byArea);
+        // Unfitted (ReceiverSide::fitted, the path tracer's deeper vertices): by area but
+        // within a piece's radius, unbiased all the same, with the density rays find.
+        const test::LightSampleEstimate plain =
+            test::irradianceFromLightSamples(*scene, r.p, ReceiverSide(r.n, true, false), samples, true);
+        EXPECT_NEAR(plain.mean, exact, std::max(4 * std::sqrt(plain.variance / samples), 1e-4 * exact));
     }
 }
 
@@ -116,7 +127,7 @@ TEST(CosineWarpedLight, AQuadsIrradianceWithLessVarianceThanByArea) {
 // its plane, where the solid angle's formula gives the whole hemisphere: it must get
 // nothing from the light. It once did: the Cornell box's path tracer read 6.5% bright with
 // its light lowered into view of its top.
-TEST(CosineWarpedLight, APointOnTheLightGetsNothingFromIt) {
+TEST(WarpedLightPieces, APointOnTheLightGetsNothingFromIt) {
     auto scene = ceilingQuad();
     const Light& light = scene->lights().light(0);
     Rng rng(4, 0, 0, StreamPurpose::Test);
@@ -131,7 +142,7 @@ TEST(CosineWarpedLight, APointOnTheLightGetsNothingFromIt) {
 
 // A point in a medium weighs no cosine: its samples are uniform in the solid angle of the
 // part of the quad on its side, and their mean is Le times that solid angle.
-TEST(CosineWarpedLight, APointInAMediumSamplesTheSolidAngleUniformly) {
+TEST(WarpedLightPieces, APointInAMediumSamplesTheSolidAngleUniformly) {
     auto scene = ceilingQuad();
     const Light& light = scene->lights().light(0);
     const Vec3 p(0.2f, 0.6f, -0.1f);
@@ -143,11 +154,11 @@ TEST(CosineWarpedLight, APointInAMediumSamplesTheSolidAngleUniformly) {
         const int samples = 20000;
         double sum = 0;
         for (int i = 0; i < samples; ++i) {
-            const std::optional<LightSample> ls = light.sampleIncident(p, ReceiverSide(n, false), {rng.uniform(), rng.uniform()});
+            const std::optional<LightSample> ls = light.sampleIncident(p, ReceiverSide(n, false, false), {rng.uniform(), rng.uniform()});
             if (!ls || !(dot(ls->wi, n) > 0)) continue;
             sum += ls->weight.x;
             if (n.y == 1) EXPECT_NEAR(ls->pdf * solidAngle, 1.0, 1e-3);
-            test::expectRayFindsLightSample(*scene, light, p, ReceiverSide(n, false), *ls, i);
+            test::expectRayFindsLightSample(*scene, light, p, ReceiverSide(n, false, false), *ls, i);
         }
         if (n.y == 1) EXPECT_NEAR(sum / samples, kLe * solidAngle, 1e-3 * kLe * solidAngle);
         else EXPECT_LT(sum / samples, 0.8 * kLe * solidAngle);
@@ -155,7 +166,7 @@ TEST(CosineWarpedLight, APointInAMediumSamplesTheSolidAngleUniformly) {
 }
 
 // So is the uniform sky: its samples in a medium are uniform over the side's hemisphere.
-TEST(CosineWarpedLight, TheSkyInAMediumIsSampledUniformlyOverTheSide) {
+TEST(WarpedLightPieces, TheSkyInAMediumIsSampledUniformlyOverTheSide) {
     SceneDescription d = test::lightOnly(test::quad({-0.5f, 1, -0.5f}, {1, 0, 0}, {0, 0, 1}, 0, Color(0.0f)));
     d.shapes.clear();
     LightDescription sky;
@@ -167,13 +178,13 @@ TEST(CosineWarpedLight, TheSkyInAMediumIsSampledUniformlyOverTheSide) {
     const Vec3 n = normalize(Vec3(0.3f, 1, 0.2f));
     Rng rng(2, 0, 0, StreamPurpose::Test);
     for (int i = 0; i < 1000; ++i) {
-        const std::optional<LightSample> ls = light.sampleIncident({0, 0, 0}, ReceiverSide(n, false), {rng.uniform(), rng.uniform()});
+        const std::optional<LightSample> ls = light.sampleIncident({0, 0, 0}, ReceiverSide(n, false, false), {rng.uniform(), rng.uniform()});
         ASSERT_TRUE(ls);
         EXPECT_GT(dot(ls->wi, n), 0.0f);
         EXPECT_NEAR(ls->pdf, 1.0f / (2 * kPi), 1e-6f);
         EXPECT_NEAR(ls->weight.x, 0.7f * 2 * kPi, 1e-4f);
-        EXPECT_EQ(light.pdfIncident({0, 0, 0}, ReceiverSide(n, false), ls->wi), ls->pdf);
-        EXPECT_EQ(light.pdfIncident({0, 0, 0}, ReceiverSide(n, false), -ls->wi), 0.0f);
+        EXPECT_EQ(light.pdfIncident({0, 0, 0}, ReceiverSide(n, false, false), ls->wi), ls->pdf);
+        EXPECT_EQ(light.pdfIncident({0, 0, 0}, ReceiverSide(n, false, false), -ls->wi), 0.0f);
     }
 }
 
