@@ -1,8 +1,9 @@
 // Diffuse area lights on emissive shapes: radiance Le(uv) (a colour, times a texture if any)
 // leaves the side the normal faces, or both sides of a two-sided light. Light samples are
-// uniform by solid angle on spheres, by solid angle warped by the receiver's cosine on
-// meshes of a few triangles (a quad's two), elsewhere uniform by area on a triangle picked
-// by its bounds or its area; photons leave
+// uniform by solid angle on spheres; on meshes they follow what each part above the
+// receiver brings to it (warped_light_pieces.h), within a triangle picked by its bounds on
+// a mesh of more than a quad's two, or uniform by area over a mesh with the power
+// sampler; photons leave
 // cosine-distributed from a side picked with probability 1 / sides, so each carries
 // Le(uv) pi A sides (Jensen 2001, 5.1.3).
 #include <algorithm>
@@ -10,10 +11,10 @@
 #include "math/clipped_triangle.h"
 #include "math/frame.h"
 #include "math/sampling.h"
-#include "lights/warped_light_pieces.h"
 #include "lights/emission_triangles.h"
 #include "lights/light_factories.h"
 #include "lights/light_tree.h"
+#include "lights/warped_light_pieces.h"
 
 namespace photon {
 namespace {
@@ -156,7 +157,7 @@ private:
     // neon sign), with the spatial light sampler: the triangle a light sample goes to is
     // picked by a bound on the light it could bring to p, as lights are among themselves
     // (direct_light_sampler.h; pbrt-v4 puts each triangle in its light tree alike), then a
-    // direction by its solid angle warped by the receiver's cosine. Picking by area alone
+    // point following what its part above brings to p. Picking by area alone
     // sends most samples from a room's worth of ceiling panels to the far ones, and from a
     // lamp to triangles facing away.
     void pickTrianglesByBounds(const std::vector<double>& areas) {
