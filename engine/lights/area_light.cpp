@@ -235,11 +235,8 @@ private:
     // The texture coordinates at the point q of triangle i.
     Vec2 uvOn(size_t i, Vec3 q) const {
         const EmissionTriangles::Triangle& tri = triangles_[i];
-        const Vec3 d = q - tri.p0;
-        const float d11 = dot(tri.e1, tri.e1), d12 = dot(tri.e1, tri.e2), d22 = dot(tri.e2, tri.e2);
-        const float d1 = dot(d, tri.e1), d2 = dot(d, tri.e2), det = d11 * d22 - d12 * d12;
-        if (!(det > 0)) return shape_.mesh.uvAt(i, 0.0f, 0.0f);
-        return shape_.mesh.uvAt(i, (d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det);
+        const Vec2 b = planeCoordinates(q, tri.p0, tri.e1, tri.e2).value_or(Vec2{0.0f, 0.0f});
+        return shape_.mesh.uvAt(i, b.x, b.y);
     }
 
     LightPoint samplePoint(Vec2 u) const override {

@@ -30,6 +30,7 @@
 #include <optional>
 #include "math/bilinear_density.h"
 #include "math/clipped_triangle.h"
+#include "math/sampling.h"
 #include "math/spherical_triangle.h"
 
 namespace photon {
@@ -147,8 +148,6 @@ public:
         return w ? piece.corners.at(*w) / total_ : 0.0f;
     }
 
-    int count() const { return count_; }
-
 private:
     // Filled by push() and weigh(); left uninitialised before, since a light sample builds
     // eight of them and uses two.
@@ -208,12 +207,9 @@ private:
     }
     // y's barycentric coordinates in the piece (y on the triangle's plane).
     static Vec3 barycentrics(const Piece& piece, Vec3 y) {
-        const Vec3 e1 = piece.v[1] - piece.v[0], e2 = piece.v[2] - piece.v[0], d = y - piece.v[0];
-        const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
-        const float det = d11 * d22 - d12 * d12;
-        if (!(det > 0)) return Vec3(-1.0f);
-        const float b1 = (d22 * d1 - d12 * d2) / det, b2 = (d11 * d2 - d12 * d1) / det;
-        return {1 - b1 - b2, b1, b2};
+        const std::optional<Vec2> b = planeCoordinates(y, piece.v[0], piece.v[1] - piece.v[0], piece.v[2] - piece.v[0]);
+        if (!b) return Vec3(-1.0f);
+        return {1 - b->x - b->y, b->x, b->y};
     }
     static float depthIn(const Piece& piece, Vec3 y) {
         const Vec3 b = barycentrics(piece, y);

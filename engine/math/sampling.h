@@ -1,5 +1,6 @@
 // Sampling warps shared by materials, lights and cameras (pbrt-v4 ch. A.5 and 4.x).
 #pragma once
+#include <optional>
 #include "math/lanes.h"
 #include <photon/vec.h>
 
@@ -79,6 +80,15 @@ PHOTON_LANES_INLINE void uniformTriangle(F ux, F uy, F& b0, F& b1) {
     F halved = 0.5f * select(lower, ux, uy);
     b0 = select(lower, halved, ux - halved);
     b1 = select(lower, uy - halved, halved);
+}
+// The coordinates (b1, b2) of the point p0 + b1 e1 + b2 e2 of the triangle's plane nearest
+// y; none for a degenerate triangle.
+inline std::optional<Vec2> planeCoordinates(Vec3 y, Vec3 p0, Vec3 e1, Vec3 e2) {
+    const Vec3 d = y - p0;
+    const float d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2), d1 = dot(d, e1), d2 = dot(d, e2);
+    const float det = d11 * d22 - d12 * d12;
+    if (!(det > 0)) return std::nullopt;
+    return Vec2{(d22 * d1 - d12 * d2) / det, (d11 * d2 - d12 * d1) / det};
 }
 inline Vec2 sampleUniformTriangle(Vec2 u) {
     Vec2 b;
